@@ -1,0 +1,201 @@
+"""Physical dimensions of symbols and a term-by-term audit of expressions.
+
+Dimensions are :class:`sympy.physics.units.Dimension` objects, reduced to base exponents with
+sympy's SI dimension system; angles count as dimensionless (radians).
+
+Example
+-------
+>>> import sympy as sp
+>>> from dualmech.dimensions import MASS, LENGTH, TIME, ANGLE, audit
+>>> from dualmech import coordinate, t
+>>> m, l, g = sp.symbols("m l g"); th = coordinate("theta")
+>>> dims = {m: MASS, l: LENGTH, g: LENGTH/TIME**2, th: ANGLE}
+>>> audit(m*l**2*th.diff(t, 2) + m*g*l*sp.sin(th), dims)
+[]
+>>> eq = m*l*th.diff(t, 2) + m*g*l*sp.sin(th)
+>>> [str(issue) for issue in audit(eq, dims, expected=MASS*LENGTH**2/TIME**2)]
+['term `l*m*Derivative(theta(t), (t, 2))` has dimension M L T^-2 where the rest has M L^2 T^-2']
+"""
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Mapping
+
+import sympy as sp
+from sympy.physics.units import Dimension
+from sympy.physics.units.definitions import dimension_definitions as _dd
+from sympy.physics.units.systems.si import dimsys_SI
+
+from .kinematics import t
+
+__all__ = ["Dimension", "MASS", "LENGTH", "TIME", "ANGLE", "FORCE", "TORQUE", "ENERGY",
+           "DIMENSIONLESS", "VELOCITY", "ACCELERATION", "STIFFNESS", "DAMPING",
+           "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA", "FREQUENCY",
+           "DimensionIssue", "audit", "dimension_of", "format_dimension"]
+
+MASS = _dd.mass
+LENGTH = _dd.length
+TIME = _dd.time
+ANGLE = _dd.angle
+DIMENSIONLESS = Dimension(1)
+FORCE = MASS * LENGTH / TIME**2
+TORQUE = FORCE * LENGTH
+ENERGY = FORCE * LENGTH
+VELOCITY = LENGTH / TIME
+ACCELERATION = LENGTH / TIME**2
+STIFFNESS = FORCE / LENGTH
+DAMPING = FORCE / VELOCITY
+TORSIONAL_STIFFNESS = TORQUE / ANGLE
+TORSIONAL_DAMPING = TORQUE * TIME / ANGLE
+INERTIA = MASS * LENGTH**2
+FREQUENCY = 1 / TIME
+
+_ORDER = ("mass", "length", "time", "current", "temperature", "amount_of_substance",
+          "luminous_intensity")
+_SHORT = {"mass": "M", "length": "L", "time": "T"}
+
+Dims = tuple  # sorted ((base, Fraction exponent), ...)
+
+
+def reduce(dim) -> Dims:
+    """Base exponents of ``dim`` as a hashable tuple; angle is dropped (radians)."""
+    if isinstance(dim, tuple):
+        return dim
+    if not isinstance(dim, Dimension):
+        raise TypeError(f"a dimension must be a sympy Dimension, got {dim!r}.")
+    deps = dimsys_SI.get_dimensional_dependencies(dim)
+    out = {}
+    for base, e in deps.items():
+        name = str(base.name) if hasattr(base, "name") else str(base)
+        if name == "angle":
+            continue
+        out[name] = Fraction(int(sp.Rational(e).p), int(sp.Rational(e).q))
+    return tuple(sorted(((k, v) for k, v in out.items() if v != 0),
+                        key=lambda kv: _ORDER.index(kv[0]) if kv[0] in _ORDER else 99))
+
+
+def format_dimension(d) -> str:
+    """``M L^2 T^-2`` style text; ``1`` for dimensionless."""
+    d = reduce(d)
+    if not d:
+        return "1"
+    parts = []
+    for name, e in d:
+        s = _SHORT.get(name, name)
+        parts.append(s if e == 1 else f"{s}^{e}")
+    return " ".join(parts)
+
+
+def _mul(a: Dims, b: Dims, k=1) -> Dims:
+    out = dict(a)
+    for name, e in b:
+        out[name] = out.get(name, 0) + k * e
+    return tuple(sorted(((n, e) for n, e in out.items() if e != 0),
+                        key=lambda kv: _ORDER.index(kv[0]) if kv[0] in _ORDER else 99))
+
+
+def _pow(a: Dims, k) -> Dims:
+    return tuple((n, e * k) for n, e in a) if k != 0 else ()
+
+
+@dataclass(frozen=True)
+class DimensionIssue:
+    """One inconsistency: ``term`` has ``found`` where ``expected`` was required."""
+
+    term: str
+    found: str
+    expected: str
+    context: str = ""
+
+    def __str__(self) -> str:
+        if self.context:
+            return self.context
+        return (f"term `{self.term}` has dimension {self.found} where the rest has "
+                f"{self.expected}")
+
+
+class _Walker:
+    def __init__(self, dims: Mapping):
+        self.dims = {}
+        for k, v in dims.items():
+            self.dims[k] = reduce(v)
+        self.dims.setdefault(t, reduce(TIME))
+        self.issues: list[DimensionIssue] = []
+
+    def __call__(self, e) -> Dims:
+        if e.is_Number or e in (sp.pi, sp.E):
+            return ()
+        if e in self.dims:
+            return self.dims[e]
+        if e.is_Symbol or isinstance(e, sp.core.function.AppliedUndef):
+            self.issues.append(DimensionIssue(str(e), "?", "?", f"`{e}` has no declared dimension"))
+            return ()
+        if isinstance(e, sp.Derivative):
+            d = self(e.expr)
+            for var, n in e.variable_count:
+                d = _mul(d, self(var), -n)
+            return d
+        if e.is_Add:
+            return self._add(e, None)
+        if e.is_Mul:
+            d: Dims = ()
+            for a in e.args:
+                d = _mul(d, self(a))
+            return d
+        if e.is_Pow:
+            base = self(e.base)
+            if e.exp.is_Number:
+                return _pow(base, Fraction(str(sp.Rational(e.exp))))
+            if base or self(e.exp):
+                self.issues.append(DimensionIssue(str(e), "?", "1", f"`{e}`: a symbolic power "
+                                                  "needs a dimensionless base and exponent"))
+            return ()
+        if isinstance(e, sp.Function):
+            for a in e.args:
+                d = self(a)
+                if d:
+                    self.issues.append(DimensionIssue(
+                        str(a), format_dimension(d), "1",
+                        f"argument `{a}` of {e.func.__name__} has dimension "
+                        f"{format_dimension(d)}; it must be dimensionless"))
+            return ()
+        raise TypeError(f"cannot find the dimension of {e!r}")
+
+    def _add(self, e, expected) -> Dims:
+        terms = [(a, self(a)) for a in sp.Add.make_args(e)]
+        counts = Counter(d for _, d in terms)
+        if expected is None:
+            ranked = counts.most_common()
+            if len(ranked) > 1 and ranked[0][1] == ranked[1][1]:
+                listing = "; ".join(f"`{a}` has {format_dimension(d)}" for a, d in terms)
+                self.issues.append(DimensionIssue(str(e), "mixed", "one dimension",
+                                                  f"terms disagree: {listing}"))
+                return ranked[0][0]
+            expected = ranked[0][0]
+        for a, d in terms:
+            if d != expected:
+                self.issues.append(DimensionIssue(str(a), format_dimension(d),
+                                                  format_dimension(expected)))
+        return expected
+
+
+def audit(expr, dims: Mapping, expected=None) -> list[DimensionIssue]:
+    """Every dimensional inconsistency in ``expr`` (an empty list when it is consistent).
+
+    ``expected`` (a Dimension), when given, is the dimension every top-level term must have;
+    otherwise the majority of the terms decides, and a tie is reported as such.
+    """
+    w = _Walker(dims)
+    w._add(sp.sympify(expr), None if expected is None else reduce(expected))
+    return w.issues
+
+
+def dimension_of(expr, dims: Mapping) -> Dims:
+    """Dimension of ``expr``; raises ``ValueError`` listing the issues when inconsistent."""
+    w = _Walker(dims)
+    d = w(sp.sympify(expr))
+    if w.issues:
+        raise ValueError("; ".join(map(str, w.issues)))
+    return d

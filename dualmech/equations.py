@@ -1,0 +1,348 @@
+"""The canonical equation object every derivation ends in.
+
+An :class:`EquationSet` holds equations ``e_i(q'', lambda, q', q, t) = 0`` that are linear in
+the accelerations ``q''`` and in the unknown reactions or multipliers ``lambda``::
+
+    [M(q, t)  B(q, t)] [q''; lambda] = f(q, q', t)
+
+Downstream code -- comparison, reaction recovery, linearisation, simulation, code generation --
+works from this one object.  Nothing here needs a symbolic inverse of ``M``; the symbolic
+solutions (:meth:`EquationSet.solve`) exist for display and for small models only.
+
+Example
+-------
+>>> import sympy as sp
+>>> from dualmech.kinematics import coordinate, t
+>>> from dualmech.equations import EquationSet
+>>> x = coordinate("x"); m, k = sp.symbols("m k", positive=True)
+>>> eqs = EquationSet("spring", (x,), (m*x.diff(t, 2) + k*x,))
+>>> eqs.mass_matrix(), eqs.forcing()
+(Matrix([[m]]), Matrix([[-k*x(t)]]))
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Mapping, Sequence
+
+import sympy as sp
+
+from .kinematics import t
+
+__all__ = ["EquationSet", "ModelError", "StateSymbols", "state_symbols"]
+
+
+class ModelError(ValueError):
+    """A model that cannot be used as written; the message says what to fix."""
+
+
+@dataclass(frozen=True)
+class StateSymbols:
+    """Plain symbols standing for ``q(t)``, ``q'(t)`` and ``q''(t)`` of one coordinate."""
+
+    function: sp.Expr
+    q: sp.Symbol
+    qd: sp.Symbol
+    qdd: sp.Symbol
+
+    @property
+    def name(self) -> str:
+        return self.function.func.__name__
+
+
+_STATE_CACHE: dict = {}
+
+
+def state_symbols(q: sp.Expr) -> StateSymbols:
+    """The :class:`StateSymbols` of coordinate ``q`` (cached, so shared by every model)."""
+    if q not in _STATE_CACHE:
+        if not (isinstance(q, sp.core.function.AppliedUndef) and q.args == (t,)):
+            raise ModelError(f"coordinate {q!r} must be a function of t, e.g. "
+                             "`dualmech.coordinate('x')`.")
+        name = q.func.__name__
+        _STATE_CACHE[q] = StateSymbols(q, sp.Symbol(name, real=True),
+                                       sp.Symbol(f"{name}_dot", real=True),
+                                       sp.Symbol(f"{name}_ddot", real=True))
+    return _STATE_CACHE[q]
+
+
+@dataclass(frozen=True, eq=False)
+class EquationSet:
+    """Equations of motion ``equations[i] = 0``, linear in ``(q'', unknowns)``.
+
+    Parameters
+    ----------
+    name : str
+        Which derivation produced it (``"lagrange"``, ``"newton_euler"``, ...).
+    coordinates : tuple of ``q(t)``
+        The generalised coordinates, as functions of :data:`dualmech.kinematics.t`.
+    equations : tuple of sympy expressions
+        Left sides; ``= 0`` implied.
+    unknowns : tuple of symbols
+        Reaction forces or multipliers that appear linearly.
+    labels : tuple of str
+        One short label per equation ("sum F . i_B", "d/dt dL/dtheta' ...").
+    contributions : tuple of dict
+        Optional: per equation, the additive piece each modelling ingredient contributes
+        (used to generate mutants for testing the comparator).
+    """
+
+    name: str
+    coordinates: tuple
+    equations: tuple
+    unknowns: tuple = ()
+    labels: tuple = ()
+    contributions: tuple = field(default=(), repr=False)
+    description: str = ""
+
+    def __post_init__(self):
+        object.__setattr__(self, "coordinates", tuple(self.coordinates))
+        object.__setattr__(self, "equations", tuple(sp.sympify(e) for e in self.equations))
+        object.__setattr__(self, "unknowns", tuple(self.unknowns))
+        if not self.equations:
+            raise ModelError(f"model `{self.name}` has no equations.")
+        if not self.coordinates:
+            raise ModelError(f"model `{self.name}` has no coordinates.")
+        for q in self.coordinates:
+            state_symbols(q)
+        labels = tuple(self.labels) or tuple(f"eq{i + 1}" for i in range(len(self.equations)))
+        if len(labels) != len(self.equations):
+            raise ModelError(f"model `{self.name}`: {len(labels)} labels for "
+                             f"{len(self.equations)} equations.")
+        object.__setattr__(self, "labels", labels)
+        self._check_linear()
+
+    # -- symbols -----------------------------------------------------------------------
+    @property
+    def states(self) -> tuple[StateSymbols, ...]:
+        return tuple(state_symbols(q) for q in self.coordinates)
+
+    @property
+    def accelerations(self) -> tuple:
+        return tuple(q.diff(t, 2) for q in self.coordinates)
+
+    @property
+    def velocities(self) -> tuple:
+        return tuple(q.diff(t) for q in self.coordinates)
+
+    @property
+    def n(self) -> int:
+        return len(self.coordinates)
+
+    def to_plain(self, expr):
+        """Replace ``q''``, ``q'``, ``q`` by plain symbols (see :func:`state_symbols`)."""
+        return to_plain(expr, self.coordinates)
+
+    # -- the linear structure ----------------------------------------------------------
+    @cached_property
+    def _unknown_vector(self) -> list:
+        return list(self.accelerations) + list(self.unknowns)
+
+    @cached_property
+    def _matrix(self) -> tuple[sp.Matrix, sp.Matrix]:
+        eqs = sp.Matrix(self.equations)
+        A = eqs.jacobian(self._unknown_vector)
+        zero = {u: 0 for u in self._unknown_vector}
+        b = -eqs.xreplace(zero)
+        return A, b
+
+    def _check_linear(self) -> None:
+        A, _ = self._matrix
+        bad = [u for u in self._unknown_vector if any(a.has(u) for a in A)]
+        if bad:
+            raise ModelError(f"model `{self.name}` is not linear in {bad}; the equations must be "
+                             "linear in the accelerations and the reactions.")
+        for e in self.equations:
+            for d in e.atoms(sp.Derivative):
+                if d.derivative_count > 2:
+                    raise ModelError(f"model `{self.name}` contains {d}: at most second "
+                                     "derivatives of the coordinates may appear.")
+        allowed = set(self.coordinates)
+        for e in self.equations:
+            for f in e.atoms(sp.core.function.AppliedUndef):
+                if f not in allowed:
+                    raise ModelError(f"model `{self.name}` uses {f}, which is not one of its "
+                                     f"coordinates {list(self.coordinates)}.")
+
+    def matrix(self) -> tuple[sp.Matrix, sp.Matrix]:
+        """``(A, b)`` with ``A [q''; unknowns] = b``."""
+        return self._matrix
+
+    def mass_matrix(self) -> sp.Matrix:
+        return self._matrix[0][:, : self.n]
+
+    def reaction_matrix(self) -> sp.Matrix:
+        return self._matrix[0][:, self.n:]
+
+    def forcing(self) -> sp.Matrix:
+        return self._matrix[1]
+
+    @property
+    def is_square(self) -> bool:
+        return len(self.equations) == self.n + len(self.unknowns)
+
+    # -- symbolic solutions (display, small models) ------------------------------------
+    @cached_property
+    def _solution(self) -> dict:
+        if not self.is_square:
+            raise ModelError(f"model `{self.name}` has {len(self.equations)} equations for "
+                             f"{self.n} accelerations and {len(self.unknowns)} reactions.")
+        A, b = self._matrix
+        sol = A.LUsolve(b)
+        return {u: _tidy(s) for u, s in zip(self._unknown_vector, sol)}
+
+    def solve(self) -> dict:
+        """Symbolic ``{q'': ..., reaction: ...}`` (LU solve, then simplified)."""
+        return dict(self._solution)
+
+    def accelerations_solved(self) -> dict:
+        return {a: self._solution[a] for a in self.accelerations}
+
+    def reactions_solved(self) -> dict:
+        return {u: self._solution[u] for u in self.unknowns}
+
+    # -- transformations ---------------------------------------------------------------
+    def substitute(self, mapping: Mapping, name: str | None = None) -> "EquationSet":
+        """The same equations with ``mapping`` substituted (parameters, not coordinates)."""
+        eqs = tuple(sp.sympify(e).subs(mapping, simultaneous=True) for e in self.equations)
+        contrib = tuple({k: sp.sympify(v).subs(mapping, simultaneous=True) for k, v in c.items()}
+                        for c in self.contributions)
+        return EquationSet(name or self.name, self.coordinates, eqs, self.unknowns,
+                           self.labels, contrib, self.description)
+
+    def change_coordinates(self, coordinates: Sequence, mapping: Mapping,
+                           name: str | None = None) -> "EquationSet":
+        """Rewrite in new coordinates, ``mapping = {old_q(t): expression in new q(t)}``."""
+        missing = [q for q in self.coordinates if q not in mapping]
+        if missing:
+            raise ModelError(f"`mapping` must give every old coordinate; missing {missing}.")
+        rules = {}
+        for q, expr in mapping.items():
+            expr = sp.sympify(expr)
+            rules[q.diff(t, 2)] = expr.diff(t, 2)
+            rules[q.diff(t)] = expr.diff(t)
+        eqs = []
+        for e in self.equations:
+            e = e.xreplace(rules)
+            e = e.xreplace(dict(mapping))
+            eqs.append(e)
+        return EquationSet(name or f"{self.name} in {', '.join(_name(q) for q in coordinates)}",
+                           tuple(coordinates), tuple(eqs), self.unknowns, self.labels,
+                           (), self.description)
+
+    def without(self, key: str) -> "EquationSet":
+        """The model with ingredient ``key`` removed from every equation (for mutation tests)."""
+        return self._edit(key, 0, f"{self.name} without {key}")
+
+    def flipped(self, key: str) -> "EquationSet":
+        """The model with the sign of ingredient ``key`` flipped (for mutation tests)."""
+        return self._edit(key, -1, f"{self.name} with {key} sign-flipped")
+
+    def _edit(self, key: str, factor, name: str) -> "EquationSet":
+        """Multiply ingredient ``key`` by ``factor`` in every equation."""
+        if not any(key in c for c in self.contributions):
+            raise KeyError(f"model `{self.name}` has no ingredient {key!r}.")
+        eqs = tuple(e + (factor - 1) * c.get(key, 0)
+                    for e, c in zip(self.equations, self.contributions))
+        contrib = tuple({k: (v * factor if k == key else v) for k, v in c.items()}
+                        for c in self.contributions)
+        return EquationSet(name, self.coordinates, eqs, self.unknowns, self.labels,
+                           contrib, self.description)
+
+    def ingredients(self) -> list[str]:
+        seen = []
+        for c in self.contributions:
+            for k, v in c.items():
+                if k not in seen and sp.sympify(v) != 0:
+                    seen.append(k)
+        return seen
+
+    # -- linearisation -----------------------------------------------------------------
+    def linearize(self, equilibrium: Mapping | None = None) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix]:
+        """Mass, damping and stiffness matrices ``M q'' + C q' + K q = 0`` about ``equilibrium``.
+
+        ``equilibrium`` maps coordinates to their values (default all zero); velocities are
+        zero there.  Only reaction-free models can be linearised.
+        """
+        if self.unknowns:
+            raise ModelError(f"model `{self.name}` has reactions {list(self.unknowns)}; "
+                             "linearise a reaction-free model (e.g. the Lagrangian one).")
+        equilibrium = dict(equilibrium or {})
+        point = {}
+        for s in self.states:
+            point[s.q] = equilibrium.get(s.function, 0)
+            point[s.qd] = 0
+            point[s.qdd] = 0
+        eqs = sp.Matrix([self.to_plain(e) for e in self.equations])
+        at = lambda m: m.subs(point).applyfunc(sp.simplify)  # noqa: E731
+        M = at(eqs.jacobian([s.qdd for s in self.states]))
+        C = at(eqs.jacobian([s.qd for s in self.states]))
+        K = at(eqs.jacobian([s.q for s in self.states]))
+        residual = at(eqs)
+        if any(r != 0 for r in residual):
+            raise ModelError(f"{equilibrium} is not an equilibrium of `{self.name}`: the "
+                             f"static residual is {list(residual)}.")
+        return M, C, K
+
+    def natural_frequencies(self, equilibrium: Mapping | None = None, values: Mapping | None = None):
+        """Undamped natural frequencies (rad/s) and mode shapes at ``equilibrium``.
+
+        With ``values`` (parameter -> number) the result is numeric: ``(omegas, modes)`` as
+        NumPy arrays, modes in columns.  Without, the symbolic roots of ``det(K - w^2 M) = 0``.
+        """
+        M, _, K = self.linearize(equilibrium)
+        if values is None:
+            w2 = sp.Symbol("omega2")
+            roots = sp.solve(sp.Eq((K - w2 * M).det(), 0), w2)
+            return [sp.sqrt(r) for r in roots]
+        import numpy as np
+        import scipy.linalg
+        Mn = np.array(M.subs(values).evalf(), dtype=float)
+        Kn = np.array(K.subs(values).evalf(), dtype=float)
+        w2, modes = scipy.linalg.eig(Kn, Mn)
+        order = np.argsort(w2.real)
+        return np.sqrt(w2.real[order].astype(complex)), modes[:, order].real
+
+    def pretty(self, latex: bool = False) -> str:
+        lines = []
+        for label, e in zip(self.labels, self.equations):
+            body = sp.latex(e) + " = 0" if latex else f"{sp.pretty(e, use_unicode=True)}  = 0"
+            lines.append(f"[{label}]\n{body}")
+        return "\n\n".join(lines)
+
+
+def to_plain(expr, coordinates):
+    """Replace ``q''``, ``q'``, ``q`` of ``coordinates`` in ``expr`` by plain symbols."""
+    rules = {}
+    for q in coordinates:
+        s = state_symbols(q)
+        rules[q.diff(t, 2)] = s.qdd
+        rules[q.diff(t)] = s.qd
+    expr = sp.sympify(expr).xreplace(rules)
+    return expr.xreplace({q: state_symbols(q).q for q in coordinates})
+
+
+def from_plain(expr, coordinates):
+    """Inverse of :func:`to_plain`."""
+    rules = {}
+    for q in coordinates:
+        s = state_symbols(q)
+        rules[s.qdd] = q.diff(t, 2)
+        rules[s.qd] = q.diff(t)
+        rules[s.q] = q
+    return sp.sympify(expr).xreplace(rules)
+
+
+def _name(q) -> str:
+    return q.func.__name__
+
+
+def _tidy(expr):
+    """A readable form of ``expr`` without letting ``simplify`` run away on big input."""
+    expr = sp.cancel(sp.together(expr))
+    if sp.count_ops(expr) < 400:
+        try:
+            expr = sp.trigsimp(sp.factor_terms(expr))
+        except Exception:  # pragma: no cover - simplification is cosmetic
+            pass
+    return expr

@@ -1,0 +1,365 @@
+"""Frames chained by rotation matrices, vectors in any frame, and point kinematics.
+
+A :class:`Frame` is its rotation matrix relative to its parent plus the position of its
+origin.  The matrix ``R`` maps child components to parent components, ``v_parent = R v_child``:
+its *columns* are the child's unit vectors written in the parent.  (Course notes often print
+the transpose, whose rows are the child's unit vectors.)
+
+Angular velocity comes from the matrices, ``skew(w) = R^T dR/dt`` in child axes, and the time
+derivative of a vector in any frame follows the transport theorem
+``d/dt|_A v = d/dt|_B v + w_{B/A} x v``.
+
+Example
+-------
+The toy car of MIT 2.003J quiz 1: the track frame A turns by ``phi`` about the ground ``I``
+axis, the car frame B by ``theta`` about ``j_A``.
+
+>>> import sympy as sp
+>>> from dualmech.kinematics import Frame, rot_x, rot_y, coordinate, t
+>>> phi, theta = coordinate("phi"), coordinate("theta")
+>>> O = Frame.ground("O")
+>>> A = O.child("A", rot_x(phi))
+>>> B = A.child("B", rot_y(theta))
+>>> B.z.express(O).components.T
+Matrix([[sin(theta(t)), -sin(phi(t))*cos(theta(t)), cos(phi(t))*cos(theta(t))]])
+>>> B.ang_vel_in(O).express(B).simplify().components.T
+Matrix([[cos(theta(t))*Derivative(phi(t), t), Derivative(theta(t), t), sin(theta(t))*Derivative(phi(t), t)]])
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Iterable
+
+import sympy as sp
+
+__all__ = [
+    "t", "coordinate", "rot_x", "rot_y", "rot_z", "rot_axis", "skew", "unskew",
+    "Frame", "Vector", "Point", "RelativeMotion",
+]
+
+#: The time symbol shared by every model.
+t = sp.Symbol("t", real=True)
+
+
+def coordinate(name: str) -> sp.Expr:
+    """A generalised coordinate ``name(t)`` as an undefined function of time."""
+    return sp.Function(name, real=True)(t)
+
+
+def rot_x(angle) -> sp.Matrix:
+    """Rotation by ``angle`` about the x axis (columns: the rotated axes in the old frame)."""
+    c, s = sp.cos(angle), sp.sin(angle)
+    return sp.Matrix([[1, 0, 0], [0, c, -s], [0, s, c]])
+
+
+def rot_y(angle) -> sp.Matrix:
+    """Rotation by ``angle`` about the y axis."""
+    c, s = sp.cos(angle), sp.sin(angle)
+    return sp.Matrix([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+
+
+def rot_z(angle) -> sp.Matrix:
+    """Rotation by ``angle`` about the z axis."""
+    c, s = sp.cos(angle), sp.sin(angle)
+    return sp.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+
+
+def rot_axis(axis, angle) -> sp.Matrix:
+    """Rotation by ``angle`` about the unit vector ``axis`` (Rodrigues' formula).
+
+    ``axis`` is a 3-sequence of components; it must have unit length (checked when the
+    components are numbers).
+    """
+    n = sp.Matrix(list(axis))
+    if n.shape != (3, 1):
+        raise ValueError("`axis` must have 3 components.")
+    norm2 = sp.nsimplify(sum(c**2 for c in n)) if all(c.is_number for c in n) else None
+    if norm2 is not None and sp.simplify(norm2 - 1) != 0:
+        raise ValueError(f"`axis` must be a unit vector; its squared length is {norm2}.")
+    c, s = sp.cos(angle), sp.sin(angle)
+    return c * sp.eye(3) + s * skew(n) + (1 - c) * (n * n.T)
+
+
+def skew(w) -> sp.Matrix:
+    """The matrix ``W`` with ``W v = w x v``."""
+    w = list(w)
+    return sp.Matrix([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
+
+
+def unskew(W: sp.Matrix) -> sp.Matrix:
+    """The vector ``w`` of a skew-symmetric matrix ``W = skew(w)``."""
+    return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]])
+
+
+class Frame:
+    """A reference frame: a rotation matrix and an origin relative to a parent frame.
+
+    Build frames with :meth:`Frame.ground` and :meth:`Frame.child`; do not call the
+    constructor directly.
+    """
+
+    def __init__(self, name: str, parent: Frame | None, rotation: sp.Matrix,
+                 origin: "Vector | None"):
+        self.name = name
+        self.parent = parent
+        self.rotation = sp.Matrix(rotation)
+        if self.rotation.shape != (3, 3):
+            raise ValueError(f"the rotation of frame `{name}` must be 3x3, "
+                             f"got {self.rotation.shape}.")
+        self._origin = origin
+
+    def __repr__(self) -> str:
+        return f"Frame({self.name!r})"
+
+    # -- construction ------------------------------------------------------------------
+    @classmethod
+    def ground(cls, name: str = "O") -> "Frame":
+        """The inertial frame, root of every chain."""
+        return cls(name, None, sp.eye(3), None)
+
+    def child(self, name: str, rotation=None, origin: "Vector | None" = None) -> "Frame":
+        """A frame rotated by ``rotation`` relative to this one, origin at ``origin``.
+
+        ``origin`` is the position of the child's origin relative to this frame's origin
+        (any frame's vector); the default is the same origin.
+        """
+        rotation = sp.eye(3) if rotation is None else rotation
+        return Frame(name, self, rotation, origin)
+
+    # -- unit vectors ------------------------------------------------------------------
+    @property
+    def x(self) -> "Vector":
+        return Vector(self, sp.Matrix([1, 0, 0]))
+
+    @property
+    def y(self) -> "Vector":
+        return Vector(self, sp.Matrix([0, 1, 0]))
+
+    @property
+    def z(self) -> "Vector":
+        return Vector(self, sp.Matrix([0, 0, 1]))
+
+    def vector(self, *components) -> "Vector":
+        """The vector with ``components`` along this frame's x, y, z axes."""
+        if len(components) == 1 and hasattr(components[0], "__len__"):
+            components = tuple(components[0])
+        if len(components) != 3:
+            raise ValueError(f"a vector needs 3 components, got {len(components)}.")
+        return Vector(self, sp.Matrix(components))
+
+    # -- chains ------------------------------------------------------------------------
+    def chain(self) -> list["Frame"]:
+        """Frames from the root down to this one."""
+        out, f = [], self
+        while f is not None:
+            out.append(f)
+            f = f.parent
+        return out[::-1]
+
+    @property
+    def root(self) -> "Frame":
+        return self.chain()[0]
+
+    def rotation_to_root(self) -> sp.Matrix:
+        """``R`` with ``v_root = R v_self``."""
+        R = sp.eye(3)
+        for f in self.chain()[1:]:
+            R = R * f.rotation
+        return R
+
+    def dcm(self, other: "Frame") -> sp.Matrix:
+        """``R`` with ``v_other = R v_self``: components in ``self`` to components in ``other``."""
+        _same_tree(self, other)
+        if other is self:
+            return sp.eye(3)
+        if other is self.parent:
+            return self.rotation
+        if self is other.parent:
+            return other.rotation.T
+        return other.rotation_to_root().T * self.rotation_to_root()
+
+    def ang_vel_in(self, other: "Frame") -> "Vector":
+        """Angular velocity of this frame relative to ``other``, from the rotation matrices."""
+        _same_tree(self, other)
+        return self._ang_vel_root() - other._ang_vel_root()
+
+    def ang_acc_in(self, other: "Frame") -> "Vector":
+        """Angular acceleration of this frame relative to ``other`` (derivative seen in ``other``)."""
+        return self.ang_vel_in(other).dt(other)
+
+    def _ang_vel_root(self) -> "Vector":
+        total = Vector(self.root, sp.zeros(3, 1))
+        for f in self.chain()[1:]:
+            w_child = unskew(f.rotation.T * f.rotation.diff(t))
+            total = total + Vector(f, w_child)
+        return total
+
+    def origin_from_root(self) -> "Vector":
+        """Position of this frame's origin relative to the root origin."""
+        total = Vector(self.root, sp.zeros(3, 1))
+        for f in self.chain()[1:]:
+            if f._origin is not None:
+                total = total + f._origin
+        return total
+
+
+def _same_tree(a: Frame, b: Frame) -> None:
+    if a.root is not b.root:
+        raise ValueError(f"frames `{a.name}` and `{b.name}` belong to different chains; "
+                         "build every frame from one ground frame.")
+
+
+@dataclass(frozen=True)
+class Vector:
+    """A vector as its components in one frame.  Arithmetic converts to the left operand's frame."""
+
+    frame: Frame
+    components: sp.Matrix = field(compare=False)
+
+    def __post_init__(self):
+        comps = sp.Matrix(self.components)
+        if comps.shape != (3, 1):
+            raise ValueError(f"a vector needs 3x1 components, got {comps.shape}.")
+        object.__setattr__(self, "components", comps)
+
+    def __repr__(self) -> str:
+        return f"Vector({self.frame.name}, {list(self.components)})"
+
+    def express(self, frame: Frame) -> "Vector":
+        """The same vector with components in ``frame``."""
+        if frame is self.frame:
+            return self
+        return Vector(frame, self.frame.dcm(frame) * self.components)
+
+    def __add__(self, other: "Vector") -> "Vector":
+        if isinstance(other, int) and other == 0:
+            return self
+        if not isinstance(other, Vector):
+            return NotImplemented
+        return Vector(self.frame, self.components + other.express(self.frame).components)
+
+    __radd__ = __add__
+
+    def __neg__(self) -> "Vector":
+        return Vector(self.frame, -self.components)
+
+    def __sub__(self, other: "Vector") -> "Vector":
+        return self + (-other)
+
+    def __mul__(self, scalar) -> "Vector":
+        if isinstance(scalar, Vector):
+            raise TypeError("use `dot` or `cross` to multiply two vectors.")
+        return Vector(self.frame, self.components * sp.sympify(scalar))
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, scalar) -> "Vector":
+        return Vector(self.frame, self.components / sp.sympify(scalar))
+
+    def dot(self, other: "Vector") -> sp.Expr:
+        return (self.components.T * other.express(self.frame).components)[0, 0]
+
+    def cross(self, other: "Vector") -> "Vector":
+        return Vector(self.frame, skew(self.components) * other.express(self.frame).components)
+
+    def outer(self, other: "Vector") -> sp.Matrix:
+        """Components of the dyad ``self (x) other`` in ``self.frame``."""
+        return self.components * other.express(self.frame).components.T
+
+    def dt(self, frame: Frame) -> "Vector":
+        """Time derivative as seen from ``frame`` (transport theorem)."""
+        local = Vector(self.frame, self.components.diff(t))
+        if frame is self.frame:
+            return local
+        return local + self.frame.ang_vel_in(frame).cross(self)
+
+    def diff(self, var, frame: Frame) -> "Vector":
+        """Partial derivative with respect to ``var`` (a symbol, coordinate or its rate) in ``frame``."""
+        return Vector(frame, self.express(frame).components.diff(var))
+
+    def subs(self, *args, **kwargs) -> "Vector":
+        return Vector(self.frame, self.components.subs(*args, **kwargs))
+
+    def simplify(self) -> "Vector":
+        return Vector(self.frame, self.components.applyfunc(sp.trigsimp))
+
+    def magnitude_squared(self) -> sp.Expr:
+        return self.dot(self)
+
+    def is_zero(self) -> bool:
+        return all(sp.simplify(c) == 0 for c in self.components)
+
+
+class Point:
+    """A point placed relative to another point (or to a frame's origin).
+
+    ``Point.origin(frame)`` is the origin of ``frame``; ``p.locate(name, r)`` makes the point
+    at ``p + r``.  Velocities and accelerations are time derivatives of the position from the
+    ground origin, seen from the frame asked for.
+    """
+
+    def __init__(self, name: str, position: Vector):
+        self.name = name
+        self._position = position  # from the root origin
+
+    def __repr__(self) -> str:
+        return f"Point({self.name!r})"
+
+    @classmethod
+    def origin(cls, frame: Frame, name: str | None = None) -> "Point":
+        return cls(name or frame.name, frame.origin_from_root())
+
+    def locate(self, name: str, r: Vector) -> "Point":
+        """The point at ``r`` from this one."""
+        return Point(name, self._position + r)
+
+    def pos_from(self, other: "Point | None" = None) -> Vector:
+        """Position relative to ``other`` (the root origin by default)."""
+        if other is None:
+            return self._position
+        return self._position - other._position
+
+    def vel(self, frame: Frame) -> Vector:
+        """Velocity seen from ``frame``."""
+        return self._position.dt(frame)
+
+    def acc(self, frame: Frame) -> Vector:
+        """Acceleration seen from ``frame``."""
+        return self._position.dt(frame).dt(frame)
+
+
+@dataclass(frozen=True)
+class RelativeMotion:
+    """Acceleration of a point P moving in a frame B, split into the textbook terms.
+
+    ``a_P/O = a_Q/O + dw/dt x r + w x (w x r) + 2 w x v_rel + a_rel`` with ``Q`` a point fixed
+    in B, ``r = P - Q``, ``w`` the angular velocity of B in O and ``v_rel``, ``a_rel`` the
+    velocity and acceleration of P seen from B.  ``coriolis`` is ``2 w x v_rel``.
+    """
+
+    base: Vector
+    tangential: Vector
+    centripetal: Vector
+    coriolis: Vector
+    relative: Vector
+
+    @classmethod
+    def of(cls, point: Point, base: Point, moving: Frame, ground: Frame) -> "RelativeMotion":
+        r = point.pos_from(base)
+        w = moving.ang_vel_in(ground)
+        v_rel = r.dt(moving)
+        return cls(base=base.acc(ground), tangential=w.dt(ground).cross(r),
+                   centripetal=w.cross(w.cross(r)), coriolis=2 * w.cross(v_rel),
+                   relative=v_rel.dt(moving))
+
+    def total(self) -> Vector:
+        return self.base + self.tangential + self.centripetal + self.coriolis + self.relative
+
+    def terms(self) -> dict[str, Vector]:
+        return {"base": self.base, "tangential": self.tangential,
+                "centripetal": self.centripetal, "coriolis": self.coriolis,
+                "relative": self.relative}
+
+
+def components_in(vectors: Iterable[Vector], frame: Frame) -> list[sp.Matrix]:
+    return [v.express(frame).components for v in vectors]

@@ -1,0 +1,154 @@
+"""The indirect form: Lagrange's equations with dissipation, generalised forces and multipliers.
+
+For each coordinate ``q_j``::
+
+    d/dt dT/dq'_j - dT/dq_j + dR/dq'_j + dV/dq_j = Q_j + sum_k lambda_k dg_k/dq_j
+
+``T`` is the kinetic energy (given, or built from bodies), ``V`` the potential energy, ``R``
+Rayleigh's dissipation function, ``Q_j`` the generalised forces of non-conservative loads from
+their virtual work (``Q_j = F . dr/dq_j``, computed as ``F . dv/dq'_j``), and ``g_k`` the
+constraints with their multipliers ``lambda_k``.  A coordinate with prescribed (rheonomic)
+motion is replaced by its known function of time before differentiating.
+
+Example
+-------
+>>> import sympy as sp
+>>> from dualmech import coordinate, t
+>>> from dualmech.lagrange import Lagrangian
+>>> x = coordinate("x"); m, k, b, F0, w = sp.symbols("m k b F0 omega", positive=True)
+>>> lg = Lagrangian(coordinates=[x])
+>>> lg.kinetic("mass", m*x.diff(t)**2/2); lg.potential("spring", k*x**2/2)
+>>> lg.dissipation("dashpot", b*x.diff(t)**2/2); lg.generalized_force("drive", [F0*sp.sin(w*t)])
+>>> lg.equations().equations
+(-F0*sin(omega*t) + b*Derivative(x(t), t) + k*x(t) + m*Derivative(x(t), (t, 2)),)
+"""
+from __future__ import annotations
+
+from typing import Sequence
+
+import sympy as sp
+
+from .bodies import Particle, RigidBody
+from .equations import EquationSet, ModelError
+from .kinematics import Frame, Point, Vector, t
+
+__all__ = ["Lagrangian"]
+
+
+class Lagrangian:
+    """Builder of the indirect form; see the module docstring."""
+
+    def __init__(self, name: str = "lagrange", *, coordinates: Sequence, description: str = ""):
+        self.name = name
+        self.coordinates = tuple(coordinates)
+        self.description = description
+        self._T: dict[str, sp.Expr] = {}
+        self._V: dict[str, sp.Expr] = {}
+        self._R: dict[str, sp.Expr] = {}
+        self._Q: dict[str, list] = {}
+        self._constraints: list[tuple[sp.Symbol, sp.Expr, list]] = []
+        self._prescribed: dict = {}
+
+    # -- energies ----------------------------------------------------------------------
+    def kinetic(self, key: str, T) -> None:
+        """Add the kinetic-energy term ``T`` under the name ``key``."""
+        self._T[key] = self._T.get(key, 0) + sp.sympify(T)
+
+    def kinetic_of(self, body: Particle | RigidBody, frame: Frame) -> None:
+        """Add the kinetic energy of ``body`` seen from the inertial ``frame``."""
+        self.kinetic(f"T of {body.name}", body.kinetic_energy(frame))
+
+    def potential(self, key: str, V) -> None:
+        """Add the potential-energy term ``V``."""
+        self._V[key] = self._V.get(key, 0) + sp.sympify(V)
+
+    def dissipation(self, key: str, R) -> None:
+        """Add the Rayleigh dissipation term ``R`` (e.g. ``c v^2 / 2``)."""
+        self._R[key] = self._R.get(key, 0) + sp.sympify(R)
+
+    # -- generalised forces ------------------------------------------------------------
+    def generalized_force(self, key: str, Q: Sequence) -> None:
+        """Add generalised forces ``Q`` (one per coordinate)."""
+        Q = [sp.sympify(x) for x in Q]
+        if len(Q) != len(self.coordinates):
+            raise ModelError(f"`Q` needs {len(self.coordinates)} entries (one per coordinate), "
+                             f"got {len(Q)}.")
+        old = self._Q.get(key, [0] * len(Q))
+        self._Q[key] = [a + b for a, b in zip(old, Q)]
+
+    def force_at(self, key: str, force: Vector, point: Point, frame: Frame) -> None:
+        """Generalised forces of ``force`` applied at ``point``: ``Q_j = F . d v / d q'_j``.
+
+        ``frame`` is the inertial frame in which the velocity of ``point`` is taken.
+        """
+        v = point.vel(frame)
+        self.generalized_force(key, [force.dot(v.diff(q.diff(t), frame)) for q in self.coordinates])
+
+    def torque_on(self, key: str, torque: Vector, body_frame: Frame, frame: Frame) -> None:
+        """Generalised forces of a couple on a body: ``Q_j = tau . d w / d q'_j``."""
+        w = body_frame.ang_vel_in(frame)
+        self.generalized_force(key, [torque.dot(w.diff(q.diff(t), frame)) for q in self.coordinates])
+
+    # -- constraints and prescribed motion ---------------------------------------------
+    def constraint(self, name: str, g) -> sp.Symbol:
+        """Holonomic constraint ``g(q, t) = 0`` with multiplier ``name``; returns the multiplier."""
+        lam = sp.Symbol(name, real=True)
+        g = sp.sympify(g)
+        self._constraints.append((lam, g.diff(t, 2), [g.diff(q) for q in self.coordinates]))
+        return lam
+
+    def velocity_constraint(self, name: str, coefficients: Sequence, rest=0) -> sp.Symbol:
+        """Constraint ``sum a_j q'_j + a_0 = 0`` (``coefficients = a``, ``rest = a_0``)."""
+        a = [sp.sympify(c) for c in coefficients]
+        if len(a) != len(self.coordinates):
+            raise ModelError(f"`coefficients` needs {len(self.coordinates)} entries.")
+        lam = sp.Symbol(name, real=True)
+        level = sum(c * q.diff(t) for c, q in zip(a, self.coordinates)) + sp.sympify(rest)
+        self._constraints.append((lam, level.diff(t), a))
+        return lam
+
+    def prescribe(self, q, motion) -> None:
+        """Coordinate ``q`` follows the known function of time ``motion`` (rheonomic)."""
+        self._prescribed[q] = sp.sympify(motion)
+
+    # -- equations ---------------------------------------------------------------------
+    def _known(self, expr):
+        if not self._prescribed:
+            return sp.sympify(expr)
+        rules = {}
+        for q, f in self._prescribed.items():
+            rules[q.diff(t, 2)] = f.diff(t, 2)
+            rules[q.diff(t)] = f.diff(t)
+        expr = sp.sympify(expr).xreplace(rules)
+        return expr.xreplace(dict(self._prescribed))
+
+    def equations(self) -> EquationSet:
+        free = [q for q in self.coordinates if q not in self._prescribed]
+        if not (self._T or self._V or self._R or self._Q):
+            raise ModelError(f"`{self.name}` has no energy or force terms.")
+        contributions = []
+        for j, q in enumerate(self.coordinates):
+            if q in self._prescribed:
+                continue
+            qd = q.diff(t)
+            parts: dict = {}
+            for key, T in self._T.items():
+                T = self._known(T)
+                parts[key] = T.diff(qd).diff(t) - T.diff(q)
+            for key, V in self._V.items():
+                parts[key] = parts.get(key, 0) + self._known(V).diff(q)
+            for key, R in self._R.items():
+                parts[key] = parts.get(key, 0) + self._known(R).diff(qd)
+            for key, Q in self._Q.items():
+                parts[key] = parts.get(key, 0) - self._known(Q[j])
+            for lam, _, grad in self._constraints:
+                parts[f"constraint {lam.name}"] = -lam * self._known(grad[j])
+            contributions.append((f"Lagrange, {q.func.__name__}", parts))
+        for lam, level, _ in self._constraints:
+            contributions.append((f"constraint {lam.name} (acceleration level)",
+                                  {f"constraint {lam.name}": self._known(level)}))
+        eqs = tuple(sp.Add(*p.values()) for _, p in contributions)
+        return EquationSet(self.name, tuple(free), eqs,
+                           tuple(lam for lam, _, _ in self._constraints),
+                           tuple(label for label, _ in contributions),
+                           tuple(p for _, p in contributions), self.description)
