@@ -1,0 +1,5 @@
+"""``python -m dualmech``: the same as the ``dualmech`` command (see :mod:`dualmech.cli`)."""
+from .cli import main
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,157 @@
+"""Mutation testing of the comparator: break a model on purpose and check the break is caught.
+
+For every model of a problem the generator makes broken variants: drop one ingredient (a force,
+a torque, a reaction, an energy term, a generalised force), flip the sign of one ingredient,
+double one mass or inertia parameter, swap two parameters of the same dimension.  Each mutant
+is compared with an unbroken model of the same problem; the comparator must report it as
+disagreeing and name an equation.  Mutants that are *identical* to the original model (a
+dropped term that was zero, a swap of two parameters that enter symmetrically) cannot be caught
+by any comparator; they are detected exactly and reported apart, not counted.  The sign of an
+*unknown* reaction is not flipped: ``R d`` and ``-R d`` with ``R`` unknown are the same model
+with the unknown renamed, so the motion cannot change (the sign of a recovered reaction is
+checked against the published answers instead).
+
+Example
+-------
+>>> from problems import get                      # doctest: +SKIP
+>>> report = mutation_report(get("block_on_wedge"))   # doctest: +SKIP
+>>> report.kill_rate                              # doctest: +SKIP
+1.0
+"""
+from __future__ import annotations
+
+import itertools
+import random
+from dataclasses import dataclass, field
+from typing import Iterator
+
+import sympy as sp
+
+from .compare import _Context, compare_models
+from .dimensions import INERTIA, MASS, reduce
+from .equations import EquationSet, to_plain
+from .exact import ExactForm, is_zero
+
+__all__ = ["Mutant", "MutationReport", "mutants", "mutation_report"]
+
+
+@dataclass(frozen=True)
+class Mutant:
+    """A deliberately broken copy of one model."""
+
+    model: str
+    description: str
+    equations: EquationSet
+
+
+@dataclass
+class MutationReport:
+    """Outcome of :func:`mutation_report`."""
+
+    problem: str
+    killed: list = field(default_factory=list)      # (mutant description, equations named)
+    survived: list = field(default_factory=list)    # mutant descriptions
+    identical: list = field(default_factory=list)   # mutants equal to their original
+
+    @property
+    def total(self) -> int:
+        return len(self.killed) + len(self.survived)
+
+    @property
+    def kill_rate(self) -> float:
+        return len(self.killed) / self.total if self.total else 1.0
+
+    def __str__(self) -> str:
+        lines = [f"{self.problem}: {len(self.killed)}/{self.total} mutants caught "
+                 f"({100 * self.kill_rate:.0f} %), {len(self.identical)} identical to the "
+                 "original (not counted)"]
+        lines += [f"  SURVIVED: {d}" for d in self.survived]
+        return "\n".join(lines)
+
+
+def mutants(problem) -> Iterator[Mutant]:
+    """Every broken variant of every model of ``problem``."""
+    params = list(problem.parameters)
+    for name, m in problem.models().items():
+        free = set().union(*(e.free_symbols for e in m.equations))
+        for key in m.ingredients():
+            yield Mutant(name, f"{name}: drop `{key}`", m.without(key))
+            if not key.startswith("reaction "):
+                yield Mutant(name, f"{name}: flip the sign of `{key}`", m.flipped(key))
+        heavy = {reduce(MASS), reduce(INERTIA)}
+        for p in params:
+            if p.symbol in free and reduce(p.dimension) in heavy:
+                yield Mutant(name, f"{name}: double `{p.symbol}`",
+                             m.substitute({p.symbol: 2 * p.symbol}))
+        for p, r in itertools.combinations(params, 2):
+            if (p.symbol in free or r.symbol in free) and \
+                    reduce(p.dimension) == reduce(r.dimension):
+                yield Mutant(name, f"{name}: swap `{p.symbol}` and `{r.symbol}`",
+                             m.substitute({p.symbol: r.symbol, r.symbol: p.symbol}))
+
+
+def _identical(original: EquationSet, mutant: EquationSet, seed: int = 0) -> bool:
+    """Exactly: are the mutant's equations the original's (term for term)?"""
+    coords = original.coordinates
+    diffs = [to_plain(a - b, coords) for a, b in zip(mutant.equations, original.equations)]
+    symbols = sorted(set().union(*(d.free_symbols for d in diffs)), key=str)
+    if not symbols:
+        return all(sp.simplify(d) == 0 for d in diffs)
+    form = ExactForm.build(diffs, symbols)
+    rng = random.Random(seed)
+    checked = 0
+    for _ in range(20):
+        try:
+            vals = form.evaluate(form.sample(rng))
+        except ZeroDivisionError:
+            continue
+        if not all(is_zero(v) for v in vals):
+            return False
+        checked += 1
+        if checked == 3:
+            return True
+    return True
+
+
+def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
+    """Generate every mutant of ``problem`` and check that the comparator catches it.
+
+    Each mutant of model ``X`` is compared with an unbroken square model other than ``X``
+    (the problem's reference when ``X`` is not the reference).
+    """
+    report = MutationReport(problem.name)
+    models = problem.models()
+    ref_name = problem.reference
+    square = [n for n, m in models.items() if m.is_square]
+    ctx = None
+    for mut in mutants(problem):
+        original = models[mut.model]
+        if _identical(original, mut.equations, seed):
+            report.identical.append(mut.description)
+            continue
+        judge = ref_name if mut.model != ref_name else next(
+            (n for n in square if n != ref_name), None)
+        if judge is None:
+            continue
+        reference = problem.in_reference_coordinates(models[judge])
+        candidate = _in_ref(problem, mut.equations, original)
+        if ctx is None:
+            ref_model = models[ref_name]
+            ctx = _Context(ref_model.coordinates, problem.parameter_symbols, problem)
+        try:
+            result = compare_models(reference, candidate, points=points, seed=seed,
+                                    context=ctx, explain=False)
+        except Exception as exc:  # a model the comparator rejects outright is caught too
+            report.killed.append((mut.description, [f"rejected: {exc}"]))
+            continue
+        if result.equivalent:
+            report.survived.append(mut.description)
+        else:
+            report.killed.append((mut.description, [m.equation for m in result.mismatches]))
+    return report
+
+
+def _in_ref(problem, mutant: EquationSet, original: EquationSet) -> EquationSet:
+    renamed = EquationSet(original.name, mutant.coordinates, mutant.equations, mutant.unknowns,
+                          mutant.labels, mutant.contributions, mutant.description)
+    return problem.in_reference_coordinates(renamed)

@@ -1,0 +1,238 @@
+"""Example 17: a pendulum on a spring-restrained cart, torsional spring and dashpot, driven bob.
+
+Source: ``sources/000_203248afac9714e6.txt``, "Example 17: Pair-Share: Mass Pendulum Dynamic
+System" (its solution slide is headed "Example 16").
+
+Geometry (the source's figure is missing; this is the one used here)
+--------------------------------------------------------------------
+::
+
+      wall                          j (up)
+      |/|        k                  ^
+      |/|---/\\/\\/\\---+---------+  |        x: cart position, spring unstretched at x = 0
+      |/|              |  cart m |  +--> i
+      |/|------[ c ----|         |
+      |/|              +----P----+     P: pivot on the cart, with the torsional spring k_t
+      |/|    =====bed===== :|\\ ==       (undeformed at theta = 0) and torsional dashpot c_t
+      |/|                  :| \\  l      massless rod P--B
+                           :|  \\
+                 -R.y = e_r :|th \\
+                           :|    o B  bob m0  ---> F0 sin(w t) i  (always horizontal)
+                                      R.x = e_th = (cos th, sin th)
+
+``theta`` is measured from the downward vertical, counterclockwise about ``k`` (positive when
+the bob swings toward ``+i``).  The cart rides on the bed (normal force ``N``) and stays on it.
+
+Frames.  ``O`` inertial (``i`` right, ``j`` up, ``k = i x j`` out of the page), origin at the
+pivot's position when ``x = 0``.  The rod frame ``R = O`` rotated by ``theta`` about ``k``:
+``R.x = e_th = (cos th, sin th)``, ``R.y = (-sin th, cos th)`` points from the bob to the
+pivot, so ``e_r = -R.y = (sin th, -cos th)``.
+
+Bodies.  The cart translates: a particle ``m`` at ``P = x i``.  The bob is a point mass: a
+particle ``m0`` at ``B = P + l e_r``.  The rod is massless; it is kept as a body only because
+it carries loads: its balances say that the loads on it sum to zero.
+
+Free-body diagrams (Newton--Euler)::
+
+      bob m0:   -m0 g j,   F0 sin(wt) i,   T R.y (rod tension),   S R.x (rod, transverse)
+      rod:      -T R.y - S R.x at B,   Px i + Py j at P (cart on rod),
+                torsional spring -k_t th k,  torsional dashpot -c_t th' k
+      cart m:   -m g j,  N j (bed),  -k x i,  -c x' i,  -Px i - Py j at P,
+                +(k_t th + c_t th') k  (reacted by the distribution of N; the cart is a particle)
+
+The massless rod's moments about P sum to zero: ``l e_r x (-S e_th) - (k_t th + c_t th') k = 0``,
+so ``S = -(k_t th + c_t th')/l``.  The torsional elements reach the bob as a *transverse* force
+through the rod -- the rod is not a two-force member.  Its force balance gives
+``P = T R.y + S R.x``.  With ``F = F0 sin(wt)`` and ``a_B = x'' i + l th'' e_th - l th'^2 e_r``::
+
+      bob . e_th:  m0 (x'' cos th + l th'') = -m0 g sin th + F cos th + S
+      bob . e_r :  m0 (x'' sin th - l th'^2) = m0 g cos th + F sin th - T
+      cart . i  :  m x'' = -k x - c x' - Px
+      cart . j  :  0 = N - m g - Py
+
+Reactions solved by hand (``x''``, ``th''`` the true accelerations)::
+
+      S  = -(k_t th + c_t th') / l
+      T  = m0 g cos th + F sin th + m0 l th'^2 - m0 x'' sin th
+      Px = -T sin th + S cos th,     Py = T cos th + S sin th
+      N  = m g + Py  = (m + m0) g + m0 l (th'' sin th + th'^2 cos th)   (whole system, j)
+
+Lagrangian (written independently)::
+
+      T = m x'^2/2 + m0 ((x' + l th' cos th)^2 + (l th' sin th)^2)/2
+      V = k x^2/2 + k_t th^2/2 + m0 g l (1 - cos th)
+      R = c x'^2/2 + c_t th'^2/2
+      Q = F (dx_B/dx, dx_B/dth) = (F0 sin wt, F0 sin wt l cos th)      (x_B = x + l sin th)
+
+      (m + m0) x'' + c x' + k x + m0 l (th'' cos th - th'^2 sin th) = F0 sin wt
+      m0 l^2 th'' + c_t th' + k_t th + m0 g l sin th + m0 l x'' cos th = F0 sin wt l cos th
+
+(the second is ``l`` times the bob's ``e_th`` balance with ``S`` put in).
+
+Errata
+------
+The printed second equation begins ``m0 l th''``: every other term is a torque
+(``M L^2 T^-2``), that one a force.  It must be ``m0 l^2 th''``.  The dimension audit flags it.
+Everything else printed (``Q1``, ``Q2``, ``U``, ``T_pendulum``, the ``x`` equation) is right.
+
+Example
+-------
+>>> p = CartPendulum(); p.validate()
+>>> sp.factor(p.model("lagrange").mass_matrix().det())
+l**2*m0*(m + m0*sin(theta(t))**2)
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate,
+                      rot_z, t)
+from dualmech.dimensions import (ACCELERATION, ANGLE, DAMPING, FORCE, FREQUENCY, LENGTH, MASS,
+                                 STIFFNESS, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS)
+from dualmech.equations import EquationSet
+from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+
+__all__ = ["CartPendulum", "PROBLEMS", "hand_reactions"]
+
+m, m0, l, k, c, k_t, c_t, g, F0, omega = sp.symbols("m m0 l k c k_t c_t g F0 omega",
+                                                     positive=True)
+x, theta = coordinate("x"), coordinate("theta")
+
+D = lambda q: q.diff(t)  # noqa: E731
+DD = lambda q: q.diff(t, 2)  # noqa: E731
+drive = F0 * sp.sin(omega * t)
+
+
+def hand_reactions(xdd, thdd) -> dict:
+    """Reactions solved by hand, given the true accelerations ``xdd``, ``thdd`` (see above)."""
+    th, thd = theta, D(theta)
+    S = -(k_t * th + c_t * thd) / l
+    T = m0 * g * sp.cos(th) + drive * sp.sin(th) + m0 * l * thd**2 - m0 * xdd * sp.sin(th)
+    Px = -T * sp.sin(th) + S * sp.cos(th)
+    Py = T * sp.cos(th) + S * sp.sin(th)
+    N = (m + m0) * g + m0 * l * (thdd * sp.sin(th) + thd**2 * sp.cos(th))
+    return {"S": S, "T": T, "P_x": Px, "P_y": Py, "N": N}
+
+
+class _Scene:
+    """Frames, points and bodies of the direct form (also used for published references)."""
+
+    def __init__(self):
+        self.O = Frame.ground("O")
+        self.R = self.O.child("R", rot_z(theta))
+        self.P = Point.origin(self.O).locate("P", x * self.O.x)
+        self.B = self.P.locate("B", -l * self.R.y)
+        self.cart = Particle("cart", m, self.P)
+        self.bob = Particle("bob", m0, self.B)
+        self.rod = RigidBody("rod", sp.Integer(0), self.P.locate("G", -l / 2 * self.R.y),
+                             self.R, sp.zeros(3, 3))
+
+
+class CartPendulum(Problem):
+    """Cart on a spring and dashpot carrying a pendulum with torsional spring and dashpot."""
+
+    name = "cart_pendulum"
+    title = "Pendulum on a cart with torsional spring and dashpot, driven bob"
+    source = "000_203248afac9714e6.txt: Example 17"
+    summary = ("The massless rod carries the torsional elements' torque to the bob as a "
+               "transverse force; the printed theta equation lacks a factor l.")
+    parameters = (
+        Parameter(m, MASS, 2.0, (0.5, 10.0), "mass of the cart"),
+        Parameter(m0, MASS, 0.5, (0.1, 5.0), "mass of the bob"),
+        Parameter(l, LENGTH, 0.8, (0.2, 2.0), "length of the rod"),
+        Parameter(k, STIFFNESS, 100.0, (10.0, 1000.0), "cart spring constant"),
+        Parameter(c, DAMPING, 2.0, (0.1, 20.0), "cart dashpot constant"),
+        Parameter(k_t, TORSIONAL_STIFFNESS, 5.0, (0.5, 50.0), "torsional spring constant"),
+        Parameter(c_t, TORSIONAL_DAMPING, 0.3, (0.01, 5.0), "torsional dashpot constant"),
+        Parameter(g, ACCELERATION, 9.81, (9.0, 10.0), "gravitational acceleration"),
+        Parameter(F0, FORCE, 3.0, (0.1, 20.0), "amplitude of the horizontal force on the bob"),
+        Parameter(omega, FREQUENCY, 4.0, (0.5, 20.0), "frequency of the force on the bob"),
+    )
+    coordinates = (
+        Coordinate(x, LENGTH, (-0.4, 0.5), (-1.5, 2.0), "cart position"),
+        Coordinate(theta, ANGLE, (-1.2, 1.3), (-3.0, 2.5), "rod angle from the downward vertical"),
+    )
+    reactions = (
+        Reaction("N", FORCE, "bed on cart, along j"),
+        Reaction("T", FORCE, "rod tension on the bob, along R.y (toward the pivot)"),
+        Reaction("S", FORCE, "rod on the bob, transverse, along R.x = e_theta"),
+        Reaction("P_x", FORCE, "cart on rod at the pivot, along i"),
+        Reaction("P_y", FORCE, "cart on rod at the pivot, along j"),
+    )
+
+    def newton_euler(self) -> EquationSet:
+        """Cart and bob along two directions each; the massless rod's three balances."""
+        sc = _Scene()
+        O, R = sc.O, sc.R
+        ne = NewtonEuler("newton_euler", coordinates=[x, theta], ground=O)
+        ne.gravity(-g * O.y)
+        ne.reaction("N", sc.cart, O.y)
+        ne.linear_spring("spring", sc.cart, k, x, O.x)
+        ne.linear_damper("dashpot", sc.cart, c, D(x), O.x)
+        ne.force("drive", sc.bob, drive * O.x)
+        ne.reaction("T", sc.bob, R.y, against=sc.rod, against_at=sc.B)
+        ne.reaction("S", sc.bob, R.x, against=sc.rod, against_at=sc.B)
+        ne.reaction_vector("P", sc.rod, O, "xy", at=sc.P, against=sc.cart, against_at=sc.P)
+        ne.torsional_spring("torsional spring", sc.rod, k_t, theta, O.z, against=sc.cart)
+        ne.torsional_damper("torsional dashpot", sc.rod, c_t, D(theta), O.z, against=sc.cart)
+        ne.linear_momentum(sc.cart, O.x)
+        ne.linear_momentum(sc.cart, O.y)
+        ne.linear_momentum(sc.bob, R.x)
+        ne.linear_momentum(sc.bob, R.y)
+        ne.linear_momentum(sc.rod, O.x)
+        ne.linear_momentum(sc.rod, O.y)
+        ne.angular_momentum(sc.rod, O.z, about=sc.P)
+        return ne.equations()
+
+    def lagrange(self) -> EquationSet:
+        """``T``, ``V``, ``R`` and the virtual work of the drive, as the source writes them."""
+        lg = Lagrangian("lagrange", coordinates=[x, theta])
+        lg.kinetic("T of cart", m * D(x)**2 / 2)
+        lg.kinetic("T of bob", m0 * ((D(x) + l * D(theta) * sp.cos(theta))**2
+                                     + (l * D(theta) * sp.sin(theta))**2) / 2)
+        lg.potential("spring", k * x**2 / 2)
+        lg.potential("torsional spring", k_t * theta**2 / 2)
+        lg.potential("gravity", m0 * g * l * (1 - sp.cos(theta)))
+        lg.dissipation("dashpot", c * D(x)**2 / 2)
+        lg.dissipation("torsional dashpot", c_t * D(theta)**2 / 2)
+        bob = sp.Matrix([x + l * sp.sin(theta), -l * sp.cos(theta)])  # from the pivot's x = 0
+        force = sp.Matrix([drive, 0])
+        lg.generalized_force("drive", [force.dot(bob.diff(q)) for q in (x, theta)])
+        return lg.equations()
+
+    def published(self) -> list[Published]:
+        sc = _Scene()
+        vB = sc.B.vel(sc.O)
+        F = drive * sc.O.x
+        Q = tuple(F.dot(vB.diff(q.diff(t), sc.O)) for q in (x, theta))
+        height = sc.B.pos_from().dot(sc.O.y) + l  # of the bob, above its lowest position
+        V = k * x**2 / 2 + k_t * theta**2 / 2 + m0 * g * height
+        s, co = sp.sin(theta), sp.cos(theta)
+        where = "Example 17 (solution slide headed 'Example 16')"
+        return [
+            # Right: partial velocities of B are i and l e_th; F . e_th = F cos th.
+            Published("Q1, Q2", "expression", (drive, drive * l * co), Q, where=where),
+            # Right: the bob rises l (1 - cos th) above its lowest point.
+            Published("U", "expression",
+                      (k * x**2 / 2 + k_t * theta**2 / 2 + m0 * g * l * (1 - co),), (V,),
+                      where=where),
+            # Right: v_B = (x' + l th' cos th) i + l th' sin th j.
+            Published("T_pendulum", "expression",
+                      (m0 * ((D(x) + l * D(theta) * co)**2 + (l * D(theta) * s)**2) / 2,),
+                      (sc.bob.kinetic_energy(sc.O),), where=where),
+            # Right: the expanded form of the same.
+            Published("T_pendulum (expanded)", "expression",
+                      (m0 * (D(x)**2 + (l * D(theta))**2 + 2 * D(x) * l * D(theta) * co) / 2,),
+                      (sc.bob.kinetic_energy(sc.O),), where=where),
+            # Right: d/dt dT/dx' = (m + m0) x'' + m0 l (th'' cos th - th'^2 sin th).
+            Published("equation of motion, x", "equation",
+                      ((m + m0) * DD(x) + c * D(x) + k * x
+                       + m0 * l * (DD(theta) * co - D(theta)**2 * s) - drive,), where=where),
+            # Wrong: m0 l th'' must be m0 l^2 th'' (a force among torques; see the errata).
+            Published("equation of motion, theta", "equation",
+                      (m0 * l * DD(theta) + c_t * D(theta) + k_t * theta + m0 * g * l * s
+                       + m0 * DD(x) * l * co - drive * l * co,), where=where),
+        ]
+
+
+PROBLEMS = (CartPendulum,)

@@ -1,0 +1,107 @@
+"""The comparator: verdicts, explanations, reactions, published answers (dualmech.compare)."""
+import json
+
+import pytest
+import sympy as sp
+
+from dualmech import EquationSet, ModelError, coordinate, t
+from dualmech.compare import compare, compare_models, recover_reactions
+
+from _pendulum import Pendulum, cartesian, g, l, m, th
+
+q1, q2 = coordinate("q1"), coordinate("q2")
+k, c = sp.symbols("k c", positive=True)
+
+
+def test_scaled_and_combined_equations_are_equivalent():
+    a = EquationSet("a", (q1, q2), (m * q1.diff(t, 2) + k * (q1 - q2),
+                                     m * q2.diff(t, 2) + k * (q2 - q1)))
+    # row 1 + row 2 and 3 x row 2: an invertible combination
+    b = EquationSet("b", (q1, q2), (m * (q1.diff(t, 2) + q2.diff(t, 2)),
+                                     3 * m * q2.diff(t, 2) + 3 * k * (q2 - q1)))
+    r = compare_models(a, b)
+    assert r.equivalent and r.method == "exact" and r.points == 8
+    assert r.bound < 1e-100
+
+
+def test_wrong_term_is_named_with_its_residual():
+    a = EquationSet("a", (q1,), (m * q1.diff(t, 2) + c * q1.diff(t) + k * q1,))
+    b = EquationSet("b", (q1,), (m * q1.diff(t, 2) - c * q1.diff(t) + k * q1,), labels=("x-eq",))
+    r = compare_models(a, b)
+    assert not r.equivalent
+    (mm,) = r.mismatches
+    assert mm.equation == "x-eq"
+    assert mm.residual == str(-2 * c * q1.diff(t))
+    assert mm.state and mm.value != 0
+    assert any("q1" in term for term, _ in mm.terms)
+
+
+def test_singular_candidate_is_reported_undetermined():
+    a = EquationSet("a", (q1, q2), (q1.diff(t, 2) + q1, q2.diff(t, 2) + q2))
+    b = EquationSet("b", (q1, q2), (q1.diff(t, 2) + q1, 2 * q1.diff(t, 2) + 2 * q1))
+    r = compare_models(a, b)
+    assert not r.equivalent and "do not determine the accelerations" in r.mismatches[0].reason
+
+
+def test_different_coordinates_are_refused_with_advice():
+    a = EquationSet("a", (q1,), (q1.diff(t, 2),))
+    b = EquationSet("b", (q2,), (q2.diff(t, 2),))
+    with pytest.raises(ModelError, match="change_coordinates"):
+        compare_models(a, b)
+
+
+def test_singular_reference_everywhere_is_a_clear_error():
+    a = EquationSet("a", (q1, q2), (q1.diff(t, 2) + q2.diff(t, 2), q1.diff(t, 2) + q2.diff(t, 2)))
+    with pytest.raises(ModelError, match="singular at every sampled point"):
+        compare_models(a, a)
+
+
+def test_pendulum_problem_agrees_and_recovers_the_tension():
+    c_ = compare(Pendulum())
+    assert c_.equivalent and not c_.dimension_issues
+    S = c_.reactions["S"]
+    assert sp.simplify(S - (m * g * sp.cos(th) + m * l * th.diff(t)**2)) == 0
+    assert sp.simplify(sp.sympify(c_.accelerations["theta"]) + g * sp.sin(th) / l) == 0
+
+
+def test_published_verdicts_of_the_pendulum():
+    verdicts = {v.label: v for v in compare(Pendulum()).published}
+    assert verdicts["EoM"].verdict == "correct"
+    assert verdicts["tension"].verdict == "correct"
+    assert verdicts["wrong tension"].verdict == "wrong"
+    assert "l*m*Derivative(theta(t), t)**2" in verdicts["wrong tension"].detail
+    assert verdicts["small-angle EoM"].verdict == "wrong"
+    slip = verdicts["dimension slip"]
+    assert slip.verdict == "wrong" and "dimensionally inconsistent" in slip.detail
+
+
+def test_cartesian_dae_is_the_same_motion_after_changing_coordinates():
+    ref = Pendulum().model("lagrange")
+    dae = cartesian()
+    assert len(dae.unknowns) == 1 and len(dae.equations) == 3
+    in_theta = dae.change_coordinates((th,), {coordinate("x"): l * sp.sin(th),
+                                              coordinate("y"): -l * sp.cos(th)})
+    r = compare_models(ref, in_theta)
+    assert r.equivalent, str(r)
+
+
+def test_json_has_the_documented_schema():
+    d = compare(Pendulum()).to_dict()
+    json.dumps(d)
+    for key in ("name", "title", "source", "coordinates", "parameters", "equivalent", "method",
+                "seconds", "eom", "accelerations", "reactions", "reaction_directions",
+                "published", "mismatches"):
+        assert key in d
+    assert d["coordinates"] == ["theta"] and d["parameters"] == ["m", "l", "g"]
+    assert d["eom"][0].count("Derivative(theta(t), (t, 2))") == 1
+    assert {p["verdict"] for p in d["published"]} == {"correct", "wrong"}
+    assert d["reaction_directions"]["S"].startswith("rod tension")
+
+
+def test_report_text_names_the_verdicts():
+    text = str(compare(Pendulum()))
+    assert "all derivations agree" in text and "[WRONG  ] wrong tension" in text
+
+
+def test_recover_reactions_needs_no_comparison():
+    assert set(recover_reactions(Pendulum())) == {"S"}
