@@ -14,9 +14,12 @@ import mpmath
 from .exact import MP_DIGITS
 
 
+def _exact(rows) -> bool:
+    return all(isinstance(v, (Fraction, int)) for row in rows for v in row)
+
+
 def _zero_test(rows):
-    exact = all(isinstance(v, (Fraction, int)) for row in rows for v in row)
-    if exact:
+    if _exact(rows):
         return lambda v, scale=1: v == 0
     tol = mpmath.mpf(10) ** (-(MP_DIGITS // 2))
     return lambda v, scale=1: abs(v) <= tol * (1 + abs(scale))
@@ -24,7 +27,8 @@ def _zero_test(rows):
 
 def rref(rows: list[list]) -> tuple[list[list], list[int]]:
     """Reduced row echelon form and pivot columns (partial pivoting for the float case)."""
-    A = [list(r) for r in rows]
+    # ints must become Fractions: int / int would silently turn into a float
+    A = [[Fraction(v) for v in r] for r in rows] if _exact(rows) else [list(r) for r in rows]
     zero = _zero_test(A)
     scale = max((abs(v) for r in A for v in r), default=1) or 1
     pivots, r = [], 0

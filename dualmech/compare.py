@@ -99,10 +99,17 @@ class PairResult:
     bound: float
     seconds: float
     mismatches: list = field(default_factory=list)
+    kind: str = "motion"
+    reactions: tuple = ()
 
     def __str__(self) -> str:
-        verdict = "equivalent" if self.equivalent else "NOT equivalent"
-        s = (f"{self.candidate} vs {self.reference}: {verdict} "
+        if self.kind == "reactions":
+            verdict = "the same" if self.equivalent else "DIFFERENT"
+            head = f"reactions {', '.join(self.reactions)} of {self.candidate} vs {self.reference}: {verdict}"
+        else:
+            verdict = "equivalent" if self.equivalent else "NOT equivalent"
+            head = f"{self.candidate} vs {self.reference}: {verdict}"
+        s = (f"{head} "
              f"({METHOD_NAMES[self.method]}, {self.points} points")
         if self.method == "exact":
             s += f", P(false equal) <= {self.bound:.1e}"
@@ -110,8 +117,8 @@ class PairResult:
         return "\n".join([s] + [str(m) for m in self.mismatches])
 
     def to_dict(self) -> dict:
-        return {"reference": self.reference, "candidate": self.candidate,
-                "equivalent": self.equivalent, "method": METHOD_NAMES[self.method],
+        return {"kind": self.kind, "reference": self.reference, "candidate": self.candidate,
+                "reactions": list(self.reactions), "equivalent": self.equivalent, "method": METHOD_NAMES[self.method],
                 "points": self.points, "false_equal_bound": _json_float(self.bound),
                 "seconds": self.seconds, "mismatches": [m.to_dict() for m in self.mismatches]}
 
@@ -498,6 +505,7 @@ def compare(problem, points: int = 8, seed: int = 0) -> Comparison:
             continue
         cand = problem.in_reference_coordinates(m)
         pairs.append(compare_models(ref, cand, points=points, seed=seed, context=ctx))
+    pairs += reaction_pairs(problem, points=points, seed=seed, context=ctx)
     accelerations = _accelerations(ref)
     reactions = recover_reactions(problem)
     published = check_published(problem, points=points, seed=seed, context=ctx) \
@@ -508,6 +516,100 @@ def compare(problem, points: int = 8, seed: int = 0) -> Comparison:
     return Comparison(problem, pairs, published, accelerations, reactions,
                       {r.name: r.direction for r in problem.reactions},
                       problem.dimension_issues(), time.perf_counter() - t0, points)
+
+
+def reaction_pairs(problem, models: dict | None = None, *, points: int = 8, seed: int = 0,
+                   context: _Context | None = None) -> list[PairResult]:
+    """Compare the reactions of every two models that declare a reaction of the same name.
+
+    The direct form gives reactions from free-body diagrams; a Lagrangian with multipliers
+    (constraints written as distances with unit gradient along the contact force) gives them
+    independently.  Comparing the two catches errors that leave the motion untouched -- the
+    weight of a body that only presses on the ground, the sign of a contact force.
+    """
+    models = models if models is not None else problem.models()
+    ref = problem.model(problem.reference)
+    with_unknowns = [(n, problem.in_reference_coordinates(m)) for n, m in models.items()
+                     if m.unknowns]
+    out = []
+    for i, (na, a) in enumerate(with_unknowns):
+        for nb, b in with_unknowns[i + 1:]:
+            shared = [u for u in a.unknowns if u in b.unknowns]
+            if shared:
+                out.append(compare_reactions(ref, a, b, shared, points=points, seed=seed,
+                                             context=context))
+    return out
+
+
+def compare_reactions(reference: EquationSet, first: EquationSet, second: EquationSet,
+                      names: Sequence, *, points: int = 8, seed: int = 0,
+                      context: _Context | None = None) -> PairResult:
+    """Do ``first`` and ``second`` give the same values of the reactions ``names``?
+
+    Accelerations come from ``reference``; each model's reactions are then its best fit
+    (exact least squares), which is its unique solution when the model is consistent.
+    """
+    t0 = time.perf_counter()
+    coords = reference.coordinates
+    ctx = context or _Context.for_models(reference, first, second)
+    systems = [_plain_system(m, coords) for m in (reference, _reorder(first, coords),
+                                                   _reorder(second, coords))]
+    exprs = []
+    for A, b in systems:
+        exprs += _flatten(A, b)
+    form = ExactForm.build(exprs, ctx.base)
+    n = len(coords)
+    rng = random.Random(seed + 2)
+    good, attempts, bad = 0, 0, []
+    while good < points and attempts < _MAX_ATTEMPTS * points:
+        attempts += 1
+        try:
+            vals = form.evaluate(form.sample(rng, ctx.floats))
+        except (ZeroDivisionError, ValueError):
+            continue
+        parts, off = [], 0
+        for A, b in systems:
+            parts.append(_unflatten(vals[off:], len(A), len(A[0])))
+            off += len(A) * (len(A[0]) + 1)
+        x = la.solve_square(*parts[0])
+        if x is None:
+            continue
+        good += 1
+        lams = []
+        for (Av, bv), m in zip(parts[1:], (first, second)):
+            M = [row[:n] for row in Av]
+            B = [row[n:] for row in Av]
+            r = [bi - mi for bi, mi in zip(bv, la.matvec(M, x[:n]))]
+            lams.append(dict(zip(m.unknowns, la.residual_after_least_squares(B, r)[1])))
+        bad = [u for u in names if not is_zero(lams[0][u] - lams[1][u], abs(lams[0][u]))]
+        if bad:
+            break
+    mismatches = []
+    for u in bad:
+        residual = ""
+        try:
+            first, second = _drop_zero_rows(first), _drop_zero_rows(second)
+            if first.is_square and second.is_square:
+                d = _tidy(first.reactions_solved()[u] - second.reactions_solved()[u])
+                residual = str(d)
+        except (ModelError, ValueError, ZeroDivisionError):
+            pass
+        mismatches.append(Mismatch(second.name, f"reaction {u}",
+                                   f"{u} differs from the value `{first.name}` gives",
+                                   residual=residual))
+    bound = form.false_equal_bound(good, _degree_factor(systems[1][0], systems[2][0],
+                                                        form.degree)) if not bad else 0.0
+    return PairResult(first.name, second.name, not bad, form.method, good, bound,
+                      time.perf_counter() - t0, mismatches, "reactions",
+                      tuple(str(u) for u in names))
+
+
+def _drop_zero_rows(m: EquationSet) -> EquationSet:
+    keep = [i for i, e in enumerate(m.equations) if sp.expand(e) != 0]
+    if len(keep) == len(m.equations):
+        return m
+    return EquationSet(m.name, m.coordinates, [m.equations[i] for i in keep], m.unknowns,
+                       [m.labels[i] for i in keep])
 
 
 def _accelerations(ref: EquationSet) -> dict:
@@ -522,9 +624,11 @@ def recover_reactions(problem) -> dict:
     """Symbolic reactions ``{name: expression in q, q', t}`` from the direct model(s)."""
     out = {}
     for m in problem.models().values():
-        if not m.unknowns or not m.is_square:
+        if not m.unknowns:
             continue
         m = problem.in_reference_coordinates(m)
+        if not m.is_square:
+            continue
         for u, expr in m.reactions_solved().items():
             out.setdefault(u.name, expr)
     return out
@@ -704,8 +808,9 @@ def _on_shell(problem, expr):
     except ModelError:
         return None
     for m in problem.models().values():
+        m = problem.in_reference_coordinates(m) if m.unknowns else m
         if m.unknowns and m.is_square:
-            for u, v in problem.in_reference_coordinates(m).reactions_solved().items():
+            for u, v in m.reactions_solved().items():
                 rules.setdefault(u, v)
     expr = sp.sympify(expr).xreplace(rules)
     if sp.count_ops(expr) > 2000:

@@ -212,7 +212,11 @@ class EquationSet:
 
     def change_coordinates(self, coordinates: Sequence, mapping: Mapping,
                            name: str | None = None) -> "EquationSet":
-        """Rewrite in new coordinates, ``mapping = {old_q(t): expression in new q(t)}``."""
+        """Rewrite in new coordinates, ``mapping = {old_q(t): expression in new q(t)}``.
+
+        Equations that vanish identically after the substitution (the acceleration form of a
+        constraint that the new coordinates satisfy by construction) are dropped.
+        """
         missing = [q for q in self.coordinates if q not in mapping]
         if missing:
             raise ModelError(f"`mapping` must give every old coordinate; missing {missing}.")
@@ -221,13 +225,15 @@ class EquationSet:
             expr = sp.sympify(expr)
             rules[q.diff(t, 2)] = expr.diff(t, 2)
             rules[q.diff(t)] = expr.diff(t)
-        eqs = []
-        for e in self.equations:
-            e = e.xreplace(rules)
-            e = e.xreplace(dict(mapping))
+        eqs, labels = [], []
+        for e, label in zip(self.equations, self.labels):
+            e = e.xreplace(rules).xreplace(dict(mapping))
+            if sp.expand(e) == 0:
+                continue  # a constraint the new coordinates satisfy by construction
             eqs.append(e)
+            labels.append(label)
         return EquationSet(name or f"{self.name} in {', '.join(_name(q) for q in coordinates)}",
-                           tuple(coordinates), tuple(eqs), self.unknowns, self.labels,
+                           tuple(coordinates), tuple(eqs), self.unknowns, tuple(labels),
                            (), self.description)
 
     def without(self, key: str) -> "EquationSet":

@@ -251,6 +251,9 @@ def is_zero(value, scale=1) -> bool:
     """Exact zero test, or the mpmath tolerance ``10**(-MP_DIGITS/2)`` relative to ``scale``."""
     if isinstance(value, (Fraction, int)):
         return value == 0
+    if isinstance(value, float):
+        raise TypeError("a float reached an exact zero test; exact arithmetic was lost "
+                        "(int / int?)")
     with mpmath.workdps(MP_DIGITS):
         return abs(value) <= mpmath.mpf(10) ** (-(MP_DIGITS // 2)) * (1 + abs(scale))
 

@@ -1,12 +1,17 @@
 """Mutation testing of the comparator: break a model on purpose and check the break is caught.
 
 For every model of a problem the generator makes broken variants: drop one ingredient (a force,
-a torque, a reaction, an energy term, a generalised force), flip the sign of one ingredient,
-double one mass or inertia parameter, swap two parameters of the same dimension.  Each mutant
-is compared with an unbroken model of the same problem; the comparator must report it as
-disagreeing and name an equation.  Mutants that are *identical* to the original model (a
+a torque, a reaction, an energy term, a generalised force, the inertia term of a body), flip
+the sign of one ingredient, double one ingredient (e.g. one body's mass in its inertia term
+only), double one mass or inertia parameter everywhere, swap two parameters of the same
+dimension.  Each mutant
+is compared with an unbroken model of the same problem -- its motion, and its reactions with
+those of any other model that derives the same reactions -- and the comparator must report it
+as disagreeing and name an equation (or the reaction that differs).  Mutants that are *identical* to the original model (a
 dropped term that was zero, a swap of two parameters that enter symmetrically) cannot be caught
-by any comparator; they are detected exactly and reported apart, not counted.  The sign of an
+by any comparator; neither can one whose every equation is a constant (state-independent)
+multiple of the original's -- e.g. doubling the car's mass, which scales out of its motion.
+Both are detected exactly and reported apart, not counted.  The sign of an
 *unknown* reaction is not flipped: ``R d`` and ``-R d`` with ``R`` unknown are the same model
 with the unknown renamed, so the motion cannot change (the sign of a recovered reaction is
 checked against the published answers instead).
@@ -27,10 +32,10 @@ from typing import Iterator
 
 import sympy as sp
 
-from .compare import _Context, compare_models
+from .compare import _Context, compare_models, reaction_pairs
 from .dimensions import INERTIA, MASS, reduce
 from .equations import EquationSet, to_plain
-from .exact import ExactForm, is_zero
+from .exact import ExactForm
 
 __all__ = ["Mutant", "MutationReport", "mutants", "mutation_report"]
 
@@ -78,6 +83,7 @@ def mutants(problem) -> Iterator[Mutant]:
             yield Mutant(name, f"{name}: drop `{key}`", m.without(key))
             if not key.startswith("reaction "):
                 yield Mutant(name, f"{name}: flip the sign of `{key}`", m.flipped(key))
+                yield Mutant(name, f"{name}: double `{key}`", m._edit(key, 2, f"{name} x2 {key}"))
         heavy = {reduce(MASS), reduce(INERTIA)}
         for p in params:
             if p.symbol in free and reduce(p.dimension) in heavy:
@@ -90,23 +96,39 @@ def mutants(problem) -> Iterator[Mutant]:
                              m.substitute({p.symbol: r.symbol, r.symbol: p.symbol}))
 
 
-def _identical(original: EquationSet, mutant: EquationSet, seed: int = 0) -> bool:
-    """Exactly: are the mutant's equations the original's (term for term)?"""
+def _identical(original: EquationSet, mutant: EquationSet, parameters, seed: int = 0) -> bool:
+    """Exactly: is every mutant equation a state-independent multiple of the original one?
+
+    Such a mutant (a dropped term that was zero; a mass that scales out of every equation; a
+    swap of parameters that enter symmetrically) is the same motion by construction.  Tested
+    at pairs of random points that share the parameter values but differ in everything else.
+    """
     coords = original.coordinates
-    diffs = [to_plain(a - b, coords) for a, b in zip(mutant.equations, original.equations)]
-    symbols = sorted(set().union(*(d.free_symbols for d in diffs)), key=str)
-    if not symbols:
-        return all(sp.simplify(d) == 0 for d in diffs)
-    form = ExactForm.build(diffs, symbols)
+    exprs = []
+    for a, b in zip(mutant.equations, original.equations):
+        exprs += [to_plain(a, coords), to_plain(b, coords)]
+    symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=str)
+    form = ExactForm.build(exprs, symbols)
+    params = set(parameters)
     rng = random.Random(seed)
     checked = 0
-    for _ in range(20):
+    for _ in range(30):
+        p1 = form.sample(rng)
+        p2 = form.sample(rng)
+        for key in p1:
+            key_syms = key.free_symbols if hasattr(key, "free_symbols") else {key}
+            if key_syms <= params:
+                p2[key] = p1[key]
         try:
-            vals = form.evaluate(form.sample(rng))
+            v1, v2 = form.evaluate(p1), form.evaluate(p2)
         except ZeroDivisionError:
             continue
-        if not all(is_zero(v) for v in vals):
-            return False
+        for i in range(0, len(v1), 2):
+            # mutant_i * original_i(other point) == mutant_i(other) * original_i: same ratio
+            if v1[i] * v2[i + 1] != v2[i] * v1[i + 1]:
+                return False
+            if (v1[i] == 0) != (v1[i + 1] == 0):
+                return False
         checked += 1
         if checked == 3:
             return True
@@ -126,7 +148,7 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
     ctx = None
     for mut in mutants(problem):
         original = models[mut.model]
-        if _identical(original, mut.equations, seed):
+        if _identical(original, mut.equations, problem.parameter_symbols, seed):
             report.identical.append(mut.description)
             continue
         judge = ref_name if mut.model != ref_name else next(
@@ -144,10 +166,19 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
         except Exception as exc:  # a model the comparator rejects outright is caught too
             report.killed.append((mut.description, [f"rejected: {exc}"]))
             continue
-        if result.equivalent:
+        named = [m.equation for m in result.mismatches]
+        if result.equivalent and mut.equations.unknowns:
+            # motion unchanged: the break may still show in the reactions, if another model
+            # derives them independently
+            others = {n: m for n, m in models.items() if n != mut.model}
+            others[mut.model] = candidate
+            for pair in reaction_pairs(problem, others, points=points, seed=seed, context=ctx):
+                if mut.model in (pair.reference, pair.candidate) and not pair.equivalent:
+                    named += [m.equation for m in pair.mismatches]
+        if not named:
             report.survived.append(mut.description)
         else:
-            report.killed.append((mut.description, [m.equation for m in result.mismatches]))
+            report.killed.append((mut.description, named))
     return report
 
 

@@ -57,15 +57,20 @@ class NumericModel:
         self._p = [values[s] for s in symbols]
 
     def system(self, time: float, q: Sequence[float], qd: Sequence[float]):
-        A, b = self._fn(time, *q, *qd, *self._p)
+        A, b, _ = self._fn(time, *q, *qd, *self._p)
         return np.asarray(A, dtype=float), np.asarray(b, dtype=float).reshape(-1)
+
+    def _size(self, time, q, qd) -> float:
+        S = np.asarray(self._fn(time, *q, *qd, *self._p)[2], dtype=float)
+        return float(np.max(np.abs(S))) if S.size else 1.0
 
     def solve(self, time: float, q: Sequence[float], qd: Sequence[float]) -> np.ndarray:
         """``[q''; lambda]`` at one state (least squares if the system is not square)."""
         A, b = self.system(time, q, qd)
         if A.shape[0] == A.shape[1]:
-            cond = np.linalg.cond(A)
-            if not np.isfinite(cond) or cond > 1e12:
+            sv = np.linalg.svd(A, compute_uv=False)
+            cond = sv[0] / sv[-1] if sv[-1] > 0 else np.inf
+            if not np.isfinite(cond) or cond > 1e12 or sv[-1] < 1e-12 * self._size(time, q, qd):
                 raise SingularityError(self._singular_message(time, q, qd, cond))
             return np.linalg.solve(A, b)
         x, *_ = np.linalg.lstsq(A, b, rcond=None)
@@ -97,9 +102,21 @@ def _compiled(eqs: EquationSet):
     states = [state_symbols(q) for q in coords]
     args = [t] + [s.q for s in states] + [s.qd for s in states]
     params = sorted((A.free_symbols | b.free_symbols) - set(args), key=str)
-    fn = sp.lambdify(args + params, [A, b], modules="numpy", cse=True)
+    fn = sp.lambdify(args + params, [A, b, A.applyfunc(_magnitude)], modules="numpy", cse=True)
     _CACHE[key] = (eqs, fn, params)
     return fn, params
+
+
+def _magnitude(expr):
+    """A natural size of ``expr``: its terms in absolute value with every sin/cos taken as 1.
+
+    A pivot far below this size is a cancellation to zero: the matrix is singular there, even
+    when its condition number (which ignores scale) looks harmless.
+    """
+    e = expr.replace(lambda x: isinstance(x, (sp.sin, sp.cos)), lambda x: sp.Integer(1))
+    if sp.count_ops(e) < 500:
+        e = sp.expand(e)
+    return sp.Add(*[sp.Abs(term) for term in sp.Add.make_args(e)])
 
 
 @dataclass

@@ -78,7 +78,7 @@ Everything else printed (``Q1``, ``Q2``, ``U``, ``T_pendulum``, the ``x`` equati
 Example
 -------
 >>> p = CartPendulum(); p.validate()
->>> sp.factor(p.model("lagrange").mass_matrix().det())
+>>> sp.factor(sp.trigsimp(p.model("lagrange").mass_matrix().det()))
 l**2*m0*(m + m0*sin(theta(t))**2)
 """
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Rod-and-disk pendulum hung from a spring-mounted mass (MIT 2.003J, spring 2011, quiz 2, problem 1).
+r"""Rod-and-disk pendulum on a spring-mounted mass (MIT 2.003J, spring 2011, quiz 2, problem 1).
 
 A mass ``M`` slides without friction in a vertical shaft, hung from the ceiling O by a spring
 ``k`` (unstretched when ``O r_A = -l0 J``).  At A hangs a rigid pendulum: a thin rod (mass
@@ -14,9 +14,9 @@ Sign convention (motion in the I-J plane, K out of the page)::
            +-+-+           +--> I
            | M | A         y grows downwards: O r_A = -(l0 + y) J
            +-+-+
-              \\            theta from the downward vertical, counter-clockwise (about K):
-               \\ rod 4r     A r_B = 5r (sin(theta) I - cos(theta) J) = -5r j_A
-                \\
+              \            theta from the downward vertical, counter-clockwise (about K):
+               \ rod 4r     A r_B = 5r (sin(theta) I - cos(theta) J) = -5r j_A
+                \
                  ( B )  disk, radius r, centre B; mass centre C of the pendulum at -4r j_A
 
 Frames::
@@ -42,7 +42,8 @@ pendulum about the moving pivot A on K (``sum tau_A = dH_A/dt + 3m v_A x v_C``):
     I, pend:  12 r m (theta'' cos(theta) - theta'^2 sin(theta)) = -F_Rx
     K, A:     (169/3) m r^2 theta'' + 12 m g r sin(theta) = 12 m r y'' sin(theta)
 
-Lagrangian, written independently (``v_C = 4 r theta' cos(theta) I + (4 r theta' sin(theta) - y') J``)::
+Lagrangian, written independently, with
+``v_C = 4 r theta' cos(theta) I + (4 r theta' sin(theta) - y') J``::
 
     T = M y'^2/2 + (3/2) m [(4 r theta' sin(theta) - y')^2 + 16 r^2 theta'^2 cos^2(theta)]
         + (25/6) m r^2 theta'^2
@@ -102,7 +103,7 @@ def _tidy(eqs: EquationSet) -> EquationSet:
 
 
 def pendulum_mass_properties() -> MassProperties:
-    """Rod (``m``, length ``4r``, centre ``-2r j_A``) + disk (``2m``, radius ``r``, centre ``-5r j_A``).
+    """Rod (``m``, length ``4r``, centre ``-2r j_A``) + disk (``2m``, radius ``r``, at ``-5r j_A``).
 
     Components in A axes, positions from the pivot A.
 
@@ -191,7 +192,7 @@ class PendulumOnMass(Problem):
         s, c = sp.sin(theta), sp.cos(theta)
         y1, y2, th1, th2 = _d(y), _d(y, 2), _d(theta), _d(theta, 2)
         mr2 = m * r**2
-        I_A = pend.inertia_about(f.a)
+        I_A = pend.inertia_about(f.a).applyfunc(sp.trigsimp)  # A r_C in A axes: (0, -4r, 0)
         T_ref = (f.mass.kinetic_energy(O) + pend.kinetic_energy(O))
         V_ref = (M * g * f.a.pos_from().dot(O.y) + 3 * m * g * f.c.pos_from().dot(O.y)
                  + k * y**2 / 2)
@@ -260,7 +261,7 @@ def kinetic_energy() -> dict:
 
 
 def potential_energy() -> dict:
-    """``V`` by hand: heights of A and C below the unstretched level, the spring's extension ``y``."""
+    """``V`` by hand: heights of A and C (constant ``l0`` dropped), spring extension ``y``."""
     return {"gravity": -M * g * y - 3 * m * g * (y + 4 * r * sp.cos(theta)),
             "spring": k * y**2 / 2}
 

@@ -1,23 +1,25 @@
-"""Toy car on a rotating track (MIT 2.003J, spring 2011, quiz 1).
+r"""Toy car on a rotating track (MIT 2.003J, spring 2011, quiz 1).
 
 A point-mass car (mass ``m``) rolls without slipping on a massless circular track of radius
 ``R`` centred at O.  The track pivots about the horizontal ground axis ``I``; the car runs
 round the track.  Two coordinates: ``phi``, the track's tilt from the vertical, and ``theta``,
 the car's angle from the bottom of the track.
 
-Sign convention (looking along ``+I``; the track plane holds ``I`` and ``k_A``)::
+Sign convention::
 
-          K                         k_A   (track normal... the track's "up")
-          ^                        ^
-          |    phi                /       K x k_A = sin(phi) I
-          |  <----               /
-          | /                   /        k_A x k_B = sin(theta) j_A
-          O------> J           O------> i_A = I
-                               |\\
-                               | \\ theta
-                               |  \\
-                               v   * car at -R k_B
-                             -k_A
+    side view, I out of the page           track plane, i_A to the right, k_A up
+
+      k_A       K                                   k_A
+         \  phi |                                    |
+          \     |                                    |
+           \    |                                    O ------> i_A = I
+            \   |                                   /:
+             \  |                          -R k_B  / :
+              \ |                                 /  : theta
+               \|                               car  :
+                O ------> J                          -R k_A (bottom of the track)
+
+    K x k_A = sin(phi) I (phi > 0 tips k_A towards -J);  k_A x k_B = sin(theta) j_A
 
 Frames (rotation matrices, columns = the child's unit vectors in the parent)::
 
@@ -173,7 +175,10 @@ class ToyCar(Problem):
 
     # -- indirect form -------------------------------------------------------------------
     def lagrange(self) -> EquationSet:
-        """By hand: ``|v|^2 = R^2 (theta'^2 + phi'^2 cos^2 theta)``, height ``-R cos theta cos phi``."""
+        """By hand: ``v^2 = R^2 (theta'^2 + phi'^2 cos^2 theta)``; height ``-R cos theta cos phi``.
+
+        Nothing of the direct form (frames, points) is reused.
+        """
         lg = Lagrangian(coordinates=[theta, phi],
                         description="T and V of the car written by hand")
         lg.kinetic("T of car", m * R**2 * (_d(theta)**2 + _d(phi)**2 * sp.cos(theta)**2) / 2)

@@ -14,6 +14,7 @@ from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 m, l, g = sp.symbols("m l g", positive=True)
 th = coordinate("theta")
+r = coordinate("r")
 
 
 class Pendulum(Problem):
@@ -22,6 +23,23 @@ class Pendulum(Problem):
                   Parameter(g, ACCELERATION, sp.Rational(981, 100), (1, 20)))
     coordinates = (Coordinate(th, ANGLE, (-2.5, 2.5), (-3, 3)),)
     reactions = (Reaction("S", FORCE, "rod tension, towards the pivot"),)
+    extra_models = ("multiplier",)
+    extra_coordinates = (Coordinate(r, LENGTH, (0.2, 3), (-1, 1)),)
+
+    def coordinate_maps(self):
+        return {"multiplier": {th: th, r: l}}
+
+    def multiplier(self):
+        """Polar coordinates (theta, r) with the constraint l - r = 0; its multiplier is S.
+
+        Generalised force of the tension S (along -e_r) on r is -S; the constraint adds
+        lam * d(l - r)/dr = -lam, so lam = S.
+        """
+        lg = Lagrangian("multiplier", coordinates=[th, r])
+        lg.kinetic("T", m * (r.diff(t)**2 + r**2 * th.diff(t)**2) / 2)
+        lg.potential("gravity", -m * g * r * sp.cos(th))
+        lg.constraint("S", l - r)
+        return lg.equations()
 
     def newton_euler(self):
         O = Frame.ground()

@@ -1,0 +1,135 @@
+"""Toy car on a rotating track (problems/toy_car.py): three derivations, reaction, errata."""
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+
+from dualmech import t
+from dualmech.compare import compare, compare_models
+from dualmech.numeric import NumericModel
+from dualmech.testing import assert_reactions_consistent, assert_same_motion, points
+from problems.toy_car import R, ToyCar, coriolis_term, frames, g, m, phi, theta
+
+_EPS = np.finfo(float).eps
+problem = ToyCar()
+
+
+@pytest.fixture(scope="module")
+def comparison():
+    return compare(problem)
+
+
+def test_declaration_validates():
+    problem.validate()
+    assert problem.model_names == ["newton_euler", "lagrange", "angular_momentum"]
+
+
+def test_dimension_audit_is_clean():
+    assert problem.dimension_issues() == []
+
+
+def test_frames_follow_the_source_conventions():
+    f = frames()
+    # K x k_A = sin(phi) I and k_A x k_B = sin(theta) j_A
+    assert (f.O.z.cross(f.A.z) - sp.sin(phi) * f.O.x).is_zero()
+    assert (f.A.z.cross(f.B.z) - sp.sin(theta) * f.A.y).is_zero()
+
+
+def test_coriolis_term_is_minus_two_R_phidot_thetadot_sin_theta_j_B():
+    # hand: v_rel = d/dt|_A (-R k_B) = -R theta' i_B, w_A = phi' I, I x i_B = sin(theta) j_B
+    f = frames()
+    expected = -2 * R * phi.diff(t) * theta.diff(t) * sp.sin(theta) * f.B.y
+    diff = coriolis_term(f) - expected
+    assert all(sp.simplify(c) == 0 for c in diff.express(f.B).components)
+
+
+def test_mass_matrix_is_singular_only_where_cos_theta_vanishes():
+    det = problem.model("lagrange").mass_matrix().det()
+    assert sp.simplify(det - m**2 * R**4 * sp.cos(theta)**2) == 0
+    assert problem.singular == (sp.cos(theta),)
+    lo, hi = problem.coordinate_info(theta).range
+    assert -np.pi / 2 < lo < hi < np.pi / 2
+
+
+def test_small_oscillations_about_the_bottom_have_the_simple_pendulum_frequency():
+    # both angles swing the car like a simple pendulum of length R: omega^2 = g / R
+    M, C, K = problem.model("lagrange").linearize()
+    assert C == sp.zeros(2, 2)
+    assert M == m * R**2 * sp.eye(2) and K == m * g * R * sp.eye(2)
+
+
+@settings(max_examples=60)
+@given(points(problem))
+def test_the_three_derivations_give_the_same_accelerations(point):
+    assert_same_motion(problem, point)
+    assert_reactions_consistent(problem, point)
+
+
+@settings(max_examples=60)
+@given(points(problem))
+def test_recovered_reaction_is_the_printed_answer_10(point):
+    # (10): F_r = m (g cos(phi) cos(theta) + R phi'^2 cos^2(theta) + R theta'^2), hand-checked
+    nm = NumericModel(problem.model("newton_euler"), point.params)
+    A, b = nm.system(point.time, point.q, point.qd)
+    F_r = np.linalg.solve(A, b)[2]
+    p = {str(k): v for k, v in point.params.items()}
+    (th, ph), (thd, phd) = point.q, point.qd
+    hand = p["m"] * (p["g"] * np.cos(ph) * np.cos(th) + p["R"] * phd**2 * np.cos(th)**2
+                     + p["R"] * thd**2)
+    tol = 16 * _EPS * np.linalg.cond(A) * max(1.0, abs(hand), float(np.max(np.abs(b))))
+    assert abs(F_r - hand) <= tol
+
+
+def test_car_at_rest_at_the_bottom_feels_its_weight():
+    F = problem.model("newton_euler").reactions_solved()[sp.Symbol("F_r", real=True)]
+    rest = {theta.diff(t): 0, phi.diff(t): 0}
+    assert sp.simplify(F.subs(rest).subs({theta: 0, phi: 0}) - m * g) == 0
+
+
+def test_comparator_proves_every_derivation_equivalent(comparison):
+    assert comparison.equivalent is True
+    assert {p.candidate for p in comparison.pairs} == {"newton_euler", "angular_momentum"}
+    assert all(p.method == "exact" for p in comparison.pairs)
+    F = comparison.reactions["F_r"]
+    printed = m * (g * sp.cos(phi) * sp.cos(theta) + R * phi.diff(t)**2 * sp.cos(theta)**2
+                   + R * theta.diff(t)**2)
+    assert sp.simplify(F - printed) == 0
+
+
+@pytest.mark.parametrize("model", ["newton_euler", "angular_momentum"])
+@pytest.mark.parametrize("ingredient", ["gravity on car", "inertia of car"])
+def test_comparator_catches_a_flipped_ingredient(model, ingredient):
+    broken = problem.model(model).flipped(ingredient)
+    result = compare_models(problem.model("lagrange"), broken, explain=False)
+    assert not result.equivalent and result.method == "exact"
+
+
+# Each verdict derived by hand (see the module docstring of problems/toy_car.py).
+EXPECTED = {
+    "(1) i_B, j_B, k_B": "correct",          # columns of rot_x(phi) rot_y(theta)
+    "(1) rotation matrix": "correct",        # rot_y(theta)^T rot_x(phi)^T, rows i_B, j_B, k_B
+    "(2) angular velocities": "correct",     # phi' I and theta' j_A
+    "(2) initial rates": "correct",          # v = R (phi' cos(theta) j_B - theta' i_B)
+    "(3) linear momentum": "correct",        # m (phi' I + theta' j_B) x (-R k_B)
+    "(4) angular momentum h_O": "correct",   # (-R k_B) x p
+    "(5) hints": "correct",                  # I = cos(theta) i_B + sin(theta) k_B
+    "(5) Coriolis term": "correct",          # 2 phi' I x (-R theta' i_B)
+    "(8) acceleration": "correct",           # k_A = cos(theta) k_B - sin(theta) i_B
+    "(8) Newton's second law": "correct",
+    "(9) hints": "correct",
+    # + 2 phi' theta' sin(theta) j_B: the Coriolis term's sign flipped (it is -2, as in (8))
+    "(9) restated vector equation, j_B": "wrong",
+    "(9) equations of motion": "correct",    # i_B: theta equation, j_B: phi equation
+    "(10) reaction F_r": "correct",          # k_B: F_r - m g cos(phi) cos(theta) = m a . k_B
+    # (-R k_B) x (-m g K) = -m g R (sin(phi) i_B + cos(phi) sin(theta) j_B): R lost, angles swapped
+    "(B) torque of gravity about O": "wrong",
+    # d/dt h_O = m R^2 (...): printed with m R from the third line of the derivation on
+    "(B) rate of h_O": "wrong",
+    "(B) vector equation": "wrong",          # made of the two wrong sides above
+    "(B) equations of motion": "correct",    # the two errors cancel in the boxed results
+}
+
+
+def test_published_verdicts(comparison):
+    verdicts = {v.label: v.verdict for v in comparison.published}
+    assert verdicts == EXPECTED
