@@ -29,6 +29,7 @@ from typing import Sequence
 import sympy as sp
 
 from . import __version__
+from .equations import state_symbols, to_plain
 
 __all__ = ["main", "build_parser"]
 
@@ -126,6 +127,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     except UsageError as exc:
         print(f"dualmech {args.command}: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
+    except BrokenPipeError:  # e.g. `dualmech report | head`: stop quietly
+        import os
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return EXIT_OK
 
 
 # -- helpers ---------------------------------------------------------------------------
@@ -262,16 +267,29 @@ def _cmd_show(args) -> int:
         print(c)
         return EXIT_DISAGREE
     info = problem.reaction_info()
+    coords = problem.coordinate_functions + tuple(problem.model(problem.reference).coordinates)
     for rname, expr in c.reactions.items():
         where = info.get(str(rname))
         note = f"   [{where.direction}]" if where is not None and where.direction else ""
+        expr = _dotted(expr, coords)
         if args.latex:
             print(f"{sp.latex(sp.Symbol(str(rname)))} = {sp.latex(expr)}{note}")
         else:
-            print(f"{rname} ={note}")
+            print(f"{rname}{note} =")
             print(sp.pretty(expr, use_unicode=True))
         print()
     return EXIT_OK if c.equivalent else EXIT_DISAGREE
+
+
+def _dotted(expr, coordinates):
+    """``expr`` with ``q(t), q', q''`` as symbols ``q``, ``qdot``, ``qddot``, which sympy prints
+    with dots (``\\dot{q}`` in LaTeX)."""
+    rules = {}
+    for q in dict.fromkeys(coordinates):
+        s = state_symbols(q)
+        rules[s.qd] = sp.Symbol(f"{s.name}dot", real=True)
+        rules[s.qdd] = sp.Symbol(f"{s.name}ddot", real=True)
+    return to_plain(expr, tuple(dict.fromkeys(coordinates))).xreplace(rules)
 
 
 def _heading(text: str) -> str:
@@ -284,13 +302,22 @@ def _summary(results, markdown: bool = False) -> str:
     for problem, c in results:
         d = c.to_dict()
         published = d.get("published") or []
-        wrong = [p for p in published if isinstance(p, dict) and p.get("correct") is False]
+        verdicts = [p.get("verdict") for p in published if isinstance(p, dict)]
         rows.append((problem.name, _dof(problem), "yes" if c.equivalent else "NO",
                      d.get("method", "?"), f"{float(d.get('seconds', 0.0)):.2f}",
                      len(d.get("reactions") or {}),
-                     f"{len(published) - len(wrong)}/{len(published)}" if published else "-"))
+                     _verdict_counts(verdicts)))
     return _table(("problem", "dof", "equivalent", "method", "seconds", "reactions",
-                   "published ok"), rows, markdown=markdown)
+                   "published answers"), rows, markdown=markdown)
+
+
+def _verdict_counts(verdicts) -> str:
+    """``"14 correct, 4 wrong"``, or ``-`` for none."""
+    if not verdicts:
+        return "-"
+    order = dict.fromkeys(["correct", "wrong", "unchecked", *verdicts])
+    counts = {v: verdicts.count(v) for v in order if v in verdicts}
+    return ", ".join(f"{n} {v}" for v, n in counts.items())
 
 
 def _cmd_report(args) -> int:
@@ -331,6 +358,21 @@ def _markdown(results, charts, args) -> str:
     return "\n".join(lines)
 
 
+def _label(name, dimension) -> str:
+    """``name [unit]`` for a chart legend (SI names for the common dimensions)."""
+    if dimension is None:
+        return str(name)
+    from .dimensions import ANGLE, FORCE, LENGTH, TORQUE, format_dimension, reduce
+    if dimension == ANGLE:
+        return f"{name} [rad]"
+    units = {reduce(LENGTH): "m", reduce(FORCE): "N", reduce(TORQUE): "N m"}
+    try:
+        unit = units.get(reduce(dimension)) or format_dimension(dimension)
+    except TypeError:
+        return str(name)
+    return f"{name} [{unit}]"
+
+
 def _chart(problem, path: Path, duration: float) -> str | None:
     """Simulate ``problem`` and plot its coordinates and reactions; the error text if it fails."""
     try:
@@ -344,9 +386,12 @@ def _chart(problem, path: Path, duration: float) -> str | None:
     reactions = dict(getattr(traj, "reactions", {}) or {})
     panels = 2 if reactions else 1
     fig, axes = plt.subplots(panels, 1, figsize=(8, 3.2 * panels), sharex=True, squeeze=False)
+    coordinates = {c.name: c for c in problem.all_coordinates()}
+    reaction_info = problem.reaction_info()
     ax = axes[0, 0]
     for name, q in zip(traj.coordinate_names, traj.q):
-        ax.plot(traj.t, q, label=str(name))
+        info = coordinates.get(str(name))
+        ax.plot(traj.t, q, label=_label(name, info.dimension if info else None))
     ax.set_ylabel("coordinates")
     ax.legend(loc="best", fontsize="small")
     ax.set_title(f"{problem.name}: {problem.title}"
@@ -354,7 +399,8 @@ def _chart(problem, path: Path, duration: float) -> str | None:
     if reactions:
         ax = axes[1, 0]
         for name, values in reactions.items():
-            ax.plot(traj.t, values, label=str(name))
+            info = reaction_info.get(str(name))
+            ax.plot(traj.t, values, label=_label(name, info.dimension if info else None))
         ax.set_ylabel("reactions")
         ax.legend(loc="best", fontsize="small")
     axes[-1, 0].set_xlabel("t [s]")

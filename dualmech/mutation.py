@@ -172,7 +172,8 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
             # derives them independently
             others = {n: m for n, m in models.items() if n != mut.model}
             others[mut.model] = candidate
-            for pair in reaction_pairs(problem, others, points=points, seed=seed, context=ctx):
+            for pair in reaction_pairs(problem, others, points=points, seed=seed, context=ctx,
+                                       explain=False):
                 if mut.model in (pair.reference, pair.candidate) and not pair.equivalent:
                     named += [m.equation for m in pair.mismatches]
         if not named:

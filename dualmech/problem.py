@@ -212,12 +212,18 @@ class Problem:
         ref = self.model(self.reference)
         if set(eqs.coordinates) == set(ref.coordinates):
             return eqs
+        cache = self.__dict__.setdefault("_mapped", {})
+        hit = cache.get(id(eqs))
+        if hit is not None and hit[0] is eqs:
+            return hit[1]
         maps = self.coordinate_maps()
         if eqs.name not in maps:
             raise ProblemError(f"problem `{self.name}`: model `{eqs.name}` uses coordinates "
                                f"{list(eqs.coordinates)}, the reference uses "
                                f"{list(ref.coordinates)}; give the map in coordinate_maps().")
-        return eqs.change_coordinates(ref.coordinates, maps[eqs.name], name=eqs.name)
+        mapped = eqs.change_coordinates(ref.coordinates, maps[eqs.name], name=eqs.name)
+        cache[id(eqs)] = (eqs, mapped)  # keep eqs alive so its id is not reused
+        return mapped
 
     # -- validation --------------------------------------------------------------------
     def validate(self) -> None:

@@ -21,6 +21,8 @@ Geometry (the source's figure is missing; this is the one used here)
    =========+========+=========  ground (frictionless)
             q2: horizontal position of the wedge (of A)
 
+The equations hold while the block is on the incline (``0 <= q1 <= `` its length).
+
 Frames.  ``O`` inertial (``i`` right, ``j`` up), origin at the height of A.  ``W`` moves with
 the wedge: ``W = O`` translated by ``q2 i`` (no rotation).  ``S`` is fixed in the wedge,
 ``S = W`` rotated by ``-alpha`` about ``k``, so ``S.x`` runs down the slope and ``S.y`` is
@@ -57,6 +59,20 @@ Lagrangian (written independently)::
         q1:  m (q1'' + q2'' c) - m g s = 0
         q2:  (M + m) q2'' + m c q1''   = 0       (horizontal momentum is conserved)
 
+Lagrange with multipliers (the normal forces, independently of the free-body diagrams).
+Give each contact a separation coordinate: ``d1`` = the block's distance off the incline
+along ``S.y``, ``d2`` = the wedge's height off the ground.  Then the wedge is at
+``A = q2 i + d2 j`` and the block at ``A + q1 S.x + d1 S.y``::
+
+        T = M (q2'^2 + d2'^2)/2 + m |d/dt (A + q1 S.x + d1 S.y)|^2/2
+        V = M g d2 + m g (d2 - q1 s + d1 c)
+        constraints  d1 = 0  (multiplier N1),   d2 = 0  (multiplier N2)
+
+The virtual work of ``N1 S.y`` (on the block; ``-N1 S.y`` on the wedge) is ``N1 delta d1``
+and that of ``N2 j`` is ``N2 delta d2``, so with unit gradients the multipliers *are* the
+normal forces.  Mapped back (``d1 = d2 = 0``) the model must give the motion and the
+reactions of the direct form.
+
 Published answers.  The source prints the accelerations explicitly,
 ``q1'' = g s / (1 - m c^2/(M + m))`` and ``q2'' = -m/(M + m) q1'' c``.  They are transcribed
 as ``kind="expression"`` with the acceleration itself as reference: the printed formulas are
@@ -83,6 +99,7 @@ __all__ = ["BlockOnWedge", "PROBLEMS", "hand_reactions", "hand_accelerations"]
 
 m, M, g, alpha = sp.symbols("m M g alpha", positive=True)
 q1, q2 = coordinate("q1"), coordinate("q2")
+d1, d2 = coordinate("d1"), coordinate("d2")
 
 D = lambda q: q.diff(t)  # noqa: E731
 DD = lambda q: q.diff(t, 2)  # noqa: E731
@@ -101,6 +118,19 @@ def hand_accelerations() -> dict:
 def hand_reactions() -> dict:
     """``{"N1": ..., "N2": ...}`` solved by hand (see the module docstring)."""
     return {"N1": m * M * g * sp.cos(alpha) / _delta(), "N2": M * (M + m) * g / _delta()}
+
+
+def _tidy(eqs: EquationSet) -> EquationSet:
+    """``eqs`` with each ingredient expanded and trig-simplified.
+
+    The builder projects vectors through the frame chain and leaves ``sin^2 + cos^2`` in
+    place; simplifying ingredient by ingredient keeps the equations as readable as the hand
+    ones above (and the symbolic reaction solve cheap) without touching their content.
+    """
+    parts = tuple({key: sp.trigsimp(sp.expand(v)) for key, v in c.items()}
+                  for c in eqs.contributions)
+    return EquationSet(eqs.name, eqs.coordinates, tuple(sp.Add(*p.values()) for p in parts),
+                       eqs.unknowns, eqs.labels, parts, eqs.description)
 
 
 class _Scene:
@@ -135,10 +165,15 @@ class BlockOnWedge(Problem):
                    "distance of the block down the slope, relative to the wedge"),
         Coordinate(q2, LENGTH, (-1.0, 1.0), (-2.0, 1.0), "horizontal position of the wedge"),
     )
+    extra_coordinates = (
+        Coordinate(d1, LENGTH, (-0.1, 0.1), (-0.5, 0.5), "separation of block and incline"),
+        Coordinate(d2, LENGTH, (-0.1, 0.1), (-0.5, 0.5), "height of the wedge off the ground"),
+    )
     reactions = (
         Reaction("N1", FORCE, "wedge on block, along the incline's outward normal S.y"),
         Reaction("N2", FORCE, "ground on wedge, along j"),
     )
+    extra_models = ("lagrange_multipliers",)
 
     def newton_euler(self) -> EquationSet:
         """Block along the slope and its normal; wedge along ``i`` and ``j``."""
@@ -152,7 +187,7 @@ class BlockOnWedge(Problem):
         ne.linear_momentum(sc.block, S.y)
         ne.linear_momentum(sc.wedge, O.x)
         ne.linear_momentum(sc.wedge, O.y)
-        return ne.equations()
+        return _tidy(ne.equations())
 
     def lagrange(self) -> EquationSet:
         """``T`` and ``V`` as the source writes them."""
@@ -162,6 +197,22 @@ class BlockOnWedge(Problem):
         lg.kinetic("T of block", m * ((D(q2) + D(q1) * c)**2 + (D(q1) * s)**2) / 2)
         lg.potential("gravity", -m * g * q1 * s)
         return lg.equations()
+
+    def lagrange_multipliers(self) -> EquationSet:
+        """Separations ``d1``, ``d2`` held at zero by the multipliers ``N1``, ``N2``."""
+        s, c = sp.sin(alpha), sp.cos(alpha)
+        wedge = sp.Matrix([q2, d2])
+        block = wedge + q1 * sp.Matrix([c, -s]) + d1 * sp.Matrix([s, c])
+        lg = Lagrangian("lagrange_multipliers", coordinates=[q1, q2, d1, d2])
+        lg.kinetic("T of wedge", M * (D(wedge).T * D(wedge))[0, 0] / 2)
+        lg.kinetic("T of block", m * (D(block).T * D(block))[0, 0] / 2)
+        lg.potential("gravity", M * g * wedge[1] + m * g * block[1])
+        lg.constraint("N1", d1)
+        lg.constraint("N2", d2)
+        return _tidy(lg.equations())
+
+    def coordinate_maps(self) -> dict:
+        return {"lagrange_multipliers": {q1: q1, q2: q2, d1: 0, d2: 0}}
 
     def published(self) -> list[Published]:
         s, c = sp.sin(alpha), sp.cos(alpha)

@@ -7,18 +7,20 @@ Geometry (the source's figure is missing; this is the one used here)
 --------------------------------------------------------------------
 ::
 
-      wall                          j (up)
-      |/|        k                  ^
-      |/|---/\\/\\/\\---+---------+  |        x: cart position, spring unstretched at x = 0
-      |/|              |  cart m |  +--> i
-      |/|------[ c ----|         |
-      |/|              +----P----+     P: pivot on the cart, with the torsional spring k_t
-      |/|    =====bed===== :|\\ ==       (undeformed at theta = 0) and torsional dashpot c_t
-      |/|                  :| \\  l      massless rod P--B
-                           :|  \\
-                 -R.y = e_r :|th \\
-                           :|    o B  bob m0  ---> F0 sin(w t) i  (always horizontal)
-                                      R.x = e_th = (cos th, sin th)
+      wall
+      |/|        k         +--------------------+
+      |/|---/\\/\\/\\/\\-------|       cart m       |    x: cart position, spring unstretched
+      |/|                  |                    |       at x = 0
+      |/|------[ c --------|         P          |    P: pivot; the torsional spring k_t
+      |/|                  +--o------:\\------o--+       (undeformed at theta = 0) and the
+      |/|   ===bed (slotted)=============\\==========      torsional dashpot c_t act here
+                                     : \\   l  (massless rod P--B)
+                                     :th\\
+                                     :   o B   bob m0  ---> F0 sin(w t) i  (always horizontal)
+
+      j                 e_r  = -R.y = (sin th, -cos th)    from P to B
+      ^                 e_th =  R.x = (cos th,  sin th)    direction of increasing theta
+      +--> i            gravity -g j
 
 ``theta`` is measured from the downward vertical, counterclockwise about ``k`` (positive when
 the bob swings toward ``+i``).  The cart rides on the bed (normal force ``N``) and stays on it.
@@ -30,36 +32,39 @@ pivot, so ``e_r = -R.y = (sin th, -cos th)``.
 
 Bodies.  The cart translates: a particle ``m`` at ``P = x i``.  The bob is a point mass: a
 particle ``m0`` at ``B = P + l e_r``.  The rod is massless; it is kept as a body only because
-it carries loads: its balances say that the loads on it sum to zero.
+it carries loads, and its balances say that the loads on it sum to zero.
 
 Free-body diagrams (Newton--Euler)::
 
       bob m0:   -m0 g j,   F0 sin(wt) i,   T R.y (rod tension),   S R.x (rod, transverse)
-      rod:      -T R.y - S R.x at B,   Px i + Py j at P (cart on rod),
+      rod:      -T R.y - S R.x at B (bob on rod),   T R.y + S R.x at P (cart on rod),
                 torsional spring -k_t th k,  torsional dashpot -c_t th' k
-      cart m:   -m g j,  N j (bed),  -k x i,  -c x' i,  -Px i - Py j at P,
+      cart m:   -m g j,  N j (bed),  -k x i,  -c x' i,  -T R.y - S R.x at P (rod on cart),
                 +(k_t th + c_t th') k  (reacted by the distribution of N; the cart is a particle)
 
-The massless rod's moments about P sum to zero: ``l e_r x (-S e_th) - (k_t th + c_t th') k = 0``,
-so ``S = -(k_t th + c_t th')/l``.  The torsional elements reach the bob as a *transverse* force
-through the rod -- the rod is not a two-force member.  Its force balance gives
-``P = T R.y + S R.x``.  With ``F = F0 sin(wt)`` and ``a_B = x'' i + l th'' e_th - l th'^2 e_r``::
+The rod's force balance (massless: ``sum F = 0``) has been used in drawing it: the pivot force
+on the rod is the opposite of the bob's, so the cart receives the bob's pull unchanged and no
+new unknown appears.  The rod's moments about P must also sum to zero:
+``l e_r x (-S e_th) - (k_t th + c_t th') k = 0``, so ``S = -(k_t th + c_t th')/l``.  The
+torsional elements reach the bob as a *transverse* force through the rod -- the rod is not a
+two-force member.  With ``F = F0 sin(wt)`` and ``a_B = x'' i + l th'' e_th - l th'^2 e_r``::
 
       bob . e_th:  m0 (x'' cos th + l th'') = -m0 g sin th + F cos th + S
       bob . e_r :  m0 (x'' sin th - l th'^2) = m0 g cos th + F sin th - T
-      cart . i  :  m x'' = -k x - c x' - Px
-      cart . j  :  0 = N - m g - Py
+      cart . i  :  m x'' = -k x - c x' + T sin th - S cos th
+      cart . j  :  0 = N - m g - T cos th - S sin th
+      rod, tau_P . k:  -S l - k_t th - c_t th' = 0
 
 Reactions solved by hand (``x''``, ``th''`` the true accelerations)::
 
       S  = -(k_t th + c_t th') / l
       T  = m0 g cos th + F sin th + m0 l th'^2 - m0 x'' sin th
-      Px = -T sin th + S cos th,     Py = T cos th + S sin th
-      N  = m g + Py  = (m + m0) g + m0 l (th'' sin th + th'^2 cos th)   (whole system, j)
+      N  = m g + T cos th + S sin th
+         = (m + m0) g + m0 l (th'' sin th + th'^2 cos th)      (whole system along j)
 
 Lagrangian (written independently)::
 
-      T = m x'^2/2 + m0 ((x' + l th' cos th)^2 + (l th' sin th)^2)/2
+      T = m x'^2/2 + m0 (x'^2 + l^2 th'^2 + 2 x' l th' cos th)/2
       V = k x^2/2 + k_t th^2/2 + m0 g l (1 - cos th)
       R = c x'^2/2 + c_t th'^2/2
       Q = F (dx_B/dx, dx_B/dth) = (F0 sin wt, F0 sin wt l cos th)      (x_B = x + l sin th)
@@ -68,6 +73,22 @@ Lagrangian (written independently)::
       m0 l^2 th'' + c_t th' + k_t th + m0 g l sin th + m0 l x'' cos th = F0 sin wt l cos th
 
 (the second is ``l`` times the bob's ``e_th`` balance with ``S`` put in).
+
+Lagrange with multipliers (the reactions, independently of the free-body diagrams).  Free
+the three contacts: the cart may lift off the bed (height ``y``), the bob may slide along the
+rod (distance ``r`` from P) and turn about P apart from the rod (angle ``phi``; the rod keeps
+``theta`` and the torsional elements).  With ``B = P + r (sin phi, -cos phi)``, ``P = (x, y)``::
+
+      T = m (x'^2 + y'^2)/2 + m0 |B'|^2/2          (the rod is massless: no theta' in T)
+      V = k x^2/2 + k_t th^2/2 + m g y + m0 g (y - r cos phi),   R as above
+      Q_j = F i . dB/dq_j
+      constraints  y = 0 (multiplier N),  l - r = 0 (multiplier T),  l (phi - th) = 0 (S)
+
+Virtual work: ``N j`` on the cart does ``N delta y``; the tension ``-T e_r`` on the bob does
+``-T delta r``; the transverse pair (``S e_phi`` on the bob at distance ``l``, ``-S e_th`` on
+the rod) does ``S l (delta phi - delta th)``.  Those are the constraint gradients times the
+multipliers, so the multipliers are ``N``, ``T``, ``S``; the ``theta`` equation reads
+``k_t th + c_t th' = -S l``, the rod's moment balance again.
 
 Errata
 ------
@@ -92,11 +113,12 @@ from dualmech.dimensions import (ACCELERATION, ANGLE, DAMPING, FORCE, FREQUENCY,
 from dualmech.equations import EquationSet
 from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
 
-__all__ = ["CartPendulum", "PROBLEMS", "hand_reactions"]
+__all__ = ["CartPendulum", "PROBLEMS", "direct_form", "hand_reactions"]
 
 m, m0, l, k, c, k_t, c_t, g, F0, omega = sp.symbols("m m0 l k c k_t c_t g F0 omega",
                                                      positive=True)
 x, theta = coordinate("x"), coordinate("theta")
+y, r, phi = coordinate("y"), coordinate("r"), coordinate("phi")
 
 D = lambda q: q.diff(t)  # noqa: E731
 DD = lambda q: q.diff(t, 2)  # noqa: E731
@@ -108,10 +130,21 @@ def hand_reactions(xdd, thdd) -> dict:
     th, thd = theta, D(theta)
     S = -(k_t * th + c_t * thd) / l
     T = m0 * g * sp.cos(th) + drive * sp.sin(th) + m0 * l * thd**2 - m0 * xdd * sp.sin(th)
-    Px = -T * sp.sin(th) + S * sp.cos(th)
-    Py = T * sp.cos(th) + S * sp.sin(th)
     N = (m + m0) * g + m0 * l * (thdd * sp.sin(th) + thd**2 * sp.cos(th))
-    return {"S": S, "T": T, "P_x": Px, "P_y": Py, "N": N}
+    return {"N": N, "T": T, "S": S}
+
+
+def _tidy(eqs: EquationSet) -> EquationSet:
+    """``eqs`` with each ingredient expanded and trig-simplified.
+
+    The builder projects vectors through the frame chain and leaves ``sin^2 + cos^2`` in
+    place; simplifying ingredient by ingredient keeps the equations as readable as the hand
+    ones above (and the symbolic reaction solve cheap) without touching their content.
+    """
+    parts = tuple({key: sp.trigsimp(sp.expand(v)) for key, v in c.items()}
+                  for c in eqs.contributions)
+    return EquationSet(eqs.name, eqs.coordinates, tuple(sp.Add(*p.values()) for p in parts),
+                       eqs.unknowns, eqs.labels, parts, eqs.description)
 
 
 class _Scene:
@@ -126,6 +159,26 @@ class _Scene:
         self.bob = Particle("bob", m0, self.B)
         self.rod = RigidBody("rod", sp.Integer(0), self.P.locate("G", -l / 2 * self.R.y),
                              self.R, sp.zeros(3, 3))
+
+
+def direct_form() -> tuple[NewtonEuler, _Scene]:
+    """The free-body diagrams of cart, bob and rod, before any balance is written."""
+    sc = _Scene()
+    O, R = sc.O, sc.R
+    ne = NewtonEuler("newton_euler", coordinates=[x, theta], ground=O)
+    ne.gravity(-g * O.y)
+    ne.reaction("N", sc.cart, O.y)
+    ne.linear_spring("spring", sc.cart, k, x, O.x)
+    ne.linear_damper("dashpot", sc.cart, c, D(x), O.x)
+    ne.force("drive", sc.bob, drive * O.x)
+    for name, direction in (("T", R.y), ("S", R.x)):
+        f = ne.reaction(name, sc.bob, direction, against=sc.rod, against_at=sc.B) * direction
+        # massless rod, sum F = 0: the cart's pull at P is the opposite of the bob's at B
+        ne.force(f"reaction {name}", sc.rod, f, at=sc.P)
+        ne.force(f"reaction {name}", sc.cart, -f, at=sc.P)
+    ne.torsional_spring("torsional spring", sc.rod, k_t, theta, O.z, against=sc.cart)
+    ne.torsional_damper("torsional dashpot", sc.rod, c_t, D(theta), O.z, against=sc.cart)
+    return ne, sc
 
 
 class CartPendulum(Problem):
@@ -152,44 +205,36 @@ class CartPendulum(Problem):
         Coordinate(x, LENGTH, (-0.4, 0.5), (-1.5, 2.0), "cart position"),
         Coordinate(theta, ANGLE, (-1.2, 1.3), (-3.0, 2.5), "rod angle from the downward vertical"),
     )
+    extra_coordinates = (
+        Coordinate(y, LENGTH, (-0.05, 0.05), (-0.2, 0.2), "height of the cart off the bed"),
+        Coordinate(r, LENGTH, (0.2, 2.0), (-0.2, 0.2), "distance of the bob from the pivot"),
+        Coordinate(phi, ANGLE, (-1.2, 1.3), (-3.0, 2.5), "angle of P->B from the vertical"),
+    )
+    extra_models = ("lagrange_multipliers",)
     reactions = (
         Reaction("N", FORCE, "bed on cart, along j"),
         Reaction("T", FORCE, "rod tension on the bob, along R.y (toward the pivot)"),
         Reaction("S", FORCE, "rod on the bob, transverse, along R.x = e_theta"),
-        Reaction("P_x", FORCE, "cart on rod at the pivot, along i"),
-        Reaction("P_y", FORCE, "cart on rod at the pivot, along j"),
     )
 
     def newton_euler(self) -> EquationSet:
-        """Cart and bob along two directions each; the massless rod's three balances."""
-        sc = _Scene()
+        """Cart and bob along two directions each; the massless rod's moments about the pivot."""
+        ne, sc = direct_form()
         O, R = sc.O, sc.R
-        ne = NewtonEuler("newton_euler", coordinates=[x, theta], ground=O)
-        ne.gravity(-g * O.y)
-        ne.reaction("N", sc.cart, O.y)
-        ne.linear_spring("spring", sc.cart, k, x, O.x)
-        ne.linear_damper("dashpot", sc.cart, c, D(x), O.x)
-        ne.force("drive", sc.bob, drive * O.x)
-        ne.reaction("T", sc.bob, R.y, against=sc.rod, against_at=sc.B)
-        ne.reaction("S", sc.bob, R.x, against=sc.rod, against_at=sc.B)
-        ne.reaction_vector("P", sc.rod, O, "xy", at=sc.P, against=sc.cart, against_at=sc.P)
-        ne.torsional_spring("torsional spring", sc.rod, k_t, theta, O.z, against=sc.cart)
-        ne.torsional_damper("torsional dashpot", sc.rod, c_t, D(theta), O.z, against=sc.cart)
         ne.linear_momentum(sc.cart, O.x)
         ne.linear_momentum(sc.cart, O.y)
         ne.linear_momentum(sc.bob, R.x)
         ne.linear_momentum(sc.bob, R.y)
-        ne.linear_momentum(sc.rod, O.x)
-        ne.linear_momentum(sc.rod, O.y)
         ne.angular_momentum(sc.rod, O.z, about=sc.P)
-        return ne.equations()
+        return _tidy(ne.equations())
 
     def lagrange(self) -> EquationSet:
         """``T``, ``V``, ``R`` and the virtual work of the drive, as the source writes them."""
         lg = Lagrangian("lagrange", coordinates=[x, theta])
         lg.kinetic("T of cart", m * D(x)**2 / 2)
-        lg.kinetic("T of bob", m0 * ((D(x) + l * D(theta) * sp.cos(theta))**2
-                                     + (l * D(theta) * sp.sin(theta))**2) / 2)
+        # the source's expanded form (sin^2 + cos^2 = 1 already used)
+        lg.kinetic("T of bob", m0 * (D(x)**2 + (l * D(theta))**2
+                                     + 2 * D(x) * l * D(theta) * sp.cos(theta)) / 2)
         lg.potential("spring", k * x**2 / 2)
         lg.potential("torsional spring", k_t * theta**2 / 2)
         lg.potential("gravity", m0 * g * l * (1 - sp.cos(theta)))
@@ -199,6 +244,27 @@ class CartPendulum(Problem):
         force = sp.Matrix([drive, 0])
         lg.generalized_force("drive", [force.dot(bob.diff(q)) for q in (x, theta)])
         return lg.equations()
+
+    def lagrange_multipliers(self) -> EquationSet:
+        """Contacts freed (``y``, ``r``, ``phi``) and closed again by the multipliers N, T, S."""
+        lg = Lagrangian("lagrange_multipliers", coordinates=[x, theta, y, r, phi])
+        bob = sp.Matrix([x + r * sp.sin(phi), y - r * sp.cos(phi)])
+        lg.kinetic("T of cart", m * (D(x)**2 + D(y)**2) / 2)
+        lg.kinetic("T of bob", m0 * (D(bob).T * D(bob))[0, 0] / 2)
+        lg.potential("spring", k * x**2 / 2)
+        lg.potential("torsional spring", k_t * theta**2 / 2)
+        lg.potential("gravity", m * g * y + m0 * g * bob[1])
+        lg.dissipation("dashpot", c * D(x)**2 / 2)
+        lg.dissipation("torsional dashpot", c_t * D(theta)**2 / 2)
+        force = sp.Matrix([drive, 0])
+        lg.generalized_force("drive", [force.dot(bob.diff(q)) for q in lg.coordinates])
+        lg.constraint("N", y)
+        lg.constraint("T", l - r)
+        lg.constraint("S", l * (phi - theta))
+        return _tidy(lg.equations())
+
+    def coordinate_maps(self) -> dict:
+        return {"lagrange_multipliers": {x: x, theta: theta, y: 0, r: l, phi: theta}}
 
     def published(self) -> list[Published]:
         sc = _Scene()

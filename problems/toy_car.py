@@ -47,6 +47,17 @@ Lagrangian, written independently::
 
     T = m R^2 (theta'^2 + phi'^2 cos^2(theta)) / 2,     V = -m g R cos(theta) cos(phi)
 
+The track's force once more, independently: free the car from the track with a third
+coordinate ``rho`` (distance from O, ``r_car = -rho k_B``) and the constraint ``R - rho = 0``
+with multiplier ``F_r``::
+
+    T = m (rho'^2 + rho^2 (theta'^2 + phi'^2 cos^2(theta))) / 2,  V = -m g rho cos(theta) cos(phi)
+    rho:  m rho'' - m rho (theta'^2 + phi'^2 cos^2(theta)) - m g cos(theta) cos(phi) + F_r = 0
+
+(``F_r k_B`` does virtual work ``-F_r d(rho)``; the constraint contributes
+``F_r d(R - rho)/d(rho) = -F_r``), so on the track ``F_r = m (g cos(theta) cos(phi)
++ R phi'^2 cos^2(theta) + R theta'^2)``, as the free-body diagram gives.
+
 The mass matrix ``diag(m R^2, m R^2 cos^2 theta)`` is singular at ``cos(theta) = 0`` (car at
 the track's pivot axis: ``phi`` no longer moves it).
 
@@ -75,10 +86,11 @@ from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
 from dualmech.equations import EquationSet
 from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
 
-__all__ = ["ToyCar", "PROBLEMS", "frames", "coriolis_term", "m", "R", "g", "theta", "phi"]
+__all__ = ["ToyCar", "PROBLEMS", "frames", "coriolis_term", "m", "R", "g", "theta", "phi", "rho"]
 
 m, R, g = sp.symbols("m R g", positive=True)
 theta, phi = coordinate("theta"), coordinate("phi")
+rho = coordinate("rho")  # distance of the car from O, only in the multiplier model
 F_r = sp.Symbol("F_r", real=True)
 
 _d = lambda q, n=1: q.diff(t, n)  # noqa: E731  (q', q'')
@@ -141,9 +153,15 @@ class ToyCar(Problem):
         Coordinate(theta, ANGLE, (-1.2, 1.2), (-3.0, 3.0), "car angle from the track's bottom"),
         Coordinate(phi, ANGLE, (-3.0, 3.0), (-3.0, 3.0), "track tilt from the vertical"),
     )
+    extra_coordinates = (
+        Coordinate(rho, LENGTH, (0.05, 5.0), (-1.0, 1.0), "distance of the car from O"),
+    )
     reactions = (Reaction("F_r", FORCE, "along k_B, track on car"),)
     singular = (sp.cos(theta),)
-    extra_models = ("angular_momentum",)
+    extra_models = ("angular_momentum", "multiplier")
+
+    def coordinate_maps(self) -> dict:
+        return {"multiplier": {theta: theta, phi: phi, rho: R}}
 
     # -- direct form: sum F = m a (questions 7-10) --------------------------------------
     def newton_euler(self) -> EquationSet:
@@ -185,11 +203,25 @@ class ToyCar(Problem):
         lg.potential("gravity", -m * g * R * sp.cos(theta) * sp.cos(phi))
         return lg.equations()
 
+    def multiplier(self) -> EquationSet:
+        """Lagrange in ``(theta, phi, rho)`` with the track as the constraint ``R - rho = 0``.
+
+        The multiplier is the track's force ``F_r`` (unit gradient along ``-k_B``, the
+        direction in which ``rho`` grows), recovered independently of the free-body diagram.
+        """
+        lg = Lagrangian("multiplier", coordinates=[theta, phi, rho],
+                        description="the car off the track, held on it by a multiplier")
+        lg.kinetic("T of car", m * (_d(rho)**2
+                                    + rho**2 * (_d(theta)**2 + _d(phi)**2 * sp.cos(theta)**2)) / 2)
+        lg.potential("gravity", -m * g * rho * sp.cos(theta) * sp.cos(phi))
+        lg.constraint("F_r", R - rho)
+        return lg.equations()
+
     # -- the source's answers -------------------------------------------------------------
     def published(self) -> list[Published]:
         f = frames()
         O, A, B = f.O, f.A, f.B
-        I, J, K = O.x, O.y, O.z
+        I, K = O.x, O.z
         iB, jB, kB, kA = B.x, B.y, B.z, A.z
         st, ct, sp_, cp = sp.sin(theta), sp.cos(theta), sp.sin(phi), sp.cos(phi)
         th1, ph1, th2, ph2 = _d(theta), _d(phi), _d(theta, 2), _d(phi, 2)

@@ -1,11 +1,13 @@
-"""Toy car on a rotating track (problems/toy_car.py): three derivations, reaction, errata."""
+"""Toy car on a rotating track (problems/toy_car.py): four derivations, reaction, errata."""
+import dataclasses
+
 import numpy as np
 import pytest
 import sympy as sp
 from hypothesis import given, settings
 
 from dualmech import t
-from dualmech.compare import compare, compare_models
+from dualmech.compare import compare, compare_models, reaction_pairs
 from dualmech.numeric import NumericModel
 from dualmech.testing import assert_reactions_consistent, assert_same_motion, points
 from problems.toy_car import R, ToyCar, coriolis_term, frames, g, m, phi, theta
@@ -21,7 +23,7 @@ def comparison():
 
 def test_declaration_validates():
     problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange", "angular_momentum"]
+    assert problem.model_names == ["newton_euler", "lagrange", "angular_momentum", "multiplier"]
 
 
 def test_dimension_audit_is_clean():
@@ -88,7 +90,12 @@ def test_car_at_rest_at_the_bottom_feels_its_weight():
 
 def test_comparator_proves_every_derivation_equivalent(comparison):
     assert comparison.equivalent is True
-    assert {p.candidate for p in comparison.pairs} == {"newton_euler", "angular_momentum"}
+    # motion: every model against Lagrange; reactions: F_r of the free-body diagram against
+    # the multiplier of the constraint R - rho = 0
+    assert {(p.reference, p.candidate) for p in comparison.pairs} >= {
+        ("lagrange", "newton_euler"), ("lagrange", "angular_momentum"),
+        ("lagrange", "multiplier")}
+    assert len(comparison.pairs) == 4
     assert all(p.method == "exact" for p in comparison.pairs)
     F = comparison.reactions["F_r"]
     printed = m * (g * sp.cos(phi) * sp.cos(theta) + R * phi.diff(t)**2 * sp.cos(theta)**2
@@ -102,6 +109,29 @@ def test_comparator_catches_a_flipped_ingredient(model, ingredient):
     broken = problem.model(model).flipped(ingredient)
     result = compare_models(problem.model("lagrange"), broken, explain=False)
     assert not result.equivalent and result.method == "exact"
+
+
+def test_multiplier_of_the_track_constraint_is_the_direct_reaction():
+    # rho: m rho'' - m rho (theta'^2 + phi'^2 cos^2) - m g cos(theta) cos(phi) + F_r = 0 at rho = R
+    (pair,) = reaction_pairs(problem)
+    assert {pair.reference, pair.candidate} == {"newton_euler", "multiplier"}
+    assert pair.equivalent and pair.method == "exact"
+
+
+@pytest.mark.parametrize("broken", ["newton_euler", "multiplier"])
+def test_a_break_that_leaves_the_motion_alone_shows_in_the_reaction(broken):
+    # the car's motion does not depend on m: doubling m in the free-body diagram only, or
+    # writing the constraint as rho - R (flipping F_r), changes F_r and nothing else
+    models = dict(problem.models())
+    if broken == "newton_euler":
+        models[broken] = models[broken].substitute({m: 2 * m})
+    else:  # keep the name: it selects the coordinate map rho -> R
+        models[broken] = dataclasses.replace(models[broken].flipped("constraint F_r"),
+                                             name=broken)
+    moved = problem.in_reference_coordinates(models[broken])
+    assert compare_models(problem.model("lagrange"), moved, explain=False).equivalent
+    (pair,) = reaction_pairs(problem, models)
+    assert not pair.equivalent
 
 
 # Each verdict derived by hand (see the module docstring of problems/toy_car.py).

@@ -1,0 +1,55 @@
+"""Speed of the exact rational-point test against proving equality with sympy's simplify.
+
+For every problem and every model pair, time
+  * the exact test (``compare_models``, 8 random rational points), and
+  * the textbook route: solve both models symbolically for q'' and ``simplify`` the difference,
+and print the ratio measured in the same run.  A script, not a test: run
+``python bench/exact_vs_simplify.py`` (``--quick`` skips the slow simplify on big models).
+"""
+from __future__ import annotations
+
+import argparse
+import time
+
+import sympy as sp
+
+from dualmech.compare import compare_models
+from problems import all_problems
+
+
+def _simplify_route(ref, cand, limit: float) -> tuple[float, bool]:
+    t0 = time.perf_counter()
+    a = ref.accelerations_solved()
+    b = cand.accelerations_solved() if cand.is_square else None
+    if b is None:
+        return float("nan"), False
+    ok = all(sp.simplify(a[k] - b[k]) == 0 for k in a)
+    return time.perf_counter() - t0, ok
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="exact test only")
+    args = parser.parse_args()
+    print(f"{'problem':20s} {'pair':34s} {'exact [s]':>10s} {'simplify [s]':>13s} {'ratio':>8s}")
+    for p in all_problems():
+        ref = p.model(p.reference)
+        for name, m in p.models().items():
+            if name == p.reference:
+                continue
+            cand = p.in_reference_coordinates(m)
+            t0 = time.perf_counter()
+            r = compare_models(ref, cand, context=None)
+            t_exact = time.perf_counter() - t0
+            if args.quick:
+                t_simp, ok = float("nan"), True
+            else:
+                t_simp, ok = _simplify_route(ref, cand, 60.0)
+            ratio = t_simp / t_exact if t_simp == t_simp else float("nan")
+            flag = "" if ok == r.equivalent else "  (verdicts differ!)"
+            print(f"{p.name:20s} {name + ' vs ' + p.reference:34s} {t_exact:10.3f} "
+                  f"{t_simp:13.3f} {ratio:8.1f}{flag}")
+
+
+if __name__ == "__main__":
+    main()

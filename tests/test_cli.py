@@ -1,0 +1,286 @@
+"""The ``dualmech`` command line: list, check, show, report, exit statuses and JSON schema.
+
+Most tests run on two tiny problems defined here -- a mass on a spring resting on a floor,
+written correctly twice, and the same with a wrong Lagrangian -- swapped into the catalogue
+with ``monkeypatch``, so they are fast and do not depend on the real problems.  A few run on
+the real catalogue.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+import sympy as sp
+
+import problems
+from dualmech import coordinate, t
+from dualmech.cli import main
+from dualmech.dimensions import ACCELERATION, FORCE, LENGTH, MASS, STIFFNESS
+from dualmech.equations import EquationSet
+from dualmech.lagrange import Lagrangian
+from dualmech.problem import Coordinate, Parameter, Problem, Reaction
+
+m, k, g = sp.symbols("m k g", positive=True)
+x = coordinate("x")
+N = sp.Symbol("N", real=True)
+
+#: keys every ``check --json`` object carries (the lead's Comparison.to_dict)
+SCHEMA = {"name", "title", "source", "coordinates", "parameters", "equivalent", "method",
+          "seconds", "eom", "accelerations", "reactions", "reaction_directions", "published",
+          "mismatches"}
+
+
+class SpringOnFloor(Problem):
+    """A block on a frictionless floor, tied to a wall by a spring.
+
+    ::
+
+        wall |--/\\/\\/--[ m ]  -> x      N (floor on block) up, m g down
+    """
+
+    name, title, source = "spring_on_floor", "Block on a spring, on a floor", "test: by hand"
+    parameters = (Parameter(m, MASS, 2.0, (0.1, 10.0)), Parameter(k, STIFFNESS, 50.0, (1, 500)),
+                  Parameter(g, ACCELERATION, 9.81, (1, 20)))
+    coordinates = (Coordinate(x, LENGTH, (-0.5, 0.5)),)
+    reactions = (Reaction("N", FORCE, "floor on block, up"),)
+
+    def newton_euler(self) -> EquationSet:
+        return EquationSet("newton_euler", (x,), (-k * x - m * x.diff(t, 2), N - m * g),
+                           unknowns=(N,), labels=("sum F . x", "sum F . y"))
+
+    def lagrange(self) -> EquationSet:
+        lg = Lagrangian(coordinates=[x])
+        lg.kinetic("T", m * x.diff(t)**2 / 2)
+        lg.potential("V", self.stiffness_factor * k * x**2 / 2)
+        return lg.equations()
+
+    stiffness_factor = 1
+
+
+class WrongSpring(SpringOnFloor):
+    """The same block with the classic slip: V = k x^2 instead of k x^2 / 2."""
+
+    name, title = "wrong_spring", "Block on a spring, Lagrangian with V = k x^2"
+    stiffness_factor = 2
+
+
+@pytest.fixture
+def tiny_catalogue(monkeypatch):
+    """Replace the catalogue by the two tiny problems."""
+    catalogue = {"spring_on_floor": SpringOnFloor, "wrong_spring": WrongSpring}
+
+    def all_problems():
+        return [cls() for cls in catalogue.values()]
+
+    def get(name):
+        if name not in catalogue:
+            raise KeyError(f"no problem named {name!r}; known problems: {', '.join(catalogue)}.")
+        return catalogue[name]()
+
+    monkeypatch.setattr(problems, "all_problems", all_problems)
+    monkeypatch.setattr(problems, "get", get)
+    return catalogue
+
+
+def run(capsys, *argv):
+    """``main(argv)`` -> (exit status, stdout, stderr)."""
+    status = main(list(argv))
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+# -- help and usage ---------------------------------------------------------------------------
+def test_help_lists_the_commands(capsys):
+    status, out, _ = run(capsys, "--help")
+    assert status == 0
+    for command in ("list", "check", "show", "report"):
+        assert command in out
+
+
+@pytest.mark.parametrize("argv", [[], ["frobnicate"], ["check", "--points", "0"],
+                                  ["show"]], ids=["nothing", "unknown-command", "zero-points",
+                                                  "show-without-name"])
+def test_usage_errors_exit_2(capsys, argv):
+    status, _, err = run(capsys, *argv)
+    assert status == 2
+    assert "usage:" in err
+
+
+def test_check_needs_names_or_all(capsys, tiny_catalogue):
+    status, _, err = run(capsys, "check")
+    assert status == 2
+    assert "spring_on_floor" in err  # the message lists the known problems
+    status, _, err = run(capsys, "check", "--all", "spring_on_floor")
+    assert status == 2
+    assert "not both" in err
+
+
+def test_unknown_problem_exits_2_and_lists_the_known_names(capsys, tiny_catalogue):
+    status, out, err = run(capsys, "check", "no_such_problem")
+    assert status == 2
+    assert out == ""
+    assert "no_such_problem" in err
+    assert "spring_on_floor" in err and "wrong_spring" in err
+
+
+# -- list ---------------------------------------------------------------------------------------
+def test_list_shows_name_title_source_and_degrees_of_freedom(capsys, tiny_catalogue):
+    status, out, _ = run(capsys, "list")
+    assert status == 0
+    header, rule, *rows = out.strip().splitlines()
+    assert header.split() == ["name", "title", "source", "dof"]
+    assert len(rows) == 2
+    assert rows[0].startswith("spring_on_floor")
+    assert "Block on a spring, on a floor" in rows[0] and "test: by hand" in rows[0]
+    assert rows[0].split()[-1] == "1"
+
+
+def test_list_shows_every_problem_of_the_real_catalogue(capsys):
+    status, out, _ = run(capsys, "list")
+    assert status == 0
+    for p in problems.all_problems():
+        assert p.name in out
+        assert p.title in out
+
+
+# -- check ---------------------------------------------------------------------------------------
+def test_check_of_agreeing_models_exits_0(capsys, tiny_catalogue):
+    status, out, _ = run(capsys, "check", "spring_on_floor")
+    assert status == 0
+    assert "spring_on_floor" in out
+
+
+def test_check_of_disagreeing_models_exits_1(capsys, tiny_catalogue):
+    status, out, _ = run(capsys, "check", "wrong_spring")
+    assert status == 1
+    assert "wrong_spring" in out
+
+
+def test_check_all_exits_1_when_any_pair_disagrees(capsys, tiny_catalogue):
+    status, out, _ = run(capsys, "check", "--all")
+    assert status == 1
+    assert "spring_on_floor" in out and "wrong_spring" in out
+
+
+def test_check_json_for_one_problem_is_one_object_with_the_schema(capsys, tiny_catalogue):
+    status, out, _ = run(capsys, "check", "spring_on_floor", "--json")
+    assert status == 0
+    d = json.loads(out)
+    assert isinstance(d, dict)
+    assert SCHEMA <= set(d)
+    assert d["name"] == "spring_on_floor"
+    assert d["equivalent"] is True
+    assert d["coordinates"] == ["x"]
+    assert set(d["reactions"]) == {"N"}
+    assert sp.sympify(d["reactions"]["N"]) == sp.sympify("g*m")
+    assert d["mismatches"] == []
+
+
+def test_check_json_for_several_problems_is_a_list(capsys, tiny_catalogue):
+    status, out, _ = run(capsys, "check", "--all", "--json", "--points", "3", "--seed", "7")
+    assert status == 1
+    data = json.loads(out)
+    assert [d["name"] for d in data] == ["spring_on_floor", "wrong_spring"]
+    assert [d["equivalent"] for d in data] == [True, False]
+    assert all(SCHEMA <= set(d) for d in data)
+    assert data[1]["mismatches"], "a disagreement must say where"
+
+
+def test_check_of_a_problem_that_cannot_be_built_exits_1(capsys, tiny_catalogue):
+    class Broken(SpringOnFloor):
+        name = "broken"
+
+        def lagrange(self):
+            raise ValueError("this model is broken on purpose")
+
+    tiny_catalogue["broken"] = Broken
+    status, out, _ = run(capsys, "check", "broken", "--json")
+    assert status == 1
+    d = json.loads(out)
+    assert d["equivalent"] is False and "broken on purpose" in d["error"]
+
+
+# -- show ---------------------------------------------------------------------------------------
+def test_show_prints_every_model_then_the_reactions(capsys, tiny_catalogue):
+    status, out, _ = run(capsys, "show", "spring_on_floor")
+    assert status == 0
+    assert out.index("newton_euler") < out.index("lagrange") < out.index("reactions")
+    assert "sum F . x" in out
+
+
+def test_show_latex(capsys, tiny_catalogue):
+    status, out, _ = run(capsys, "show", "spring_on_floor", "--latex")
+    assert status == 0
+    assert r"\frac{d^{2}}{d t^{2}} x{\left(t \right)}" in out
+    assert "N = g m" in out
+
+
+def test_show_one_model(capsys, tiny_catalogue):
+    status, out, _ = run(capsys, "show", "spring_on_floor", "--model", "lagrange")
+    assert status == 0
+    assert "lagrange" in out and "newton_euler" not in out
+
+
+def test_show_unknown_model_exits_2_and_lists_the_models(capsys, tiny_catalogue):
+    status, _, err = run(capsys, "show", "spring_on_floor", "--model", "kane")
+    assert status == 2
+    assert "newton_euler" in err and "lagrange" in err
+
+
+def test_show_latex_of_a_real_problem_uses_dotted_rates(capsys):
+    name = "toy_car"
+    status, out, _ = run(capsys, "show", name, "--latex")
+    assert status == 0
+    assert r"\dot{\theta}" in out  # in the recovered reaction F_r
+
+
+# -- report ---------------------------------------------------------------------------------------
+def test_report_writes_markdown_json_and_charts(capsys, tiny_catalogue, tmp_path):
+    out_dir = tmp_path / "out"
+    status, out, _ = run(capsys, "report", "--out", str(out_dir), "--points", "3",
+                         "--duration", "0.5")
+    assert status == 1  # wrong_spring disagrees
+    assert "spring_on_floor" in out and "wrong_spring" in out
+    report = (out_dir / "report.md").read_text()
+    assert report.startswith("# dualmech report")
+    assert "![spring_on_floor" in report
+    for name in ("spring_on_floor", "wrong_spring"):
+        d = json.loads((out_dir / f"{name}.json").read_text())
+        assert SCHEMA <= set(d)
+        png = (out_dir / f"{name}_reactions.png").read_bytes()
+        assert png.startswith(b"\x89PNG")
+
+
+# -- the installed entry points ------------------------------------------------------------------
+def test_python_dash_m_dualmech_runs(tmp_path):
+    done = subprocess.run([sys.executable, "-m", "dualmech", "check", "no_such_problem"],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 2
+    assert "known problems" in done.stderr
+
+
+# -- the README stays true ---------------------------------------------------------------------
+README = Path(__file__).resolve().parent.parent / "README.md"
+
+
+def test_readme_python_example_runs_and_prints_what_it_says():
+    code = re.search(r"```python\n(.*?)```", README.read_text(), re.S).group(1)
+    printed = io.StringIO()
+    with contextlib.redirect_stdout(printed):
+        exec(compile(code, "README.md", "exec"), {"__name__": "readme_example"})
+    claimed = [line.split("# ", 1)[1].strip() for line in code.splitlines()
+               if line.startswith("print(") and "# " in line]
+    assert printed.getvalue().splitlines() == claimed
+
+
+def test_ci_runs_the_readme_test_command():
+    command = "python -m pytest -n 2 -q"
+    assert command in README.read_text()
+    ci = (README.parent / ".ci" / "run").read_text().strip().splitlines()
+    assert ci[-1] == command
