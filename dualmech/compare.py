@@ -513,9 +513,16 @@ def compare(problem, points: int = 8, seed: int = 0) -> Comparison:
         [PublishedVerdict(p.label, p.where, "unchecked",
                           "the derivations disagree; fix them before judging printed answers",
                           "none") for p in problem.published()]
+    issues = list(problem.dimension_issues())
+    declared = problem.reaction_info()
+    dims = problem.dimensions()
+    for name, expr in reactions.items():
+        if name in declared:
+            for issue in audit(expr, dims, declared[name].dimension):
+                issues.append(f"reaction {name}: {issue}")
     return Comparison(problem, pairs, published, accelerations, reactions,
                       {r.name: r.direction for r in problem.reactions},
-                      problem.dimension_issues(), time.perf_counter() - t0, points)
+                      issues, time.perf_counter() - t0, points)
 
 
 def reaction_pairs(problem, models: dict | None = None, *, points: int = 8, seed: int = 0,

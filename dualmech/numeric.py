@@ -26,7 +26,8 @@ from scipy.integrate import solve_ivp
 from .equations import EquationSet, ModelError, state_symbols, to_plain
 from .kinematics import t
 
-__all__ = ["NumericModel", "Trajectory", "SingularityError", "simulate"]
+__all__ = ["NumericModel", "Trajectory", "SingularityError", "simulate", "reactions_at",
+           "reactions_along"]
 
 
 class SingularityError(ModelError):
@@ -178,6 +179,30 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
                       message=sol.message)
     traj.reactions = reactions_along(problem, traj, values)
     return traj
+
+
+def reactions_at(problem, q: Sequence[float], qd: Sequence[float], time: float = 0.0,
+                 params: Mapping | None = None) -> dict:
+    """Reactions ``{name: value}`` of the direct model(s) at one state (reference coordinates).
+
+    The accelerations are the reference model's; each direct model's reactions are then its
+    solution of ``A [q''; lambda] = b``.
+    """
+    values = problem.defaults()
+    values.update({sp.sympify(k): v for k, v in (params or {}).items()})
+    ref = problem.model(problem.reference)
+    qdd = NumericModel(ref, values).accelerations(time, q, qd)
+    out: dict = {}
+    for m in problem.models().values():
+        if not m.unknowns:
+            continue
+        m = problem.in_reference_coordinates(m)
+        A, b = NumericModel(m, values).system(time, q, qd)
+        n = m.n
+        lam = np.linalg.lstsq(A[:, n:], b - A[:, :n] @ qdd, rcond=None)[0]
+        for u, v in zip(m.unknowns, lam):
+            out.setdefault(u.name, float(v))
+    return out
 
 
 def reactions_along(problem, traj: Trajectory, values: Mapping) -> dict:

@@ -138,3 +138,15 @@ def test_reaction_only_error_is_caught_by_the_multiplier_model():
     assert compare_models(ref, wrong).equivalent          # the motion cannot see it
     r = compare_reactions(ref, multiplier, wrong, [S])
     assert not r.equivalent and r.mismatches[0].equation == "reaction S"
+
+
+def test_reaction_with_the_wrong_dimension_is_reported():
+    from dualmech.dimensions import TORQUE
+    from dualmech.problem import Reaction
+
+    class Mislabelled(Pendulum):
+        reactions = (Reaction("S", TORQUE, "declared as a torque by mistake"),)
+
+    c_ = compare(Mislabelled())
+    assert any(issue.startswith("reaction S:") for issue in c_.dimension_issues)
+    assert c_.equivalent  # the motion is still right; the audit is what flags it

@@ -45,3 +45,10 @@ def test_singular_mass_matrix_is_detected():
     nm = NumericModel(eqs, {})
     with pytest.raises(SingularityError, match="singular at t=0, theta=1.5708"):
         nm.solve(0.0, [np.pi / 2], [0.0])
+
+
+def test_reactions_at_one_state_match_the_hand_formula():
+    from dualmech.numeric import reactions_at
+    # S = m g cos(theta) + m l theta'^2 with the defaults m = l = 1, g = 9.81
+    out = reactions_at(Pendulum(), [0.7], [1.3], params={m: 2.0})
+    assert out["S"] == pytest.approx(2.0 * 9.81 * np.cos(0.7) + 2.0 * 1.3**2, rel=1e-12)
