@@ -164,7 +164,10 @@ class _Walker:
         raise TypeError(f"cannot find the dimension of {e!r}")
 
     def _add(self, e, expected) -> Dims:
-        terms = [(a, self(a)) for a in sp.Add.make_args(e)]
+        # zero has every dimension: it never conflicts (a reaction that vanishes, say)
+        terms = [(a, self(a)) for a in sp.Add.make_args(e) if a != 0]
+        if not terms:
+            return expected if expected is not None else ()
         counts = Counter(d for _, d in terms)
         if expected is None:
             ranked = counts.most_common()

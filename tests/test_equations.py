@@ -85,3 +85,10 @@ def test_dimension_audit_of_sums_and_functions():
     dims = {m: MASS, k: STIFFNESS, q1: MASS}
     issues = audit(sp.sin(m) + k, dims)
     assert any("argument `m` of sin" in str(i) for i in issues)
+
+
+def test_zero_has_every_dimension():
+    from dualmech.dimensions import FORCE
+    assert audit(sp.Integer(0), {}, FORCE) == []
+    assert audit(k * q1 + 0, {k: STIFFNESS, q1: MASS}) == []
+    assert audit(k + 1, {k: STIFFNESS})  # a nonzero number is dimensionless
