@@ -24,7 +24,7 @@ Matrix([
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Iterable, Sequence
+from typing import Iterable
 
 import sympy as sp
 

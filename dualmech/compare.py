@@ -474,7 +474,6 @@ def _symbolic_residual(reference: EquationSet, candidate: EquationSet, i: int):
     if A_R.rows > 6 or sp.count_ops(A_R) > 3000:
         return None
     coords = reference.coordinates
-    n = reference.n
     Mrow = candidate.mass_matrix()[i, :]
     target = sp.Matrix([list(Mrow) + [0] * len(reference.unknowns)]).T
     try:

@@ -220,20 +220,12 @@ class NewtonEuler:
         """Add an equation given directly as ``{ingredient: expression}`` (sum = 0)."""
         self._equations.append((label, dict(parts)))
 
-    def equations(self, simplify: bool = False) -> EquationSet:
-        """The :class:`EquationSet`; ``simplify=True`` trig-simplifies each ingredient.
-
-        Components differentiated through a chain of frames keep identities such as
-        ``sin^2 + cos^2`` unexpanded; simplifying (identity-preserving, per ingredient) makes
-        the printed equations readable and structural zeros of the mass matrix exact zeros.
-        """
+    def equations(self) -> EquationSet:
+        """The :class:`EquationSet` (see :meth:`EquationSet.simplified` for a tidier form)."""
         if not self._equations:
             raise ModelError(f"`{self.name}` has no equations: call linear_momentum or "
                              "angular_momentum for each body.")
         contributions = [dict(parts) for _, parts in self._equations]
-        if simplify:
-            contributions = [{k: sp.trigsimp(sp.expand(v)) for k, v in c.items()}
-                             for c in contributions]
         eqs = tuple(sp.Add(*c.values()) for c in contributions)
         return EquationSet(self.name, self.coordinates, eqs, tuple(self._unknowns),
                            tuple(label for label, _ in self._equations),

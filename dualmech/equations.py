@@ -255,6 +255,22 @@ class EquationSet:
         return EquationSet(name, self.coordinates, eqs, self.unknowns, self.labels,
                            contrib, self.description)
 
+    def simplified(self) -> "EquationSet":
+        """The same equations with each ingredient expanded and trig-simplified.
+
+        Components differentiated through a chain of frames keep identities such as
+        ``sin^2 + cos^2`` in place; simplifying ingredient by ingredient (identity-preserving)
+        makes the printed equations read like hand ones and structural zeros exact zeros.
+        """
+        if not self.contributions:
+            eqs = tuple(sp.trigsimp(sp.expand(e)) for e in self.equations)
+            return EquationSet(self.name, self.coordinates, eqs, self.unknowns, self.labels,
+                               (), self.description)
+        parts = tuple({k: sp.trigsimp(sp.expand(v)) for k, v in c.items()}
+                      for c in self.contributions)
+        return EquationSet(self.name, self.coordinates, tuple(sp.Add(*p.values()) for p in parts),
+                           self.unknowns, self.labels, parts, self.description)
+
     def ingredients(self) -> list[str]:
         seen = []
         for c in self.contributions:

@@ -30,8 +30,6 @@ import random
 from dataclasses import dataclass, field
 from typing import Iterator
 
-import sympy as sp
-
 from .compare import _Context, compare_models, reaction_pairs
 from .dimensions import INERTIA, MASS, reduce
 from .equations import EquationSet, to_plain

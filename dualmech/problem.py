@@ -27,14 +27,12 @@ Example
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from functools import cached_property
-from typing import Callable, Mapping, Sequence
+from dataclasses import dataclass
 
 import sympy as sp
 
-from .dimensions import (ANGLE, ENERGY, Dimension, audit, format_dimension, reduce)
-from .equations import EquationSet, ModelError, state_symbols
+from .dimensions import ENERGY, Dimension, audit, reduce
+from .equations import EquationSet, ModelError
 from .kinematics import t
 
 __all__ = ["Parameter", "Coordinate", "Reaction", "Published", "Problem", "ProblemError"]

@@ -27,7 +27,6 @@ import numpy as np
 import sympy as sp
 from hypothesis import strategies as st
 
-from .equations import to_plain
 from .kinematics import t
 from .numeric import NumericModel
 

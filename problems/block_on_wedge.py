@@ -120,17 +120,6 @@ def hand_reactions() -> dict:
     return {"N1": m * M * g * sp.cos(alpha) / _delta(), "N2": M * (M + m) * g / _delta()}
 
 
-def _tidy(eqs: EquationSet) -> EquationSet:
-    """``eqs`` with each ingredient expanded and trig-simplified.
-
-    The builder projects vectors through the frame chain and leaves ``sin^2 + cos^2`` in
-    place; simplifying ingredient by ingredient keeps the equations as readable as the hand
-    ones above (and the symbolic reaction solve cheap) without touching their content.
-    """
-    parts = tuple({key: sp.trigsimp(sp.expand(v)) for key, v in c.items()}
-                  for c in eqs.contributions)
-    return EquationSet(eqs.name, eqs.coordinates, tuple(sp.Add(*p.values()) for p in parts),
-                       eqs.unknowns, eqs.labels, parts, eqs.description)
 
 
 class _Scene:
@@ -187,7 +176,7 @@ class BlockOnWedge(Problem):
         ne.linear_momentum(sc.block, S.y)
         ne.linear_momentum(sc.wedge, O.x)
         ne.linear_momentum(sc.wedge, O.y)
-        return _tidy(ne.equations())
+        return ne.equations().simplified()
 
     def lagrange(self) -> EquationSet:
         """``T`` and ``V`` as the source writes them."""
@@ -209,7 +198,7 @@ class BlockOnWedge(Problem):
         lg.potential("gravity", M * g * wedge[1] + m * g * block[1])
         lg.constraint("N1", d1)
         lg.constraint("N2", d2)
-        return _tidy(lg.equations())
+        return lg.equations().simplified()
 
     def coordinate_maps(self) -> dict:
         return {"lagrange_multipliers": {q1: q1, q2: q2, d1: 0, d2: 0}}

@@ -134,17 +134,6 @@ def hand_reactions(xdd, thdd) -> dict:
     return {"N": N, "T": T, "S": S}
 
 
-def _tidy(eqs: EquationSet) -> EquationSet:
-    """``eqs`` with each ingredient expanded and trig-simplified.
-
-    The builder projects vectors through the frame chain and leaves ``sin^2 + cos^2`` in
-    place; simplifying ingredient by ingredient keeps the equations as readable as the hand
-    ones above (and the symbolic reaction solve cheap) without touching their content.
-    """
-    parts = tuple({key: sp.trigsimp(sp.expand(v)) for key, v in c.items()}
-                  for c in eqs.contributions)
-    return EquationSet(eqs.name, eqs.coordinates, tuple(sp.Add(*p.values()) for p in parts),
-                       eqs.unknowns, eqs.labels, parts, eqs.description)
 
 
 class _Scene:
@@ -226,7 +215,7 @@ class CartPendulum(Problem):
         ne.linear_momentum(sc.bob, R.x)
         ne.linear_momentum(sc.bob, R.y)
         ne.angular_momentum(sc.rod, O.z, about=sc.P)
-        return _tidy(ne.equations())
+        return ne.equations().simplified()
 
     def lagrange(self) -> EquationSet:
         """``T``, ``V``, ``R`` and the virtual work of the drive, as the source writes them."""
@@ -261,7 +250,7 @@ class CartPendulum(Problem):
         lg.constraint("N", y)
         lg.constraint("T", l - r)
         lg.constraint("S", l * (phi - theta))
-        return _tidy(lg.equations())
+        return lg.equations().simplified()
 
     def coordinate_maps(self) -> dict:
         return {"lagrange_multipliers": {x: x, theta: theta, y: 0, r: l, phi: theta}}

@@ -89,17 +89,6 @@ F_N, F_Rx, F_Ry = sp.symbols("F_N F_Rx F_Ry", real=True)
 _d = lambda q, n=1: q.diff(t, n)  # noqa: E731  (q', q'')
 
 
-def _tidy(eqs: EquationSet) -> EquationSet:
-    """``eqs`` with each ingredient trig-simplified.
-
-    The builder differentiates components through the frame chain and leaves identities such
-    as ``sin^2 + cos^2`` in place; simplifying each ingredient keeps the printed equations
-    readable and the mass matrix free of structural zeros written as ``sin^2 + cos^2 - 1``.
-    """
-    parts = tuple({key: sp.trigsimp(v) for key, v in c.items()}
-                  for c in eqs.contributions)
-    return EquationSet(eqs.name, eqs.coordinates, tuple(sp.Add(*p.values()) for p in parts),
-                       eqs.unknowns, eqs.labels, parts, eqs.description)
 
 
 def pendulum_mass_properties() -> MassProperties:
@@ -174,7 +163,7 @@ class PendulumOnMass(Problem):
         ne.linear_momentum(pend, O.x)
         ne.linear_momentum(pend, O.y)
         ne.angular_momentum(pend, O.z, about=f.a)
-        return _tidy(ne.equations())
+        return ne.equations().simplified()
 
     # -- indirect form ---------------------------------------------------------------------
     def lagrange(self) -> EquationSet:

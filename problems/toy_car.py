@@ -96,17 +96,6 @@ F_r = sp.Symbol("F_r", real=True)
 _d = lambda q, n=1: q.diff(t, n)  # noqa: E731  (q', q'')
 
 
-def _tidy(eqs: EquationSet) -> EquationSet:
-    """``eqs`` with each ingredient trig-simplified.
-
-    The builder differentiates components through the frame chain and leaves identities such
-    as ``sin^2 + cos^2`` in place; simplifying each ingredient keeps the printed equations
-    readable and the mass matrix free of structural zeros written as ``sin^2 + cos^2 - 1``.
-    """
-    parts = tuple({key: sp.trigsimp(sp.expand(v)) for key, v in c.items()}
-                  for c in eqs.contributions)
-    return EquationSet(eqs.name, eqs.coordinates, tuple(sp.Add(*p.values()) for p in parts),
-                       eqs.unknowns, eqs.labels, parts, eqs.description)
 
 
 def frames() -> SimpleNamespace:
@@ -173,7 +162,7 @@ class ToyCar(Problem):
         ne.reaction("F_r", car, f.B.z)
         for axis in (f.B.x, f.B.y, f.B.z):
             ne.linear_momentum(car, axis)
-        return _tidy(ne.equations())
+        return ne.equations().simplified()
 
     # -- direct form, question (B): angular momentum about the fixed point O ------------
     def angular_momentum(self) -> EquationSet:
@@ -189,7 +178,7 @@ class ToyCar(Problem):
         ne.gravity(-g * f.O.z)
         for axis in (f.B.x, f.B.y):
             ne.angular_momentum(car, axis, about=f.o)
-        return _tidy(ne.equations())
+        return ne.equations().simplified()
 
     # -- indirect form -------------------------------------------------------------------
     def lagrange(self) -> EquationSet:

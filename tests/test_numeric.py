@@ -5,14 +5,13 @@ import sympy as sp
 
 from dualmech.numeric import NumericModel, SingularityError, simulate
 
-from _pendulum import Pendulum, g, l, m
+from _pendulum import Pendulum, l, m
 
 
 def test_pendulum_conserves_energy_and_tension_matches_formula():
     p = Pendulum()
     traj = simulate(p, t_span=(0, 3), y0=[1.1, 0.0], rtol=1e-11, atol=1e-12)
     th, thd = traj.q[0], traj.qd[0]
-    vals = {str(k): v for k, v in p.defaults().items()}
     M, L, G = 1.0, 1.0, 9.81
     energy = 0.5 * M * L**2 * thd**2 - M * G * L * np.cos(th)
     assert np.ptp(energy) < 1e-8 * abs(energy[0])
