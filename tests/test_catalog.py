@@ -54,7 +54,7 @@ def test_mutants_are_all_caught_naming_an_equation(name):
 def test_property_both_forms_same_accelerations_and_consistent_reactions(name):
     problem = get(name)
 
-    @settings(max_examples=25)
+    @settings(max_examples=60)
     @given(points(problem))
     def check(point):
         assert_same_motion(problem, point)
