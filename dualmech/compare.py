@@ -42,7 +42,7 @@ import sympy as sp
 from . import _linalg as la
 from .dimensions import audit
 from .equations import EquationSet, ModelError, _tidy, from_plain, state_symbols, to_plain
-from .exact import ExactForm, is_zero
+from .exact import MP_DIGITS, ExactForm, is_zero
 from .kinematics import t
 
 __all__ = ["compare", "compare_models", "Comparison", "PairResult", "Mismatch",
@@ -291,8 +291,21 @@ def _unflatten(vals, rows, cols) -> tuple[list, list]:
     return A, b
 
 
+def _high_precision(fn):
+    """Run ``fn`` at the fallback's working precision, so mpmath arithmetic done on sampled
+    values (residuals, eliminations) keeps MP_DIGITS digits; exact Fractions are unaffected."""
+    import functools
+
+    @functools.wraps(fn)
+    def wrapper(*args, **kwargs):
+        with mpmath.workdps(MP_DIGITS):
+            return fn(*args, **kwargs)
+    return wrapper
+
+
 # ---------------------------------------------------------------------------------------
 # pairs
+@_high_precision
 def compare_models(reference: EquationSet, candidate: EquationSet, *, points: int = 8,
                    seed: int = 0, context: _Context | None = None,
                    explain: bool = True) -> PairResult:
@@ -547,6 +560,7 @@ def reaction_pairs(problem, models: dict | None = None, *, points: int = 8, seed
     return out
 
 
+@_high_precision
 def compare_reactions(reference: EquationSet, first: EquationSet, second: EquationSet,
                       names: Sequence, *, points: int = 8, seed: int = 0,
                       context: _Context | None = None, explain: bool = True) -> PairResult:
@@ -642,6 +656,7 @@ def recover_reactions(problem) -> dict:
     return out
 
 
+@_high_precision
 def check_published(problem, points: int = 8, seed: int = 0,
                     context: _Context | None = None) -> list[PublishedVerdict]:
     """Verdict on every printed answer of ``problem`` (see :class:`dualmech.problem.Published`)."""

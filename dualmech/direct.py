@@ -102,6 +102,23 @@ class NewtonEuler:
         if against is not None:
             self.force(key, against, -f, against_at)
 
+    def spring_between(self, key: str, k, free_length, a: tuple, b: tuple) -> None:
+        """Spring of stiffness ``k`` and free length ``free_length`` between two points.
+
+        ``a`` and ``b`` are ``(body, point)`` pairs; ``body`` may be ``None`` for a fixed
+        anchor.  The force on ``a``'s body is ``-k (|r_ab| - free_length) e_ab`` with ``e_ab``
+        the unit vector from ``b`` to ``a`` (and the opposite on ``b``'s body).  The length is
+        a square root, so the comparator decides such models in high precision (mpmath).
+        """
+        (body_a, pa), (body_b, pb) = a, b
+        r = pa.pos_from(pb)
+        length = sp.sqrt(r.dot(r))
+        f = -k * (length - free_length) / length * r
+        if body_a is not None:
+            self.force(key, body_a, f, pa)
+        if body_b is not None:
+            self.force(key, body_b, -f, pb)
+
     def linear_damper(self, key: str, body: Body, c, rate, direction: Vector,
                       at: Point | None = None, against: Body | None = None,
                       against_at: Point | None = None) -> None:

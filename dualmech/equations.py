@@ -279,7 +279,35 @@ class EquationSet:
                     seen.append(k)
         return seen
 
-    # -- linearisation -----------------------------------------------------------------
+    # -- equilibria and linearisation --------------------------------------------------
+    def equilibria(self, values: Mapping | None = None) -> list[dict]:
+        """Static equilibria: solutions of the equations with ``q' = q'' = 0``.
+
+        ``values`` (parameter -> value) may fix parameters first.  Returns a list of
+        ``{coordinate: value}`` as :func:`sympy.solve` finds them: for trigonometric equations
+        that is not always every solution (it may miss ``pi``, and never adds multiples of
+        ``2 pi``), so check a candidate with :meth:`linearize`, which refuses non-equilibria.
+        Reaction-free models only.
+        """
+        if self.unknowns:
+            raise ModelError(f"model `{self.name}` has reactions; find equilibria of a "
+                             "reaction-free model.")
+        still = {}
+        for s in self.states:
+            still[s.qd] = 0
+            still[s.qdd] = 0
+        eqs = [self.to_plain(e).subs(still) for e in self.equations]
+        if values:
+            eqs = [e.subs(values) for e in eqs]
+        eqs = [e for e in eqs if e != 0]
+        qs = [s.q for s in self.states]
+        sols = sp.solve(eqs, qs, dict=True) if eqs else [{}]
+        out = []
+        for sol in sols:
+            out.append({s.function: sol.get(s.q, s.q) for s in self.states})
+        return out
+
+
     def linearize(self, equilibrium: Mapping | None = None) -> tuple[sp.Matrix, sp.Matrix, sp.Matrix]:
         """Mass, damping and stiffness matrices ``M q'' + C q' + K q = 0`` about ``equilibrium``.
 

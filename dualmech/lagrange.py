@@ -62,6 +62,21 @@ class Lagrangian:
         """Add the potential-energy term ``V``."""
         self._V[key] = self._V.get(key, 0) + sp.sympify(V)
 
+    def gravity(self, g: Vector, bodies, frame: Frame) -> None:
+        """Potential ``-m g . r_C`` of each body (``g`` the gravity vector, ``frame`` inertial)."""
+        origin = Point.origin(frame)
+        for body in bodies:
+            self.potential(f"gravity on {body.name}",
+                           -body.mass * g.dot(body.masscenter.pos_from(origin)))
+
+    def spring(self, key: str, k, extension) -> None:
+        """Potential ``k extension^2 / 2`` of a linear (or, with angles, torsional) spring."""
+        self.potential(key, k * sp.sympify(extension)**2 / 2)
+
+    def damper(self, key: str, c, rate) -> None:
+        """Rayleigh dissipation ``c rate^2 / 2`` of a linear (or torsional) damper."""
+        self.dissipation(key, c * sp.sympify(rate)**2 / 2)
+
     def dissipation(self, key: str, R) -> None:
         """Add the Rayleigh dissipation term ``R`` (e.g. ``c v^2 / 2``)."""
         self._R[key] = self._R.get(key, 0) + sp.sympify(R)
