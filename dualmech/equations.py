@@ -356,7 +356,7 @@ class EquationSet:
     def pretty(self, latex: bool = False) -> str:
         lines = []
         for label, e in zip(self.labels, self.equations):
-            body = sp.latex(e) + " = 0" if latex else f"{sp.pretty(e, use_unicode=True)}  = 0"
+            body = sp.latex(e) + " = 0" if latex else f"{sp.pretty(e, use_unicode=True, wrap_line=False)}  = 0"
             lines.append(f"[{label}]\n{body}")
         return "\n\n".join(lines)
 

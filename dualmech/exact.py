@@ -123,26 +123,35 @@ def _expand_one(e):
     return sp.expand_trig(type(e)(arg))
 
 
-def _degree(expr, weights: dict) -> tuple[int, int]:
-    """Bound on (numerator degree, denominator degree) after clearing denominators."""
+def _degree(expr, weights: dict, memo: dict | None = None) -> tuple[int, int]:
+    """Bound on (numerator degree, denominator degree) of ``expr`` as a rational function.
+
+    Works on the tree as it stands (no ``together``, which is slow on large input); shared
+    subtrees are bounded once.
+    """
+    memo = {} if memo is None else memo
+    hit = memo.get(expr)
+    if hit is not None:
+        return hit
     if expr.is_Number:
-        return (0, 0)
-    if expr.is_Symbol:
-        return weights.get(expr, (1, 0))
-    if expr.is_Add:
-        num, den = 0, 0
-        parts = [_degree(a, weights) for a in expr.args]
+        out = (0, 0)
+    elif expr.is_Symbol:
+        out = weights.get(expr, (1, 0))
+    elif expr.is_Add:
+        parts = [_degree(a, weights, memo) for a in expr.args]
         den = sum(d for _, d in parts)
-        num = max(n + den - d for n, d in parts)
-        return (num, den)
-    if expr.is_Mul:
-        parts = [_degree(a, weights) for a in expr.args]
-        return (sum(n for n, _ in parts), sum(d for _, d in parts))
-    if expr.is_Pow:
-        n, d = _degree(expr.base, weights)
+        out = (max(n + den - d for n, d in parts), den)
+    elif expr.is_Mul:
+        parts = [_degree(a, weights, memo) for a in expr.args]
+        out = (sum(n for n, _ in parts), sum(d for _, d in parts))
+    elif expr.is_Pow:
+        n, d = _degree(expr.base, weights, memo)
         e = int(expr.exp)
-        return (n * e, d * e) if e >= 0 else (d * -e, n * -e)
-    raise NotRational(f"cannot bound the degree of {expr}")
+        out = (n * e, d * e) if e >= 0 else (d * -e, n * -e)
+    else:
+        raise NotRational(f"cannot bound the degree of {expr}")
+    memo[expr] = out
+    return out
 
 
 @dataclass
@@ -195,7 +204,8 @@ class ExactForm:
         for s, c in atoms.values():
             weights[s] = (1, 2)
             weights[c] = (2, 2)
-        degree = max((sum(_degree(sp.together(e), weights)) for e in rewritten), default=0)
+        memo: dict = {}
+        degree = max((sum(_degree(e, weights, memo)) for e in rewritten), default=0)
         trig_syms = [x for pair in atoms.values() for x in pair]
         args = list(symbols) + trig_syms
         printer = _FractionPrinter({"fully_qualified_modules": False, "inline": True})
