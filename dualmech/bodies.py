@@ -28,6 +28,7 @@ from typing import Iterable
 
 import sympy as sp
 
+from ._expr import as_expr
 from .kinematics import Frame, Point, Vector
 
 __all__ = [
@@ -108,7 +109,7 @@ def composite(parts: Iterable[tuple]) -> MassProperties:
 
     All positions and inertias are components in one common frame.
     """
-    parts = [(sp.sympify(m), sp.Matrix(I), sp.Matrix(c)) for m, I, c in parts]
+    parts = [(as_expr(m), sp.Matrix(I), sp.Matrix(c)) for m, I, c in parts]
     if not parts:
         raise ValueError("`parts` must hold at least one (mass, inertia, centre) triple.")
     mass = sp.Add(*[m for m, _, _ in parts])

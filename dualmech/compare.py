@@ -39,6 +39,7 @@ from typing import Sequence
 import mpmath
 import sympy as sp
 
+from ._expr import as_expr
 from . import _linalg as la
 from .dimensions import audit
 from .equations import EquationSet, ModelError, _tidy, from_plain, state_symbols, to_plain
@@ -441,7 +442,7 @@ def _undetermined(candidate, ctx, rng) -> list[int]:
 
 def _num(expr, values):
     with mpmath.workdps(30):
-        return sp.sympify(expr).xreplace({k: sp.Float(str(v), 30) for k, v in values.items()}).evalf(30)
+        return as_expr(expr).xreplace({k: sp.Float(str(v), 30) for k, v in values.items()}).evalf(30)
 
 
 def _real_state(reference, candidate, ctx, rng):
@@ -752,8 +753,8 @@ def _published_exprs(problem, pub) -> list:
                              f"`{pub.coordinates}`, which has no entry in coordinate_maps().")
         rules = {}
         for q, e in mapping.items():
-            rules[q.diff(t, 2)] = sp.sympify(e).diff(t, 2)
-            rules[q.diff(t)] = sp.sympify(e).diff(t)
+            rules[q.diff(t, 2)] = as_expr(e).diff(t, 2)
+            rules[q.diff(t)] = as_expr(e).diff(t)
         exprs = [e.xreplace(rules).xreplace(dict(mapping)) for e in exprs]
     return exprs
 
@@ -835,7 +836,7 @@ def _on_shell(problem, expr):
         if m.unknowns and m.is_square:
             for u, v in m.reactions_solved().items():
                 rules.setdefault(u, v)
-    expr = sp.sympify(expr).xreplace(rules)
+    expr = as_expr(expr).xreplace(rules)
     if sp.count_ops(expr) > 2000:
         return None
     return _tidy(expr)

@@ -28,6 +28,7 @@ from sympy.physics.units import Dimension
 from sympy.physics.units.definitions import dimension_definitions as _dd
 from sympy.physics.units.systems.si import dimsys_SI
 
+from ._expr import as_expr
 from .kinematics import t
 
 __all__ = ["Dimension", "MASS", "LENGTH", "TIME", "ANGLE", "FORCE", "TORQUE", "ENERGY",
@@ -191,14 +192,14 @@ def audit(expr, dims: Mapping, expected=None) -> list[DimensionIssue]:
     otherwise the majority of the terms decides, and a tie is reported as such.
     """
     w = _Walker(dims)
-    w._add(sp.sympify(expr), None if expected is None else reduce(expected))
+    w._add(as_expr(expr), None if expected is None else reduce(expected))
     return w.issues
 
 
 def dimension_of(expr, dims: Mapping) -> Dims:
     """Dimension of ``expr``; raises ``ValueError`` listing the issues when inconsistent."""
     w = _Walker(dims)
-    d = w(sp.sympify(expr))
+    d = w(as_expr(expr))
     if w.issues:
         raise ValueError("; ".join(map(str, w.issues)))
     return d

@@ -27,6 +27,7 @@ from typing import Mapping, Sequence
 
 import sympy as sp
 
+from ._expr import as_expr
 from .kinematics import t
 
 __all__ = ["EquationSet", "ModelError", "StateSymbols", "state_symbols"]
@@ -97,7 +98,7 @@ class EquationSet:
 
     def __post_init__(self):
         object.__setattr__(self, "coordinates", tuple(self.coordinates))
-        object.__setattr__(self, "equations", tuple(sp.sympify(e) for e in self.equations))
+        object.__setattr__(self, "equations", tuple(as_expr(e) for e in self.equations))
         object.__setattr__(self, "unknowns", tuple(self.unknowns))
         if not self.equations:
             raise ModelError(f"model `{self.name}` has no equations.")
@@ -204,8 +205,8 @@ class EquationSet:
     # -- transformations ---------------------------------------------------------------
     def substitute(self, mapping: Mapping, name: str | None = None) -> "EquationSet":
         """The same equations with ``mapping`` substituted (parameters, not coordinates)."""
-        eqs = tuple(sp.sympify(e).subs(mapping, simultaneous=True) for e in self.equations)
-        contrib = tuple({k: sp.sympify(v).subs(mapping, simultaneous=True) for k, v in c.items()}
+        eqs = tuple(as_expr(e).subs(mapping, simultaneous=True) for e in self.equations)
+        contrib = tuple({k: as_expr(v).subs(mapping, simultaneous=True) for k, v in c.items()}
                         for c in self.contributions)
         return EquationSet(name or self.name, self.coordinates, eqs, self.unknowns,
                            self.labels, contrib, self.description)
@@ -222,7 +223,7 @@ class EquationSet:
             raise ModelError(f"`mapping` must give every old coordinate; missing {missing}.")
         rules = {}
         for q, expr in mapping.items():
-            expr = sp.sympify(expr)
+            expr = as_expr(expr)
             rules[q.diff(t, 2)] = expr.diff(t, 2)
             rules[q.diff(t)] = expr.diff(t)
         eqs, labels = [], []
@@ -275,7 +276,7 @@ class EquationSet:
         seen = []
         for c in self.contributions:
             for k, v in c.items():
-                if k not in seen and sp.sympify(v) != 0:
+                if k not in seen and as_expr(v) != 0:
                     seen.append(k)
         return seen
 
@@ -368,7 +369,7 @@ def to_plain(expr, coordinates):
         s = state_symbols(q)
         rules[q.diff(t, 2)] = s.qdd
         rules[q.diff(t)] = s.qd
-    expr = sp.sympify(expr).xreplace(rules)
+    expr = as_expr(expr).xreplace(rules)
     return expr.xreplace({q: state_symbols(q).q for q in coordinates})
 
 
@@ -380,7 +381,7 @@ def from_plain(expr, coordinates):
         rules[s.qdd] = q.diff(t, 2)
         rules[s.qd] = q.diff(t)
         rules[s.q] = q
-    return sp.sympify(expr).xreplace(rules)
+    return as_expr(expr).xreplace(rules)
 
 
 def _name(q) -> str:

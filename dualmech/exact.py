@@ -39,6 +39,7 @@ from typing import Callable, Sequence
 
 import mpmath
 import sympy as sp
+from ._expr import as_expr
 from sympy.printing.pycode import PythonCodePrinter
 
 __all__ = ["ExactForm", "NotRational", "SAMPLE_BITS", "MP_DIGITS"]
@@ -172,7 +173,7 @@ class ExactForm:
 
     @classmethod
     def build(cls, exprs: Sequence, symbols: Sequence, force_mp: bool = False) -> "ExactForm":
-        exprs = [sp.sympify(e) for e in exprs]
+        exprs = [as_expr(e) for e in exprs]
         symbols = tuple(symbols)
         free = set().union(*(e.free_symbols for e in exprs)) if exprs else set()
         extra = free - set(symbols)

@@ -31,6 +31,7 @@ from dataclasses import dataclass, field
 from typing import Iterable
 
 import sympy as sp
+from ._expr import as_expr
 
 __all__ = [
     "t", "coordinate", "rot_x", "rot_y", "rot_z", "rot_axis", "skew", "unskew",
@@ -249,12 +250,12 @@ class Vector:
     def __mul__(self, scalar) -> "Vector":
         if isinstance(scalar, Vector):
             raise TypeError("use `dot` or `cross` to multiply two vectors.")
-        return Vector(self.frame, self.components * sp.sympify(scalar))
+        return Vector(self.frame, self.components * as_expr(scalar))
 
     __rmul__ = __mul__
 
     def __truediv__(self, scalar) -> "Vector":
-        return Vector(self.frame, self.components / sp.sympify(scalar))
+        return Vector(self.frame, self.components / as_expr(scalar))
 
     def dot(self, other: "Vector") -> sp.Expr:
         return (self.components.T * other.express(self.frame).components)[0, 0]

@@ -28,6 +28,7 @@ from typing import Sequence
 
 import sympy as sp
 
+from ._expr import as_expr
 from .bodies import Particle, RigidBody
 from .equations import EquationSet, ModelError
 from .kinematics import Frame, Point, Vector, t
@@ -52,7 +53,7 @@ class Lagrangian:
     # -- energies ----------------------------------------------------------------------
     def kinetic(self, key: str, T) -> None:
         """Add the kinetic-energy term ``T`` under the name ``key``."""
-        self._T[key] = self._T.get(key, 0) + sp.sympify(T)
+        self._T[key] = self._T.get(key, 0) + as_expr(T)
 
     def kinetic_of(self, body: Particle | RigidBody, frame: Frame) -> None:
         """Add the kinetic energy of ``body`` seen from the inertial ``frame``."""
@@ -60,7 +61,7 @@ class Lagrangian:
 
     def potential(self, key: str, V) -> None:
         """Add the potential-energy term ``V``."""
-        self._V[key] = self._V.get(key, 0) + sp.sympify(V)
+        self._V[key] = self._V.get(key, 0) + as_expr(V)
 
     def gravity(self, g: Vector, bodies, frame: Frame) -> None:
         """Potential ``-m g . r_C`` of each body (``g`` the gravity vector, ``frame`` inertial)."""
@@ -71,20 +72,20 @@ class Lagrangian:
 
     def spring(self, key: str, k, extension) -> None:
         """Potential ``k extension^2 / 2`` of a linear (or, with angles, torsional) spring."""
-        self.potential(key, k * sp.sympify(extension)**2 / 2)
+        self.potential(key, k * as_expr(extension)**2 / 2)
 
     def damper(self, key: str, c, rate) -> None:
         """Rayleigh dissipation ``c rate^2 / 2`` of a linear (or torsional) damper."""
-        self.dissipation(key, c * sp.sympify(rate)**2 / 2)
+        self.dissipation(key, c * as_expr(rate)**2 / 2)
 
     def dissipation(self, key: str, R) -> None:
         """Add the Rayleigh dissipation term ``R`` (e.g. ``c v^2 / 2``)."""
-        self._R[key] = self._R.get(key, 0) + sp.sympify(R)
+        self._R[key] = self._R.get(key, 0) + as_expr(R)
 
     # -- generalised forces ------------------------------------------------------------
     def generalized_force(self, key: str, Q: Sequence) -> None:
         """Add generalised forces ``Q`` (one per coordinate)."""
-        Q = [sp.sympify(x) for x in Q]
+        Q = [as_expr(x) for x in Q]
         if len(Q) != len(self.coordinates):
             raise ModelError(f"`Q` needs {len(self.coordinates)} entries (one per coordinate), "
                              f"got {len(Q)}.")
@@ -108,33 +109,33 @@ class Lagrangian:
     def constraint(self, name: str, g) -> sp.Symbol:
         """Holonomic constraint ``g(q, t) = 0`` with multiplier ``name``; returns the multiplier."""
         lam = sp.Symbol(name, real=True)
-        g = sp.sympify(g)
+        g = as_expr(g)
         self._constraints.append((lam, g.diff(t, 2), [g.diff(q) for q in self.coordinates]))
         return lam
 
     def velocity_constraint(self, name: str, coefficients: Sequence, rest=0) -> sp.Symbol:
         """Constraint ``sum a_j q'_j + a_0 = 0`` (``coefficients = a``, ``rest = a_0``)."""
-        a = [sp.sympify(c) for c in coefficients]
+        a = [as_expr(c) for c in coefficients]
         if len(a) != len(self.coordinates):
             raise ModelError(f"`coefficients` needs {len(self.coordinates)} entries.")
         lam = sp.Symbol(name, real=True)
-        level = sum(c * q.diff(t) for c, q in zip(a, self.coordinates)) + sp.sympify(rest)
+        level = sum(c * q.diff(t) for c, q in zip(a, self.coordinates)) + as_expr(rest)
         self._constraints.append((lam, level.diff(t), a))
         return lam
 
     def prescribe(self, q, motion) -> None:
         """Coordinate ``q`` follows the known function of time ``motion`` (rheonomic)."""
-        self._prescribed[q] = sp.sympify(motion)
+        self._prescribed[q] = as_expr(motion)
 
     # -- equations ---------------------------------------------------------------------
     def _known(self, expr):
         if not self._prescribed:
-            return sp.sympify(expr)
+            return as_expr(expr)
         rules = {}
         for q, f in self._prescribed.items():
             rules[q.diff(t, 2)] = f.diff(t, 2)
             rules[q.diff(t)] = f.diff(t)
-        expr = sp.sympify(expr).xreplace(rules)
+        expr = as_expr(expr).xreplace(rules)
         return expr.xreplace(dict(self._prescribed))
 
     def equations(self) -> EquationSet:

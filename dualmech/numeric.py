@@ -23,6 +23,7 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
+from ._expr import as_expr
 from .equations import EquationSet, ModelError, state_symbols, to_plain
 from .kinematics import t
 
@@ -49,7 +50,7 @@ class NumericModel:
         self.states = [state_symbols(q) for q in eqs.coordinates]
         self.n = eqs.n
         fn, symbols = _compiled(eqs)
-        values = {sp.sympify(k): float(v) for k, v in params.items()}
+        values = {_key(k, symbols): float(v) for k, v in params.items()}
         missing = [s for s in symbols if s not in values]
         if missing:
             raise ModelError(f"`params` lacks values for {sorted(map(str, missing))} "
@@ -88,6 +89,16 @@ class NumericModel:
 
 
 _CACHE: dict = {}
+
+
+def _key(k, symbols):
+    """A parameter given as a symbol or by its name (looked up, never parsed)."""
+    if isinstance(k, str):
+        for s in symbols:
+            if s.name == k:
+                return s
+        return sp.Symbol(k)  # unknown name: reported as missing/unused by the caller
+    return as_expr(k)
 
 
 def _compiled(eqs: EquationSet):
@@ -156,7 +167,7 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
     the problem's default parameter values.
     """
     values = problem.defaults()
-    values.update({sp.sympify(k): v for k, v in (params or {}).items()})
+    values.update({_key(k, problem.parameter_symbols): v for k, v in (params or {}).items()})
     ref = problem.model(problem.reference)
     model = NumericModel(ref, values)
     n = ref.n
@@ -189,7 +200,7 @@ def reactions_at(problem, q: Sequence[float], qd: Sequence[float], time: float =
     solution of ``A [q''; lambda] = b``.
     """
     values = problem.defaults()
-    values.update({sp.sympify(k): v for k, v in (params or {}).items()})
+    values.update({_key(k, problem.parameter_symbols): v for k, v in (params or {}).items()})
     ref = problem.model(problem.reference)
     qdd = NumericModel(ref, values).accelerations(time, q, qd)
     out: dict = {}

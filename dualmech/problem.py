@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from ._expr import as_expr
 from .dimensions import ENERGY, Dimension, audit, reduce
 from .equations import EquationSet, ModelError
 from .kinematics import t
@@ -102,8 +103,8 @@ class Published:
     def __post_init__(self):
         if self.kind not in ("equation", "expression"):
             raise ValueError(f"`kind` must be 'equation' or 'expression', got {self.kind!r}.")
-        object.__setattr__(self, "printed", tuple(sp.sympify(p) for p in _tuple(self.printed)))
-        object.__setattr__(self, "reference", tuple(sp.sympify(p) for p in _tuple(self.reference)))
+        object.__setattr__(self, "printed", tuple(as_expr(p) for p in _tuple(self.printed)))
+        object.__setattr__(self, "reference", tuple(as_expr(p) for p in _tuple(self.reference)))
         if self.kind == "expression" and len(self.reference) != len(self.printed):
             raise ValueError(f"published `{self.label}`: {len(self.printed)} printed expressions "
                              f"but {len(self.reference)} reference expressions.")

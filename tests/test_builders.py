@@ -137,3 +137,13 @@ def test_torque_needs_a_rigid_body_and_generalized_force_length_is_checked():
         lg.generalized_force("F", [1, 2])
     with pytest.raises(ModelError, match="no energy"):
         lg.equations()
+
+
+@pytest.mark.parametrize("text", ["__import__('os').system('true')", "x**2"])
+def test_text_is_refused_never_evaluated(text):
+    lg = Lagrangian(coordinates=[x])
+    with pytest.raises(TypeError, match="text is never evaluated"):
+        lg.potential("V", text)
+    from dualmech import EquationSet
+    with pytest.raises(TypeError, match="text is never evaluated"):
+        EquationSet("e", (x,), (text,))
