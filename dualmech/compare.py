@@ -375,12 +375,21 @@ def _reorder(eqs: EquationSet, coords) -> EquationSet:
                        eqs.contributions, eqs.description)
 
 
+def _fit_reactions(A, b, qdd, n):
+    """Put the accelerations ``qdd`` into ``A [q''; lambda] = b`` and fit the reactions.
+
+    Returns ``(residual per equation, lambda, undetermined columns, r = b - M qdd)``.
+    """
+    M = [row[:n] for row in A]
+    B = [row[n:] for row in A]
+    r = [bi - mi for bi, mi in zip(b, la.matvec(M, qdd))]
+    res, lam, undetermined = la.residual_after_least_squares(B, r)
+    return res, lam, undetermined, r
+
+
 def _point_mismatch(Acv, bcv, qdd, n) -> list:
     """Residual problems of the candidate at one point: ``[(equation index or 'all', reason)]``."""
-    M = [row[:n] for row in Acv]
-    B = [row[n:] for row in Acv]
-    r = [bi - mi for bi, mi in zip(bcv, la.matvec(M, qdd))]
-    res, _, undetermined = la.residual_after_least_squares(B, r)
+    res, _, undetermined, r = _fit_reactions(Acv, bcv, qdd, n)
     scale = max((abs(v) for v in r), default=1)
     out = [(i, "does not hold with the reference accelerations")
            for i, v in enumerate(res) if not is_zero(v, scale)]
@@ -468,10 +477,7 @@ def _real_state(reference, candidate, ctx, rng):
         cform = ExactForm.build(_flatten(Ac, bc), ctx.base, force_mp=True)
         cvals = cform.evaluate(point)
         Acv, bcv = _unflatten(cvals, len(Ac), len(Ac[0]))
-        M = [row[:n] for row in Acv]
-        B = [row[n:] for row in Acv]
-        r = [bi - mi for bi, mi in zip(bcv, la.matvec(M, x[:n]))]
-        _, lam_c, _ = la.residual_after_least_squares(B, r)
+        lam_c = _fit_reactions(Acv, bcv, x[:n], n)[1]
         lam.update({u: v for u, v in zip(candidate.unknowns, lam_c)})
         return {k: point[k] for k in ctx.base}, qdd, lam
     return {}, {}, {}
@@ -598,10 +604,7 @@ def compare_reactions(reference: EquationSet, first: EquationSet, second: Equati
         good += 1
         lams = []
         for (Av, bv), m in zip(parts[1:], (first, second)):
-            M = [row[:n] for row in Av]
-            B = [row[n:] for row in Av]
-            r = [bi - mi for bi, mi in zip(bv, la.matvec(M, x[:n]))]
-            lams.append(dict(zip(m.unknowns, la.residual_after_least_squares(B, r)[1])))
+            lams.append(dict(zip(m.unknowns, _fit_reactions(Av, bv, x[:n], n)[1])))
         bad = [u for u in names if not is_zero(lams[0][u] - lams[1][u], abs(lams[0][u]))]
         if bad:
             break
@@ -708,10 +711,7 @@ def check_published(problem, points: int = 8, seed: int = 0,
         for (A, b), m in zip(systems, directs):
             Av, bv = _unflatten(vals[off:], len(A), len(A[0]))
             off += len(A) * (len(A[0]) + 1)
-            M = [row[:n] for row in Av]
-            B = [row[n:] for row in Av]
-            r = [bi - mi for bi, mi in zip(bv, la.matvec(M, x[:n]))]
-            _, lam, _ = la.residual_after_least_squares(B, r)
+            lam = _fit_reactions(Av, bv, x[:n], n)[1]
             for u, v in zip(m.unknowns, lam):
                 point[u] = v
         try:
