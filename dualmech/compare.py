@@ -277,6 +277,32 @@ def _unflatten(vals, rows, cols) -> tuple[list, list]:
     return A, b
 
 
+def _regular_points(form, ctx, rng, systems, limit, fill=None):
+    """Random points where the first of ``systems`` (the reference) is regular.
+
+    ``systems`` are the ``(A, b)`` whose entries ``form`` evaluates first, in order; ``fill``
+    gives values of extra symbols to set before evaluating.  Yields ``(point, values, parts,
+    x)``: the sampled point, every value, each system's ``(A, b)`` at the point and the
+    reference solution ``x``.  Points where an expression divides by zero or the reference is
+    singular are skipped; at most ``limit`` points are drawn.
+    """
+    for _ in range(limit):
+        point = form.sample(rng, ctx.floats)
+        if fill:
+            point.update(fill)
+        try:
+            vals = form.evaluate(point)
+        except (ZeroDivisionError, ValueError):
+            continue
+        parts, off = [], 0
+        for A, _b in systems:
+            parts.append(_unflatten(vals[off:], len(A), len(A[0])))
+            off += len(A) * (len(A[0]) + 1)
+        x = la.solve_square(*parts[0])
+        if x is not None:
+            yield point, vals, parts, x
+
+
 def _high_precision(fn):
     """Run ``fn`` at the fallback's working precision, so mpmath arithmetic done on sampled
     values (residuals, eliminations) keeps MP_DIGITS digits; exact Fractions are unaffected."""
@@ -314,27 +340,20 @@ def compare_models(reference: EquationSet, candidate: EquationSet, *, points: in
     Ar, br = _plain_system(reference, coords)
     Ac, bc = _plain_system(candidate, coords)
     form = ExactForm.build(_flatten(Ar, br) + _flatten(Ac, bc), ctx.base)
-    n, nr, nc = len(coords), len(Ar[0]), len(Ac[0])
+    n = len(coords)
     rng = random.Random(seed)
-    good, attempts, mismatches = 0, 0, []
-    while good < points and attempts < _MAX_ATTEMPTS * points:
-        attempts += 1
-        point = form.sample(rng, ctx.floats)
-        try:
-            vals = form.evaluate(point)
-        except (ZeroDivisionError, ValueError):
-            continue
-        Arv, brv = _unflatten(vals, len(Ar), nr)
-        Acv, bcv = _unflatten(vals[len(Ar) * (nr + 1):], len(Ac), nc)
-        x = la.solve_square(Arv, brv)
-        if x is None:
-            continue
+    good, mismatches = 0, []
+    for _, _, parts, x in _regular_points(form, ctx, rng, [(Ar, br), (Ac, bc)],
+                                          _MAX_ATTEMPTS * points):
         good += 1
+        Acv, bcv = parts[1]
         found = _point_mismatch(Acv, bcv, x[:n], n)
         if found:
             mismatches = _explain(reference, candidate, ctx, found, rng) if explain else \
                 [Mismatch(candidate.name, candidate.labels[i] if isinstance(i, int) else i, r)
                  for i, r in found]
+            break
+        if good == points:
             break
     if good == 0:
         raise ModelError(f"the mass matrix of `{reference.name}` is singular at every sampled "
@@ -444,16 +463,7 @@ def _real_state(reference, candidate, ctx, rng):
     coords = reference.coordinates
     Ar, br = _plain_system(reference, coords)
     form = ExactForm.build(_flatten(Ar, br), ctx.base, force_mp=True)
-    for _ in range(50):
-        point = form.sample(rng, ctx.floats)
-        try:
-            vals = form.evaluate(point)
-        except (ZeroDivisionError, ValueError):
-            continue
-        A, b = _unflatten(vals, len(Ar), len(Ar[0]))
-        x = la.solve_square(A, b)
-        if x is None:
-            continue
+    for point, _, _, x in _regular_points(form, ctx, rng, [(Ar, br)], 50):
         n = len(coords)
         qdd = {s.qdd: x[j] for j, s in enumerate(ctx.states)}
         lam = {u: x[n + j] for j, u in enumerate(reference.unknowns)}
@@ -573,26 +583,14 @@ def compare_reactions(reference: EquationSet, first: EquationSet, second: Equati
     form = ExactForm.build(exprs, ctx.base)
     n = len(coords)
     rng = random.Random(seed + 2)
-    good, attempts, bad = 0, 0, []
-    while good < points and attempts < _MAX_ATTEMPTS * points:
-        attempts += 1
-        try:
-            vals = form.evaluate(form.sample(rng, ctx.floats))
-        except (ZeroDivisionError, ValueError):
-            continue
-        parts, off = [], 0
-        for A, b in systems:
-            parts.append(_unflatten(vals[off:], len(A), len(A[0])))
-            off += len(A) * (len(A[0]) + 1)
-        x = la.solve_square(*parts[0])
-        if x is None:
-            continue
+    good, bad = 0, []
+    for _, _, parts, x in _regular_points(form, ctx, rng, systems, _MAX_ATTEMPTS * points):
         good += 1
         lams = []
         for (Av, bv), m in zip(parts[1:], (first, second)):
             lams.append(dict(zip(m.unknowns, _fit_reactions(Av, bv, x[:n], n)[1])))
         bad = [u for u in names if not is_zero(lams[0][u] - lams[1][u], abs(lams[0][u]))]
-        if bad:
+        if bad or good == points:
             break
     mismatches = []
     for u in bad:

@@ -19,8 +19,7 @@ import sympy as sp
 
 from ._expr import as_expr
 from .compare import (METHOD_NAMES, _MAX_ATTEMPTS, _Context, _fit_reactions, _flatten,
-                      _high_precision, _plain_system, _unflatten)
-from . import _linalg as la
+                      _high_precision, _plain_system, _regular_points)
 from .dimensions import audit
 from .equations import ModelError, _tidy, to_plain
 from .exact import ExactForm, is_zero
@@ -75,27 +74,16 @@ def check_published(problem, points: int = 8, seed: int = 0,
     form = ExactForm.build(exprs, symbols)
     rng = random.Random(seed + 1)
     bad: dict = {}
-    good, attempts = 0, 0
+    good = 0
     n = len(coords)
-    while good < points and attempts < _MAX_ATTEMPTS * points:
-        attempts += 1
-        point = form.sample(rng, ctx.floats)
-        for s in ctx.qdd + tuple(unknowns):
-            point[s] = 0 if form.method == "exact" else mpmath.mpf(0)
-        try:
-            vals = form.evaluate(point)
-        except (ZeroDivisionError, ValueError):
-            continue
-        Arv, brv = _unflatten(vals, len(Ar), len(Ar[0]))
-        x = la.solve_square(Arv, brv)
-        if x is None:
-            continue
+    zero = 0 if form.method == "exact" else mpmath.mpf(0)
+    fill = {s: zero for s in ctx.qdd + tuple(unknowns)}   # not yet known: first pass
+    off = sum(len(A) * (len(A[0]) + 1) for A, _ in [(Ar, br)] + systems)
+    for point, _, parts, x in _regular_points(form, ctx, rng, [(Ar, br)] + systems,
+                                              _MAX_ATTEMPTS * points, fill):
         for s, v in zip(ctx.qdd, x[:n]):
             point[s] = v
-        off = len(Ar) * (len(Ar[0]) + 1)
-        for (A, b), m in zip(systems, directs):
-            Av, bv = _unflatten(vals[off:], len(A), len(A[0]))
-            off += len(A) * (len(A[0]) + 1)
+        for (Av, bv), m in zip(parts[1:], directs):
             lam = _fit_reactions(Av, bv, x[:n], n)[1]
             for u, v in zip(m.unknowns, lam):
                 point[u] = v
@@ -110,6 +98,8 @@ def check_published(problem, points: int = 8, seed: int = 0,
                 if not is_zero(v, 1):
                     bad.setdefault(pub.label, set()).add(j)
             pos += size
+        if good == points:
+            break
     verdicts = []
     dims = problem.dimensions()
     for pub, es in items:
