@@ -40,7 +40,7 @@ import mpmath
 import sympy as sp
 
 from ._expr import as_expr
-from . import _linalg as la
+from .verify import linalg as la
 from .dimensions import audit
 from .equations import EquationSet, ModelError, _tidy, from_plain, state_symbols, to_plain
 from .exact import MP_DIGITS, ExactForm, is_zero

@@ -86,6 +86,9 @@ class Published:
       * ``"equation"`` -- ``printed`` are left sides of equations (``= 0``) that must follow
         from the equations of motion (any combination of them is accepted); they may use the
         coordinates' derivatives and the reaction symbols;
+      * ``"motion"`` -- ``printed`` claims to *be* the equations of motion: each must follow
+        from the derivations, and together they must determine every acceleration (a set
+        such as ``(e1, 2*e1)`` or ``0 = 0`` is wrong: it determines nothing);
       * ``"expression"`` -- ``printed`` must equal ``reference`` (our own derivation, in the
         same order) at every state of motion.
 
@@ -101,8 +104,9 @@ class Published:
     coordinates: str | None = None
 
     def __post_init__(self):
-        if self.kind not in ("equation", "expression"):
-            raise ValueError(f"`kind` must be 'equation' or 'expression', got {self.kind!r}.")
+        if self.kind not in ("equation", "motion", "expression"):
+            raise ValueError(f"`kind` must be 'equation', 'motion' or 'expression', got "
+                             f"{self.kind!r}.")
         object.__setattr__(self, "printed", tuple(as_expr(p) for p in _tuple(self.printed)))
         object.__setattr__(self, "reference", tuple(as_expr(p) for p in _tuple(self.reference)))
         if self.kind == "expression" and len(self.reference) != len(self.printed):

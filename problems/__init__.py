@@ -1,31 +1,154 @@
 """The problems of the course sources, each written twice (Newton--Euler and Lagrange).
 
-Each module defines one or more :class:`dualmech.problem.Problem` subclasses and lists their
-instances in ``PROBLEMS``.  :func:`all_problems` gathers them; :func:`get` finds one by name.
+Every module of this package (names not starting with ``_``) defines one or more
+:class:`dualmech.problem.Problem` subclasses and lists them in ``PROBLEMS``.  The catalogue is
+found by reading the modules' *declarations* (their source text, parsed with :mod:`ast`):
+listing it imports nothing, so ``dualmech list`` never builds a model.  :func:`all_problems`
+imports the modules and gives instances; :func:`get` finds one problem by name.
+
+A problem class declares, as literals, ``name``, ``title``, ``source`` (and optionally
+``summary``), ``coordinates = (Coordinate(...), ...)`` and ``reactions = (Reaction("F", ...),
+...)``; :func:`declarations` reads those.  A parametric problem (``n_link_pendulum``) declares
+``parametric = "n"`` and builds its coordinates in ``__init__``.
+
+Systems of the sources that are deliberately not modelled are listed in :data:`OUT_OF_SCOPE`
+with the reason.
 """
 from __future__ import annotations
 
+import ast
 import importlib
+from dataclasses import dataclass
+from pathlib import Path
 
-from dualmech.problem import Problem
+__all__ = ["Declaration", "OUT_OF_SCOPE", "declarations", "all_problems", "get", "module_of"]
 
-#: Problem modules, in the order `dualmech list` shows them.
-MODULES = ("toy_car", "falling_container", "block_on_wedge", "pendulum_on_mass",
-           "cart_pendulum")
+_HERE = Path(__file__).resolve().parent
+
+#: Systems of the sources that the catalogue does not model: ``(name, source, reason)``.
+OUT_OF_SCOPE = (
+    ("shaft_torsion", "004_f75aa9bb64d0737a.txt: problem 3",
+     "a continuous elastic shaft (a field phi(x), solved by the calculus of variations): "
+     "dualmech models systems with finitely many coordinates; a discretised shaft would be a "
+     "different problem from the one the source solves"),
+    ("string_modes", "002_df41972c66c4514e.txt: vibration of a taut string",
+     "a continuous string (a wave equation in u(x, t)): dualmech models systems with finitely "
+     "many coordinates; the beaded string (taut_string_masses) is its finite version"),
+)
 
 
-def all_problems() -> list[Problem]:
-    """One instance of every problem, in catalogue order."""
+@dataclass(frozen=True)
+class Declaration:
+    """What a problem module declares about one problem, read without importing it."""
+
+    module: str
+    cls: str
+    name: str
+    title: str
+    source: str
+    summary: str
+    coordinates: tuple
+    reactions: tuple
+    parametric: str = ""
+
+    @property
+    def dof(self) -> int | str:
+        return self.parametric or len(self.coordinates)
+
+    @property
+    def source_file(self) -> str:
+        return self.source.split(":")[0]
+
+
+def _literal(node):
+    try:
+        return ast.literal_eval(node)
+    except ValueError:
+        return None
+
+
+def _call_names(node, func: str) -> tuple:
+    """First arguments of the ``func(...)`` calls in a tuple literal (coordinate/reaction names)."""
     out = []
-    for mod in MODULES:
-        module = importlib.import_module(f"problems.{mod}")
-        out.extend(cls() for cls in module.PROBLEMS)
-    return out
+    if isinstance(node, (ast.Tuple, ast.List)):
+        for elt in node.elts:
+            if isinstance(elt, ast.Call) and getattr(elt.func, "id", "") == func and elt.args:
+                arg = elt.args[0]
+                if isinstance(arg, ast.Constant):
+                    out.append(str(arg.value))
+                elif isinstance(arg, ast.Name):
+                    out.append(arg.id)
+                else:
+                    out.append(ast.unparse(arg))
+    return tuple(out)
 
 
-def get(name: str) -> Problem:
-    """The problem called ``name``; ``KeyError`` lists the known names."""
-    found = {p.name: p for p in all_problems()}
-    if name not in found:
-        raise KeyError(f"no problem named {name!r}; known problems: {', '.join(found)}.")
-    return found[name]
+def _read(path: Path) -> list[Declaration]:
+    tree = ast.parse(path.read_text(encoding="utf-8"), filename=str(path))
+    found = []
+    for node in tree.body:
+        if not isinstance(node, ast.ClassDef):
+            continue
+        attrs = {}
+        for stmt in node.body:
+            if isinstance(stmt, ast.Assign):
+                targets = stmt.targets[0]
+                names = [t.id for t in (targets.elts if isinstance(targets, ast.Tuple)
+                                        else [targets]) if isinstance(t, ast.Name)]
+                values = (stmt.value.elts if isinstance(stmt.value, ast.Tuple)
+                          and isinstance(targets, ast.Tuple) else [stmt.value])
+                for n, v in zip(names, values):
+                    attrs[n] = v
+            elif isinstance(stmt, ast.AnnAssign) and isinstance(stmt.target, ast.Name) \
+                    and stmt.value is not None:
+                attrs[stmt.target.id] = stmt.value
+        name = _literal(attrs["name"]) if "name" in attrs else None
+        if not isinstance(name, str) or not name:
+            continue
+        found.append(Declaration(
+            module=path.stem, cls=node.name, name=name,
+            title=str(_literal(attrs.get("title", ast.Constant(""))) or ""),
+            source=str(_literal(attrs.get("source", ast.Constant(""))) or ""),
+            summary=str(_literal(attrs.get("summary", ast.Constant(""))) or ""),
+            coordinates=_call_names(attrs.get("coordinates"), "Coordinate"),
+            reactions=_call_names(attrs.get("reactions"), "Reaction"),
+            parametric=str(_literal(attrs.get("parametric", ast.Constant(""))) or "")))
+    return found
+
+
+def declarations() -> list[Declaration]:
+    """Every problem's declaration, ordered by source file, then module, then class order."""
+    out = []
+    for path in sorted(_HERE.glob("*.py")):
+        if path.name.startswith("_"):
+            continue
+        out.extend(_read(path))
+    order = {d.module: i for i, d in enumerate(out)}
+    return sorted(out, key=lambda d: (d.source_file, order[d.module]))
+
+
+def module_of(name: str) -> Declaration:
+    """The declaration of problem ``name``; ``KeyError`` names the close matches."""
+    decls = {d.name: d for d in declarations()}
+    if name not in decls:
+        import difflib
+        close = difflib.get_close_matches(name, list(decls), n=3)
+        hint = f" Did you mean {', '.join(repr(c) for c in close)}?" if close else ""
+        raise KeyError(f"no problem named {name!r}.{hint} known problems: "
+                       f"{', '.join(decls)}.")
+    return decls[name]
+
+
+def _class(decl: Declaration):
+    module = importlib.import_module(f"problems.{decl.module}")
+    return getattr(module, decl.cls)
+
+
+def all_problems() -> list:
+    """One instance of every problem (parametric ones at their default size), catalogue order."""
+    return [_class(d)() for d in declarations()]
+
+
+def get(name: str, **options):
+    """The problem called ``name`` (``options`` go to a parametric problem, e.g. ``n=10``)."""
+    return _class(module_of(name))(**options)

@@ -111,7 +111,7 @@ def test_integer_systems_stay_exact():
     # regression: int / int in the elimination gave floats, and a float residual of 1e36
     # passed the mpmath tolerance scaled by 1e71 -- a dropped spring was called equivalent
     from fractions import Fraction
-    from dualmech import _linalg as la
+    from dualmech.verify import linalg as la
     res, lam, und = la.residual_after_least_squares([[2], [4]], [1, 3])
     assert all(isinstance(v, Fraction) for v in res + lam)
     assert res == [Fraction(1, 5) - 0, Fraction(3) - Fraction(14, 5)] or res[0] != 0

@@ -111,7 +111,7 @@ def test_a_flipped_force_or_inertia_changes_the_motion(ingredient):
 
 @pytest.mark.parametrize("ingredient", MOTION_INGREDIENTS)
 def test_comparator_catches_a_flipped_force_or_inertia(ingredient):
-    # regression: with int / int -> float in dualmech/_linalg.py the integer reaction matrix
+    # regression: with int / int -> float in dualmech/verify/linalg.py the integer reaction matrix
     # made the least squares inexact and the flipped forces passed as equivalent
     broken = problem.model("newton_euler").flipped(ingredient)
     result = compare_models(problem.model("lagrange"), broken, explain=False)

@@ -11,7 +11,7 @@ from fractions import Fraction
 
 import mpmath
 
-from .exact import MP_DIGITS
+from ..exact import MP_DIGITS
 
 
 def _exact(rows) -> bool:

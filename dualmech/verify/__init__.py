@@ -1,0 +1,1 @@
+"""Deciding and explaining: exact linear algebra on sampled values, pair verdicts, blame."""
