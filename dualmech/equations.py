@@ -28,6 +28,7 @@ from typing import Mapping, Sequence
 import sympy as sp
 
 from ._expr import as_expr
+from ._algebra import linear_coefficients
 from .kinematics import t
 
 __all__ = ["EquationSet", "ModelError", "StateSymbols", "state_symbols"]
@@ -140,30 +141,42 @@ class EquationSet:
         return list(self.accelerations) + list(self.unknowns)
 
     @cached_property
-    def _matrix(self) -> tuple[sp.Matrix, sp.Matrix]:
-        eqs = sp.Matrix(self.equations)
-        A = eqs.jacobian(self._unknown_vector)
-        zero = {u: 0 for u in self._unknown_vector}
-        b = -eqs.xreplace(zero)
+    def _plain(self) -> tuple[sp.Matrix, sp.Matrix]:
+        """``(A, b)`` in plain symbols (``q``, ``q_dot``; see :func:`state_symbols`)."""
+        plain = [self.to_plain(e) for e in self.equations]
+        unknown = [s.qdd for s in self.states] + list(self.unknowns)
+        try:
+            A, b, bad = linear_coefficients(plain, unknown)
+        except ValueError as exc:
+            raise ModelError(f"model `{self.name}`: {exc}") from None
+        if bad:
+            names = [from_plain(u, self.coordinates) for u in bad]
+            raise ModelError(f"model `{self.name}` is not linear in {names}; the equations must "
+                             "be linear in the accelerations and the reactions.")
         return A, b
 
+    @cached_property
+    def _matrix(self) -> tuple[sp.Matrix, sp.Matrix]:
+        A, b = self._plain
+        back = lambda e: from_plain(e, self.coordinates)  # noqa: E731
+        return A.applyfunc(back), b.applyfunc(back)
+
     def _check_linear(self) -> None:
-        A, _ = self._matrix
-        bad = [u for u in self._unknown_vector if any(a.has(u) for a in A)]
-        if bad:
-            raise ModelError(f"model `{self.name}` is not linear in {bad}; the equations must be "
-                             "linear in the accelerations and the reactions.")
+        allowed = set(self.coordinates)
         for e in self.equations:
             for d in e.atoms(sp.Derivative):
                 if d.derivative_count > 2:
                     raise ModelError(f"model `{self.name}` contains {d}: at most second "
                                      "derivatives of the coordinates may appear.")
-        allowed = set(self.coordinates)
-        for e in self.equations:
             for f in e.atoms(sp.core.function.AppliedUndef):
                 if f not in allowed:
                     raise ModelError(f"model `{self.name}` uses {f}, which is not one of its "
                                      f"coordinates {list(self.coordinates)}.")
+        self._plain  # noqa: B018  (raises ModelError when not linear)
+
+    def plain_matrix(self) -> tuple[sp.Matrix, sp.Matrix]:
+        """``(A, b)`` with ``A [q''; unknowns] = b``, in plain state symbols."""
+        return self._plain
 
     def matrix(self) -> tuple[sp.Matrix, sp.Matrix]:
         """``(A, b)`` with ``A [q''; unknowns] = b``."""
@@ -362,26 +375,33 @@ class EquationSet:
         return "\n\n".join(lines)
 
 
+_RULES: dict = {}
+
+
+def _rules(coordinates) -> tuple[dict, dict, dict]:
+    """``(derivatives -> plain, q -> plain, plain -> function form)`` for ``coordinates``."""
+    key = tuple(coordinates)
+    hit = _RULES.get(key)
+    if hit is None:
+        d, q0, back = {}, {}, {}
+        for q in key:
+            s = state_symbols(q)
+            d2, d1 = q.diff(t, 2), q.diff(t)
+            d[d2], d[d1], q0[q] = s.qdd, s.qd, s.q
+            back[s.qdd], back[s.qd], back[s.q] = d2, d1, q
+        hit = _RULES[key] = (d, q0, back)
+    return hit
+
+
 def to_plain(expr, coordinates):
     """Replace ``q''``, ``q'``, ``q`` of ``coordinates`` in ``expr`` by plain symbols."""
-    rules = {}
-    for q in coordinates:
-        s = state_symbols(q)
-        rules[q.diff(t, 2)] = s.qdd
-        rules[q.diff(t)] = s.qd
-    expr = as_expr(expr).xreplace(rules)
-    return expr.xreplace({q: state_symbols(q).q for q in coordinates})
+    d, q0, _ = _rules(coordinates)
+    return as_expr(expr).xreplace(d).xreplace(q0)
 
 
 def from_plain(expr, coordinates):
     """Inverse of :func:`to_plain`."""
-    rules = {}
-    for q in coordinates:
-        s = state_symbols(q)
-        rules[s.qdd] = q.diff(t, 2)
-        rules[s.qd] = q.diff(t)
-        rules[s.q] = q
-    return as_expr(expr).xreplace(rules)
+    return as_expr(expr).xreplace(_rules(coordinates)[2])
 
 
 def _name(q) -> str:

@@ -30,7 +30,8 @@ import sympy as sp
 
 from ._expr import as_expr
 from .bodies import Particle, RigidBody
-from .equations import EquationSet, ModelError
+from ._algebra import Bridge, total_derivative
+from .equations import EquationSet, ModelError, from_plain, state_symbols, to_plain
 from .kinematics import Frame, Point, Vector, t
 
 __all__ = ["Lagrangian"]
@@ -139,30 +140,53 @@ class Lagrangian:
         return expr.xreplace(dict(self._prescribed))
 
     def equations(self) -> EquationSet:
+        """Lagrange's equations, one per free coordinate, plus each constraint's acceleration level.
+
+        The algebra runs on plain symbols in symengine (:mod:`dualmech._algebra`):
+        ``d/dt dT/dq'_j`` is expanded by the chain rule, so nothing is differentiated with
+        respect to a ``Derivative``.
+        """
         free = [q for q in self.coordinates if q not in self._prescribed]
         if not (self._T or self._V or self._R or self._Q):
             raise ModelError(f"`{self.name}` has no energy or force terms.")
+        plain = lambda e: to_plain(self._known(e), free)  # noqa: E731
+        terms = {"T": {k: plain(v) for k, v in self._T.items()},
+                 "V": {k: plain(v) for k, v in self._V.items()},
+                 "R": {k: plain(v) for k, v in self._R.items()}}
+        Q = {k: [plain(x) for x in v] for k, v in self._Q.items()}
+        cons = [(lam, plain(level), [plain(g) for g in grad])
+                for lam, level, grad in self._constraints]
+        everything = [e for d in terms.values() for e in d.values()] + \
+            [x for v in Q.values() for x in v] + [x for _, lv, gr in cons for x in [lv] + gr]
+        states = [state_symbols(q) for q in free]
+        try:
+            br = Bridge(everything, [t] + [x for s in states for x in (s.q, s.qd, s.qdd)])
+        except ValueError as exc:
+            raise ModelError(f"`{self.name}`: {exc}") from None
+        T_se = {k: br.se(v) for k, v in terms["T"].items()}
         contributions = []
-        for j, q in enumerate(self.coordinates):
-            if q in self._prescribed:
-                continue
-            qd = q.diff(t)
+        index = {q: j for j, q in enumerate(self.coordinates)}
+        for q, s in zip(free, states):
+            j = index[q]
+            qs, qds = br.se(s.q), br.se(s.qd)
             parts: dict = {}
-            for key, T in self._T.items():
-                T = self._known(T)
-                parts[key] = T.diff(qd).diff(t) - T.diff(q)
-            for key, V in self._V.items():
-                parts[key] = parts.get(key, 0) + self._known(V).diff(q)
-            for key, R in self._R.items():
-                parts[key] = parts.get(key, 0) + self._known(R).diff(qd)
-            for key, Q in self._Q.items():
-                parts[key] = parts.get(key, 0) - self._known(Q[j])
-            for lam, _, grad in self._constraints:
-                parts[f"constraint {lam.name}"] = -lam * self._known(grad[j])
+            for key, T in T_se.items():
+                parts[key] = total_derivative(T.diff(qds), states, t, br) - T.diff(qs)
+            for key, V in terms["V"].items():
+                parts[key] = parts.get(key, 0) + br.se(V).diff(qs)
+            for key, R in terms["R"].items():
+                parts[key] = parts.get(key, 0) + br.se(R).diff(qds)
+            for key, Qk in Q.items():
+                parts[key] = parts.get(key, 0) - br.se(Qk[j])
+            for lam, _, grad in cons:
+                parts[f"constraint {lam.name}"] = -br.se(lam) * br.se(grad[j])
             contributions.append((f"Lagrange, {q.func.__name__}", parts))
-        for lam, level, _ in self._constraints:
+        for lam, level, _ in cons:
             contributions.append((f"constraint {lam.name} (acceleration level)",
-                                  {f"constraint {lam.name}": self._known(level)}))
+                                  {f"constraint {lam.name}": br.se(level)}))
+        back = lambda e: from_plain(br.sp(e), free)  # noqa: E731
+        contributions = [(label, {k: back(v) for k, v in p.items()})
+                         for label, p in contributions]
         eqs = tuple(sp.Add(*p.values()) for _, p in contributions)
         return EquationSet(self.name, tuple(free), eqs,
                            tuple(lam for lam, _, _ in self._constraints),

@@ -1,0 +1,97 @@
+"""The heavy algebra of the derivation path, on symengine, with sympy at the edges.
+
+Measured (planar 8-link chain): differentiating with sympy with respect to ``Derivative``
+objects took 9 s for the linearity check alone, and Lagrange's ``d/dt dT/dq'`` 5 s; the same
+work on plain symbols in symengine takes a few hundredths of a second.  Everything here works
+on *plain* symbols (``q``, ``q_dot``, ``q_ddot``; see :func:`dualmech.equations.state_symbols`)
+and returns sympy expressions whose symbols are the caller's own (symengine forgets sympy's
+assumptions, so they are mapped back by name).
+"""
+from __future__ import annotations
+
+from typing import Sequence
+
+import symengine as se
+import sympy as sp
+
+__all__ = ["Bridge", "linear_coefficients", "total_derivative"]
+
+
+class Bridge:
+    """Converts sympy expressions to symengine and back, keeping each symbol's identity."""
+
+    def __init__(self, exprs: Sequence = (), symbols: Sequence = ()):
+        self.by_name: dict = {}
+        for s in symbols:
+            self._add(s)
+        for e in exprs:
+            for s in sp.sympify(e).free_symbols:
+                self._add(s)
+
+    def _add(self, s) -> None:
+        old = self.by_name.get(s.name)
+        if old is not None and old != s:
+            raise ValueError(
+                f"two different symbols are both called `{s.name}` ({old!r} with assumptions "
+                f"{_assumptions(old)}, and one with {_assumptions(s)}); give them different "
+                "names or the same assumptions.")
+        self.by_name[s.name] = s
+
+    def se(self, expr):
+        for s in sp.sympify(expr).free_symbols:
+            self._add(s)
+        return se.sympify(expr)
+
+    def sp(self, expr) -> sp.Expr:
+        out = sp.sympify(expr)
+        rules = {}
+        for s in out.free_symbols:
+            mine = self.by_name.get(s.name)
+            if mine is not None and mine is not s:
+                rules[s] = mine
+        return out.xreplace(rules) if rules else out
+
+
+def _assumptions(s) -> str:
+    kept = {k: v for k, v in s.assumptions0.items() if k in ("real", "positive", "integer",
+                                                             "nonnegative", "complex")}
+    return str(kept or "none")
+
+
+def linear_coefficients(exprs: Sequence, unknowns: Sequence, bridge: Bridge | None = None):
+    """``(A, b, bad)`` with ``exprs = A u - b`` for the plain symbols ``u = unknowns``.
+
+    ``bad`` lists the unknowns in which some expression is not linear (then ``A`` and ``b``
+    are meaningless).  ``A`` and ``b`` are sympy matrices.
+    """
+    bridge = bridge or Bridge(exprs, unknowns)
+    us = [bridge.se(u) for u in unknowns]
+    zero = {u: 0 for u in us}
+    rows, rhs, bad = [], [], []
+    for e in exprs:
+        e = bridge.se(e)
+        row = []
+        for u in us:
+            a = e.diff(u)
+            if a != 0 and any(v in a.free_symbols for v in us):
+                bad.append(u)
+            row.append(a)
+        rows.append(row)
+        rhs.append(-e.subs(zero))
+    bad_sp = [bridge.sp(u) for u in dict.fromkeys(bad)]
+    A = sp.Matrix(len(rows), len(us), [bridge.sp(a) for row in rows for a in row])
+    b = sp.Matrix(len(rhs), 1, [bridge.sp(x) for x in rhs])
+    return A, b, bad_sp
+
+
+def total_derivative(expr, states: Sequence, time, bridge: Bridge):
+    """``d/dt`` of a symengine expression in plain state symbols ``(q, q', q'')`` and ``time``.
+
+    ``states`` are :class:`dualmech.equations.StateSymbols`; ``q''`` must not appear in
+    ``expr`` (the result is linear in the ``q''``).
+    """
+    out = expr.diff(bridge.se(time))
+    for s in states:
+        q, qd, qdd = bridge.se(s.q), bridge.se(s.qd), bridge.se(s.qdd)
+        out = out + expr.diff(q) * qd + expr.diff(qd) * qdd
+    return out
