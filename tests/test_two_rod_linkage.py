@@ -1,0 +1,155 @@
+"""Two-rod linkage on a sprung slider (problems/two_rod_linkage.py): theta and x, F_R, errata."""
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+
+from dualmech import t
+from dualmech.compare import compare
+from dualmech.equations import to_plain
+from dualmech.numeric import NumericModel
+from dualmech.testing import points
+from problems.two_rod_linkage import (M, TwoRodLinkage, c, g, k, l, l0, m, scene, theta, x)
+
+_EPS = np.finfo(float).eps
+problem = TwoRodLinkage()
+D = lambda q, n=1: q.diff(t, n)  # noqa: E731
+
+
+@pytest.fixture(scope="module")
+def comparison():
+    return compare(problem)
+
+
+def _at_pythagorean_angle(expr, sin_value):
+    """``expr`` (in theta) at cos(theta) = 3/5, sin(theta) = sin_value (+-4/5): exact, and
+    sqrt(4 l^2 sin^2) evaluates to 8 l/5 whatever the sign of sin(theta)."""
+    plain = to_plain(sp.expand_trig(expr), (theta,))
+    th = sp.Symbol("theta", real=True)
+    return sp.simplify(plain.subs({sp.cos(th): sp.Rational(3, 5), sp.sin(th): sin_value}))
+
+
+def test_declaration_validates():
+    problem.validate()
+    assert problem.model_names == ["newton_euler", "lagrange", "lagrange_x", "multiplier"]
+    assert problem.dimension_issues() == []
+
+
+def test_geometry_is_the_sources():
+    # O r_A = l (cos, sin), O r_B = 2 l cos(theta) I; x = 2 l cos(theta) - l0 (quiz 2, (a))
+    s = scene()
+    assert [sp.simplify(v) for v in s.pA.pos_from(s.o).express(s.O).components] == \
+        [l * sp.cos(theta), l * sp.sin(theta), 0]
+    assert [sp.simplify(v) for v in s.pB.pos_from(s.o).express(s.O).components] == \
+        [2 * l * sp.cos(theta), 0, 0]
+    assert problem.coordinate_maps()["lagrange_x"] == {x: 2 * l * sp.cos(theta) - l0}
+
+
+def test_theta_form_mass_matrix_is_regular_and_x_form_blows_up_where_sin_vanishes():
+    # theta: m l^2 + 4 M l^2 sin^2 > 0.  x: M + m l^2/D with D = 4 l^2 - (l0 + x)^2, and on
+    # the map D = 4 l^2 sin^2(theta): infinite where the rods fold flat (sin(theta) = 0)
+    assert sp.expand(problem.model("lagrange").mass_matrix()[0]
+                     - (m * l**2 + 4 * M * l**2 * sp.sin(theta)**2)) == 0
+    Dx = 4 * l**2 - (l0 + x)**2
+    assert sp.simplify(problem.model("lagrange_x").mass_matrix()[0] - (M + m * l**2 / Dx)) == 0
+    on_map = Dx.subs(x, 2 * l * sp.cos(theta) - l0)
+    assert sp.simplify(on_map - 4 * l**2 * sp.sin(theta)**2) == 0
+    assert problem.singular == (sp.sin(theta),)
+    lo, hi = problem.coordinate_info(theta).range
+    assert 0 < lo < hi < np.pi
+
+
+def test_x_equation_is_the_hand_derived_one():
+    # module docstring: M x'' + m l^2 (x''/D + (l0 + x) x'^2/D^2) + c x' + k x
+    #                   = m g (l0 + x)/(2 sqrt(D))
+    Dx = 4 * l**2 - (l0 + x)**2
+    hand = (M * D(x, 2) + m * l**2 * (D(x, 2) / Dx + (l0 + x) * D(x)**2 / Dx**2) + c * D(x)
+            + k * x - m * g * (l0 + x) / (2 * sp.sqrt(Dx)))
+    (eq,) = problem.model("lagrange_x").equations
+    assert sp.simplify(eq - hand) == 0
+
+
+@pytest.mark.parametrize("sin_value, same", [(sp.Rational(4, 5), True),
+                                             (sp.Rational(-4, 5), False)])
+def test_x_form_describes_the_upper_branch_only(sin_value, same):
+    # sqrt(D) = 2 l |sin(theta)|: the x form is the theta form where m is above the line, and
+    # with sin(theta) < 0 its gravity term has the wrong sign (m would hang below the line)
+    ref = problem.model("lagrange").accelerations_solved()[D(theta, 2)]
+    mapped = problem.in_reference_coordinates(problem.model("lagrange_x"))
+    (eq,) = mapped.equations
+    lhs = eq.subs(D(theta, 2), ref)
+    assert (_at_pythagorean_angle(lhs, sin_value) == 0) is same
+
+
+def test_printed_x_equation_misses_a_factor_half_and_has_the_wrong_sign_of_x():
+    # on the motion the printed left side is the true one plus
+    # m g ((l0 + x)/2 - (l0 - x))/sqrt(D); at cos = 3/5, sin = 4/5: x + l0 = 6 l/5, sqrt(D) = 8 l/5
+    pub = {p.label: p for p in problem.published()}["(b) x equation"]
+    ref = problem.model("lagrange").accelerations_solved()[D(theta, 2)]
+    on_x = pub.printed[0]
+    x_th = 2 * l * sp.cos(theta) - l0
+    printed = on_x.subs({D(x, 2): D(x_th, 2), D(x): D(x_th)}).subs(x, x_th)
+    value = _at_pythagorean_angle(printed.subs(D(theta, 2), ref), sp.Rational(4, 5))
+    xv = 6 * l / 5 - l0
+    hand = m * g * ((l0 + xv) / 2 - (l0 - xv)) / (8 * l / 5)
+    assert sp.simplify(value - hand) == 0
+
+
+@settings(max_examples=40)
+@given(points(problem))
+def test_bar_force_and_shaft_force_are_the_hand_derived_ones(point):
+    # M, I:  F_R cos(theta) = M x'' + c x' + k x   (the source's (B));
+    # M, J:  N = M g + F_R sin(theta)
+    nm = NumericModel(problem.model("newton_euler"), point.params)
+    A, b = nm.system(point.time, point.q, point.qd)
+    sol = np.linalg.solve(A, b)
+    thdd = sol[0]
+    names = [u.name for u in problem.model("newton_euler").unknowns]
+    F_R, N = sol[1 + names.index("F_R")], sol[1 + names.index("N")]
+    p = {str(s): v for s, v in point.params.items()}
+    (th,), (thd,) = point.q, point.qd
+    xv = 2 * p["l"] * np.cos(th) - p["l0"]
+    xd = -2 * p["l"] * thd * np.sin(th)
+    xdd = -2 * p["l"] * (thdd * np.sin(th) + thd**2 * np.cos(th))
+    rhs = p["M"] * xdd + p["c"] * xd + p["k"] * xv
+    scale = max(1.0, float(np.max(np.abs(b))), abs(F_R))
+    tol = 64 * _EPS * np.linalg.cond(A) * scale
+    assert abs(F_R * np.cos(th) - rhs) <= tol
+    assert abs(N - p["M"] * p["g"] - F_R * np.sin(th)) <= tol
+
+
+# Each verdict derived by hand (module docstring of problems/two_rod_linkage.py).
+EXPECTED = {
+    "(a) x(theta)": "correct",
+    "(a) x'(theta, theta')": "correct",
+    "(a) theta'(x, x')": "correct",          # on the branch sin(theta) > 0
+    "(a) x''": "correct",
+    "(a) theta''": "correct",
+    "(b) T": "correct",
+    "(b) V, middle form": "wrong",           # k |r_B|^2/2 for k (|r_B| - l0)^2/2
+    "(b) V": "correct",
+    "(b) Xi_x": "correct",
+    "(b) L in x": "correct",
+    "(b) x equation": "wrong",               # m g (l0 - x)/sqrt(D) for m g (l0 + x)/(2 sqrt(D))
+    "(b) Xi_theta": "correct",
+    "(b) L in theta": "correct",
+    "(b) theta equation": "correct",
+    "(B) I projection": "correct",
+    "(B) F_R": "correct",
+    "(B) F_R in x": "correct",
+    "(B) F_R in theta": "wrong",             # k (2 l cos(theta)) for k (2 l cos(theta) - l0)
+}
+
+
+def test_comparator_agrees_and_judges_the_printed_answers(comparison):
+    assert comparison.equivalent, str(comparison)
+    pairs = {(p.kind, p.candidate): p for p in comparison.pairs}
+    assert pairs[("motion", "newton_euler")].method == "exact"
+    assert pairs[("motion", "multiplier")].method == "exact"
+    assert pairs[("reactions", "multiplier")].equivalent
+    assert set(pairs[("reactions", "multiplier")].reactions) == {"F_R", "N"}
+    verdicts = {v.label: v for v in comparison.published}
+    assert {k: v.verdict for k, v in verdicts.items()} == EXPECTED
+    # the spring term of F_R in theta is short by k l0 (component 1: printed - derived)
+    assert "k*l0" in verdicts["(B) F_R in theta"].detail
+    assert "k*l0*(2*l*cos(theta(t)) - l0/2)" in verdicts["(b) V, middle form"].detail
