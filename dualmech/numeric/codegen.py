@@ -1,0 +1,364 @@
+"""Generated numeric code: straight-line programs printed as Python/NumPy source.
+
+A list of expressions in the state ``(t, q, q')`` and the parameters becomes one
+:class:`Program`:
+
+1. every input is renamed by position (``t_``, ``q_0``, ``u_0`` for ``q_0'``, ``p_0`` ...), so
+   symbol names, assumptions or clashes never reach the printed code;
+2. each expression is expanded (symengine) and written as a sum of *static* coefficients (the
+   parameter-only factors) times *dynamic* monomials (products of powers of the state and of
+   functions of it); every distinct coefficient becomes one static value ``k_i``, computed once
+   per parameter set instead of once per call;
+3. common subexpressions of the dynamic part (and, separately, of the static part) are
+   eliminated (``symengine.cse``);
+4. the program is printed twice: scalar Python (``math``) for one state and NumPy for arrays of
+   states (the same operations elementwise).
+
+Expressions are never passed through text: symengine receives sympy objects, and the printer
+walks symengine's trees.  Node types the printer does not know (``Piecewise``,
+``Heaviside`` ...) are printed by sympy's own code printers.
+
+Example
+-------
+>>> import sympy as sp
+>>> x, v, k = sp.symbols("x v k")
+>>> prog = program([k * sp.sin(x) * v**2], t=sp.Symbol("t"), q=[x], qd=[v], params=[k])
+>>> src = python_source(prog, key="example")
+>>> "def vector" in src and "def scalar" in src
+True
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Sequence
+
+import symengine as se
+import sympy as sp
+
+__all__ = ["GENERATOR_VERSION", "Program", "program", "python_source"]
+
+#: Bumped whenever the generated code changes meaning or form (invalidates every cache entry).
+GENERATOR_VERSION = "2"
+
+
+@dataclass(frozen=True)
+class Program:
+    """Straight-line code computing ``outputs`` from ``(t_, q_i, u_i)``, ``p_i`` and ``k_i``.
+
+    ``static`` assigns ``k_i`` (and temporaries) from the parameters ``p_i`` only; ``body``
+    assigns temporaries from the state; ``outputs`` are expressions in all of these.
+    """
+
+    n: int
+    n_params: int
+    static: tuple
+    static_names: tuple
+    body: tuple
+    outputs: tuple
+
+
+class _Statics:
+    """Distinct parameter-only coefficients, each given one symbol ``k_i``."""
+
+    def __init__(self):
+        self.defs: dict = {}
+
+    def symbol(self, expr):
+        if expr.is_Number:
+            return expr
+        hit = self.defs.get(expr)
+        if hit is not None:
+            return hit
+        hit = self.defs.get(-expr)
+        if hit is not None:
+            return -hit
+        s = se.Symbol(f"k_{len(self.defs)}")
+        self.defs[expr] = s
+        return s
+
+
+_TRIG = ("sin", "cos")
+
+
+class _Splitter:
+    """Rewrites expressions as sums of static symbols times dynamic monomials."""
+
+    def __init__(self, dynamic: set):
+        self.dynamic = dynamic
+        self.statics = _Statics()
+        self._inner: dict = {}
+
+    def is_static(self, e) -> bool:
+        return not (e.free_symbols & self.dynamic)
+
+    def groups(self, expr) -> dict:
+        """``{dynamic monomial: static coefficient}`` of the expanded ``expr``."""
+        out: dict = {}
+        for term in _args(se.expand(expr), "Add"):
+            st, dy = [], []
+            for f in _args(term, "Mul"):
+                (dy.append(self.inner(f)) if f.free_symbols & self.dynamic else st.append(f))
+            d = se.Mul(*dy)
+            out[d] = out.get(d, 0) + se.Mul(*st)
+        return {d: c for d, c in out.items() if c != 0}
+
+    def split(self, expr):
+        if self.is_static(expr):
+            return self.statics.symbol(expr)
+        return se.Add(*[self.statics.symbol(c) * d for d, c in self.groups(expr).items()])
+
+    def inner(self, f):
+        """A dynamic factor with the static parts of its arguments hoisted as well."""
+        if f.is_Symbol:
+            return f
+        hit = self._inner.get(f)
+        if hit is None:
+            name = type(f).__name__
+            if name == "Pow":
+                base, ex = f.args
+                new_base = base if base.is_Symbol else self.split(base)
+                hit = se.Pow(new_base, ex if self.is_static(ex) else self.split(ex))
+            elif f.args:
+                hit = f.func(*[self.split(a) for a in f.args])
+            else:
+                hit = f
+            self._inner[f] = hit
+        return hit
+
+    def magnitude(self, exprs) -> object:
+        """Sum over ``exprs`` of the terms' absolute values with every sin/cos taken as 1.
+
+        A pivot far below this size is a cancellation to zero: the matrix is singular there
+        even when its condition number (which ignores scale) looks harmless.
+        """
+        by_mono: dict = {}
+        for e in exprs:
+            if self.is_static(e):
+                by_mono[se.Integer(1)] = by_mono.get(se.Integer(1), 0) + se.Abs(e)
+                continue
+            for d, c in self.groups(e).items():
+                mono = se.Mul(*[_untrig(f) for f in _args(d, "Mul")])
+                by_mono[mono] = by_mono.get(mono, 0) + se.Abs(c)
+        return se.Add(*[self.statics.symbol(c) * m for m, c in by_mono.items()])
+
+
+def _untrig(f):
+    """``|f|`` with sin/cos (and their powers) replaced by 1."""
+    name = type(f).__name__
+    if name in _TRIG:
+        return se.Integer(1)
+    if name == "Pow" and type(f.args[0]).__name__ in _TRIG:
+        return se.Integer(1) if f.args[1].is_Number and f.args[1] > 0 else se.Abs(f)
+    return se.Abs(f)
+
+
+def _args(e, kind: str) -> tuple:
+    return e.args if type(e).__name__ == kind else (e,)
+
+
+def _positional(t, q, qd, params):
+    """Renaming of the inputs to positional, assumption-free symbols."""
+    rename = {t: sp.Symbol("t_")}
+    rename.update({s: sp.Symbol(f"q_{i}") for i, s in enumerate(q)})
+    rename.update({s: sp.Symbol(f"u_{i}") for i, s in enumerate(qd)})
+    rename.update({s: sp.Symbol(f"p_{i}") for i, s in enumerate(params)})
+    return rename
+
+
+def program(outputs: Sequence, *, t, q: Sequence, qd: Sequence, params: Sequence,
+            scale_of: int = 0) -> Program:
+    """Compile sympy ``outputs`` in ``t``, ``q``, ``qd`` (plain symbols) and ``params``.
+
+    With ``scale_of = k > 0`` one output is appended: the magnitude (see
+    :meth:`_Splitter.magnitude`) of the first ``k`` outputs.
+    """
+    rename = _positional(t, q, qd, params)
+    extra = set().union(*[sp.sympify(o).free_symbols for o in outputs]) - set(rename)
+    if extra:
+        raise ValueError(f"the expressions use {sorted(map(str, extra))}, which are neither "
+                         "state symbols nor parameters.")
+    exprs = [se.sympify(sp.sympify(o).xreplace(rename)) for o in outputs]
+    dynamic = {se.Symbol("t_")} | {se.Symbol(f"q_{i}") for i in range(len(q))} \
+        | {se.Symbol(f"u_{i}") for i in range(len(qd))}
+    splitter = _Splitter(dynamic)
+    split = [splitter.split(e) for e in exprs]
+    if scale_of:
+        split.append(splitter.magnitude(exprs[:scale_of]))
+    names = tuple(splitter.statics.defs.values())
+    static_repl, static_out = se.cse(list(splitter.statics.defs.keys())) if names else ([], [])
+    static = tuple(static_repl) + tuple(zip(names, static_out))
+    body, outs = se.cse(split)
+    return Program(len(q), len(params), _rename_temps(static, "s"), names,
+                   *_rename_body(body, outs))
+
+
+def _rename_temps(assignments, prefix):
+    """Give common-subexpression temporaries a prefix of their own (``s0``, ``c0``, ...)."""
+    mapping, out = {}, []
+    for sym, expr in assignments:
+        expr = expr.xreplace(mapping) if mapping else expr
+        if sym.name.startswith("x"):
+            new = se.Symbol(f"{prefix}{len(mapping)}")
+            mapping[sym] = new
+            sym = new
+        out.append((sym, expr))
+    return tuple(out)
+
+
+def _rename_body(body, outputs):
+    mapping = {}
+    out = []
+    for sym, expr in body:
+        expr = expr.xreplace(mapping) if mapping else expr
+        new = se.Symbol(f"c{len(mapping)}")
+        mapping[sym] = new
+        out.append((new, expr))
+    outs = tuple(o.xreplace(mapping) if mapping else o for o in outputs)
+    return tuple(out), outs
+
+
+# -- printing ----------------------------------------------------------------------------
+
+_PY_FUNCS = {"sin": "_sin", "cos": "_cos", "tan": "_tan", "asin": "_asin", "acos": "_acos",
+             "atan": "_atan", "atan2": "_atan2", "sinh": "_sinh", "cosh": "_cosh",
+             "tanh": "_tanh", "log": "_log", "Abs": "abs"}
+_NP_FUNCS = {"sin": "_np.sin", "cos": "_np.cos", "tan": "_np.tan", "asin": "_np.arcsin",
+             "acos": "_np.arccos", "atan": "_np.arctan", "atan2": "_np.arctan2",
+             "sinh": "_np.sinh", "cosh": "_np.cosh", "tanh": "_np.tanh", "log": "_np.log",
+             "Abs": "_np.abs", "sign": "_np.sign"}
+
+
+class _Printer:
+    """Python source of symengine expressions; ``numpy`` selects elementwise functions."""
+
+    def __init__(self, numpy: bool):
+        self.numpy = numpy
+        self.funcs = _NP_FUNCS if numpy else _PY_FUNCS
+        self.exp = "_np.exp" if numpy else "_exp"
+        self.sqrt = "_np.sqrt" if numpy else "_sqrt"
+
+    def __call__(self, e) -> str:
+        name = type(e).__name__
+        method = getattr(self, f"_{name}", None)
+        if method is not None:
+            return method(e)
+        if e.is_Number:
+            return repr(float(e))
+        if name in self.funcs:
+            return f"{self.funcs[name]}({', '.join(self(a) for a in e.args)})"
+        return self._sympy(e)
+
+    def _Symbol(self, e):
+        return e.name
+
+    def _Integer(self, e):
+        return f"{int(e)}.0" if abs(int(e)) < 2**53 else repr(float(e))
+
+    def _Pi(self, e):
+        return repr(float(e))
+
+    _Exp1 = _Pi
+
+    def _Add(self, e):
+        parts = [self(a) for a in e.args]
+        text = parts[0]
+        for p in parts[1:]:
+            text += f" - {p[1:]}" if p.startswith("-") and not p.startswith("-(") else f" + {p}"
+        return f"({text})"
+
+    def _Mul(self, e):
+        num, den, sign = [], [], ""
+        for a in e.args:
+            if a.is_Number and a == -1:
+                sign = "-"
+            elif type(a).__name__ == "Pow" and a.args[1].is_Number and a.args[1] < 0:
+                den.append(self(se.Pow(a.args[0], -a.args[1])))
+            else:
+                num.append(self(a))
+        text = "*".join(num) if num else "1.0"
+        if den:
+            text += f"/({'*'.join(den)})"
+        return f"{sign}{text}"
+
+    def _Pow(self, e):
+        base, ex = e.args
+        if type(base).__name__ == "Exp1":
+            return f"{self.exp}({self(ex)})"
+        b = self(base)
+        atom = base.is_Symbol or type(base).__name__ in self.funcs
+        b = b if atom or b.startswith("(") else f"({b})"
+        if ex.is_Integer:
+            k = int(ex)
+            if 0 < k <= 3:
+                return "*".join([b] * k)
+            if -3 <= k < 0:
+                return f"(1.0/({'*'.join([b] * -k)}))"
+            return f"{b}**{k}"
+        if ex.is_Number and ex == se.Rational(1, 2):
+            return f"{self.sqrt}({self(base)})"
+        if ex.is_Number and ex == se.Rational(-1, 2):
+            return f"(1.0/{self.sqrt}({self(base)}))"
+        return f"{b}**({self(ex)})"
+
+    def _sign(self, e):
+        if self.numpy:
+            return f"_np.sign({self(e.args[0])})"
+        return f"_sign({self(e.args[0])})"
+
+    def _sympy(self, e) -> str:
+        """Node types we do not print ourselves: sympy's code printers."""
+        from sympy.printing.numpy import NumPyPrinter
+        from sympy.printing.pycode import PythonCodePrinter
+        expr = sp.sympify(e)  # a symengine object, converted through its own _sympy_
+        printer = NumPyPrinter({"fully_qualified_modules": True}) if self.numpy \
+            else PythonCodePrinter({"fully_qualified_modules": True})
+        text = printer.doprint(expr)
+        if "Not supported" in text:
+            raise NotImplementedError(f"cannot generate code for {expr}")
+        return f"({text})"
+
+
+def _block(assignments, printer, indent: str) -> list[str]:
+    return [f"{indent}{s.name} = {printer(e)}" for s, e in assignments]
+
+
+def _unpack(names: Sequence[str], source: str, indent: str) -> list[str]:
+    if not names:
+        return []
+    return [f"{indent}{', '.join(names)}, = {source}"]
+
+
+def python_source(prog: Program, key: str) -> str:
+    """A module with ``static(p)``, ``scalar(p, k)`` and ``vector(p, k)``.
+
+    ``static(p)`` returns the tuple ``k`` of static values; ``scalar(p, k)`` and
+    ``vector(p, k)`` return ``evaluate(t_, y)`` for one state (a list ``[q..., q'...]``) or for
+    states in the columns of an array ``(2n, K)``, giving the tuple of outputs.
+    """
+    n = prog.n
+    params = [f"p_{i}" for i in range(prog.n_params)]
+    states = [f"q_{i}" for i in range(n)] + [f"u_{i}" for i in range(n)]
+    k_names = [s.name for s in prog.static_names]
+    lines = [f'"""Generated by dualmech.numeric.codegen {GENERATOR_VERSION}; do not edit."""',
+             "import math as _m", "import numpy as _np", "",
+             "from math import (sin as _sin, cos as _cos, tan as _tan, asin as _asin, "
+             "acos as _acos, atan as _atan,", "                  atan2 as _atan2, sinh as _sinh, "
+             "cosh as _cosh, tanh as _tanh, log as _log, exp as _exp, sqrt as _sqrt)",
+             "math = _m", "numpy = _np", "",
+             f"KEY = {key!r}", f"VERSION = {GENERATOR_VERSION!r}",
+             f"N_OUTPUTS = {len(prog.outputs)}", "", "",
+             "def _sign(x):", "    return (x > 0) - (x < 0)", "", "",
+             "def static(p):"]
+    lines += _unpack(params, "p", "    ")
+    scalar = _Printer(numpy=False)
+    lines += _block(prog.static, scalar, "    ")
+    lines += [f"    return ({''.join(k + ', ' for k in k_names)})", ""]
+    for kind, printer in (("scalar", scalar), ("vector", _Printer(numpy=True))):
+        lines += ["", f"def {kind}(p, k):"]
+        lines += _unpack(params, "p", "    ") + _unpack(k_names, "k", "    ")
+        lines += ["", "    def evaluate(t_, y):"]
+        lines += _unpack(states, "y", "        ")
+        lines += _block(prog.body, printer, "        ")
+        outs = ", ".join(printer(o) for o in prog.outputs)
+        lines += [f"        return ({outs},)", "", "    return evaluate", ""]
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,365 @@
+"""Compiled equation sets: ``A [q''; lambda] = b`` at one state or at many states at once.
+
+:class:`NumericModel` binds parameter values to the generated code of an
+:class:`~dualmech.equations.EquationSet` (see :mod:`dualmech.numeric.codegen`): one evaluation
+of the generated function per call gives ``A``, ``b`` and the scale used by the singularity
+detector.  One state is solved with a closed form (``n <= 2``) or LAPACK's ``dgesv``; arrays
+of states (in the columns, like :func:`scipy.integrate.solve_ivp`'s ``y``) with elementwise
+closed forms or one batched :func:`numpy.linalg.solve`.
+
+Near-singular systems are caught by a cheap estimate -- the determinant and Frobenius norm for
+``n <= 2``, the LU pivots for one state, a random probe column solved with the same
+factorisation for many -- and only then checked exactly (singular values):
+:class:`SingularityError` names the state.  Every call returns a fresh array.
+
+Example
+-------
+>>> import sympy as sp
+>>> from dualmech import EquationSet, coordinate, t
+>>> x = coordinate("x"); m, k = sp.symbols("m k", positive=True)
+>>> nm = NumericModel(EquationSet("spring", (x,), (m*x.diff(t, 2) + k*x,)), {m: 2.0, k: 8.0})
+>>> nm.rhs(0.0, np.array([0.5, 0.0]))
+array([ 0., -2.])
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Mapping, Sequence
+
+import numpy as np
+import sympy as sp
+from scipy.linalg.lapack import dgesv
+
+from .._expr import as_expr
+from ..equations import EquationSet, ModelError, state_symbols, to_plain
+from ..kinematics import t
+from . import codegen
+from ._cache import digest, load_module
+
+__all__ = ["NumericModel", "SingularityError", "StateFunction"]
+
+#: The exact test: a system is singular where its condition number exceeds COND_LIMIT or its
+#: smallest singular value is below SCALE_LIMIT times the scale of its entries' terms.
+COND_LIMIT, SCALE_LIMIT = 1e12, 1e-12
+#: The cheap estimate trips (and the exact test runs) well before those limits.
+_TRIP = 1e-8
+_PROBE = np.random.default_rng(20240611).standard_normal(64)
+
+
+class SingularityError(ModelError):
+    """The mass matrix (or the full system with reactions) is singular at a state."""
+
+
+@dataclass(frozen=True)
+class _Code:
+    module: object
+    params: tuple
+    shape: tuple
+
+
+_BY_ID: dict = {}
+
+
+def parameters_of(exprs, exclude=()) -> tuple:
+    """Parameter symbols of ``exprs`` (every free symbol but ``t`` and ``exclude``), sorted.
+
+    Two different symbols with one name are refused: values given by name would be ambiguous.
+    """
+    free = set().union(*[as_expr(e).free_symbols for e in exprs]) - {t} - set(exclude)
+    params = tuple(sorted(free, key=lambda s: (s.name, sp.srepr(s))))
+    names = [s.name for s in params]
+    twins = sorted({n for n in names if names.count(n) > 1})
+    if twins:
+        raise ModelError(f"the equations use different symbols with the same name {twins} "
+                         "(differing assumptions); give each quantity one symbol.")
+    return params
+
+
+def _generated(eqs: EquationSet) -> _Code:
+    hit = _BY_ID.get(id(eqs))
+    if hit is not None and hit[0] is eqs:
+        return hit[1]
+    params = parameters_of(eqs.equations, eqs.unknowns)
+    key = digest("equations", codegen.GENERATOR_VERSION, eqs.coordinates, eqs.unknowns,
+                 eqs.equations)
+    A, b = eqs.matrix()
+
+    def build() -> str:
+        coords = eqs.coordinates
+        outs = [to_plain(e, coords) for e in list(A) + list(b)]
+        states = [state_symbols(q) for q in coords]
+        prog = codegen.program(outs, t=t, q=[s.q for s in states], qd=[s.qd for s in states],
+                               params=params, scale_of=A.rows * A.cols)
+        return codegen.python_source(prog, key)
+
+    code = _Code(load_module(key, build), params, A.shape)
+    _BY_ID[id(eqs)] = (eqs, code)  # keep eqs alive so its id is not reused
+    return code
+
+
+def _bind(code_params: tuple, params: Mapping, what: str) -> tuple:
+    """Parameter values in the generated code's order; missing ones named."""
+    values = {}
+    for k, v in params.items():
+        values[_key(k, code_params)] = v
+    missing = [s for s in code_params if s not in values]
+    if missing:
+        raise ModelError(f"`params` lacks values for {sorted(map(str, missing))} ({what}).")
+    out = []
+    for s in code_params:
+        try:
+            v = float(values[s])
+        except (TypeError, ValueError):
+            raise ModelError(f"`params`: {s} = {values[s]!r} is not a number.") from None
+        if not np.isfinite(v):
+            raise ModelError(f"`params`: {s} = {v} must be finite.")
+        out.append(v)
+    return tuple(out)
+
+
+def _key(k, symbols):
+    """A parameter given as a symbol or by its name (looked up, never parsed)."""
+    if isinstance(k, str):
+        for s in symbols:
+            if s.name == k:
+                return s
+        return sp.Symbol(k)  # unknown name: reported as missing/unused by the caller
+    return as_expr(k)
+
+
+class NumericModel:
+    """Compiled ``A`` and ``b`` of one equation set, for a fixed set of parameter values.
+
+    Parameters
+    ----------
+    eqs : EquationSet
+    params : mapping symbol (or its name) -> float
+        A value for every parameter symbol in the equations (others are ignored).
+
+    States are given as ``q`` and ``qd`` of shape ``(n,)`` (one state) or ``(n, K)`` (``K``
+    states in the columns); ``time`` is a number or, for many states, an array ``(K,)``.
+    """
+
+    def __init__(self, eqs: EquationSet, params: Mapping):
+        self.eqs = eqs
+        self.states = [state_symbols(q) for q in eqs.coordinates]
+        self.n = eqs.n
+        code = _generated(eqs)
+        p = _bind(code.params, params, f"model `{eqs.name}`")
+        k = code.module.static(p)
+        self._scalar = code.module.scalar(p, k)
+        self._vector = code.module.vector(p, k)
+        self.shape = code.shape
+        self._mn = code.shape[0] * code.shape[1]
+
+    # -- evaluation ----------------------------------------------------------------------
+    def _state(self, q, qd) -> np.ndarray:
+        y = np.concatenate([np.asarray(q, dtype=float), np.asarray(qd, dtype=float)])
+        if y.shape[0] != 2 * self.n or y.ndim > 2:
+            raise ValueError(f"`q` and `qd` must each hold {self.n} numbers (or {self.n} rows "
+                             f"of states) for model `{self.eqs.name}`; got {y.shape[0]} in all.")
+        return y
+
+    def _many(self, time, Y: np.ndarray):
+        """``(A (K, m, N), b (K, m), scale (K,))`` at the states in the columns of ``Y``."""
+        outs = self._vector(time, Y)
+        K = Y.shape[1]
+        m, N = self.shape
+        flat = np.empty((K, self._mn + m + 1))
+        for j, v in enumerate(outs):
+            flat[:, j] = v
+        A = flat[:, : self._mn].reshape(K, m, N)
+        return A, flat[:, self._mn: self._mn + m], flat[:, -1]
+
+    def system(self, time, q, qd):
+        """``(A, b)``: ``(m, N)`` and ``(m,)`` at one state, ``(K, m, N)`` and ``(K, m)`` at many."""
+        y = self._state(q, qd)
+        if y.ndim == 2:
+            A, b, _ = self._many(time, y)
+            return A, b
+        outs = self._scalar(time, y.tolist())
+        return (np.array(outs[: self._mn]).reshape(self.shape),
+                np.array(outs[self._mn: self._mn + self.shape[0]]))
+
+    def solve(self, time, q, qd) -> np.ndarray:
+        """``[q''; lambda]``: ``(N,)`` at one state, ``(N, K)`` at many (least squares if the
+        system is not square)."""
+        y = self._state(q, qd)
+        if y.ndim == 2:
+            return self._solve_many(time, y)
+        return np.array(self._solve_one(time, y.tolist()))
+
+    def accelerations(self, time, q, qd) -> np.ndarray:
+        """``q''``: ``(n,)`` at one state, ``(n, K)`` at many."""
+        return self.solve(time, q, qd)[: self.n]
+
+    def rhs(self, time, y) -> np.ndarray:
+        """``d/dt [q; q']`` for :func:`scipy.integrate.solve_ivp`: ``y`` is ``(2n,)`` or
+        ``(2n, K)`` (``vectorized=True``); the result is a new array of the same shape."""
+        y = np.asarray(y, dtype=float)
+        n = self.n
+        if y.ndim == 2:
+            out = np.empty_like(y)
+            out[:n] = y[n:]
+            out[n:] = self._solve_many(time, y)[:n]
+            return out
+        yl = y.tolist()
+        if len(yl) != 2 * n:
+            raise ValueError(f"`y` must hold {2 * n} numbers (q then q'), got {len(yl)}.")
+        return np.array(yl[n:] + self._solve_one(time, yl)[:n])
+
+    # -- one state -------------------------------------------------------------------------
+    def _solve_one(self, time, y: list) -> list:
+        outs = self._scalar(time, y)
+        m, N = self.shape
+        mn = self._mn
+        if m != N:
+            A = np.array(outs[:mn]).reshape(m, N)
+            return np.linalg.lstsq(A, np.array(outs[mn: mn + m]), rcond=None)[0].tolist()
+        scale = outs[-1]
+        if N == 1:
+            a, f = outs[0], outs[1]
+            if abs(a) > _TRIP * scale:
+                return [f / a]
+        elif N == 2:
+            a, b, c, d, f0, f1 = outs[:6]
+            det = a * d - b * c
+            fro = a * a + b * b + c * c + d * d
+            if det * det > _TRIP * _TRIP * fro * max(fro, scale * scale):
+                return [(d * f0 - b * f1) / det, (a * f1 - c * f0) / det]
+        else:
+            A = np.array(outs[:mn]).reshape(N, N)
+            lu, _, x, info = dgesv(A, np.array(outs[mn: mn + N]))
+            if info == 0:
+                piv = np.abs(lu.diagonal())
+                low = piv.min()
+                if low > _TRIP * max(piv.max(), scale) and np.isfinite(x).all():
+                    return x.tolist()
+        A = np.array(outs[:mn], dtype=float).reshape(N, N)
+        self._check(A, scale, time, y)
+        return np.linalg.solve(A, np.array(outs[mn: mn + N], dtype=float)).tolist()
+
+    def _check(self, A: np.ndarray, scale: float, time, y) -> None:
+        """Raise :class:`SingularityError` if ``A`` is singular by the exact test."""
+        if np.isfinite(A).all():
+            sv = np.linalg.svd(A, compute_uv=False)
+            cond = sv[0] / sv[-1] if sv[-1] > 0 else np.inf
+            if np.isfinite(cond) and cond <= COND_LIMIT and sv[-1] >= SCALE_LIMIT * scale:
+                return
+        else:
+            cond = np.nan
+        raise SingularityError(self._singular_message(time, y, cond))
+
+    # -- many states -----------------------------------------------------------------------
+    def _solve_many(self, time, Y: np.ndarray) -> np.ndarray:
+        m, N = self.shape
+        K = Y.shape[1]
+        times = np.broadcast_to(np.asarray(time, dtype=float), (K,))
+        if m != N:
+            A, b, _ = self._many(time, Y)
+            return np.stack([np.linalg.lstsq(A[i], b[i], rcond=None)[0] for i in range(K)], 1)
+        if N <= 2:
+            return self._closed_form_many(times, Y)
+        A, b, scale = self._many(time, Y)
+        rhs = np.empty((K, N, 2))
+        rhs[:, :, 0] = b
+        rhs[:, :, 1] = _PROBE[:N] if N <= _PROBE.size else 1.0
+        try:
+            X = np.linalg.solve(A, rhs)
+        except np.linalg.LinAlgError:
+            X = np.full((K, N, 2), np.nan)
+        z = np.sqrt(np.einsum("kn,kn->k", X[:, :, 1], X[:, :, 1]))
+        fro = np.sqrt(np.einsum("kij,kij->k", A, A))
+        sigma = np.linalg.norm(rhs[0, :, 1]) / z  # >= the smallest singular value
+        with np.errstate(invalid="ignore"):
+            ok = (sigma > _TRIP * np.maximum(fro, scale)) & np.isfinite(X[:, :, 0]).all(1)
+        x = X[:, :, 0].T.copy()
+        for i in np.flatnonzero(~ok):
+            self._check(A[i], scale[i], times[i], Y[:, i].tolist())
+            x[:, i] = np.linalg.solve(A[i], b[i])
+        return x
+
+    def _closed_form_many(self, times, Y) -> np.ndarray:
+        outs = self._vector(times, Y)
+        K = Y.shape[1]
+        scale = outs[-1]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            if self.shape[1] == 1:
+                a, f = outs[0], outs[1]
+                x = np.broadcast_to(np.asarray(f / a, dtype=float), (1, K)).copy()
+                ok = np.abs(a) > _TRIP * scale
+            else:
+                a, b, c, d, f0, f1 = outs[:6]
+                det = a * d - b * c
+                fro = a * a + b * b + c * c + d * d
+                x = np.empty((2, K))
+                x[0] = (d * f0 - b * f1) / det
+                x[1] = (a * f1 - c * f0) / det
+                ok = det * det > _TRIP * _TRIP * fro * np.maximum(fro, scale * scale)
+        ok = np.broadcast_to(ok, (K,))
+        if not ok.all():
+            A, b, sc = self._many(times, Y)
+            for i in np.flatnonzero(~ok):
+                self._check(A[i], sc[i], times[i], Y[:, i].tolist())
+                x[:, i] = np.linalg.solve(A[i], b[i])
+        return x
+
+    def _singular_message(self, time, y, cond) -> str:
+        st = ", ".join(f"{s.name}={v:.6g}" for s, v in zip(self.states, y))
+        return (f"the system of `{self.eqs.name}` is singular at t={float(time):.6g}, {st} "
+                f"(condition number {cond:.3g}): the coordinates cannot describe the motion "
+                "there; stay away from the problem's singular set or choose other coordinates.")
+
+
+class StateFunction:
+    """Generated code for any expressions of the state, e.g. an energy or a constraint.
+
+    Parameters
+    ----------
+    exprs : sequence of sympy expressions in ``t``, the coordinates ``q(t)`` and ``q'(t)``
+    coordinates : sequence of ``q(t)``
+    params : mapping symbol (or name) -> float
+
+    Calling it with ``(time, q, qd)`` gives an array ``(len(exprs),)`` for one state or
+    ``(len(exprs), K)`` for states in columns.
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> from dualmech import coordinate, t
+    >>> x = coordinate("x"); m, k = sp.symbols("m k", positive=True)
+    >>> energy = StateFunction([m*x.diff(t)**2/2 + k*x**2/2], [x], {m: 2.0, k: 8.0})
+    >>> energy(0.0, [0.5], [1.0])
+    array([2.])
+    """
+
+    def __init__(self, exprs: Sequence, coordinates: Sequence, params: Mapping):
+        exprs = [as_expr(e) for e in exprs]
+        coords = tuple(coordinates)
+        states = [state_symbols(q) for q in coords]
+        code_params = parameters_of(exprs)
+        key = digest("state function", codegen.GENERATOR_VERSION, coords, exprs)
+
+        def build() -> str:
+            outs = [to_plain(e, coords) for e in exprs]
+            prog = codegen.program(outs, t=t, q=[s.q for s in states],
+                                   qd=[s.qd for s in states], params=code_params)
+            return codegen.python_source(prog, key)
+
+        module = load_module(key, build)
+        p = _bind(code_params, params, "state function")
+        k = module.static(p)
+        self.n, self.size = len(coords), len(exprs)
+        self._scalar = module.scalar(p, k)
+        self._vector = module.vector(p, k)
+
+    def __call__(self, time, q, qd) -> np.ndarray:
+        y = np.concatenate([np.asarray(q, dtype=float), np.asarray(qd, dtype=float)])
+        if y.shape[0] != 2 * self.n:
+            raise ValueError(f"`q` and `qd` must each hold {self.n} numbers.")
+        if y.ndim == 1:
+            return np.array(self._scalar(time, y.tolist()), dtype=float)
+        out = np.empty((self.size, y.shape[1]))
+        for j, v in enumerate(self._vector(time, y)):
+            out[j] = v
+        return out
