@@ -173,10 +173,15 @@ class RigidBody:
         return parallel_axis(self.inertia, self.mass, d)
 
     def angular_momentum(self, about: Point, frame: Frame) -> Vector:
-        """``H_B = I_B w + m r_BC x v_B`` (the MIT 2.003 form; equals ``I_C w + r_BC x m v_C``)."""
+        """``H_B = I_C w + r_BC x m v_C`` (absolute velocities), about any point ``B``.
+
+        For a point ``B`` fixed in the body this equals the MIT 2.003 form
+        ``I_B w + m r_BC x v_B``; for a point that is not (a pivot of another body, a point of
+        a system), only the centre form is the angular momentum.
+        """
         w = self.angular_velocity(frame).express(self.frame)
-        spin = Vector(self.frame, self.inertia_about(about) * w.components)
-        return spin + self.mass * self.masscenter.pos_from(about).cross(about.vel(frame))
+        spin = Vector(self.frame, self.inertia * w.components)
+        return spin + self.masscenter.pos_from(about).cross(self.linear_momentum(frame))
 
     def kinetic_energy(self, frame: Frame) -> sp.Expr:
         v = self.masscenter.vel(frame)
