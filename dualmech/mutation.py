@@ -30,7 +30,8 @@ import random
 from dataclasses import dataclass, field
 from typing import Iterator
 
-from .compare import _Context, compare_models, reaction_pairs
+from .verify.sampling import Context
+from .verify.verdicts import judge
 from .dimensions import INERTIA, MASS, reduce
 from .equations import EquationSet, to_plain
 from .exact import ExactForm
@@ -54,6 +55,7 @@ class MutationReport:
     problem: str
     killed: list = field(default_factory=list)      # (mutant description, equations named)
     survived: list = field(default_factory=list)    # mutant descriptions
+    why: dict = field(default_factory=dict)         # survivor -> why it survived
     identical: list = field(default_factory=list)   # mutants equal to their original
 
     @property
@@ -68,7 +70,10 @@ class MutationReport:
         lines = [f"{self.problem}: {len(self.killed)}/{self.total} mutants caught "
                  f"({100 * self.kill_rate:.0f} %), {len(self.identical)} identical to the "
                  "original (not counted)"]
-        lines += [f"  SURVIVED: {d}" for d in self.survived]
+        for d in self.survived:
+            lines.append(f"  SURVIVED: {d}")
+            if d in self.why:
+                lines.append(f"    {self.why[d]}")
         return "\n".join(lines)
 
 
@@ -136,49 +141,59 @@ def _identical(original: EquationSet, mutant: EquationSet, parameters, seed: int
 def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
     """Generate every mutant of ``problem`` and check that the comparator catches it.
 
-    Each mutant of model ``X`` is compared with an unbroken square model other than ``X``
-    (the problem's reference when ``X`` is not the reference).
+    Each mutant replaces its original among ALL the problem's derivations, which are judged
+    together exactly as :func:`dualmech.compare.compare` judges them; the mutant is caught when
+    the verdict is "disagree" and names the mutant's derivation among the faulty ones (the
+    odd one out, or a suspect of a tie) or a reaction it gives differently.
     """
     report = MutationReport(problem.name)
-    models = problem.models()
-    ref_name = problem.reference
-    square = [n for n, m in models.items() if m.is_square]
-    ctx = None
+    models = {n: problem.in_reference_coordinates(m) for n, m in problem.models().items()}
+    if len(models) < 2:
+        return report
+    ref_model = problem.model(problem.reference)
+    ctx = Context(ref_model.coordinates, problem.parameter_symbols, problem)
     for mut in mutants(problem):
-        original = models[mut.model]
+        original = problem.models()[mut.model]
         if _identical(original, mut.equations, problem.parameter_symbols, seed):
             report.identical.append(mut.description)
             continue
-        judge = ref_name if mut.model != ref_name else next(
-            (n for n in square if n != ref_name), None)
-        if judge is None:
-            continue
-        reference = problem.in_reference_coordinates(models[judge])
-        candidate = _in_ref(problem, mut.equations, original)
-        if ctx is None:
-            ref_model = models[ref_name]
-            ctx = _Context(ref_model.coordinates, problem.parameter_symbols, problem)
         try:
-            result = compare_models(reference, candidate, points=points, seed=seed,
-                                    context=ctx, explain=False)
-        except Exception as exc:  # a model the comparator rejects outright is caught too
+            candidate = _in_ref(problem, mut.equations, original)
+        except Exception as exc:  # noqa: BLE001 - a mutant the mapping rejects is caught too
             report.killed.append((mut.description, [f"rejected: {exc}"]))
             continue
-        named = [m.equation for m in result.mismatches]
-        if result.equivalent and mut.equations.unknowns:
-            # motion unchanged: the break may still show in the reactions, if another model
-            # derives them independently
-            others = {n: m for n, m in models.items() if n != mut.model}
-            others[mut.model] = candidate
-            for pair in reaction_pairs(problem, others, points=points, seed=seed, context=ctx,
-                                       explain=False):
-                if mut.model in (pair.reference, pair.candidate) and not pair.equivalent:
-                    named += [m.equation for m in pair.mismatches]
-        if not named:
-            report.survived.append(mut.description)
-        else:
+        trial = dict(models)
+        trial[mut.model] = candidate
+        j = judge(trial, context=ctx, points=points, seed=seed, reference=problem.reference)
+        named = []
+        if not j.equivalent and mut.model in j.odd:
+            named = [f"{f.model}: {f.kind}" for f in j.faults if f.model == mut.model]
+            named += [f"reaction {r.name}" for r in j.reaction_faults
+                      if mut.model in r.suspects]
+        if named:
             report.killed.append((mut.description, named))
+        else:
+            report.survived.append(mut.description)
+            report.why[mut.description] = _why_survived(mut, models[mut.model], candidate,
+                                                        ctx, points, seed)
     return report
+
+
+def _why_survived(mut, original: EquationSet, candidate: EquationSet, ctx, points, seed) -> str:
+    """Why a mutant got through: it changes only reactions that no second model derives."""
+    if not candidate.unknowns:
+        return "the comparator did not notice it: a gap in the checks"
+    renamed = EquationSet("original", original.coordinates, original.equations,
+                          original.unknowns, original.labels)
+    j = judge({"original": renamed, "mutant": candidate}, context=ctx, points=points,
+              seed=seed)
+    if not j.faults and j.reaction_faults:
+        names = ", ".join(r.name for r in j.reaction_faults)
+        return (f"it leaves the motion unchanged and changes only the reaction(s) {names}, "
+                f"which no second model derives; a model that derives {names} independently "
+                "(a Lagrangian with the contact freed and closed by a multiplier named "
+                f"{names}) would catch it")
+    return "the comparator did not notice it: a gap in the checks"
 
 
 def _in_ref(problem, mutant: EquationSet, original: EquationSet) -> EquationSet:

@@ -176,7 +176,7 @@ class BlockOnWedge(Problem):
         ne.linear_momentum(sc.block, S.y)
         ne.linear_momentum(sc.wedge, O.x)
         ne.linear_momentum(sc.wedge, O.y)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """``T`` and ``V`` as the source writes them."""
@@ -198,7 +198,7 @@ class BlockOnWedge(Problem):
         lg.potential("gravity", M * g * wedge[1] + m * g * block[1])
         lg.constraint("N1", d1)
         lg.constraint("N2", d2)
-        return lg.equations().simplified()
+        return lg.equations()
 
     def coordinate_maps(self) -> dict:
         return {"lagrange_multipliers": {q1: q1, q2: q2, d1: 0, d2: 0}}

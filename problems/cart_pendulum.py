@@ -215,7 +215,7 @@ class CartPendulum(Problem):
         ne.linear_momentum(sc.bob, R.x)
         ne.linear_momentum(sc.bob, R.y)
         ne.angular_momentum(sc.rod, O.z, about=sc.P)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """``T``, ``V``, ``R`` and the virtual work of the drive, as the source writes them."""
@@ -250,7 +250,7 @@ class CartPendulum(Problem):
         lg.constraint("N", y)
         lg.constraint("T", l - r)
         lg.constraint("S", l * (phi - theta))
-        return lg.equations().simplified()
+        return lg.equations()
 
     def coordinate_maps(self) -> dict:
         return {"lagrange_multipliers": {x: x, theta: theta, y: 0, r: l, phi: theta}}

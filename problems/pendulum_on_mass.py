@@ -163,7 +163,7 @@ class PendulumOnMass(Problem):
         ne.linear_momentum(pend, O.x)
         ne.linear_momentum(pend, O.y)
         ne.angular_momentum(pend, O.z, about=f.a)
-        return ne.equations().simplified()
+        return ne.equations()
 
     # -- indirect form ---------------------------------------------------------------------
     def lagrange(self) -> EquationSet:

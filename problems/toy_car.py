@@ -162,7 +162,7 @@ class ToyCar(Problem):
         ne.reaction("F_r", car, f.B.z)
         for axis in (f.B.x, f.B.y, f.B.z):
             ne.linear_momentum(car, axis)
-        return ne.equations().simplified()
+        return ne.equations()
 
     # -- direct form, question (B): angular momentum about the fixed point O ------------
     def angular_momentum(self) -> EquationSet:
@@ -178,7 +178,7 @@ class ToyCar(Problem):
         ne.gravity(-g * f.O.z)
         for axis in (f.B.x, f.B.y):
             ne.angular_momentum(car, axis, about=f.o)
-        return ne.equations().simplified()
+        return ne.equations()
 
     # -- indirect form -------------------------------------------------------------------
     def lagrange(self) -> EquationSet:

@@ -31,7 +31,7 @@ def test_wrong_term_is_named_with_its_residual():
     assert not r.equivalent
     (mm,) = r.mismatches
     assert mm.equation == "x-eq"
-    assert mm.residual == str(-2 * c * q1.diff(t))
+    assert mm.residual == "-2*c*q1'"
     assert mm.state and mm.value != 0
     assert any("q1" in term for term, _ in mm.terms)
 
@@ -50,10 +50,11 @@ def test_different_coordinates_are_refused_with_advice():
         compare_models(a, b)
 
 
-def test_singular_reference_everywhere_is_a_clear_error():
+def test_singular_models_everywhere_are_a_mismatch_not_an_exception():
     a = EquationSet("a", (q1, q2), (q1.diff(t, 2) + q2.diff(t, 2), q1.diff(t, 2) + q2.diff(t, 2)))
-    with pytest.raises(ModelError, match="singular at every sampled point"):
-        compare_models(a, a)
+    r = compare_models(a, a)
+    assert not r.equivalent
+    assert "no derivation determines the accelerations" in r.mismatches[0].reason
 
 
 def test_pendulum_problem_agrees_and_recovers_the_tension():
@@ -69,7 +70,7 @@ def test_published_verdicts_of_the_pendulum():
     assert verdicts["EoM"].verdict == "correct"
     assert verdicts["tension"].verdict == "correct"
     assert verdicts["wrong tension"].verdict == "wrong"
-    assert "l*m*Derivative(theta(t), t)**2" in verdicts["wrong tension"].detail
+    assert "l*m*theta'**2" in verdicts["wrong tension"].detail
     assert verdicts["small-angle EoM"].verdict == "wrong"
     slip = verdicts["dimension slip"]
     assert slip.verdict == "wrong" and "dimensionally inconsistent" in slip.detail
@@ -93,7 +94,7 @@ def test_json_has_the_documented_schema():
                 "published", "mismatches"):
         assert key in d
     assert d["coordinates"] == ["theta"] and d["parameters"] == ["m", "l", "g"]
-    assert d["eom"][0].count("Derivative(theta(t), (t, 2))") == 1
+    assert d["eom"][0].count("theta''") == 1
     assert {p["verdict"] for p in d["published"]} == {"correct", "wrong"}
     assert d["reaction_directions"]["S"].startswith("rod tension")
 

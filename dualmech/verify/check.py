@@ -1,0 +1,461 @@
+"""``compare(problem)``: every derivation judged, reactions compared, printed answers checked.
+
+Verdict first: equivalence, the reactions shared by two models and the printed answers are
+all decided by evaluation (:mod:`~dualmech.verify.verdicts`,
+:mod:`~dualmech.verify.published`).  What a person reads -- solved accelerations, reaction
+formulas, residuals -- is computed when first read, within a display budget
+(:mod:`~dualmech.verify.display`); past the budget the report shows the structured form and
+says so.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Sequence
+
+import sympy as sp
+
+from ..dimensions import audit
+from ..equations import EquationSet, ModelError
+from .display import Budget, OverBudget, dotted, solve_display
+from .explain import Mismatch, explain_model
+from .published import PublishedVerdict, check_published
+from .sampling import Context
+from .verdicts import Judgement, judge
+
+__all__ = ["Comparison", "PairResult", "compare", "compare_models", "compare_reactions",
+           "reaction_pairs", "recover_reactions", "METHOD_NAMES", "method_name"]
+
+METHOD_NAMES = {
+    "exact": "exact rational-point test",
+    "mpmath": "high-precision numeric (mpmath)",
+}
+
+
+def method_name(method: str) -> str:
+    """The human name of a verdict method (the evaluation module may add its own)."""
+    from .. import exact
+    names = dict(METHOD_NAMES)
+    names.update(getattr(exact, "METHOD_NAMES", {}))
+    return names.get(method, method)
+
+
+def _bound(bound: float) -> str:
+    if bound == 0:
+        return "< 1e-300"
+    return f"{bound:.1e}"
+
+
+@dataclass
+class PairResult:
+    """Verdict on one model against another (``kind="motion"``), or on shared reactions."""
+
+    reference: str
+    candidate: str
+    equivalent: bool
+    method: str
+    points: int
+    bound: float
+    seconds: float
+    mismatches: list = field(default_factory=list)
+    kind: str = "motion"
+    reactions: tuple = ()
+
+    def __str__(self) -> str:
+        if self.kind == "reactions":
+            verdict = "the same" if self.equivalent else "DIFFERENT"
+            head = (f"reactions {', '.join(self.reactions)} of {self.candidate} vs "
+                    f"{self.reference}: {verdict}")
+        else:
+            verdict = "equivalent" if self.equivalent else "NOT equivalent"
+            head = f"{self.candidate} vs {self.reference}: {verdict}"
+        pts = f"{self.points} point" + ("" if self.points == 1 else "s")
+        s = f"{head} ({method_name(self.method)}, {pts}"
+        if self.method == "exact" and self.equivalent:
+            s += f", P(false equal) <= {_bound(self.bound)}"
+        s += f", {self.seconds:.2f} s)"
+        return "\n".join([s] + [str(m) for m in self.mismatches])
+
+    def to_dict(self) -> dict:
+        return {"kind": self.kind, "reference": self.reference, "candidate": self.candidate,
+                "reactions": list(self.reactions), "equivalent": self.equivalent,
+                "method": method_name(self.method), "points": self.points,
+                "false_equal_bound": _json_float(self.bound), "seconds": self.seconds,
+                "mismatches": [m.to_dict() for m in self.mismatches]}
+
+
+def _json_float(x):
+    x = float(x)
+    return None if math.isnan(x) or math.isinf(x) else x
+
+
+class Comparison:
+    """Everything ``dualmech check`` reports for one problem; ``str()`` is the readable report.
+
+    ``equivalent``, ``pairs``, ``published``, ``judgement`` and ``dimension_issues`` are the
+    verdicts; ``accelerations`` and ``reactions`` are symbolic displays computed when first
+    read (empty when past the display budget -- ``display_notes`` says why).
+    """
+
+    def __init__(self, problem, judgement: Judgement, pairs, published, dimension_issues,
+                 seconds: float, points: int, limits: Budget | None = None):
+        self.problem = problem
+        self.judgement = judgement
+        self.pairs = pairs
+        self.published = published
+        self.dimension_issues = dimension_issues
+        self.seconds = seconds
+        self.points = points
+        self.limits = limits or Budget()
+        self.display_notes: list[str] = []
+        self._acc = self._reac = None
+
+    @property
+    def reaction_directions(self) -> dict:
+        return {r.name: r.direction for r in self.problem.reactions}
+
+    @property
+    def equivalent(self) -> bool:
+        return self.judgement.equivalent and len(self.judgement.models) >= 2
+
+    @property
+    def method(self) -> str:
+        return method_name(self.judgement.method)
+
+    @property
+    def bound(self) -> float:
+        return max((p.bound for p in self.pairs), default=0.0)
+
+    @property
+    def mismatches(self) -> list:
+        return [m for p in self.pairs for m in p.mismatches]
+
+    @property
+    def accelerations(self) -> dict:
+        if self._acc is None:
+            ref = self.problem.model(self.problem.reference)
+            try:
+                sol = solve_display(ref, self.limits)
+                self._acc = {q.func.__name__: sol[a]
+                             for q, a in zip(ref.coordinates, ref.accelerations)}
+            except (OverBudget, ModelError, ValueError, ZeroDivisionError) as exc:
+                self._acc = {}
+                self.display_notes.append(f"accelerations not solved symbolically ({exc}); "
+                                          "the equations above are M q'' = f")
+        return self._acc
+
+    @property
+    def reactions(self) -> dict:
+        if self._reac is None:
+            self._reac = {}
+            if self.equivalent:
+                try:
+                    self._reac = recover_reactions(self.problem, self.limits)
+                except (OverBudget, ModelError, ValueError, ZeroDivisionError) as exc:
+                    self.display_notes.append(f"reactions not solved symbolically ({exc})")
+        return self._reac
+
+    def verdict_line(self) -> str:
+        j = self.judgement
+        if len(j.models) < 2:
+            return "NOT CHECKED: the problem has a single derivation; nothing was compared"
+        if self.equivalent:
+            return f"all derivations agree ({self.method}, {self.seconds:.2f} s)"
+        return "DISAGREEMENT: " + j.summary().replace("\n", "; ")
+
+    def __str__(self) -> str:
+        pr = self.problem
+        ref = pr.model(pr.reference)
+        out = [f"{pr.name}: {pr.title}", f"  source: {pr.source}",
+               f"  coordinates: {', '.join(q.func.__name__ for q in ref.coordinates)}",
+               f"  verdict: {self.verdict_line()}"]
+        for p in self.pairs:
+            out.append("  " + str(p).replace("\n", "\n  "))
+        if self.equivalent and self.accelerations:
+            out.append("  accelerations:")
+            for k, v in self.accelerations.items():
+                out.append(f"    {k}'' = {dotted(v)}")
+        if self.equivalent and self.reactions:
+            out.append("  reactions (from the direct form):")
+            dirs = self.reaction_directions
+            for k, v in self.reactions.items():
+                d = dirs.get(k, "")
+                out.append(f"    {k} = {dotted(v)}" + (f"   [{d}]" if d else ""))
+        for note in self.display_notes:
+            out.append(f"  ({note})")
+        if self.dimension_issues:
+            out.append("  dimension audit:")
+            out.extend(f"    {i}" for i in self.dimension_issues)
+        else:
+            out.append("  dimension audit: every equation is consistent")
+        if self.published:
+            out.append("  published answers:")
+            for v in self.published:
+                out.append(f"    [{v.verdict.upper():7s}] {v.label}" +
+                           (f" ({v.where})" if v.where else ""))
+                if v.verdict != "correct":
+                    out.append("              " + v.detail.replace("\n", "\n              "))
+        return "\n".join(out)
+
+    def to_dict(self) -> dict:
+        pr = self.problem
+        ref = pr.model(pr.reference)
+        return {
+            "name": pr.name, "title": pr.title, "source": pr.source,
+            "coordinates": [q.func.__name__ for q in ref.coordinates],
+            "parameters": [str(p.symbol) for p in pr.parameters],
+            "equivalent": self.equivalent, "method": self.method,
+            "verdict": self.verdict_line(),
+            "odd": list(self.judgement.odd),
+            "seconds": self.seconds,
+            "eom": [dotted(e) for e in ref.equations],
+            "accelerations": {k: dotted(v) for k, v in self.accelerations.items()},
+            "reactions": {k: dotted(v) for k, v in self.reactions.items()},
+            "reaction_directions": self.reaction_directions,
+            "display_notes": list(self.display_notes),
+            "published": [v.to_dict() for v in self.published],
+            "mismatches": [m.to_dict() for m in self.mismatches],
+            "models": {n: [dotted(e) for e in m.equations] for n, m in pr.models().items()},
+            "pairs": [p.to_dict() for p in self.pairs],
+            "points": self.points,
+            "false_equal_bound": _json_float(self.bound),
+            "dimension_issues": list(self.dimension_issues),
+        }
+
+
+def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = None) -> Comparison:
+    """Judge every derivation of ``problem``, compare shared reactions, check printed answers.
+
+    Never raises on a wrong model: a singular or contradictory derivation is a mismatch in
+    the result.  Raises :class:`~dualmech.problem.ProblemError` for a declaration that cannot
+    be used (with every mistake listed) and ``ValueError`` for ``points < 1``.
+
+    >>> from problems import get                        # doctest: +SKIP
+    >>> c = compare(get("toy_car")); c.equivalent        # doctest: +SKIP
+    True
+    """
+    _check_points(points)
+    t0 = time.perf_counter()
+    problem.validate()
+    models = problem.models()
+    ref = models[problem.reference]
+    ctx = Context(ref.coordinates, problem.parameter_symbols, problem)
+    mapped = {n: problem.in_reference_coordinates(m) for n, m in models.items()}
+    j = judge(mapped, context=ctx, points=points, seed=seed, reference=problem.reference)
+    pairs = _pairs(j, problem.reference, ctx, seed)
+    limits = limits or Budget()
+    if j.equivalent:
+        published = check_published(problem, points=points, seed=seed, context=ctx,
+                                    limits=limits)
+    else:
+        published = [PublishedVerdict(p.label, p.where, "unchecked",
+                                      "the derivations disagree; fix them before judging "
+                                      "printed answers", "none") for p in problem.published()]
+    issues = list(problem.dimension_issues()) + _reaction_dimension_issues(problem)
+    return Comparison(problem, j, pairs, published, issues, time.perf_counter() - t0, points,
+                      limits)
+
+
+def _reaction_dimension_issues(problem) -> list[str]:
+    """A declared reaction whose dimension does not fit the equations it appears in.
+
+    In each equation the reaction's coefficient times its declared dimension must have the
+    dimension of the rest of the equation; decided from the structure, without solving.
+    """
+    from ..dimensions import dimension_of, format_dimension, reduce
+    dims = problem.dimensions()
+    declared = problem.reaction_info()
+    out, seen = [], set()
+    for mname, m in problem.models().items():
+        A, _ = m.matrix()
+        for j, u in enumerate(m.unknowns):
+            info = declared.get(u.name)
+            if info is None or u.name in seen:
+                continue
+            for i, e in enumerate(m.equations):
+                coeff = A[i, m.n + j]
+                if coeff == 0:
+                    continue
+                rest = sp.expand(e - coeff * u)
+                if rest == 0:
+                    continue
+                try:
+                    dc, dr = dimension_of(coeff, dims), dimension_of(rest, dims)
+                except (ValueError, KeyError, TypeError):
+                    continue
+                need = tuple(sorted(dict(dr).items()))
+                have = dict(dc)
+                for name, e_ in reduce(info.dimension):
+                    have[name] = have.get(name, 0) + e_
+                have = tuple(sorted((k, v) for k, v in have.items() if v != 0))
+                if have != need:
+                    want = dict(dr)
+                    for name, e_ in dc:
+                        want[name] = want.get(name, 0) - e_
+                    want = tuple(sorted((k, v) for k, v in want.items() if v != 0))
+                    out.append(f"reaction {u.name}: declared {format_dimension(info.dimension)}"
+                               f", but in `{mname}` [{m.labels[i]}] it must be "
+                               f"{format_dimension(want)}")
+                    seen.add(u.name)
+                break
+    return out
+
+
+def _check_points(points) -> None:
+    if isinstance(points, bool) or not isinstance(points, int) or points < 1:
+        raise ValueError(f"`points` must be a positive integer (random points per verdict), "
+                         f"got {points!r}.")
+
+
+def _pairs(j: Judgement, reference: str, ctx: Context, seed: int) -> list[PairResult]:
+    """Per-model pair lines (each model against the reference) and shared-reaction lines."""
+    names = list(j.models)
+    explained = {}
+    for nm in j.odd:
+        if j.fault_of(nm):
+            against = tuple(a for a in (j.majority or names) if a != nm)
+            explained[nm] = explain_model(nm, j, against, ctx, seed)
+    out, ref_shown = [], False
+    for nm in names:
+        if nm == reference:
+            continue
+        both_ok = not j.fault_of(nm) and not j.fault_of(reference)
+        same = j.equivalent or any(nm in g and reference in g for g in j.groups)
+        ok = both_ok and same
+        mism = list(explained.get(nm, []))
+        if reference in explained and not ref_shown:
+            mism += explained[reference]
+            ref_shown = True
+        out.append(PairResult(reference, nm, ok, j.method, j.points, j.bound if ok else 0.0,
+                              j.seconds, mism))
+    by_reaction: dict = {}
+    for nm, m in j.models.items():
+        for u in m.unknowns:
+            by_reaction.setdefault(str(u), []).append(nm)
+    seen = set()
+    for u, holders in by_reaction.items():
+        if len(holders) < 2:
+            continue
+        key = tuple(holders)
+        faults = [r for r in j.reaction_faults if tuple(sorted(r.suspects + r.agreeing))
+                  == tuple(sorted(holders))]
+        if key in seen and not faults:
+            continue
+        seen.add(key)
+        shared = [x for x, hs in by_reaction.items() if tuple(hs) == key]
+        bad = [r for r in j.reaction_faults if r.name in shared]
+        mism = [Mismatch(", ".join(r.suspects), f"reaction {r.name}",
+                         f"{r.name} differs between {', '.join(r.suspects + r.agreeing)}"
+                         + (f"; {', '.join(r.agreeing)} agree" if r.agreeing else ""))
+                for r in bad]
+        motion_ok = not j.faults
+        out.append(PairResult(holders[0], ", ".join(holders[1:]), motion_ok and not bad,
+                              j.method, j.points, j.bound if motion_ok and not bad else 0.0,
+                              j.seconds, mism, "reactions", tuple(shared)))
+    return out
+
+
+def compare_models(reference: EquationSet, candidate: EquationSet, *, points: int = 8,
+                   seed: int = 0, context: Context | None = None,
+                   explain: bool = True) -> PairResult:
+    """Is ``candidate`` the same motion as ``reference``?  Both must use the same coordinates.
+
+    >>> import sympy as sp
+    >>> from dualmech import coordinate, t, EquationSet
+    >>> th = coordinate("theta"); m, l, g = sp.symbols("m l g", positive=True)
+    >>> a = EquationSet("a", (th,), (m*l**2*th.diff(t, 2) + m*g*l*sp.sin(th),))
+    >>> b = EquationSet("b", (th,), (th.diff(t, 2) + g/l*sp.sin(th),))
+    >>> compare_models(a, b).equivalent
+    True
+    >>> bad = EquationSet("bad", (th,), (th.diff(t, 2) - g/l*sp.sin(th),))
+    >>> r = compare_models(a, bad); r.equivalent, r.mismatches[0].residual
+    (False, '-2*g*sin(theta)/l')
+    """
+    _check_points(points)
+    if set(candidate.coordinates) != set(reference.coordinates):
+        raise ModelError(f"`{candidate.name}` uses coordinates {list(candidate.coordinates)} but "
+                         f"`{reference.name}` uses {list(reference.coordinates)}; rewrite one "
+                         "with EquationSet.change_coordinates first.")
+    rname, cname = reference.name, candidate.name
+    if cname == rname:
+        cname = f"{cname} (candidate)"
+    ctx = context or Context.for_models(reference, candidate)
+    j = judge({rname: reference, cname: candidate}, context=ctx, points=points, seed=seed,
+              reference=rname)
+    mism = []
+    if not j.equivalent and explain:
+        mism = explain_model(cname, j, (rname,), ctx, seed) if j.fault_of(cname) or \
+            not j.fault_of(rname) else explain_model(rname, j, (cname,), ctx, seed)
+    elif not j.equivalent:
+        mism = [Mismatch(candidate.name, f.model, f.detail or f.kind) for f in j.faults] or \
+            [Mismatch(candidate.name, f"reaction {r.name}", "differs")
+             for r in j.reaction_faults]
+    for m in mism:
+        if m.model == cname:
+            m.model = candidate.name
+    motion_ok = not j.faults
+    return PairResult(rname, candidate.name, motion_ok, j.method, j.points,
+                      j.bound if motion_ok else 0.0, j.seconds, mism)
+
+
+def compare_reactions(reference: EquationSet, first: EquationSet, second: EquationSet,
+                      names: Sequence, *, points: int = 8, seed: int = 0,
+                      context: Context | None = None, explain: bool = True) -> PairResult:
+    """Do ``first`` and ``second`` give the same values of the reactions ``names``?"""
+    models = {reference.name: reference}
+    models.setdefault(first.name, first)
+    models.setdefault(second.name, second)
+    ctx = context or Context.for_models(*models.values())
+    j = judge(models, context=ctx, points=points, seed=seed, reference=reference.name)
+    wanted = {str(u) for u in names}
+    bad = [r for r in j.reaction_faults if r.name in wanted]
+    undetermined = [f for f in j.faults if f.kind == "reactions"]
+    mism = [Mismatch(second.name, f"reaction {r.name}",
+                     f"{r.name} differs from the value `{first.name}` gives") for r in bad]
+    mism += [Mismatch(f.model, "reactions", f.detail) for f in undetermined]
+    ok = not bad and not undetermined
+    return PairResult(first.name, second.name, ok, j.method, j.points,
+                      j.bound if ok else 0.0, j.seconds, mism, "reactions",
+                      tuple(str(u) for u in names))
+
+
+def reaction_pairs(problem, models: dict | None = None, *, points: int = 8, seed: int = 0,
+                   context: Context | None = None, explain: bool = True) -> list[PairResult]:
+    """Compare the reactions of every two models that declare a reaction of the same name."""
+    models = models if models is not None else problem.models()
+    ref = problem.model(problem.reference)
+    with_unknowns = [(n, problem.in_reference_coordinates(m)) for n, m in models.items()
+                     if m.unknowns]
+    out = []
+    for i, (na, a) in enumerate(with_unknowns):
+        for nb, b in with_unknowns[i + 1:]:
+            shared = [u for u in a.unknowns if u in b.unknowns]
+            if shared:
+                out.append(compare_reactions(ref, a, b, shared, points=points, seed=seed,
+                                             context=context, explain=explain))
+    return out
+
+
+def recover_reactions(problem, limits: Budget | None = None) -> dict:
+    """Symbolic reactions ``{name: expression in q, q', t}`` from the direct model(s) (display;
+    raises :class:`~dualmech.verify.display.OverBudget` past the budget)."""
+    out = {}
+    for m in problem.models().values():
+        if not m.unknowns or all(u.name in out for u in m.unknowns):
+            continue
+        m = _drop_zero_rows(problem.in_reference_coordinates(m))
+        if not m.is_square:
+            continue
+        sol = solve_display(m, limits)
+        for u in m.unknowns:
+            out.setdefault(u.name, sol[u])
+    return out
+
+
+def _drop_zero_rows(m: EquationSet) -> EquationSet:
+    keep = [i for i, e in enumerate(m.equations) if sp.expand(e) != 0]
+    if len(keep) == len(m.equations):
+        return m
+    return EquationSet(m.name, m.coordinates, [m.equations[i] for i in keep], m.unknowns,
+                       [m.labels[i] for i in keep])

@@ -1,0 +1,128 @@
+"""Symbolic display under a budget: readable forms for people, never used for a verdict.
+
+Verdicts come from evaluation; what a person reads (solved accelerations, reaction formulas,
+residuals) is computed here, lazily, within a size and a time budget.  Past the budget the
+caller shows the structured form (``M``, ``B``, ``f``) or values at a state instead, and says so.
+"""
+from __future__ import annotations
+
+import contextlib
+import signal
+import threading
+
+import sympy as sp
+
+__all__ = ["Budget", "OverBudget", "budget", "tidy", "solve_display", "dotted"]
+
+#: Default budget for one displayed expression: operations in, seconds spent.
+MAX_OPS = 600
+SECONDS = 3.0
+
+
+class OverBudget(Exception):
+    """A display computation went past its size or time budget."""
+
+
+class Budget:
+    """Size and time limits for display work.
+
+    The size limit ``max_ops`` decides what is attempted (deterministically: the same input
+    gets the same display); ``seconds`` guards each single computation against running away
+    (enforced on the main thread) -- past it the expression is shown as it stands.
+    """
+
+    def __init__(self, max_ops: int = MAX_OPS, seconds: float = SECONDS):
+        self.max_ops = max_ops
+        self.seconds = seconds
+        self.cache: dict = {}
+
+    def remaining(self) -> float:
+        return self.seconds
+
+
+@contextlib.contextmanager
+def budget(seconds: float):
+    """Raise :class:`OverBudget` inside the block after ``seconds`` (main thread, POSIX only)."""
+    usable = (seconds and seconds > 0 and hasattr(signal, "setitimer")
+              and threading.current_thread() is threading.main_thread())
+    if not usable:
+        yield
+        return
+
+    def _stop(signum, frame):
+        raise OverBudget(f"display took longer than {seconds:g} s")
+
+    old = signal.signal(signal.SIGALRM, _stop)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old)
+
+
+def tidy(expr, limits: Budget | None = None):
+    """A readable form of ``expr``: cancel, then trigonometric simplification while the
+    budget lasts.  Returns the best form reached; raises :class:`OverBudget` only when the
+    input itself is past the size budget."""
+    limits = limits or Budget()
+    expr = sp.sympify(expr)
+    ops = sp.count_ops(expr)
+    if ops > 4 * limits.max_ops:
+        raise OverBudget(f"expression of {ops} operations")
+    best = expr
+    left = limits.remaining()
+    if left <= 0:
+        return best
+    try:
+        with budget(left):
+            best = sp.cancel(sp.together(expr))
+            if sp.count_ops(best) < limits.max_ops // 3:
+                best = sp.trigsimp(sp.factor_terms(best))
+    except OverBudget:
+        pass
+    except (TypeError, ValueError, RecursionError, sp.PolynomialError):
+        pass
+    return best
+
+
+def solve_display(eqs, limits: Budget | None = None) -> dict:
+    """``{symbol: expression}`` of the accelerations and reactions of a square ``eqs``.
+
+    Raises :class:`OverBudget` when the system is too large to solve symbolically within
+    the budget (more than eight unknowns, a matrix past the size budget, or no time left).
+    Results are kept in ``limits.cache``.
+    """
+    limits = limits or Budget()
+    key = id(eqs)
+    hit = limits.cache.get(key)
+    if hit is not None and hit[0] is eqs:
+        return hit[1]
+    A, b = eqs.matrix()
+    if A.rows != A.cols:
+        raise OverBudget(f"{A.rows} equations for {A.cols} unknowns: not a square system")
+    ops = sp.count_ops(A) + sp.count_ops(b)
+    if A.cols > 8 or ops > 4 * limits.max_ops:
+        raise OverBudget(f"{A.cols} unknowns, {ops} operations")
+    with budget(limits.remaining()):
+        sol = A.LUsolve(b)
+    unknowns = list(eqs.accelerations) + list(eqs.unknowns)
+    out = {u: tidy(s, limits) for u, s in zip(unknowns, sol)}
+    limits.cache[key] = (eqs, out)
+    return out
+
+
+def dotted(expr, coordinates=None) -> str:
+    """``expr`` as text with ``theta'`` and ``theta''`` for the coordinates' derivatives."""
+    from ..kinematics import t
+    expr = sp.sympify(expr)
+    rules = {}
+    for d in expr.atoms(sp.Derivative):
+        f = d.expr
+        if isinstance(f, sp.core.function.AppliedUndef) and d.variables and \
+                all(v == t for v in d.variables):
+            rules[d] = sp.Symbol(f.func.__name__ + "'" * d.derivative_count)
+    for f in expr.atoms(sp.core.function.AppliedUndef):
+        if f.args == (t,):
+            rules.setdefault(f, sp.Symbol(f.func.__name__))
+    return str(expr.xreplace(rules))

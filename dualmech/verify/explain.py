@@ -1,0 +1,185 @@
+"""Explaining a disagreement: which equation of the faulty derivation, which term, how much.
+
+The verdict (:mod:`dualmech.verify.verdicts`) gives a certain counter-example point.  Here the
+faulty model's equations are evaluated there with the accelerations of the models it is checked
+against (and its own best-fitting reactions): an equation that does not hold is wrong.  For a
+person, each wrong equation is then shown term by term at a real state inside the working
+ranges, and -- lazily, within a display budget -- as a symbolic residual.
+"""
+from __future__ import annotations
+
+import math
+import random
+from dataclasses import dataclass, field
+
+import mpmath
+import sympy as sp
+
+from ..equations import from_plain
+from ..exact import is_zero
+from . import linalg as la
+from .display import Budget, OverBudget, dotted, solve_display, tidy
+from .sampling import Context, System, solve_model
+
+__all__ = ["Mismatch", "explain_model", "residuals_at"]
+
+_MAX_TERMS = 40
+
+
+class Mismatch:
+    """Why one equation (or a whole derivation) is wrong; ``str()`` is the readable form.
+
+    ``residual`` (the symbolic residual after the best combination) is computed when first
+    read, within the display budget; ``value``, ``state`` and ``terms`` show the equation at a
+    real state, term by term.
+    """
+
+    def __init__(self, model: str, equation: str, reason: str, residual=None,
+                 value: float = math.nan, state: dict | None = None, terms: list | None = None):
+        self.model, self.equation, self.reason = model, equation, reason
+        self._residual = residual
+        self.value = value
+        self.state = dict(state or {})
+        self.terms = list(terms or [])
+
+    @property
+    def residual(self) -> str:
+        if callable(self._residual):
+            try:
+                self._residual = self._residual()
+            except OverBudget as exc:
+                self._residual = f"(not simplified: {exc}; see the values below)"
+            except Exception:  # noqa: BLE001 - display must never break a verdict
+                self._residual = ""
+        return self._residual or ""
+
+    def __str__(self) -> str:
+        lines = [f"{self.model} [{self.equation}]: {self.reason}"]
+        if self.residual:
+            lines.append(f"    residual after the best combination: {self.residual}")
+        if self.state:
+            st = ", ".join(f"{k}={v:.6g}" for k, v in self.state.items())
+            lines.append(f"    at {st}: residual {self.value:.6g}")
+        for term, value in self.terms:
+            lines.append(f"      {value:+.6g}  {term}")
+        return "\n".join(lines)
+
+    def to_dict(self) -> dict:
+        return {"model": self.model, "equation": self.equation, "reason": self.reason,
+                "residual": self.residual, "value": _json_float(self.value),
+                "state": {k: _json_float(v) for k, v in self.state.items()},
+                "terms": [[s, _json_float(v)] for s, v in self.terms]}
+
+
+def _json_float(x):
+    try:
+        x = float(x)
+    except (TypeError, ValueError):
+        return None
+    return None if math.isnan(x) or math.isinf(x) else x
+
+
+def residuals_at(A: list, b: list, qdd: list, n: int) -> tuple[list, list]:
+    """Residual of each equation with accelerations ``qdd`` and the best-fitting reactions."""
+    M = [row[:n] for row in A]
+    B = [row[n:] for row in A]
+    r = [bi - mi for bi, mi in zip(b, la.matvec(M, qdd))]
+    res, lam, _ = la.residual_after_least_squares(B, r)
+    return res, lam
+
+
+def explain_model(name: str, judgement, against: tuple, ctx: Context,
+                  seed: int = 0, limits: Budget | None = None) -> list[Mismatch]:
+    """Mismatches of model ``name``: its equations that fail with the others' accelerations."""
+    model = judgement.models[name]
+    sols = judgement.solutions
+    fault = [f for f in judgement.faults if f.model == name]
+    if fault and fault[0].kind != "differs":
+        return [Mismatch(name, "all", fault[0].detail)]
+    ref = next((a for a in against if a in sols and sols[a].status == "ok"), None)
+    if ref is None:
+        return [Mismatch(name, "all", "differs from the other derivations")]
+    n = len(model.coordinates)
+    A, b = judgement.parts[name]
+    with mpmath.workdps(40):
+        res, _ = residuals_at(A, b, sols[ref].qdd, n)
+        scale = max((abs(v) for v in b), default=1)
+        wrong = [i for i, v in enumerate(res) if not is_zero(v, scale)]
+    if not wrong:
+        return [Mismatch(name, "all", f"its accelerations differ from those of `{ref}`")]
+    real = _real_state(judgement, name, ref, ctx, seed)
+    reference_model = judgement.models[ref]
+    out = []
+    for i in wrong:
+        label = model.labels[i]
+        value, terms, state = _terms(model, i, real, ctx)
+        out.append(Mismatch(
+            name, label, f"does not hold with the accelerations of `{ref}`",
+            residual=lambda i=i: _symbolic_residual(model, reference_model, i, limits),
+            value=value, state=state, terms=terms))
+    return out
+
+
+def _real_state(judgement, name, ref, ctx: Context, seed: int):
+    """A real state in the working ranges: values of the base symbols, ``q''`` of ``ref`` and
+    the best reactions of ``name``; ``None`` if none is found quickly."""
+    models = judgement.models
+    coords = models[ref].coordinates
+    systems = [System.of(models[ref], coords), System.of(models[name], coords)]
+    exprs = systems[0].flat() + systems[1].flat()
+    fn = sp.lambdify(ctx.base, exprs, modules="mpmath")
+    rng = random.Random(seed + 7)
+    n = len(coords)
+    with mpmath.workdps(30):
+        for _ in range(40):
+            point = {}
+            for s in ctx.base:
+                lo, hi = ctx.floats.get(s, (0.5, 2.0))
+                point[s] = mpmath.mpf(rng.uniform(lo, hi))
+            try:
+                vals = fn(*[point[s] for s in ctx.base])
+            except (ZeroDivisionError, ValueError, TypeError):
+                continue
+            Ar, br = systems[0].unflatten(vals)
+            sol = solve_model(Ar, br, n, models[ref].unknowns)
+            if sol.status != "ok":
+                continue
+            Ac, bc = systems[1].unflatten(vals[systems[0].size:])
+            _, lam = residuals_at(Ac, bc, sol.qdd, n)
+            values = dict(point)
+            values.update({s: v for s, v in zip(ctx.qdd, sol.qdd)})
+            values.update({u: v for u, v in zip(models[name].unknowns, lam)})
+            return values
+    return None
+
+
+def _terms(model, i, values, ctx):
+    if values is None:
+        return math.nan, [], {}
+    coords = model.coordinates
+    eq = model.to_plain(model.equations[i])
+    state = {ctx.name_of(k): float(values[k]) for k in ctx.base if k in values}
+    subs = {k: sp.Float(str(v), 30) for k, v in values.items()}
+    terms = []
+    try:
+        expanded = sp.expand(eq) if sp.count_ops(eq) < 400 else eq
+        parts = sp.Add.make_args(expanded)
+        if len(parts) <= _MAX_TERMS:
+            for term in parts:
+                terms.append((dotted(from_plain(term, coords)),
+                              float(term.xreplace(subs).evalf(30))))
+        total = float(eq.xreplace(subs).evalf(30))
+    except (TypeError, ValueError, ZeroDivisionError):
+        return math.nan, [], state
+    return total, terms, state
+
+
+def _symbolic_residual(candidate, reference, i, limits):
+    """Equation ``i`` of ``candidate`` on the motion of ``reference`` (display only)."""
+    eq = candidate.equations[i]
+    if any(eq.has(u) for u in candidate.unknowns):
+        return ""   # its reactions are fitted numerically; the values below show the residual
+    sol = solve_display(reference, limits)
+    rules = {}
+    rules.update({a: sol[a] for a in reference.accelerations})
+    return dotted(tidy(eq.xreplace(rules), limits))

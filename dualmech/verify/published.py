@@ -1,0 +1,275 @@
+"""Checking a source's printed answers against the verified derivations, by evaluation only.
+
+A printed answer is transcribed as a :class:`dualmech.problem.Published` entry.  At the same
+kind of random rational points as the verdict, the accelerations come from the verified
+derivations and the reactions from the models that determine them; then
+
+* an *equation* is right when its left side is exactly zero there (it follows from the
+  equations of motion: any combination of them is accepted);
+* a *motion* set is right when every equation is, and together they determine every
+  acceleration (``(e1, 2*e1)`` or ``0 = 0`` determine nothing: wrong, with that reason);
+* an *expression* is right when it equals our own derivation there.
+
+Nothing is solved symbolically to reach a verdict.  Why a wrong answer is wrong (the derived
+equation it most resembles, what is left over, its dimensions) is worked out when the detail
+is first read, within the display budget.
+"""
+from __future__ import annotations
+
+import random
+
+import mpmath
+import sympy as sp
+
+from .._algebra import linear_coefficients
+from .._expr import as_expr
+from ..dimensions import audit
+from ..equations import ModelError, to_plain
+from ..exact import MP_DIGITS, ExactForm, is_zero
+from ..kinematics import t
+from .display import Budget, OverBudget, dotted, solve_display, tidy
+from .sampling import MAX_ATTEMPTS, Context, System, solve_model
+
+__all__ = ["PublishedVerdict", "check_published", "closest_equation"]
+
+
+class PublishedVerdict:
+    """Verdict on one printed answer: ``verdict`` is ``"correct"``, ``"wrong"`` or
+    ``"unchecked"``; ``detail`` (computed when first read) says why."""
+
+    def __init__(self, label, where, verdict, detail, method):
+        self.label, self.where, self.verdict, self.method = label, where, verdict, method
+        self._detail = detail
+
+    @property
+    def detail(self) -> str:
+        if callable(self._detail):
+            try:
+                self._detail = self._detail()
+            except Exception as exc:  # noqa: BLE001 - display must never break a verdict
+                self._detail = f"differs from the derivation ({type(exc).__name__} while " \
+                               "explaining)"
+        return self._detail
+
+    def __repr__(self) -> str:
+        return f"PublishedVerdict({self.label!r}, {self.verdict!r})"
+
+    def to_dict(self) -> dict:
+        from .check import method_name   # (check imports this module)
+        return {"label": self.label, "where": self.where, "verdict": self.verdict,
+                "detail": self.detail, "method": method_name(self.method)}
+
+
+def check_published(problem, points: int = 8, seed: int = 0, context: Context | None = None,
+                    limits: Budget | None = None) -> list[PublishedVerdict]:
+    """Verdict on every printed answer of ``problem`` (see :class:`dualmech.problem.Published`).
+
+    ``limits`` is the display budget for explaining wrong answers (when first read)."""
+    limits = limits or Budget()
+    pubs = problem.published()
+    if not pubs:
+        return []
+    models = problem.models()
+    ref = models[problem.reference]
+    coords = ref.coordinates
+    ctx = context or Context(coords, problem.parameter_symbols, problem)
+    mapped = [problem.in_reference_coordinates(m) for m in models.values()]
+    solvers = [ref] + [m for m in mapped if m.unknowns]
+    systems = [System.of(m, coords) for m in solvers]
+    unknowns = list(dict.fromkeys(u for m in solvers for u in m.unknowns))
+    n = len(coords)
+    items, exprs = [], []
+    for s in systems:
+        exprs += s.flat()
+    offset = len(exprs)
+    for pub in pubs:
+        es = [to_plain(e, coords) for e in _published_exprs(problem, pub)]
+        jac = _motion_jacobian(es, ctx, unknowns) if pub.kind == "motion" else None
+        items.append((pub, es, jac))
+        exprs += es
+        if jac is not None and jac[0] is not None:
+            exprs += [x for row in jac[0] for x in row]
+    symbols = tuple(ctx.base) + tuple(ctx.qdd) + tuple(unknowns)
+    with mpmath.workdps(MP_DIGITS):
+        form = ExactForm.build(exprs, symbols)
+        rng = random.Random(seed + 1)
+        zero = 0 if form.method == "exact" else mpmath.mpf(0)
+        bad: dict = {}
+        good = 0
+        for _ in range(MAX_ATTEMPTS * points):
+            point = form.sample(rng, ctx.floats)
+            point.update({s: zero for s in symbols[len(ctx.base):]})
+            try:
+                vals = form.evaluate(point)
+            except (ZeroDivisionError, ValueError, OverflowError):
+                continue
+            off, sols = 0, []
+            for s, m in zip(systems, solvers):
+                A, b = s.unflatten(vals[off:off + s.size])
+                off += s.size
+                sols.append(solve_model(A, b, n, m.unknowns))
+            if sols[0].status != "ok":
+                continue
+            point.update(dict(zip(ctx.qdd, sols[0].qdd)))
+            for sol in sols[1:]:
+                for u, v in sol.lam.items():
+                    if v is not None:
+                        point[u] = v
+            try:
+                vals = form.evaluate(point)
+            except (ZeroDivisionError, ValueError, OverflowError):
+                continue
+            good += 1
+            pos = offset
+            for pub, es, jac in items:
+                for j, v in enumerate(vals[pos:pos + len(es)]):
+                    if not is_zero(v, 1):
+                        bad.setdefault(pub.label, set()).add(j)
+                pos += len(es)
+                if jac is not None and jac[0] is not None:
+                    size = len(jac[0]) * len(jac[0][0])
+                    cols = len(jac[0][0])
+                    J = [list(vals[pos + r * cols: pos + (r + 1) * cols])
+                         for r in range(len(jac[0]))]
+                    pos += size
+                    if solve_model(J, [0] * len(J), n, jac[1]).status != "ok":
+                        bad.setdefault(pub.label, set()).add("determines")
+            if good == points:
+                break
+    verdicts = []
+    for pub, es, jac in items:
+        if jac is not None and jac[0] is None:
+            verdicts.append(PublishedVerdict(pub.label, pub.where, "wrong", jac[2], form.method))
+        elif pub.label not in bad:
+            verdicts.append(PublishedVerdict(pub.label, pub.where, "correct",
+                                             f"holds at {good} points", form.method))
+        else:
+            verdicts.append(PublishedVerdict(
+                pub.label, pub.where, "wrong",
+                lambda pub=pub, which=bad[pub.label]: _detail(problem, pub, which, limits),
+                form.method))
+    return verdicts
+
+
+def _motion_jacobian(es, ctx: Context, unknowns):
+    """``(J, lam)``: the printed set's coefficients of ``q''`` and of the reactions it uses,
+    or ``(None, (), reason)`` when it is not linear in them."""
+    used = [u for u in unknowns if any(e.has(u) for e in es)]
+    A, _, bad = linear_coefficients(es, list(ctx.qdd) + used)
+    if bad:
+        return None, (), ("the printed equations are not linear in " +
+                          ", ".join(ctx.name_of(b) for b in bad) + "; equations of motion are")
+    return [list(A.row(i)) for i in range(A.rows)], tuple(used)
+
+
+def _published_exprs(problem, pub) -> list:
+    """Printed (equation kinds) or printed - reference (expression kind), reference coordinates."""
+    if pub.kind in ("equation", "motion"):
+        exprs = list(pub.printed)
+    else:
+        exprs = [p - r for p, r in zip(pub.printed, pub.reference)]
+    if pub.coordinates and pub.coordinates != problem.reference:
+        mapping = problem.coordinate_maps().get(pub.coordinates)
+        if mapping is None:
+            raise ModelError(f"published `{pub.label}` uses the coordinates of "
+                             f"`{pub.coordinates}`, which has no entry in coordinate_maps().")
+        rules = {}
+        for q, e in mapping.items():
+            rules[q.diff(t, 2)] = as_expr(e).diff(t, 2)
+            rules[q.diff(t)] = as_expr(e).diff(t)
+        exprs = [e.xreplace(rules).xreplace(dict(mapping)) for e in exprs]
+    return exprs
+
+
+def _detail(problem, pub, which, limits: Budget) -> str:
+    """Say what is wrong with a printed answer (display work, within budget)."""
+    dims = problem.dimensions()
+    lines = []
+    if "determines" in which:
+        lines.append(f"the printed set does not determine every acceleration: its "
+                     f"{len(pub.printed)} equation(s) are dependent or too few for the "
+                     f"{len(problem.model(problem.reference).coordinates)} coordinates")
+    exprs = _published_exprs(problem, pub)
+    for j in sorted(x for x in which if isinstance(x, int)):
+        what = f"equation {j + 1}" if pub.kind != "expression" else f"component {j + 1}"
+        if len(pub.printed) == 1:
+            what = "the printed answer"
+        issues = audit(pub.printed[j], dims) if pub.kind != "expression" else \
+            audit(pub.printed[j] - pub.reference[j], dims)
+        if issues:
+            lines.append(f"{what} is dimensionally inconsistent: " + "; ".join(map(str, issues)))
+        if pub.kind != "expression":
+            ref = problem.model(problem.reference)
+            near = closest_equation(exprs[j], ref.equations, ref.labels,
+                                    problem.parameter_symbols)
+            if near is not None:
+                label, alpha, rest = near
+                lines.append(f"{what} is closest to ({alpha}) x [{problem.reference}: {label}];"
+                             f" printed minus that = {dotted(rest)}")
+        diff = _on_shell(problem, exprs[j], limits)
+        if diff is not None and len(diff) < 200:
+            if pub.kind != "expression":
+                lines.append(f"{what} does not follow from the equations of motion: on the "
+                             f"motion its left side equals {diff}, not 0")
+            else:
+                lines.append(f"{what}: printed minus derived = {diff}")
+        elif not lines or pub.kind == "expression":
+            lines.append(f"{what} differs from the derivation")
+    return "; ".join(lines)
+
+
+def closest_equation(expr, equations, labels, parameters, max_terms: int = 40):
+    """The derived equation that ``expr`` most resembles, up to a constant factor.
+
+    Tries every ratio ``alpha`` of a term of ``expr`` to a term of a derived equation (ratios
+    free of the state) and keeps the smallest ``expr - alpha * equation``.  Returns
+    ``(label, alpha, remainder)`` or ``None`` when nothing matches or the input is large.
+    """
+    E = sp.expand(expr)
+    terms_e = sp.Add.make_args(E)
+    if len(terms_e) > max_terms:
+        return None
+    allowed = set(parameters)
+    best = None
+    for label, R in zip(labels, equations):
+        R = sp.expand(R)
+        terms_r = sp.Add.make_args(R)
+        if len(terms_r) > max_terms:
+            continue
+        ratios = []
+        for a in terms_e:
+            for b in terms_r:
+                r = sp.cancel(a / b)
+                if r.free_symbols <= allowed and r not in ratios and r != 0:
+                    ratios.append(r)
+        for alpha in ratios[:60]:
+            rest = sp.expand(E - alpha * R)
+            size = len(sp.Add.make_args(rest)) if rest != 0 else 0
+            if best is None or size < best[0]:
+                best = (size, label, alpha, rest)
+    if best is None or best[0] >= len(terms_e):
+        return None
+    return best[1], best[2], sp.factor_terms(best[3])
+
+
+def _on_shell(problem, expr, limits: Budget) -> str | None:
+    """``expr`` on the motion (accelerations and reactions substituted), for display."""
+    try:
+        rules = dict((a, v) for a, v in solve_display(problem.model(problem.reference),
+                                                      limits).items())
+        for m in problem.models().values():
+            if m.unknowns:
+                m = problem.in_reference_coordinates(m)
+                try:
+                    sol = solve_display(m, limits)
+                except (OverBudget, ModelError, ValueError):
+                    continue
+                for u in m.unknowns:
+                    if u in sol:
+                        rules.setdefault(u, sol[u])
+        out = as_expr(expr).xreplace(rules)
+        if sp.count_ops(out) > 2000:
+            return None
+        return dotted(tidy(out, limits))
+    except (OverBudget, ModelError, ValueError, ZeroDivisionError):
+        return None

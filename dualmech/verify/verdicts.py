@@ -1,0 +1,260 @@
+"""Do the derivations describe the same motion and give the same reactions?  Who is wrong?
+
+Every model of a problem is brought to the reference coordinates and evaluated at the same
+random points (:mod:`dualmech.verify.sampling`).  At each point each model says what it
+determines -- its accelerations, its reactions -- or that it determines nothing (singular) or
+contradicts itself.  Models are *equivalent* when they give the same accelerations at every
+point: one set is then an invertible combination of the other.  A single differing point is a
+certain counter-example; agreement at ``k`` points bounds the chance of a false "equal"
+(Schwartz--Zippel, printed).
+
+When models disagree, the ones that agree with each other outvote the odd one: the result
+names the derivation that holds the error first.  With two models (or a tie) every side is a
+suspect and each is explained in its own equations.  Nothing here raises on a wrong model:
+a singular or self-contradictory derivation, or one whose reactions are undetermined, is a
+mismatch in the result.
+
+Example
+-------
+>>> import sympy as sp
+>>> from dualmech import coordinate, t, EquationSet
+>>> th = coordinate("theta"); m, l, g = sp.symbols("m l g", positive=True)
+>>> a = EquationSet("a", (th,), (m*l**2*th.diff(t, 2) + m*g*l*sp.sin(th),))
+>>> b = EquationSet("b", (th,), (th.diff(t, 2) + g/l*sp.sin(th),))
+>>> bad = EquationSet("bad", (th,), (th.diff(t, 2) - g/l*sp.sin(th),))
+>>> j = judge({"a": a, "b": b, "bad": bad})
+>>> j.equivalent, j.odd
+(False, ['bad'])
+>>> print(j.summary())
+`bad` disagrees with `a` and `b`, which agree with each other
+"""
+from __future__ import annotations
+
+import random
+import time
+from dataclasses import dataclass, field
+from typing import Mapping, Sequence
+
+import mpmath
+
+from ..exact import MP_DIGITS
+from .sampling import MAX_ATTEMPTS, Context, Sampler, Solution, System, same_values, solve_model
+
+__all__ = ["Judgement", "ModelFault", "ReactionFault", "judge"]
+
+
+@dataclass
+class ModelFault:
+    """One derivation's fault at a point: it differs from ``against``, or fails on its own."""
+
+    model: str
+    kind: str            # "differs", "undetermined", "inconsistent", "reactions"
+    against: tuple = ()  # the models whose accelerations it was checked against
+    detail: str = ""
+
+
+@dataclass
+class ReactionFault:
+    """Reaction ``name`` takes different values in different models."""
+
+    name: str
+    suspects: tuple
+    agreeing: tuple = ()
+
+
+@dataclass
+class Judgement:
+    """The verdict on every model of a problem at the sampled points.
+
+    ``equivalent``: every model gives the same accelerations everywhere sampled, determines
+    its reactions, and every reaction shared by two models has one value.  ``odd`` names the
+    derivations held responsible (the minority when a majority agrees; every side of a tie).
+    ``point``/``parts``/``solutions`` keep the counter-example for explanations.
+    """
+
+    models: dict
+    method: str
+    points: int
+    degree: int
+    seconds: float
+    groups: list = field(default_factory=list)
+    faults: list = field(default_factory=list)
+    reaction_faults: list = field(default_factory=list)
+    odd: list = field(default_factory=list)
+    majority: tuple = ()
+    point: dict | None = None
+    solutions: dict = field(default_factory=dict)
+    parts: dict = field(default_factory=dict)
+    bound: float = 0.0
+
+    @property
+    def equivalent(self) -> bool:
+        return not self.faults and not self.reaction_faults
+
+    def fault_of(self, model: str) -> list:
+        return [f for f in self.faults if f.model == model]
+
+    def summary(self) -> str:
+        if self.equivalent:
+            return f"all {len(self.models)} derivations agree"
+        lines = []
+        if self.majority and self.odd:
+            lines.append(f"{_names(self.odd)} {'disagrees' if len(self.odd) == 1 else 'disagree'}"
+                         f" with {_names(self.majority)}, which agree with each other")
+        elif self.groups and len(self.groups) > 1:
+            lines.append("the derivations split into " + " | ".join(
+                _names(g) for g in self.groups) + ": no majority, every side is a suspect")
+        for f in self.faults:
+            if f.kind in ("undetermined", "inconsistent", "reactions") and f.detail:
+                lines.append(f"`{f.model}`: {f.detail}")
+        for r in self.reaction_faults:
+            if r.agreeing:
+                lines.append(f"reaction {r.name}: {_names(r.suspects)} differ from "
+                             f"{_names(r.agreeing)}")
+            else:
+                lines.append(f"reaction {r.name}: {_names(r.suspects)} give different values")
+        return "\n".join(lines)
+
+
+def _names(models: Sequence[str]) -> str:
+    quoted = [f"`{m}`" for m in models]
+    return quoted[0] if len(quoted) == 1 else ", ".join(quoted[:-1]) + " and " + quoted[-1]
+
+
+def judge(models: Mapping, *, context: Context | None = None, points: int = 8, seed: int = 0,
+          reference: str | None = None) -> Judgement:
+    """Judge every model in ``models`` (name -> EquationSet, all in the same coordinates).
+
+    ``reference`` only breaks ties in the order models are listed; it is not trusted more.
+    """
+    t0 = time.perf_counter()
+    names = list(models)
+    if reference in models:
+        names.remove(reference)
+        names.insert(0, reference)
+    first = models[names[0]]
+    coords = first.coordinates
+    ctx = context or Context.for_models(*[models[n] for n in names])
+    systems = [System.of(models[n], coords) for n in names]
+    n = len(coords)
+    with mpmath.workdps(MP_DIGITS):
+        sampler = Sampler(systems, ctx)
+        rng = random.Random(seed)
+        good, verdict = 0, None
+        for point, _vals, parts in sampler.points(rng, MAX_ATTEMPTS * points):
+            sols = {nm: solve_model(A, b, n, s.model.unknowns)
+                    for nm, s, (A, b) in zip(names, systems, parts)}
+            if all(s.status != "ok" for s in sols.values()):
+                continue   # a singular state of the motion itself: draw again
+            good += 1
+            found = _faults_at(names, sols)
+            if found is not None:
+                verdict = (point, dict(zip(names, parts)), sols, found)
+                break
+            if good == points:
+                break
+    out = Judgement(dict(models), sampler.method, good, sampler.form.degree,
+                    time.perf_counter() - t0)
+    if good == 0:
+        out.faults = [ModelFault(nm, "undetermined", (), "no derivation determines the "
+                                 "accelerations at any sampled state: check that every "
+                                 "coordinate has inertia and the reactions are independent")
+                      for nm in names]
+        out.odd = list(names)
+        return out
+    if verdict is None:
+        extra = 4 * sum(len(s.A) * s.size for s in systems) * max(sampler.form.degree, 1)
+        out.bound = sampler.form.false_equal_bound(good, extra)
+        out.groups = [tuple(names)]
+        return out
+    point, parts, sols, (groups, faults, rfaults, odd, majority) = verdict
+    out.point, out.parts, out.solutions = point, parts, sols
+    out.groups, out.faults, out.reaction_faults = groups, faults, rfaults
+    out.odd, out.majority = odd, majority
+    return out
+
+
+def _faults_at(names, sols: dict):
+    """Group the models by their accelerations at one point; ``None`` when all is well."""
+    groups: list[list[str]] = []
+    faults = []
+    for nm in names:
+        s = sols[nm]
+        if s.status != "ok":
+            detail = ("its equations do not determine the accelerations (rank "
+                      f"{s.rank} short)" if s.status == "undetermined"
+                      else "its equations contradict each other (no accelerations satisfy "
+                      "all of them)")
+            faults.append(ModelFault(nm, s.status, (), detail))
+            continue
+        for g in groups:
+            if same_values(sols[g[0]].qdd, s.qdd):
+                g.append(nm)
+                break
+        else:
+            groups.append([nm])
+    groups.sort(key=len, reverse=True)
+    majority: tuple = ()
+    odd: list = [f.model for f in faults]
+    if len(groups) > 1 or (groups and faults):
+        top = groups[0]
+        if len(top) >= 2 and (len(groups) == 1 or len(top) > len(groups[1])):
+            majority = tuple(top)
+            for g in groups[1:]:
+                for nm in g:
+                    faults.append(ModelFault(nm, "differs", majority))
+                    odd.append(nm)
+        else:
+            for g in groups:
+                others = tuple(x for h in groups if h is not g for x in h)
+                for nm in g:
+                    faults.append(ModelFault(nm, "differs", others))
+                    odd.append(nm)
+    # reactions: undetermined ones, and shared names with different values
+    for nm in names:
+        s = sols[nm]
+        if s.status == "ok" and s.undetermined_reactions:
+            faults.append(ModelFault(nm, "reactions", (), "its equations do not determine the "
+                                     "reactions " + ", ".join(map(str, s.undetermined_reactions))))
+            odd.append(nm)
+    rfaults = []
+    if not faults:
+        rfaults = _reaction_faults(names, sols)
+        for r in rfaults:
+            odd += [m for m in r.suspects if m not in odd]
+            if r.agreeing:
+                majority = majority or r.agreeing
+    if not faults and not rfaults:
+        return None
+    return [tuple(g) for g in groups], faults, rfaults, list(dict.fromkeys(odd)), majority
+
+
+def _reaction_faults(names, sols) -> list[ReactionFault]:
+    """Reactions that two or more models share but give different values."""
+    shared: dict = {}
+    for nm in names:
+        for u, v in sols[nm].lam.items():
+            if v is not None:
+                shared.setdefault(u, []).append((nm, v))
+    out = []
+    for u, given in shared.items():
+        if len(given) < 2:
+            continue
+        groups: list[list] = []
+        for nm, v in given:
+            for g in groups:
+                if same_values([g[0][1]], [v]):
+                    g.append((nm, v))
+                    break
+            else:
+                groups.append([(nm, v)])
+        if len(groups) == 1:
+            continue
+        groups.sort(key=len, reverse=True)
+        if len(groups[0]) >= 2 and len(groups[0]) > len(groups[1]):
+            agreeing = tuple(nm for nm, _ in groups[0])
+            suspects = tuple(nm for g in groups[1:] for nm, _ in g)
+        else:
+            agreeing, suspects = (), tuple(nm for g in groups for nm, _ in g)
+        out.append(ReactionFault(str(u), suspects, agreeing))
+    return out
