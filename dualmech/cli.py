@@ -26,10 +26,7 @@ import time
 from pathlib import Path
 from typing import Sequence
 
-import sympy as sp
-
 from . import __version__
-from .equations import state_symbols, to_plain
 
 __all__ = ["main", "build_parser"]
 
@@ -56,8 +53,8 @@ def _positive_float(text: str) -> float:
         value = float(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}") from None
-    if not value > 0:
-        raise argparse.ArgumentTypeError(f"expected a positive number, got {value}")
+    if not (value > 0 and value < float("inf")):
+        raise argparse.ArgumentTypeError(f"expected a positive finite number, got {text!r}")
     return value
 
 
@@ -84,6 +81,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--all", action="store_true", help="check every problem")
     p.add_argument("--json", action="store_true",
                    help="print JSON: one object for one problem, a list for several")
+    p.add_argument("--n", metavar="N", type=_positive_int, default=None,
+                   help="size of a parametric problem (e.g. n_link_pendulum --n 10)")
     _points_seed(p)
     p.set_defaults(func=_cmd_check)
 
@@ -131,6 +130,17 @@ def main(argv: Sequence[str] | None = None) -> int:
         import os
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return EXIT_OK
+    except OSError as exc:   # e.g. an unwritable --out: one line, no traceback
+        where = f" {exc.filename}" if getattr(exc, "filename", None) else ""
+        print(f"dualmech {args.command}: error: cannot write{where}: {exc.strerror or exc}",
+              file=sys.stderr)
+        return EXIT_USAGE
+    except KeyboardInterrupt:
+        print(f"dualmech {args.command}: interrupted", file=sys.stderr)
+        return 130
+    except Exception as exc:  # noqa: BLE001 - no traceback reaches a CLI user
+        print(f"dualmech {args.command}: error: {type(exc).__name__}: {exc}", file=sys.stderr)
+        return EXIT_USAGE
 
 
 # -- helpers ---------------------------------------------------------------------------
@@ -139,11 +149,18 @@ def _catalogue():
     return problems
 
 
-def _get(name: str):
+def _get(name: str, n: int | None = None):
+    cat = _catalogue()
     try:
-        return _catalogue().get(name)
+        decl = cat.module_of(name)
     except KeyError as exc:
         raise UsageError(exc.args[0] if exc.args else str(exc)) from None
+    if n is not None and not decl.parametric:
+        raise UsageError(f"`--n` sizes a parametric problem; `{name}` has a fixed size.")
+    try:
+        return cat.get(name, **({"n": n} if n is not None else {}))
+    except ValueError as exc:
+        raise UsageError(str(exc)) from None
 
 
 def _selected(args) -> list:
@@ -152,9 +169,9 @@ def _selected(args) -> list:
     if args.all:
         return list(_catalogue().all_problems())
     if not args.names:
-        known = ", ".join(p.name for p in _catalogue().all_problems())
+        known = ", ".join(d.name for d in _catalogue().declarations())
         raise UsageError(f"name at least one problem, or use --all; known problems: {known}.")
-    return [_get(n) for n in args.names]
+    return [_get(n, getattr(args, "n", None)) for n in args.names]
 
 
 def _dof(problem) -> int | str:
@@ -181,6 +198,7 @@ def _json(obj) -> str:
 
 
 def _jsonable(x):
+    import sympy as sp
     if isinstance(x, sp.Basic):
         return str(x)
     if hasattr(x, "tolist"):
@@ -219,17 +237,31 @@ def _compare(problem, points: int, seed: int):
         return _Failed(problem, exc, time.perf_counter() - start)
 
 
+def _progress(items, what: str):
+    """``items`` with a progress bar on stderr (tqdm) when there are several and it is a tty."""
+    items = list(items)
+    if len(items) < 2:
+        return items
+    from tqdm import tqdm
+    return tqdm(items, desc=what, unit="problem", file=sys.stderr, leave=False,
+                disable=None)
+
+
 # -- commands --------------------------------------------------------------------------
 def _cmd_list(args) -> int:
-    rows = [(p.name, p.title, p.source, _dof(p)) for p in _catalogue().all_problems()]
-    print(_table(("name", "title", "source", "dof"), rows))
+    cat = _catalogue()
+    rows = [(d.name, d.title, d.source, d.dof, ", ".join(d.reactions) or "-", "modelled")
+            for d in cat.declarations()]
+    rows += [(name, "(not modelled)", source, "-", "-", "out of scope: " + reason)
+             for name, source, reason in cat.OUT_OF_SCOPE]
+    print(_table(("name", "title", "source", "dof", "reactions", "status"), rows))
     return EXIT_OK
 
 
 def _cmd_check(args) -> int:
     chosen = _selected(args)
     results = []
-    for problem in chosen:
+    for problem in _progress(chosen, "checking"):
         c = _compare(problem, args.points, args.seed)
         results.append((problem, c))
         if not args.json:
@@ -273,9 +305,11 @@ def _cmd_show(args) -> int:
         note = f"   [{where.direction}]" if where is not None and where.direction else ""
         expr = _dotted(expr, coords)
         if args.latex:
+            import sympy as sp
             print(f"{sp.latex(sp.Symbol(str(rname)))} = {sp.latex(expr)}{note}")
         else:
             print(f"{rname}{note} =")
+            import sympy as sp
             print(sp.pretty(expr, use_unicode=True))
         print()
     return EXIT_OK if c.equivalent else EXIT_DISAGREE
@@ -284,6 +318,8 @@ def _cmd_show(args) -> int:
 def _dotted(expr, coordinates):
     """``expr`` with ``q(t), q', q''`` as symbols ``q``, ``qdot``, ``qddot``, which sympy prints
     with dots (``\\dot{q}`` in LaTeX)."""
+    import sympy as sp
+    from .equations import state_symbols, to_plain
     rules = {}
     for q in dict.fromkeys(coordinates):
         s = state_symbols(q)

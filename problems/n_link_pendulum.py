@@ -28,8 +28,9 @@ Lagrange, written by hand (no frames)::
     T = sum_i m_i (x_i'^2 + y_i'^2) / 2,   V = -g sum_i m_i sum_{j<=i} l_j cos(theta_j)
 
 The tensions once more (``cartesian=True``): each mass free in the plane, ``(x_i, y_i)``, held by
-the constraints ``((x_i - x_{i-1})^2 + (y_i - y_{i-1})^2 - l_i^2) / (2 l_i) = 0``, whose
-gradient is the unit vector along rod ``i`` on the constraint: the multiplier is the tension.
+the constraints ``(l_i^2 - (x_i - x_{i-1})^2 - (y_i - y_{i-1})^2) / (2 l_i) = 0``, whose
+gradient on the constraint is the unit vector from mass ``i`` towards the joint above, the
+direction of the rod's pull: the multiplier is the tension.
 
 Uniform rods (``NLinkRigidPendulum``): rod ``i`` of mass ``m_i`` and length ``l_i``, centre at
 the middle, ``I_i = m_i l_i^2 / 12``; joint ``i`` (top of rod ``i``) carries the force
@@ -99,6 +100,8 @@ class NLinkPendulum(_Chain):
 
     name = "n_link_pendulum"
     title = "Planar n-link pendulum of point masses"
+    source = "dualmech: parametric scaling problem (after 002's compound double pendulum)"
+    parametric = "n"
     summary = ("A chain of n point masses on massless rods: n angles, the n rod tensions from "
                "the direct form and again as multipliers of the Cartesian form.")
 
@@ -157,7 +160,7 @@ class NLinkPendulum(_Chain):
             x, y = self.x[i], self.y[i]
             lg.kinetic(f"T of mass {i + 1}", self.m[i] * (_d(x)**2 + _d(y)**2) / 2)
             lg.potential(f"gravity on mass {i + 1}", self.m[i] * g * y)
-            lg.constraint(f"T{i + 1}", ((x - px)**2 + (y - py)**2 - self.l[i]**2)
+            lg.constraint(f"T{i + 1}", (self.l[i]**2 - (x - px)**2 - (y - py)**2)
                           / (2 * self.l[i]))
             px, py = x, y
         return lg.equations()
@@ -168,6 +171,8 @@ class NLinkRigidPendulum(_Chain):
 
     name = "n_link_rigid_pendulum"
     title = "Planar n-link pendulum of uniform rods"
+    source = "dualmech: parametric scaling problem (after 002's compound double pendulum)"
+    parametric = "n"
     summary = ("A chain of n uniform rods: Newton-Euler with the joint forces per rod, against "
                "the Lagrangian written by hand.")
 
