@@ -189,11 +189,17 @@ class Frame:
         return self.ang_vel_in(other).dt(other)
 
     def _ang_vel_root(self) -> "Vector":
-        total = Vector(self.root, sp.zeros(3, 1))
+        """Angular velocity relative to the root, with components in this frame's own axes.
+
+        Built down the chain, ``w_f = R_f^T w_parent + unskew(R_f^T dR_f/dt)`` in ``f``'s axes,
+        so a deep chain (z-y-z Euler angles) gives the short textbook components instead of
+        the root components multiplied through every rotation matrix.
+        """
+        w = sp.zeros(3, 1)
         for f in self.chain()[1:]:
-            w_child = unskew(f.rotation.T * f.rotation.diff(t))
-            total = total + Vector(f, w_child)
-        return total
+            w_rel = unskew(f.rotation.T * f.rotation.diff(t)).applyfunc(sp.trigsimp)
+            w = f.rotation.T * w + w_rel
+        return Vector(self, w)
 
     def origin_from_root(self) -> "Vector":
         """Position of this frame's origin relative to the root origin."""
