@@ -25,7 +25,11 @@ from dataclasses import dataclass
 
 import numpy as np
 import sympy as sp
-from hypothesis import strategies as st
+try:
+    from hypothesis import strategies as st
+except ImportError as exc:  # the plain install has no hypothesis
+    raise ImportError("dualmech.testing needs hypothesis: install it with "
+                      "`pip install 'dualmech[testing]'`.") from exc
 
 from .kinematics import t
 from .numeric import NumericModel
