@@ -24,7 +24,7 @@ from typing import Callable
 
 import sympy as sp
 
-__all__ = ["cache_dir", "digest", "load_module"]
+__all__ = ["cache_dir", "digest", "load_module", "private_dir"]
 
 ENV = "DUALMECH_CACHE_DIR"
 _MEMORY: dict = {}
@@ -89,7 +89,7 @@ def load_module(key: str, build: Callable[[], str]):
     if module is None:
         source = build()
         if folder is None or not _write(folder, f"dm_{key}.py", source):
-            folder = _private_dir()
+            folder = private_dir()
             _write(folder, f"dm_{key}.py", source)
         module = _import(folder / f"dm_{key}.py", key)
         if module is None:
@@ -114,7 +114,7 @@ def _import(path: Path, key: str):
 _PRIVATE: list = []
 
 
-def _private_dir() -> Path:
+def private_dir() -> Path:
     """A temporary directory of this process, for when the cache is off or not writable."""
     if not _PRIVATE:
         import atexit

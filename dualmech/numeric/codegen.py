@@ -35,10 +35,10 @@ from typing import Sequence
 import symengine as se
 import sympy as sp
 
-__all__ = ["GENERATOR_VERSION", "Program", "program", "python_source"]
+__all__ = ["GENERATOR_VERSION", "Program", "Printer", "program", "python_source"]
 
 #: Bumped whenever the generated code changes meaning or form (invalidates every cache entry).
-GENERATOR_VERSION = "2"
+GENERATOR_VERSION = "3"
 
 
 @dataclass(frozen=True)
@@ -78,6 +78,8 @@ class _Statics:
 
 
 _TRIG = ("sin", "cos")
+_ELEMENTARY = {"sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh",
+               "log", "Abs", "sign"}
 
 
 class _Splitter:
@@ -118,9 +120,9 @@ class _Splitter:
                 base, ex = f.args
                 new_base = base if base.is_Symbol else self.split(base)
                 hit = se.Pow(new_base, ex if self.is_static(ex) else self.split(ex))
-            elif f.args:
+            elif name in _ELEMENTARY:
                 hit = f.func(*[self.split(a) for a in f.args])
-            else:
+            else:  # Piecewise, Heaviside, ...: printed as they are
                 hit = f
             self._inner[f] = hit
         return hit
@@ -228,14 +230,19 @@ _NP_FUNCS = {"sin": "_np.sin", "cos": "_np.cos", "tan": "_np.tan", "asin": "_np.
              "Abs": "_np.abs", "sign": "_np.sign"}
 
 
-class _Printer:
+class Printer:
     """Python source of symengine expressions; ``numpy`` selects elementwise functions."""
 
-    def __init__(self, numpy: bool):
+    language = "python"
+
+    def __init__(self, numpy: bool = False):
         self.numpy = numpy
         self.funcs = _NP_FUNCS if numpy else _PY_FUNCS
         self.exp = "_np.exp" if numpy else "_exp"
         self.sqrt = "_np.sqrt" if numpy else "_sqrt"
+
+    def power(self, base: str, ex: str) -> str:
+        return f"{base}**{ex}"
 
     def __call__(self, e) -> str:
         name = type(e).__name__
@@ -293,26 +300,28 @@ class _Printer:
                 return "*".join([b] * k)
             if -3 <= k < 0:
                 return f"(1.0/({'*'.join([b] * -k)}))"
-            return f"{b}**{k}"
+            return self.power(b, str(k))
         if ex.is_Number and ex == se.Rational(1, 2):
             return f"{self.sqrt}({self(base)})"
         if ex.is_Number and ex == se.Rational(-1, 2):
             return f"(1.0/{self.sqrt}({self(base)}))"
-        return f"{b}**({self(ex)})"
+        return self.power(b, f"({self(ex)})")
 
     def _sign(self, e):
         if self.numpy:
             return f"_np.sign({self(e.args[0])})"
         return f"_sign({self(e.args[0])})"
 
-    def _sympy(self, e) -> str:
-        """Node types we do not print ourselves: sympy's code printers."""
+    def sympy_printer(self):
         from sympy.printing.numpy import NumPyPrinter
         from sympy.printing.pycode import PythonCodePrinter
-        expr = sp.sympify(e)  # a symengine object, converted through its own _sympy_
-        printer = NumPyPrinter({"fully_qualified_modules": True}) if self.numpy \
+        return NumPyPrinter({"fully_qualified_modules": True}) if self.numpy \
             else PythonCodePrinter({"fully_qualified_modules": True})
-        text = printer.doprint(expr)
+
+    def _sympy(self, e) -> str:
+        """Node types we do not print ourselves: sympy's code printers."""
+        expr = sp.sympify(e)  # a symengine object, converted through its own _sympy_
+        text = self.sympy_printer().doprint(expr)
         if "Not supported" in text:
             raise NotImplementedError(f"cannot generate code for {expr}")
         return f"({text})"
@@ -350,10 +359,10 @@ def python_source(prog: Program, key: str) -> str:
              "def _sign(x):", "    return (x > 0) - (x < 0)", "", "",
              "def static(p):"]
     lines += _unpack(params, "p", "    ")
-    scalar = _Printer(numpy=False)
+    scalar = Printer(numpy=False)
     lines += _block(prog.static, scalar, "    ")
     lines += [f"    return ({''.join(k + ', ' for k in k_names)})", ""]
-    for kind, printer in (("scalar", scalar), ("vector", _Printer(numpy=True))):
+    for kind, printer in (("scalar", scalar), ("vector", Printer(numpy=True))):
         lines += ["", f"def {kind}(p, k):"]
         lines += _unpack(params, "p", "    ") + _unpack(k_names, "k", "    ")
         lines += ["", "    def evaluate(t_, y):"]

@@ -23,8 +23,11 @@ array([ 0., -2.])
 """
 from __future__ import annotations
 
+import os
+import threading
 from dataclasses import dataclass
-from typing import Mapping, Sequence
+from functools import lru_cache
+from typing import Callable, Mapping, Sequence
 
 import numpy as np
 import sympy as sp
@@ -33,7 +36,7 @@ from scipy.linalg.lapack import dgesv
 from .._expr import as_expr
 from ..equations import EquationSet, ModelError, state_symbols, to_plain
 from ..kinematics import t
-from . import codegen
+from . import cbackend, codegen
 from ._cache import digest, load_module
 
 __all__ = ["NumericModel", "SingularityError", "StateFunction"]
@@ -44,6 +47,8 @@ COND_LIMIT, SCALE_LIMIT = 1e12, 1e-12
 #: The cheap estimate trips (and the exact test runs) well before those limits.
 _TRIP = 1e-8
 _PROBE = np.random.default_rng(20240611).standard_normal(64)
+#: Largest square system solved by the compiled code (its matrix lives on the C stack).
+_C_MAX = 120
 
 
 class SingularityError(ModelError):
@@ -55,6 +60,8 @@ class _Code:
     module: object
     params: tuple
     shape: tuple
+    key: str
+    c_source: Callable[[], str]
 
 
 _BY_ID: dict = {}
@@ -82,17 +89,18 @@ def _generated(eqs: EquationSet) -> _Code:
     params = parameters_of(eqs.equations, eqs.unknowns)
     key = digest("equations", codegen.GENERATOR_VERSION, eqs.coordinates, eqs.unknowns,
                  eqs.equations)
-    A, b = eqs.matrix()
+    A, b = eqs.plain_matrix()
 
-    def build() -> str:
-        coords = eqs.coordinates
-        outs = [to_plain(e, coords) for e in list(A) + list(b)]
-        states = [state_symbols(q) for q in coords]
-        prog = codegen.program(outs, t=t, q=[s.q for s in states], qd=[s.qd for s in states],
+    @lru_cache(maxsize=1)
+    def prog() -> codegen.Program:
+        outs = list(A) + list(b)
+        states = [state_symbols(q) for q in eqs.coordinates]
+        return codegen.program(outs, t=t, q=[s.q for s in states], qd=[s.qd for s in states],
                                params=params, scale_of=A.rows * A.cols)
-        return codegen.python_source(prog, key)
 
-    code = _Code(load_module(key, build), params, A.shape)
+    module = load_module(key, lambda: codegen.python_source(prog(), key))
+    code = _Code(module, params, A.shape, key,
+                 lambda: cbackend.c_source(prog(), key, A.shape, _TRIP))
     _BY_ID[id(eqs)] = (eqs, code)  # keep eqs alive so its id is not reused
     return code
 
@@ -140,17 +148,70 @@ class NumericModel:
     states in the columns); ``time`` is a number or, for many states, an array ``(K,)``.
     """
 
-    def __init__(self, eqs: EquationSet, params: Mapping):
+    def __init__(self, eqs: EquationSet, params: Mapping, *, backend: str | None = None):
+        backend = backend or os.environ.get("DUALMECH_BACKEND", "auto")
+        if backend not in ("auto", "python", "c"):
+            raise ValueError(f"`backend` must be 'auto', 'python' or 'c', got {backend!r}.")
         self.eqs = eqs
         self.states = [state_symbols(q) for q in eqs.coordinates]
         self.n = eqs.n
-        code = _generated(eqs)
+        self._code = code = _generated(eqs)
         p = _bind(code.params, params, f"model `{eqs.name}`")
         k = code.module.static(p)
         self._scalar = code.module.scalar(p, k)
         self._vector = code.module.vector(p, k)
         self.shape = code.shape
         self._mn = code.shape[0] * code.shape[1]
+        self.backend = backend
+        self._c_args = (np.array(p, dtype=float), np.array(k, dtype=float))
+        self._c = None if backend == "python" or code.shape[0] != code.shape[1] \
+            or code.shape[1] > _C_MAX else False  # False: not loaded yet
+
+    def _c_solver(self):
+        """The compiled solver (loaded, or compiled, on first use), or ``None``."""
+        if self._c is False:
+            fns = cbackend.load(self._code.key, self._code.c_source)
+            if fns is None and self.backend == "c":
+                raise RuntimeError("`backend='c'` needs a working C compiler (set $CC); "
+                                   "use backend='python' or 'auto' without one.")
+            if fns is None:
+                self._c = None
+            else:
+                p, k = self._c_args
+                work = np.zeros(2 * self.n + max(2 * self.n, self.shape[1]))
+                self._c = (*fns, p.ctypes.data, k.ctypes.data, work, work.ctypes.data,
+                           threading.Lock())
+        return self._c
+
+    def _c_one(self, time, y: np.ndarray, rhs: int):
+        """The right-hand side (``rhs=1``) or the solution at one state, or ``None`` if the
+        state tripped the cheap estimate (or there is no compiled code)."""
+        c = self._c if self._c is not False else self._c_solver()
+        if c is None:
+            return None
+        one, _, pp, kp, work, wp, lock = c
+        n2 = 2 * self.n
+        with lock:
+            work[:n2] = y
+            if one(float(time), pp, kp, wp, rhs):
+                return None
+            return work[n2: n2 + (n2 if rhs else self.shape[1])].copy()
+
+    def _c_many(self, time, Y: np.ndarray, out: np.ndarray, offset: int, nrows: int):
+        """Solve at the states in the columns of ``Y`` into rows ``offset...`` of ``out``
+        with the compiled code; ``None`` when done, else the mask of states that tripped the
+        cheap estimate."""
+        _, many, pp, kp, *_ = self._c_solver()
+        K = Y.shape[1]
+        tv = None
+        if np.ndim(time):
+            tv = np.ascontiguousarray(np.broadcast_to(np.asarray(time, float), (K,)))
+        Y = np.ascontiguousarray(Y, dtype=float)
+        trip = np.zeros(K, dtype=np.uint8)
+        bad = many(K, 0.0 if tv is not None else float(time),
+                   None if tv is None else tv.ctypes.data, Y.ctypes.data, pp, kp,
+                   out.ctypes.data + 8 * offset * K, nrows, trip.ctypes.data)
+        return trip.astype(bool) if bad else None
 
     # -- evaluation ----------------------------------------------------------------------
     def _state(self, q, qd) -> np.ndarray:
@@ -185,9 +246,14 @@ class NumericModel:
         """``[q''; lambda]``: ``(N,)`` at one state, ``(N, K)`` at many (least squares if the
         system is not square)."""
         y = self._state(q, qd)
-        if y.ndim == 2:
+        if y.ndim == 1:
+            x = self._c_one(time, y, 0) if self._c is not None else None
+            return x if x is not None else np.array(self._solve_one(time, y.tolist()))
+        if self._c_solver() is None:
             return self._solve_many(time, y)
-        return np.array(self._solve_one(time, y.tolist()))
+        x = np.empty((self.shape[1], y.shape[1]))
+        self._fix(time, y, x, 0, self._c_many(time, y, x, 0, self.shape[1]))
+        return x
 
     def accelerations(self, time, q, qd) -> np.ndarray:
         """``q''``: ``(n,)`` at one state, ``(n, K)`` at many."""
@@ -198,15 +264,31 @@ class NumericModel:
         ``(2n, K)`` (``vectorized=True``); the result is a new array of the same shape."""
         y = np.asarray(y, dtype=float)
         n = self.n
-        if y.ndim == 2:
-            out = np.empty_like(y)
-            out[:n] = y[n:]
+        if y.shape[0] != 2 * n or y.ndim > 2:
+            raise ValueError(f"`y` must hold {2 * n} numbers (q then q') per state, got shape "
+                             f"{y.shape}.")
+        if y.ndim == 1:
+            out = self._c_one(time, y, 1) if self._c is not None else None
+            if out is not None:
+                return out
+            yl = y.tolist()
+            return np.array(yl[n:] + self._solve_one(time, yl)[:n])
+        out = np.empty_like(y)
+        out[:n] = y[n:]
+        if self._c_solver() is None:
             out[n:] = self._solve_many(time, y)[:n]
-            return out
-        yl = y.tolist()
-        if len(yl) != 2 * n:
-            raise ValueError(f"`y` must hold {2 * n} numbers (q then q'), got {len(yl)}.")
-        return np.array(yl[n:] + self._solve_one(time, yl)[:n])
+        else:
+            self._fix(time, y, out, n, self._c_many(time, y, out, n, n))
+        return out
+
+    def _fix(self, time, Y, out, offset, bad) -> None:
+        """Decide the states flagged by the compiled code exactly (raise if singular)."""
+        if bad is None:
+            return
+        times = np.broadcast_to(np.asarray(time, dtype=float), (Y.shape[1],))
+        rows = out.shape[0] - offset
+        for i in np.flatnonzero(bad):
+            out[offset:, i] = self._solve_one(times[i], Y[:, i].tolist())[:rows]
 
     # -- one state -------------------------------------------------------------------------
     def _solve_one(self, time, y: list) -> list:

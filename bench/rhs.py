@@ -1,0 +1,281 @@
+"""Right-hand side of the equations of motion: dualmech's generated code against the peers.
+
+For the toy car (2 DOF) and a planar n-link pendulum of point masses (n = 2 and 10; the
+catalogue's ``n_link_pendulum``, or the same chain written here with dualmech's Lagrangian API),
+time in the same run:
+
+* ``rhs(t, y)`` per call (µs, median over repeats): ours; hand-written NumPy (M, f, then
+  ``numpy.linalg.solve``); sympy ``lambdify`` of M and f (cse) + ``numpy.linalg.solve``;
+  PyDy's generated ODE function (backend lambdify, and cython when Cython is installed and
+  compiles); Pinocchio's ABA when ``import pinocchio`` works (n-link only);
+* vectorised evaluation, states per second: ours ``rhs(t, Y)`` with ``Y`` of shape
+  ``(2n, K)``; hand-written NumPy on stacked states with a batched solve;
+
+and print ratios ours / peer (below 1: ours is faster per call; above 1 for states per second:
+ours is faster).  Every peer's result is checked against ours at the timed state first.
+A script, not a test: ``python bench/rhs.py`` (``--quick`` fewer repeats).
+
+Targets (issue 5): per call <= hand-written NumPy at n = 2 and n = 10; >= 1e7 states/s
+vectorised for a 2-DOF problem.
+"""
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+import timeit
+
+import numpy as np
+import sympy as sp
+
+from dualmech import Lagrangian, coordinate, t
+from dualmech.equations import to_plain
+from dualmech.numeric import NumericModel
+
+K_STATES = 100_000
+
+
+# -- the problems -------------------------------------------------------------------------
+def n_link(n: int):
+    """The catalogue's ``n_link_pendulum`` (its Lagrange model), else the chain built here."""
+    try:
+        from problems import get
+        p = get("n_link_pendulum", n=n)
+    except (ImportError, KeyError):
+        return n_link_here(n)
+    values = {s: float(v) for s, v in p.defaults().items()}
+    mv = np.array([values[s] for s in p.m])
+    lv = np.array([values[s] for s in p.l])
+    return p.model("lagrange"), values, _hand_n_link(mv, lv, values[sp.Symbol("g", positive=True)])
+
+
+def n_link_here(n: int):
+    """Planar chain of n point masses on massless rods, angles from the downward vertical."""
+    th = [coordinate(f"theta{i + 1}") for i in range(n)]
+    m = sp.symbols(f"m1:{n + 1}", positive=True)
+    lengths = sp.symbols(f"l1:{n + 1}", positive=True)
+    g = sp.Symbol("g", positive=True)
+    lg = Lagrangian(coordinates=th)
+    x = y = 0
+    for i in range(n):
+        x += lengths[i] * sp.sin(th[i])
+        y -= lengths[i] * sp.cos(th[i])
+        lg.kinetic(f"T{i + 1}", m[i] * (x.diff(t) ** 2 + y.diff(t) ** 2) / 2)
+        lg.potential(f"V{i + 1}", m[i] * g * y)
+    rng = np.random.default_rng(n)
+    values = {g: 9.81}
+    values.update({s: float(v) for s, v in zip(m, rng.uniform(0.5, 2.0, n))})
+    values.update({s: float(v) for s, v in zip(lengths, rng.uniform(0.5, 1.5, n))})
+    mv = np.array([values[s] for s in m])
+    lv = np.array([values[s] for s in lengths])
+    return lg.equations(), values, _hand_n_link(mv, lv, 9.81)
+
+
+def _hand_n_link(m, lengths, g):
+    """Hand-written NumPy: M_ij = mu_ij l_i l_j cos(th_i - th_j), mu_ij = sum_{k>=max(i,j)} m_k."""
+    n = len(m)
+    tail = np.cumsum(m[::-1])[::-1]
+    idx = np.arange(n)
+    mu = tail[np.maximum.outer(idx, idx)]
+    W = mu * np.outer(lengths, lengths)
+    G = g * tail * lengths
+
+    def rhs(_t, y):
+        th, w = y[:n], y[n:]
+        d = th[:, None] - th[None, :]
+        M = W * np.cos(d)
+        f = -(W * np.sin(d)) @ (w * w) - G * np.sin(th)
+        return np.concatenate((w, np.linalg.solve(M, f)))
+
+    def many(_t, Y):
+        th, w = Y[:n].T, Y[n:].T                     # (K, n)
+        d = th[:, :, None] - th[:, None, :]
+        M = W * np.cos(d)
+        f = -np.einsum("kij,kj->ki", W * np.sin(d), w * w) - G * np.sin(th)
+        return np.concatenate((Y[n:], np.linalg.solve(M, f[..., None])[..., 0].T))
+
+    return rhs, many
+
+
+def toy_car():
+    from problems import get
+    p = get("toy_car")
+    values = {s: float(v) for s, v in p.defaults().items()}
+    R, g, m = (values[sp.Symbol(name, positive=True)] for name in ("R", "g", "m"))
+
+    def rhs(_t, y):
+        th, ph, thd, phd = y
+        s, c = np.sin(th), np.cos(th)
+        M = np.array([[m * R * R, 0.0], [0.0, m * R * R * c * c]])
+        f = np.array([-m * R * R * s * c * phd * phd - m * g * R * s * np.cos(ph),
+                      2 * m * R * R * s * c * thd * phd - m * g * R * c * np.sin(ph)])
+        return np.concatenate((y[2:], np.linalg.solve(M, f)))
+
+    def many(_t, Y):
+        th, ph, thd, phd = Y
+        s, c = np.sin(th), np.cos(th)
+        M = np.zeros((Y.shape[1], 2, 2))
+        M[:, 0, 0] = m * R * R
+        M[:, 1, 1] = m * R * R * c * c
+        f = np.stack([-m * R * R * s * c * phd * phd - m * g * R * s * np.cos(ph),
+                      2 * m * R * R * s * c * thd * phd - m * g * R * c * np.sin(ph)], -1)
+        return np.concatenate((Y[2:], np.linalg.solve(M, f[..., None])[..., 0].T))
+
+    return p.model(p.reference), values, (rhs, many)
+
+
+# -- peers ----------------------------------------------------------------------------------
+def _plain_matrices(eqs):
+    A, b = eqs.matrix()
+    n = eqs.n
+    M = A[:, :n].applyfunc(lambda e: to_plain(e, eqs.coordinates))
+    f = b.applyfunc(lambda e: to_plain(e, eqs.coordinates))
+    states = eqs.states
+    return M, f, [s.q for s in states] + [s.qd for s in states]
+
+
+def lambdify_peer(eqs, values):
+    M, f, args = _plain_matrices(eqs)
+    params = sorted(values, key=str)
+    fn = sp.lambdify([args, params], [M, f], modules="numpy", cse=True)
+    p = [values[s] for s in params]
+    n = eqs.n
+
+    def rhs(_t, y):
+        Mn, fn_ = fn(y, p)
+        return np.concatenate((y[n:], np.linalg.solve(Mn, np.ravel(fn_))))
+
+    return rhs
+
+
+def pydy_peer(eqs, values, generator: str):
+    from pydy.codegen.ode_function_generators import generate_ode_function
+    import sympy.physics.mechanics as me
+    n = eqs.n
+    us = [me.dynamicsymbols(f"u{i}") for i in range(n)]
+    A, b = eqs.matrix()
+    rules = {q.diff(t): u for q, u in zip(eqs.coordinates, us)}
+    M = A[:, :n].xreplace(rules)
+    f = b.xreplace(rules)
+    params = sorted(values, key=str)
+    fn = generate_ode_function(f, list(eqs.coordinates), us, params, mass_matrix=M,
+                               coordinate_derivatives=sp.Matrix(us), generator=generator,
+                               constants_arg_type="array")
+    p = np.array([values[s] for s in params])
+    return lambda _t, y: fn(y, _t, p)
+
+
+def pinocchio_peer(n, values):
+    """ABA of an n-link planar chain of point masses (revolute joints about the y axis)."""
+    import pinocchio as pin
+    model = pin.Model()
+    parent = 0
+    for i in range(n):
+        li = values[sp.Symbol(f"l{i + 1}", positive=True)]
+        mi = values[sp.Symbol(f"m{i + 1}", positive=True)]
+        offset = pin.SE3(np.eye(3), np.array([0.0, 0.0, -values[sp.Symbol(f"l{i}",
+                                                                               positive=True)]
+                                             if i else 0.0]))
+        parent = model.addJoint(parent, pin.JointModelRY(), offset, f"j{i}")
+        model.appendBodyToJoint(parent, pin.Inertia(mi, np.array([0.0, 0.0, -li]),
+                                                    np.zeros((3, 3))), pin.SE3.Identity())
+    model.gravity.linear = np.array([0.0, 0.0, -9.81])
+    data = model.createData()
+    tau = np.zeros(n)
+
+    def rhs(_t, y):
+        return np.concatenate((y[n:], pin.aba(model, data, y[:n], y[n:], tau)))
+
+    return rhs
+
+
+# -- timing ---------------------------------------------------------------------------------
+def per_call_us(fn, y, repeats: int) -> float:
+    number = 2000
+    times = timeit.repeat(lambda: fn(0.0, y), number=number, repeat=repeats)
+    return statistics.median(times) / number * 1e6
+
+
+def states_per_s(fn, Y, repeats: int) -> float:
+    times = timeit.repeat(lambda: fn(0.0, Y), number=3, repeat=repeats)
+    return Y.shape[1] / (statistics.median(times) / 3)
+
+
+def _check(name, ours, theirs, y, failures):
+    a, b = ours(0.0, y), np.asarray(theirs(0.0, y), dtype=float).ravel()
+    if not np.allclose(a, b, rtol=1e-9, atol=1e-9 * np.max(np.abs(a))):
+        failures.append(f"{name}: max difference {np.max(np.abs(a - b)):.3g}")
+        return False
+    return True
+
+
+def run(label, eqs, values, hand, repeats, pinocchio_n=None):
+    n = eqs.n
+    t0 = time.perf_counter()
+    nm_py = NumericModel(eqs, values, backend="python")
+    build = time.perf_counter() - t0
+    nm = NumericModel(eqs, values)
+    t0 = time.perf_counter()
+    compiled = nm._c_solver() is not None  # noqa: SLF001 - load/compile before timing
+    build_c = time.perf_counter() - t0
+    rng = np.random.default_rng(1)
+    y = np.concatenate((rng.uniform(-0.7, 0.7, n), rng.uniform(-1, 1, n)))
+    Y = np.concatenate((rng.uniform(-0.7, 0.7, (n, K_STATES)), rng.uniform(-1, 1, (n, K_STATES))))
+    failures: list = []
+    peers = {"hand-written NumPy": hand[0], "sympy lambdify": lambdify_peer(eqs, values)}
+    for gen in ("lambdify", "cython"):
+        try:
+            peers[f"PyDy ({gen})"] = pydy_peer(eqs, values, gen)
+        except Exception as exc:  # optional peer
+            print(f"  [{label}] PyDy ({gen}) skipped: {type(exc).__name__}: "
+                  f"{str(exc).splitlines()[0][:90] if str(exc) else ''}")
+    if pinocchio_n:
+        try:
+            peers["Pinocchio ABA"] = pinocchio_peer(pinocchio_n, values)
+        except ImportError:
+            print(f"  [{label}] Pinocchio skipped: `import pinocchio` fails "
+                  "(pip install pin)")
+    ours_us = per_call_us(nm.rhs, y, repeats)
+    py_us = per_call_us(nm_py.rhs, y, repeats)
+    ours = "dualmech (compiled C)" if compiled else "dualmech (Python)"
+    print(f"\n{label}: n = {n}; generated code: Python {build * 1e3:.0f} ms, "
+          + (f"C {build_c * 1e3:.0f} ms" if compiled else "no C compiler: Python only")
+          + " (build, or load from the cache)")
+    print(f"  {'right-hand side per call':28s} {'µs':>9s} {'ours/peer':>10s}")
+    print(f"  {ours:28s} {ours_us:9.2f} {'':>10s}")
+    if compiled:
+        _check("Python backend", nm.rhs, nm_py.rhs, y, failures)
+        print(f"  {'dualmech (Python backend)':28s} {py_us:9.2f} {ours_us / py_us:10.2f}")
+    for name, fn in peers.items():
+        if not _check(name, nm.rhs, fn, y, failures):
+            continue
+        us = per_call_us(fn, y, repeats)
+        print(f"  {name:28s} {us:9.2f} {ours_us / us:10.2f}")
+    ours_sps = states_per_s(nm.rhs, Y, repeats)
+    py_sps = states_per_s(nm_py.rhs, Y, repeats)
+    hand_sps = states_per_s(hand[1], Y, repeats)
+    same = np.allclose(nm.rhs(0.0, Y), hand[1](0.0, Y), rtol=1e-9, atol=1e-9)
+    print(f"  {'vectorised, K = %d' % K_STATES:28s} {'states/s':>9s} {'ours/peer':>10s}")
+    print(f"  {ours:28s} {ours_sps:9.3g}")
+    if compiled:
+        print(f"  {'dualmech (NumPy backend)':28s} {py_sps:9.3g} {ours_sps / py_sps:10.2f}")
+    print(f"  {'hand-written NumPy (batched)':28s} {hand_sps:9.3g} {ours_sps / hand_sps:10.2f}"
+          + ("" if same else "  (RESULTS DIFFER)"))
+    for f in failures:
+        print(f"  WARNING result mismatch, not timed: {f}")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="3 repeats instead of 7")
+    args = parser.parse_args()
+    repeats = 3 if args.quick else 7
+    eqs, values, hand = toy_car()
+    run("toy car", eqs, values, hand, repeats)
+    for n in (2, 10):
+        eqs, values, hand = n_link(n)
+        run("n-link pendulum", eqs, values, hand, repeats, pinocchio_n=n)
+
+
+if __name__ == "__main__":
+    main()
