@@ -51,3 +51,53 @@ def test_reactions_at_one_state_match_the_hand_formula():
     # S = m g cos(theta) + m l theta'^2 with the defaults m = l = 1, g = 9.81
     out = reactions_at(Pendulum(), [0.7], [1.3], params={m: 2.0})
     assert out["S"] == pytest.approx(2.0 * 9.81 * np.cos(0.7) + 2.0 * 1.3**2, rel=1e-12)
+
+
+# -- input errors name the argument, what was given and what is allowed --------------------
+@pytest.mark.parametrize("params, message", [
+    ({"L": 2}, r"unknown parameter 'L'; did you mean 'l'\? Problem `pendulum` has parameters "
+               r"g, l, m"),
+    ({sp.Symbol("lenght"): 2}, r"unknown parameter 'lenght'"),
+    ({"l": 50}, r"l = 50 is outside the admissible range \[0\.2, 3\]"),
+    ({l: -1.0}, r"l = -1\.0 is outside the admissible range"),
+    ({"g": "ten"}, r"g = 'ten' is not a number"),
+], ids=["misspelt-name", "unknown-symbol", "above-range", "below-range", "text-value"])
+def test_bad_parameters_are_refused(params, message):
+    with pytest.raises(ValueError, match=message):
+        simulate(Pendulum(), t_span=(0, 0.1), params=params)
+    from dualmech.numeric import reactions_at
+    with pytest.raises(ValueError, match=message):
+        reactions_at(Pendulum(), [0.1], [0.0], params=params)
+
+
+@pytest.mark.parametrize("t_span, message", [
+    ((0, 0), r"`t_span` is empty"),
+    ((1.5, 1.5), r"`t_span` is empty"),
+    ((0, np.inf), r"`t_span` must be finite"),
+    ((np.nan, 1), r"`t_span` must be finite"),
+    ((1,), r"`t_span` must be two numbers"),
+    ("0 5", r"`t_span` must be two numbers"),
+], ids=["zero", "equal", "infinite", "nan", "one-number", "text"])
+def test_bad_time_spans_are_refused(t_span, message):
+    with pytest.raises(ValueError, match=message):
+        simulate(Pendulum(), t_span=t_span)
+
+
+def test_bad_samples_and_initial_state_are_refused():
+    with pytest.raises(ValueError, match=r"`samples` must be an integer >= 2, got 1"):
+        simulate(Pendulum(), t_span=(0, 1), samples=1)
+    with pytest.raises(ValueError, match=r"`y0` must be finite"):
+        simulate(Pendulum(), t_span=(0, 1), y0=[np.nan, 0.0])
+
+
+def test_backward_span_and_right_hand_side_of_a_problem():
+    from dualmech.numeric import right_hand_side
+    p = Pendulum()
+    traj = simulate(p, t_span=(1.0, 0.0), y0=[0.4, 0.0], samples=3)
+    assert traj.t[0] == 1.0 and traj.t[-1] == 0.0
+    rhs = right_hand_side(p, {"l": 2.0})
+    # hand: theta'' = -g/l sin(theta)
+    assert rhs(0.0, np.array([0.4, 0.3]))[1] == pytest.approx(-9.81 / 2.0 * np.sin(0.4),
+                                                              rel=1e-15)
+    Y = np.array([[0.4, -0.2], [0.3, 0.0]])
+    assert np.allclose(rhs(0.0, Y)[1], -9.81 / 2.0 * np.sin(Y[0]), rtol=1e-15)
