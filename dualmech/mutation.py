@@ -30,6 +30,7 @@ import random
 from dataclasses import dataclass, field
 from typing import Iterator
 
+from .verify.check import claims_of
 from .verify.sampling import Context
 from .verify.verdicts import judge
 from .dimensions import INERTIA, MASS, reduce
@@ -152,6 +153,7 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
         return report
     ref_model = problem.model(problem.reference)
     ctx = Context(ref_model.coordinates, problem.parameter_symbols, problem)
+    claims = claims_of(problem)
     for mut in mutants(problem):
         original = problem.models()[mut.model]
         if _identical(original, mut.equations, problem.parameter_symbols, seed):
@@ -164,7 +166,8 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
             continue
         trial = dict(models)
         trial[mut.model] = candidate
-        j = judge(trial, context=ctx, points=points, seed=seed, reference=problem.reference)
+        j = judge(trial, context=ctx, points=points, seed=seed, reference=problem.reference,
+                  claims=claims)
         named = []
         if not j.equivalent and mut.model in j.odd:
             named = [f"{f.model}: {f.kind}" for f in j.faults if f.model == mut.model]

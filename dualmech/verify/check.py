@@ -24,7 +24,7 @@ from .published import PublishedVerdict, check_published
 from .sampling import Context
 from .verdicts import Judgement, judge
 
-__all__ = ["Comparison", "PairResult", "compare", "compare_models", "compare_reactions",
+__all__ = ["Comparison", "PairResult", "claims_of", "compare", "compare_models", "compare_reactions",
            "reaction_pairs", "recover_reactions", "METHOD_NAMES", "method_name"]
 
 METHOD_NAMES = {
@@ -242,12 +242,13 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
     ref = models[problem.reference]
     ctx = Context(ref.coordinates, problem.parameter_symbols, problem)
     mapped = {n: problem.in_reference_coordinates(m) for n, m in models.items()}
-    j = judge(mapped, context=ctx, points=points, seed=seed, reference=problem.reference)
+    j = judge(mapped, context=ctx, points=points, seed=seed, reference=problem.reference,
+              claims=claims_of(problem))
     pairs = _pairs(j, problem.reference, ctx, seed)
     limits = limits or Budget()
     if j.equivalent:
         published = check_published(problem, points=points, seed=seed, context=ctx,
-                                    limits=limits)
+                                    limits=limits, claims=claims_of(problem))
     else:
         published = [PublishedVerdict(p.label, p.where, "unchecked",
                                       "the derivations disagree; fix them before judging "
@@ -255,6 +256,24 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
     issues = list(problem.dimension_issues()) + _reaction_dimension_issues(problem)
     return Comparison(problem, j, pairs, published, issues, time.perf_counter() - t0, points,
                       limits)
+
+
+def claims_of(problem) -> dict:
+    """Models written in fewer coordinates than the reference, and the reference coordinates
+    (indices) each speaks for: those its coordinate map uses."""
+    ref = problem.model(problem.reference).coordinates
+    maps = problem.coordinate_maps()
+    out = {}
+    for name, m in problem.models().items():
+        if set(m.coordinates) == set(ref) or name not in maps:
+            continue
+        used = set()
+        for v in maps[name].values():
+            used |= sp.sympify(v).atoms(sp.core.function.AppliedUndef)
+        idx = [i for i, q in enumerate(ref) if q in used]
+        if len(idx) < len(ref):
+            out[name] = idx
+    return out
 
 
 def _reaction_dimension_issues(problem) -> list[str]:

@@ -1,66 +1,135 @@
-"""Small dense linear algebra over exact Fractions or mpmath floats, with one code path.
+"""Small dense linear algebra on sampled values, with one code path for three kinds of number.
 
-Verdicts need exact arithmetic (``Fraction``) and, where expressions leave the rational world,
-high-precision floats (``mpmath.mpf``).  Both go through the same Gauss--Jordan elimination;
-only the zero test differs (``== 0`` for Fractions, a relative ``10**(-digits/2)`` for mpf).
+* **exact** -- ``Fraction`` (and ``int``) or exact square-root numbers
+  (:class:`~dualmech.verify.surd.Surd`): every zero test is ``== 0``; a pivot is any nonzero
+  entry.  Ranks, solutions and residuals are exact.
+* **interval** -- ``mpmath.iv`` intervals (the interval method of :mod:`dualmech.exact`): a pivot
+  must *certainly* be nonzero (its interval excludes 0).  A column whose candidates all contain 0
+  without being exactly 0 is *ambiguous*: it is treated as dependent, :func:`solve_square`
+  returns ``None`` (the point is skipped) and :func:`residual_after_least_squares` widens the
+  residual to contain 0, so no difference is ever claimed on an undecided rank.  :func:`rank`
+  is then a lower bound.
+* **float** -- ``mpmath.mpf`` (display only): zero means ``|v| <= 10**(-digits/2)`` times the
+  largest entry of the matrix -- relative, never an absolute floor.
+
 Systems here are tiny (a few coordinates plus reactions), so clarity beats speed.
+
+Example
+-------
+>>> from fractions import Fraction as F
+>>> rank([[1, 2], [2, 4]]), solve_square([[2, 1], [1, 1]], [3, 2])
+(1, [Fraction(1, 1), Fraction(1, 1)])
 """
 from __future__ import annotations
 
 from fractions import Fraction
 
 import mpmath
+from mpmath import iv
 
-from ..exact import MP_DIGITS
+from .interval import to_interval
+from .surd import Surd
 
+__all__ = ["rref", "rref_info", "rank", "solve_square", "matvec", "residual_after_least_squares",
+           "kind_of"]
 
-def _exact(rows) -> bool:
-    return all(isinstance(v, (Fraction, int)) for row in rows for v in row)
-
-
-def _zero_test(rows):
-    if _exact(rows):
-        return lambda v, scale=1: v == 0
-    tol = mpmath.mpf(10) ** (-(MP_DIGITS // 2))
-    return lambda v, scale=1: abs(v) <= tol * (1 + abs(scale))
+_DIGITS = 60  # as dualmech.exact.MP_DIGITS (not imported: exact imports this package)
 
 
-def rref(rows: list[list]) -> tuple[list[list], list[int]]:
-    """Reduced row echelon form and pivot columns (partial pivoting for the float case)."""
-    # ints must become Fractions: int / int would silently turn into a float
-    A = [[Fraction(v) for v in r] for r in rows] if _exact(rows) else [list(r) for r in rows]
-    zero = _zero_test(A)
-    scale = max((abs(v) for r in A for v in r), default=1) or 1
-    pivots, r = [], 0
+def kind_of(rows) -> str:
+    """``"exact"``, ``"interval"`` or ``"float"``: the kind of the values in ``rows``."""
+    kind = "exact"
+    for row in rows:
+        for v in row:
+            if isinstance(v, iv.mpf):
+                return "interval"
+            if not isinstance(v, (Fraction, int, Surd)):
+                kind = "float"
+    return kind
+
+
+def _prepare(rows, kind):
+    if kind == "exact":
+        return [[v if isinstance(v, (Fraction, Surd)) else Fraction(v) for v in r] for r in rows]
+    if kind == "interval":
+        return [[to_interval(v) for v in r] for r in rows]
+    return [list(r) for r in rows]
+
+
+def _exact_zero(v) -> bool:
+    if isinstance(v, iv.mpf):
+        return v.a == 0 and v.b == 0
+    return v == 0
+
+
+def _pivot(A, r, c, kind, tol):
+    """Row index of the pivot in column ``c`` (rows ``r:``), or ``None``; and ambiguity."""
+    rows = range(r, len(A))
+    if kind == "exact":
+        if all(isinstance(A[i][c], Fraction) for i in rows):
+            best = max(rows, key=lambda i: abs(A[i][c]), default=None)
+            return (best if best is not None and A[best][c] != 0 else None), False
+        return next((i for i in rows if A[i][c] != 0), None), False
+    if kind == "interval":
+        sure = [i for i in rows if A[i][c].a > 0 or A[i][c].b < 0]
+        if sure:
+            return max(sure, key=lambda i: abs(A[i][c].mid)), False
+        return None, any(not _exact_zero(A[i][c]) for i in rows)
+    best = max(rows, key=lambda i: abs(A[i][c]), default=None)
+    if best is None or abs(A[best][c]) <= tol:
+        return None, False
+    return best, False
+
+
+def rref_info(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
+    """Reduced row echelon form, pivot columns, and ambiguous columns (interval kind only)."""
+    kind = kind_of(rows)
+    A = _prepare(rows, kind)
+    tol = 0
+    if kind == "float":
+        scale = max((abs(v) for r in A for v in r), default=0)
+        tol = mpmath.mpf(10) ** (-(_DIGITS // 2)) * scale
+    pivots, ambiguous, r = [], [], 0
     ncols = len(A[0]) if A else 0
     for c in range(ncols):
-        best = max(range(r, len(A)), key=lambda i: abs(A[i][c]), default=None)
-        if best is None or zero(A[best][c], scale):
+        if r == len(A):
+            break
+        best, unsure = _pivot(A, r, c, kind, tol)
+        if best is None:
+            if unsure:
+                ambiguous.append(c)
             continue
         A[r], A[best] = A[best], A[r]
         p = A[r][c]
         A[r] = [v / p for v in A[r]]
         for i in range(len(A)):
-            if i != r and A[i][c] != 0:
+            if i != r and not _exact_zero(A[i][c]):
                 f = A[i][c]
                 A[i] = [a - f * b for a, b in zip(A[i], A[r])]
+                A[i][c] = A[r][c] * 0  # exactly eliminated (an exact zero of the right kind)
         pivots.append(c)
         r += 1
-        if r == len(A):
-            break
+    return A, pivots, ambiguous
+
+
+def rref(rows: list[list]) -> tuple[list[list], list[int]]:
+    """Reduced row echelon form and pivot columns."""
+    A, pivots, _ = rref_info(rows)
     return A, pivots
 
 
 def rank(rows: list[list]) -> int:
+    """Rank (exact kinds); for intervals, the number of certain pivots (a lower bound)."""
     return len(rref(rows)[1]) if rows and rows[0] else 0
 
 
 def solve_square(A: list[list], b: list) -> list | None:
-    """Solution of the square system ``A x = b``, or ``None`` when ``A`` is singular."""
+    """Solution of the square system ``A x = b``, or ``None`` when ``A`` is singular (or, for
+    intervals, not certainly regular)."""
     n = len(A)
     aug = [list(row) + [bi] for row, bi in zip(A, b)]
-    R, piv = rref(aug)
-    if piv[:n] != list(range(n)) or len(piv) > n:
+    R, piv, ambiguous = rref_info(aug)
+    if piv[:n] != list(range(n)) or len(piv) > n or any(c < n for c in ambiguous):
         return None
     return [R[i][n] for i in range(n)]
 
@@ -72,25 +141,48 @@ def matvec(A: list[list], x: list) -> list:
 def residual_after_least_squares(B: list[list], r: list) -> tuple[list, list, list[int]]:
     """Residual of ``r`` after removing its component in the column space of ``B``.
 
-    Returns ``(residual, lam, undetermined)``: ``lam`` solves ``B lam ~= r`` in the least-squares
-    sense on the independent columns (zero on the others), ``undetermined`` lists the columns
-    of ``B`` that depend on earlier ones (unknowns the equations cannot determine).
+    Returns ``(residual, lam, undetermined)``: ``lam`` solves ``B lam ~= r`` on the independent
+    columns (zero on the others) -- least squares for real values; for exact square-root
+    numbers (not ordered) it is solved on a set of independent rows, which gives a residual
+    that is zero exactly when ``r`` is in the column space.  ``undetermined`` lists the
+    columns of ``B`` that depend on earlier ones (unknowns the equations cannot determine).
     """
     m = len(B[0]) if B and B[0] else 0
     if m == 0:
         return list(r), [], []
-    piv = _independent_columns(B)
+    _, piv, ambiguous = rref_info(B)
     Bp = [[row[j] for j in piv] for row in B]
-    BtB = [[sum(Bp[k][i] * Bp[k][j] for k in range(len(Bp))) for j in range(len(piv))]
-           for i in range(len(piv))]
-    Btr = [sum(Bp[k][i] * r[k] for k in range(len(Bp))) for i in range(len(piv))]
-    lam_p = solve_square(BtB, Btr) if piv else []
+    surds = any(isinstance(v, Surd) for row in Bp for v in row) or \
+        any(isinstance(v, Surd) for v in r)
+    lam_p = _fit(Bp, r, len(piv), surds) if piv else []
+    if lam_p is None:  # not certainly regular (intervals): claim nothing at this point
+        ambiguous = ambiguous + piv
+        lam_p = [0] * len(piv)
     lam = [0] * m
-    for j, v in zip(piv, lam_p or []):
+    for j, v in zip(piv, lam_p):
         lam[j] = v
     res = [ri - fi for ri, fi in zip(r, matvec(B, lam))]
-    undetermined = [j for j in range(m) if j not in piv]
+    if ambiguous:
+        res = [_with_zero(v) for v in res]
+    undetermined = sorted(set(j for j in range(m) if j not in piv) | set(ambiguous))
     return res, lam, undetermined
+
+
+def _fit(Bp, r, k, surds):
+    if surds:
+        rows = rref_info([list(col) for col in zip(*Bp)])[1]   # independent rows of Bp
+        return solve_square([Bp[i] for i in rows], [r[i] for i in rows])
+    BtB = [[sum(Bp[q][i] * Bp[q][j] for q in range(len(Bp))) for j in range(k)]
+           for i in range(k)]
+    Btr = [sum(Bp[q][i] * r[q] for q in range(len(Bp))) for i in range(k)]
+    return solve_square(BtB, Btr)
+
+
+def _with_zero(v):
+    """An interval holding ``v`` and 0 (exact kinds are returned unchanged)."""
+    if isinstance(v, iv.mpf):
+        return iv.mpf([min(v.a, 0), max(v.b, 0)])
+    return v
 
 
 def _independent_columns(B: list[list]) -> list[int]:

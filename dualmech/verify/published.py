@@ -21,14 +21,13 @@ import random
 import mpmath
 import sympy as sp
 
-from .._algebra import linear_coefficients
 from .._expr import as_expr
 from ..dimensions import audit
-from ..equations import ModelError, to_plain
-from ..exact import MP_DIGITS, ExactForm, is_zero
+from ..equations import EquationSet, ModelError, to_plain
+from ..exact import MP_DIGITS, is_zero
 from ..kinematics import t
 from .display import Budget, OverBudget, dotted, solve_display, tidy
-from .sampling import MAX_ATTEMPTS, Context, System, solve_model
+from .sampling import MAX_ATTEMPTS, Context, Sampler, System, manifold, solve_model
 
 __all__ = ["PublishedVerdict", "check_published", "closest_equation"]
 
@@ -61,10 +60,12 @@ class PublishedVerdict:
 
 
 def check_published(problem, points: int = 8, seed: int = 0, context: Context | None = None,
-                    limits: Budget | None = None) -> list[PublishedVerdict]:
+                    limits: Budget | None = None, claims: dict | None = None
+                    ) -> list[PublishedVerdict]:
     """Verdict on every printed answer of ``problem`` (see :class:`dualmech.problem.Published`).
 
-    ``limits`` is the display budget for explaining wrong answers (when first read)."""
+    ``limits`` is the display budget for explaining wrong answers (when first read);
+    ``claims`` as for :func:`~dualmech.verify.verdicts.judge`."""
     limits = limits or Budget()
     pubs = problem.published()
     if not pubs:
@@ -73,93 +74,110 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
     ref = models[problem.reference]
     coords = ref.coordinates
     ctx = context or Context(coords, problem.parameter_symbols, problem)
-    mapped = [problem.in_reference_coordinates(m) for m in models.values()]
-    solvers = [ref] + [m for m in mapped if m.unknowns]
-    systems = [System.of(m, coords) for m in solvers]
-    unknowns = list(dict.fromkeys(u for m in solvers for u in m.unknowns))
+    mapped = {nm: problem.in_reference_coordinates(m) for nm, m in models.items()}
+    solvers = [problem.reference] + [nm for nm, m in mapped.items()
+                                     if m.unknowns and nm != problem.reference]
+    systems = [System.of(mapped[nm], coords) for nm in solvers]
+    unknowns = list(dict.fromkeys(u for nm in solvers for u in mapped[nm].unknowns))
     n = len(coords)
-    items, exprs = [], []
-    for s in systems:
-        exprs += s.flat()
-    offset = len(exprs)
+    items = []
     for pub in pubs:
         es = [to_plain(e, coords) for e in _published_exprs(problem, pub)]
-        jac = _motion_jacobian(es, ctx, unknowns) if pub.kind == "motion" else None
-        items.append((pub, es, jac))
-        exprs += es
-        if jac is not None and jac[0] is not None:
-            exprs += [x for row in jac[0] for x in row]
-    symbols = tuple(ctx.base) + tuple(ctx.qdd) + tuple(unknowns)
+        motion = _motion_system(problem, pub, coords, unknowns) if pub.kind == "motion" \
+            else None
+        items.append((pub, es, motion))
+    symbols = tuple(ctx.unknown_symbols(unknowns))
+    claims = claims or {}
+    deps = manifold(systems, ctx)
+    # equations hold on the motion (its constraint manifold); expressions are identities of
+    # the state, so with static rows they are also checked off the manifold
+    groups = [(items, deps)]
+    if deps:
+        on = [it for it in items if it[0].kind != "expression"]
+        off = [it for it in items if it[0].kind == "expression"]
+        groups = [(on, deps), (off, [])]
+    bad: dict = {}
+    good, method = 0, "exact"
     with mpmath.workdps(MP_DIGITS):
-        form = ExactForm.build(exprs, symbols)
-        rng = random.Random(seed + 1)
-        zero = 0 if form.method == "exact" else mpmath.mpf(0)
-        bad: dict = {}
-        good = 0
-        for _ in range(MAX_ATTEMPTS * points):
-            point = form.sample(rng, ctx.floats)
-            point.update({s: zero for s in symbols[len(ctx.base):]})
-            try:
-                vals = form.evaluate(point)
-            except (ZeroDivisionError, ValueError, OverflowError):
+        for group, dependents in groups:
+            if not group:
                 continue
-            off, sols = 0, []
-            for s, m in zip(systems, solvers):
-                A, b = s.unflatten(vals[off:off + s.size])
-                off += s.size
-                sols.append(solve_model(A, b, n, m.unknowns))
-            if sols[0].status != "ok":
-                continue
-            point.update(dict(zip(ctx.qdd, sols[0].qdd)))
-            for sol in sols[1:]:
-                for u, v in sol.lam.items():
-                    if v is not None:
-                        point[u] = v
-            try:
-                vals = form.evaluate(point)
-            except (ZeroDivisionError, ValueError, OverflowError):
-                continue
-            good += 1
-            pos = offset
-            for pub, es, jac in items:
-                for j, v in enumerate(vals[pos:pos + len(es)]):
-                    if not is_zero(v, 1):
-                        bad.setdefault(pub.label, set()).add(j)
-                pos += len(es)
-                if jac is not None and jac[0] is not None:
-                    size = len(jac[0]) * len(jac[0][0])
-                    cols = len(jac[0][0])
-                    J = [list(vals[pos + r * cols: pos + (r + 1) * cols])
-                         for r in range(len(jac[0]))]
-                    pos += size
-                    if solve_model(J, [0] * len(J), n, jac[1]).status != "ok":
-                        bad.setdefault(pub.label, set()).add("determines")
-            if good == points:
-                break
+            g, method = _evaluate(group, systems, solvers, mapped, ctx, symbols, dependents,
+                                  claims, n, points, seed, bad)
+            good = max(good, g)
     verdicts = []
-    for pub, es, jac in items:
-        if jac is not None and jac[0] is None:
-            verdicts.append(PublishedVerdict(pub.label, pub.where, "wrong", jac[2], form.method))
+    for pub, es, motion in items:
+        if isinstance(motion, str):
+            verdicts.append(PublishedVerdict(pub.label, pub.where, "wrong", motion, method))
         elif pub.label not in bad:
             verdicts.append(PublishedVerdict(pub.label, pub.where, "correct",
-                                             f"holds at {good} points", form.method))
+                                             f"holds at {good} points", method))
         else:
             verdicts.append(PublishedVerdict(
                 pub.label, pub.where, "wrong",
                 lambda pub=pub, which=bad[pub.label]: _detail(problem, pub, which, limits),
-                form.method))
+                method))
     return verdicts
 
 
-def _motion_jacobian(es, ctx: Context, unknowns):
-    """``(J, lam)``: the printed set's coefficients of ``q''`` and of the reactions it uses,
-    or ``(None, (), reason)`` when it is not linear in them."""
-    used = [u for u in unknowns if any(e.has(u) for e in es)]
-    A, _, bad = linear_coefficients(es, list(ctx.qdd) + used)
-    if bad:
-        return None, (), ("the printed equations are not linear in " +
-                          ", ".join(ctx.name_of(b) for b in bad) + "; equations of motion are")
-    return [list(A.row(i)) for i in range(A.rows)], tuple(used)
+def _evaluate(items, systems, solvers, mapped, ctx, symbols, dependents, claims, n, points,
+              seed, bad) -> tuple[int, str]:
+    """Evaluate the printed ``items`` at random points of the motion; record failures in
+    ``bad``; return the number of points used and the method."""
+    extra = []
+    for pub, es, motion in items:
+        extra += es
+        if isinstance(motion, System):
+            extra += [x for row in motion.A for x in row]
+    sampler = Sampler(systems, ctx, extra=extra, extra_symbols=symbols, dependents=dependents)
+    form = sampler.form
+    rng = random.Random(seed + 1)
+    zero = 0 if form.method == "exact" else mpmath.mpf(0)
+    good = 0
+    for point, _, parts, _ in sampler.points(rng, MAX_ATTEMPTS * points,
+                                             fill={s: zero for s in symbols}):
+        sols = [solve_model(A, b, n, mapped[nm].unknowns, claims.get(nm))
+                for nm, (A, b) in zip(solvers, parts)]
+        if sols[0].status != "ok":
+            continue
+        point.update(dict(zip(ctx.qdd, sols[0].qdd)))
+        for sol in sols[1:]:
+            for u, v in sol.lam.items():
+                if v is not None:
+                    point[u] = v
+        try:
+            vals = form.evaluate(point)
+        except (ZeroDivisionError, ValueError, OverflowError):
+            continue
+        good += 1
+        pos = sampler.offset_extra
+        for pub, es, motion in items:
+            for j, v in enumerate(vals[pos:pos + len(es)]):
+                if not is_zero(v, 1):
+                    bad.setdefault(pub.label, set()).add(j)
+            pos += len(es)
+            if isinstance(motion, System):
+                cols = len(motion.A[0])
+                J = [list(vals[pos + r * cols: pos + (r + 1) * cols])
+                     for r in range(len(motion.A))]
+                pos += len(motion.A) * cols
+                if solve_model(J, [0] * len(J), n, motion.model.unknowns).status != "ok":
+                    bad.setdefault(pub.label, set()).add("determines")
+        if good == points:
+            break
+    return good, form.method
+
+
+def _motion_system(problem, pub, coords, unknowns):
+    """The printed set as a :class:`System` (static rows at the acceleration level), or the
+    reason it cannot be equations of motion."""
+    es = _published_exprs(problem, pub)
+    used = tuple(u for u in unknowns if any(e.has(u) for e in es))
+    try:
+        eqs = EquationSet(f"printed {pub.label}", tuple(coords), tuple(es), used)
+        return System.of(eqs, coords)
+    except ModelError as exc:
+        return f"the printed set cannot be equations of motion: {exc}"
 
 
 def _published_exprs(problem, pub) -> list:
@@ -254,6 +272,14 @@ def closest_equation(expr, equations, labels, parameters, max_terms: int = 40):
 
 def _on_shell(problem, expr, limits: Budget) -> str | None:
     """``expr`` on the motion (accelerations and reactions substituted), for display."""
+    expr = as_expr(expr)
+    ref = problem.model(problem.reference)
+    unknowns = {u for m in problem.models().values() for u in m.unknowns}
+    if not any(expr.has(a) for a in ref.accelerations) and not (expr.free_symbols & unknowns):
+        try:
+            return dotted(tidy(expr, limits))
+        except OverBudget:
+            return None
     try:
         rules = dict((a, v) for a, v in solve_display(problem.model(problem.reference),
                                                       limits).items())

@@ -13,7 +13,10 @@ import random
 from dataclasses import dataclass, field
 from typing import Iterator, Sequence
 
-from ..equations import EquationSet, state_symbols
+import sympy as sp
+
+from .._algebra import Bridge, linear_coefficients, total_derivative
+from ..equations import EquationSet, ModelError, state_symbols
 from ..exact import ExactForm, is_zero
 from ..kinematics import t
 from . import linalg as la
@@ -68,6 +71,10 @@ class Context:
         free -= {t} | set(u for m in models for u in m.unknowns)
         return cls(coords, sorted(free, key=str))
 
+    def unknown_symbols(self, unknowns) -> tuple:
+        """The symbols a point gets after solving: accelerations, then ``unknowns``."""
+        return tuple(self.qdd) + tuple(unknowns)
+
     def name_of(self, sym) -> str:
         for q, s in zip(self.coordinates, self.states):
             if sym == s.q:
@@ -81,17 +88,45 @@ class Context:
 
 @dataclass
 class System:
-    """One model in the reference coordinates: plain ``A`` (rows of lists) and ``b``."""
+    """One model in the reference coordinates: plain ``A`` (rows of lists) and ``b``.
+
+    Static rows (no acceleration, no reaction: a massless body's balance) are replaced by
+    their time derivative at the acceleration level; the rows themselves (and, for a
+    position-level row, its first derivative) are kept in ``constraints``: they must vanish
+    on the motion, and the sampler draws points on the manifold they define.
+    """
 
     model: EquationSet
     A: list
     b: list
+    static: list = field(default_factory=list)        # indices of the static rows
+    constraints: list = field(default_factory=list)   # per static row: [g, g'] or [g]
 
     @classmethod
     def of(cls, eqs: EquationSet, coords: Sequence) -> "System":
         eqs = reorder(eqs, coords)
         A, b = eqs.plain_matrix()
-        return cls(eqs, [list(A.row(i)) for i in range(A.rows)], list(b))
+        rows = [list(A.row(i)) for i in range(A.rows)]
+        rhs = list(b)
+        static = [i for i, r in enumerate(rows) if all(x == 0 for x in r)]
+        constraints = []
+        if static:
+            states = eqs.states
+            unknown = [s.qdd for s in states] + list(eqs.unknowns)
+            br = Bridge([rhs[i] for i in static],
+                        unknown + [t] + [x for st in states for x in (st.q, st.qd)])
+            qdds = {br.se(u) for u in unknown}
+            for i in static:
+                g = -rhs[i]
+                levels = [g]
+                d = total_derivative(br.se(g), states, t, br)
+                if not (d.free_symbols & qdds):
+                    levels.append(br.sp(d))
+                    d = total_derivative(d, states, t, br)
+                newA, newb, _ = linear_coefficients([br.sp(d)], unknown, br)
+                rows[i], rhs[i] = list(newA.row(0)), newb[0]
+                constraints.append(levels)
+        return cls(eqs, rows, rhs, static, constraints)
 
     @property
     def size(self) -> int:
@@ -104,6 +139,9 @@ class System:
         rows, cols = len(self.A), len(self.A[0])
         A = [list(vals[i * cols:(i + 1) * cols]) for i in range(rows)]
         return A, list(vals[rows * cols: rows * cols + rows])
+
+    def constraint_exprs(self) -> list:
+        return [g for levels in self.constraints for g in levels]
 
 
 def reorder(eqs: EquationSet, coords) -> EquationSet:
@@ -133,53 +171,127 @@ class Solution:
         return [u for u, v in self.lam.items() if v is None]
 
 
-def solve_model(A: list, b: list, n: int, unknowns: Sequence) -> Solution:
-    """Solve ``A [q''; lambda] = b`` at a point exactly (Gauss--Jordan on ``[B M | b]``).
+def solve_model(A: list, b: list, n: int, unknowns: Sequence,
+                claimed: Sequence[int] | None = None) -> Solution:
+    """Solve ``A [q''; lambda] = b`` at a point exactly (Gauss--Jordan on ``[B M' M | b]``).
 
-    The reaction columns go first, so the accelerations are determined exactly when every
-    acceleration column is a pivot; a pivot in the last column means the equations contradict
-    each other.
+    The reaction columns go first, then the accelerations the model does not claim (a model
+    written in fewer coordinates than the reference says nothing about the others), then
+    the claimed ones: those are determined exactly when each is a pivot column.  A pivot in
+    the last column means the equations contradict each other.  Unclaimed accelerations
+    that the equations do not fix are ``None`` in ``qdd``.
     """
     m = len(A[0]) if A else n
     k = m - n
-    order = list(range(n, m)) + list(range(n))
+    claimed = list(range(n)) if claimed is None else list(claimed)
+    unclaimed = [j for j in range(n) if j not in claimed]
+    order = list(range(n, m)) + unclaimed + claimed
     aug = [[row[j] for j in order] + [bi] for row, bi in zip(A, b)]
     R, piv = la.rref(aug)
     rank = len([p for p in piv if p < m])
     if m in piv:
         return Solution("inconsistent", rank=rank)
     row_of = {p: i for i, p in enumerate(piv)}
-    if any(k + j not in row_of for j in range(n)):
+    position = {col: i for i, col in enumerate(order)}
+    free = [c for c in range(m) if c not in row_of]
+
+    def value(col):
+        c = position[col]
+        if c not in row_of or any(R[row_of[c]][f] != 0 for f in free if f != c):
+            return None
+        return R[row_of[c]][m]
+
+    qdd = [value(j) for j in range(n)]
+    if any(qdd[j] is None for j in claimed):
         return Solution("undetermined", rank=rank)
-    qdd = [R[row_of[k + j]][m] for j in range(n)]
-    free = [c for c in range(k) if c not in row_of]
-    lam = {}
-    for c, u in enumerate(unknowns):
-        if c not in row_of or any(R[row_of[c]][f] != 0 for f in free):
-            lam[u] = None
-        else:
-            lam[u] = R[row_of[c]][m]
+    lam = {u: value(n + c) for c, u in enumerate(unknowns)}
     return Solution("ok", qdd, lam, rank)
 
 
 def same_values(a: Sequence, b: Sequence) -> bool:
     """Exactly equal (Fractions), or equal within the fallback's own error bound."""
     for x, y in zip(a, b):
+        if x is None or y is None:
+            continue
         if not is_zero(x - y, max(abs(x), abs(y))):
             return False
     return True
 
 
+def manifold(systems: Sequence[System], ctx: Context) -> list:
+    """Dependent variables ``[(symbol, expression)]`` that put a point on the motion's
+    constraint manifold, from the static rows of the first system that has any.
+
+    Each position-level static row ``g(q, t) = 0`` is solved for a coordinate in which it is
+    linear (and which no function takes as argument), its derivative ``g' = 0`` for that
+    coordinate's rate; a velocity-level row for a rate.  Raises :class:`ModelError` when a
+    static row cannot be solved that way (the comparator cannot sample its manifold exactly).
+    """
+    source = next((s for s in systems if s.constraints), None)
+    if source is None:
+        return []
+    everything = [e for s in systems for e in s.flat() + s.constraint_exprs()]
+    inside = set()
+    for e in everything:
+        for f in e.atoms(sp.Function):
+            inside |= f.free_symbols
+    taken: set = set()
+    deps = []
+    qs = [st.q for st in ctx.states]
+    qds = [st.qd for st in ctx.states]
+    for levels in source.constraints:
+        g = levels[0]
+        candidates = qds if len(levels) == 1 else qs
+        chosen = _linear_in(g, candidates, taken, inside)
+        if chosen is None:
+            raise ModelError(
+                f"model `{source.model.name}` has the static equation {g} = 0, which is not "
+                "linear in any coordinate or rate that no function takes as argument; the "
+                "comparator cannot sample its constraint manifold exactly.")
+        sym, expr = chosen
+        taken.add(sym)
+        deps.append((sym, expr))
+        if len(levels) > 1:
+            rate = qds[qs.index(sym)]
+            solved = _linear_in(levels[1], [rate], taken, set())
+            if solved is None:
+                raise ModelError(f"the rate form of the static equation {g} = 0 of "
+                                 f"`{source.model.name}` does not fix {rate}.")
+            taken.add(rate)
+            deps.append(solved)
+    return deps
+
+
+def _linear_in(g, candidates, taken, inside):
+    for s in candidates:
+        if s in taken or s in inside or not g.has(s):
+            continue
+        c = sp.diff(g, s)
+        if c.has(s) or c == 0:
+            continue
+        return s, -g.xreplace({s: 0}) / c
+    return None
+
+
 class Sampler:
-    """Draws points and evaluates every system (and extra expressions) there, all at once."""
+    """Draws points and evaluates every system (and extra expressions) there, all at once.
+
+    With ``dependents`` (see :func:`manifold`) each point is moved onto the constraint
+    manifold first: the dependent variables are evaluated, in order, from the others.
+    """
 
     def __init__(self, systems: Sequence[System], ctx: Context, extra: Sequence = (),
-                 extra_symbols: Sequence = ()):
+                 extra_symbols: Sequence = (), dependents: Sequence = ()):
         self.systems = list(systems)
         self.ctx = ctx
-        exprs = []
+        self.dependents = list(dependents)
+        exprs = [e for _, e in self.dependents]
+        self.offset = len(exprs)
         for s in self.systems:
             exprs += s.flat()
+        self.offset_constraints = len(exprs)
+        for s in self.systems:
+            exprs += s.constraint_exprs()
         self.offset_extra = len(exprs)
         exprs += list(extra)
         self.symbols = tuple(ctx.base) + tuple(extra_symbols)
@@ -190,20 +302,29 @@ class Sampler:
         return self.form.method
 
     def points(self, rng: random.Random, limit: int, fill: dict | None = None) -> Iterator:
-        """Yield ``(point, values, parts)``; ``parts`` is each system's ``(A, b)`` there."""
+        """Yield ``(point, values, parts, residues)``: each system's ``(A, b)`` at the point
+        and the values of its static rows there (zero for a model consistent with the
+        manifold)."""
         for _ in range(limit):
             point = self.form.sample(rng, self.ctx.floats)
             if fill:
                 point.update(fill)
             try:
                 vals = self.form.evaluate(point)
+                for i, (sym, _) in enumerate(self.dependents):
+                    point[sym] = vals[i]
+                    vals = self.form.evaluate(point)
             except (ZeroDivisionError, ValueError, OverflowError):
                 continue
-            parts, off = [], 0
+            parts, residues, off = [], [], self.offset
+            coff = self.offset_constraints
             for s in self.systems:
                 parts.append(s.unflatten(vals[off:off + s.size]))
                 off += s.size
-            yield point, vals, parts
+                k = len(s.constraint_exprs())
+                residues.append(list(vals[coff:coff + k]))
+                coff += k
+            yield point, vals, parts, residues
 
 
 def _domains(ctx: Context) -> dict:

@@ -37,8 +37,9 @@ from typing import Mapping, Sequence
 
 import mpmath
 
-from ..exact import MP_DIGITS
-from .sampling import MAX_ATTEMPTS, Context, Sampler, Solution, System, same_values, solve_model
+from ..exact import MP_DIGITS, is_zero
+from .sampling import (MAX_ATTEMPTS, Context, Sampler, Solution, System, manifold, same_values,
+                       solve_model)
 
 __all__ = ["Judgement", "ModelFault", "ReactionFault", "judge"]
 
@@ -104,8 +105,14 @@ class Judgement:
         elif self.groups and len(self.groups) > 1:
             lines.append("the derivations split into " + " | ".join(
                 _names(g) for g in self.groups) + ": no majority, every side is a suspect")
+        said = set()
         for f in self.faults:
             if f.kind in ("undetermined", "inconsistent", "reactions") and f.detail:
+                if f.detail.startswith("no derivation determines"):
+                    if f.detail not in said:
+                        lines.append(f.detail)
+                        said.add(f.detail)
+                    continue
                 lines.append(f"`{f.model}`: {f.detail}")
         for r in self.reaction_faults:
             if r.agreeing:
@@ -122,10 +129,13 @@ def _names(models: Sequence[str]) -> str:
 
 
 def judge(models: Mapping, *, context: Context | None = None, points: int = 8, seed: int = 0,
-          reference: str | None = None) -> Judgement:
+          reference: str | None = None, claims: Mapping | None = None) -> Judgement:
     """Judge every model in ``models`` (name -> EquationSet, all in the same coordinates).
 
     ``reference`` only breaks ties in the order models are listed; it is not trusted more.
+    ``claims`` maps a model written in fewer coordinates to the indices of the coordinates it
+    speaks for (default: all).  Static rows (a massless body) are handled on the constraint
+    manifold (:class:`~dualmech.verify.sampling.System`).
     """
     t0 = time.perf_counter()
     names = list(models)
@@ -137,17 +147,18 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
     ctx = context or Context.for_models(*[models[n] for n in names])
     systems = [System.of(models[n], coords) for n in names]
     n = len(coords)
+    claims = claims or {}
     with mpmath.workdps(MP_DIGITS):
-        sampler = Sampler(systems, ctx)
+        sampler = Sampler(systems, ctx, dependents=manifold(systems, ctx))
         rng = random.Random(seed)
         good, verdict = 0, None
-        for point, _vals, parts in sampler.points(rng, MAX_ATTEMPTS * points):
-            sols = {nm: solve_model(A, b, n, s.model.unknowns)
+        for point, _vals, parts, residues in sampler.points(rng, MAX_ATTEMPTS * points):
+            sols = {nm: solve_model(A, b, n, s.model.unknowns, claims.get(nm))
                     for nm, s, (A, b) in zip(names, systems, parts)}
             if all(s.status != "ok" for s in sols.values()):
                 continue   # a singular state of the motion itself: draw again
             good += 1
-            found = _faults_at(names, sols)
+            found = _faults_at(names, sols, dict(zip(names, zip(systems, residues))))
             if found is not None:
                 verdict = (point, dict(zip(names, parts)), sols, found)
                 break
@@ -174,11 +185,24 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
     return out
 
 
-def _faults_at(names, sols: dict):
+def _faults_at(names, sols: dict, statics: dict):
     """Group the models by their accelerations at one point; ``None`` when all is well."""
     groups: list[list[str]] = []
     faults = []
     for nm in names:
+        system, residues = statics[nm]
+        off = [i for i, v in enumerate(residues) if not is_zero(v, 1)]
+        if off:
+            labels = []
+            pos = 0
+            for row, levels in zip(system.static, system.constraints):
+                if any(pos <= i < pos + len(levels) for i in off):
+                    labels.append(system.model.labels[row])
+                pos += len(levels)
+            faults.append(ModelFault(nm, "inconsistent", (), "its static equation(s) [" +
+                                     "], [".join(labels) + "] do not hold on the motion's "
+                                     "constraint manifold"))
+            continue
         s = sols[nm]
         if s.status != "ok":
             detail = ("its equations do not determine the accelerations (rank "
