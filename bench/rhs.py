@@ -12,7 +12,8 @@ time in the same run:
   ``(2n, K)``; hand-written NumPy on stacked states with a batched solve;
 
 and print ratios ours / peer (below 1: ours is faster per call; above 1 for states per second:
-ours is faster).  Every peer's result is checked against ours at the timed state first.
+ours is faster), with wall-clock and CPU-time medians.  Every peer's result is checked against
+ours at the timed state first.
 A script, not a test: ``python bench/rhs.py`` (``--quick`` fewer repeats).
 
 Targets (issue 5): per call <= hand-written NumPy at n = 2 and n = 10; >= 1e7 states/s
@@ -21,6 +22,7 @@ vectorised for a 2-DOF problem.
 from __future__ import annotations
 
 import argparse
+import os
 import statistics
 import time
 import timeit
@@ -166,39 +168,56 @@ def pydy_peer(eqs, values, generator: str):
 
 
 def pinocchio_peer(n, values):
-    """ABA of an n-link planar chain of point masses (revolute joints about the y axis)."""
+    """ABA of the same chain: revolute joints about y, point masses hanging along -z.
+
+    Pinocchio's joint angles are relative and turn the other way (x = -l sin(phi)):
+    phi_1 = -theta_1, phi_i = -(theta_i - theta_{i-1}).  Returns the timed function (ABA in
+    Pinocchio's own coordinates) and the right-hand side in ours (for the result check).
+    """
     import pinocchio as pin
     model = pin.Model()
     parent = 0
     for i in range(n):
         li = values[sp.Symbol(f"l{i + 1}", positive=True)]
         mi = values[sp.Symbol(f"m{i + 1}", positive=True)]
-        offset = pin.SE3(np.eye(3), np.array([0.0, 0.0, -values[sp.Symbol(f"l{i}",
-                                                                               positive=True)]
-                                             if i else 0.0]))
-        parent = model.addJoint(parent, pin.JointModelRY(), offset, f"j{i}")
+        above = values[sp.Symbol(f"l{i}", positive=True)] if i else 0.0
+        parent = model.addJoint(parent, pin.JointModelRY(),
+                                pin.SE3(np.eye(3), np.array([0.0, 0.0, -above])), f"j{i}")
         model.appendBodyToJoint(parent, pin.Inertia(mi, np.array([0.0, 0.0, -li]),
                                                     np.zeros((3, 3))), pin.SE3.Identity())
-    model.gravity.linear = np.array([0.0, 0.0, -9.81])
+    model.gravity.linear = np.array([0.0, 0.0, -values[sp.Symbol("g", positive=True)]])
     data = model.createData()
     tau = np.zeros(n)
 
-    def rhs(_t, y):
-        return np.concatenate((y[n:], pin.aba(model, data, y[:n], y[n:], tau)))
+    def aba(_t, x):
+        return np.concatenate((x[n:], pin.aba(model, data, x[:n], x[n:], tau)))
 
-    return rhs
+    def ours(_t, y):
+        rel = lambda a: -np.diff(a, prepend=0.0)  # noqa: E731
+        phidd = pin.aba(model, data, rel(y[:n]), rel(y[n:]), tau)
+        return np.concatenate((y[n:], -np.cumsum(phidd)))
+
+    return aba, ours
 
 
 # -- timing ---------------------------------------------------------------------------------
-def per_call_us(fn, y, repeats: int) -> float:
-    number = 2000
-    times = timeit.repeat(lambda: fn(0.0, y), number=number, repeat=repeats)
-    return statistics.median(times) / number * 1e6
+def _median(fn, arg, number: int, repeats: int) -> tuple[float, float]:
+    """Median seconds per call: wall clock, and this process's CPU time (less inflated when
+    other processes share the cores)."""
+    wall = timeit.Timer(lambda: fn(0.0, arg)).repeat(repeat=repeats, number=number)
+    cpu = timeit.Timer(lambda: fn(0.0, arg), timer=time.process_time).repeat(
+        repeat=repeats, number=number)
+    return statistics.median(wall) / number, statistics.median(cpu) / number
 
 
-def states_per_s(fn, Y, repeats: int) -> float:
-    times = timeit.repeat(lambda: fn(0.0, Y), number=3, repeat=repeats)
-    return Y.shape[1] / (statistics.median(times) / 3)
+def per_call_us(fn, y, repeats: int) -> tuple[float, float]:
+    wall, cpu = _median(fn, y, 2000, repeats)
+    return wall * 1e6, cpu * 1e6
+
+
+def states_per_s(fn, Y, repeats: int) -> tuple[float, float]:
+    wall, cpu = _median(fn, Y, 3, repeats)
+    return Y.shape[1] / wall, Y.shape[1] / cpu
 
 
 def _check(name, ours, theirs, y, failures):
@@ -229,9 +248,10 @@ def run(label, eqs, values, hand, repeats, pinocchio_n=None):
         except Exception as exc:  # optional peer
             print(f"  [{label}] PyDy ({gen}) skipped: {type(exc).__name__}: "
                   f"{str(exc).splitlines()[0][:90] if str(exc) else ''}")
+    pin_check = None
     if pinocchio_n:
         try:
-            peers["Pinocchio ABA"] = pinocchio_peer(pinocchio_n, values)
+            peers["Pinocchio ABA"], pin_check = pinocchio_peer(pinocchio_n, values)
         except ImportError:
             print(f"  [{label}] Pinocchio skipped: `import pinocchio` fails "
                   "(pip install pin)")
@@ -241,26 +261,31 @@ def run(label, eqs, values, hand, repeats, pinocchio_n=None):
     print(f"\n{label}: n = {n}; generated code: Python {build * 1e3:.0f} ms, "
           + (f"C {build_c * 1e3:.0f} ms" if compiled else "no C compiler: Python only")
           + " (build, or load from the cache)")
-    print(f"  {'right-hand side per call':28s} {'µs':>9s} {'ours/peer':>10s}")
-    print(f"  {ours:28s} {ours_us:9.2f} {'':>10s}")
+    print(f"  {'right-hand side per call':30s} {'wall µs':>9s} {'CPU µs':>9s} {'ours/peer':>10s}")
+    print(f"  {ours:30s} {ours_us[0]:9.2f} {ours_us[1]:9.2f}")
     if compiled:
         _check("Python backend", nm.rhs, nm_py.rhs, y, failures)
-        print(f"  {'dualmech (Python backend)':28s} {py_us:9.2f} {ours_us / py_us:10.2f}")
+        print(f"  {'dualmech (Python backend)':30s} {py_us[0]:9.2f} {py_us[1]:9.2f} "
+              f"{ours_us[0] / py_us[0]:10.2f}")
     for name, fn in peers.items():
-        if not _check(name, nm.rhs, fn, y, failures):
+        check = pin_check if name == "Pinocchio ABA" else fn
+        if not _check(name, nm.rhs, check, y, failures):
             continue
         us = per_call_us(fn, y, repeats)
-        print(f"  {name:28s} {us:9.2f} {ours_us / us:10.2f}")
+        note = "  (its own relative angles)" if name == "Pinocchio ABA" else ""
+        print(f"  {name:30s} {us[0]:9.2f} {us[1]:9.2f} {ours_us[0] / us[0]:10.2f}{note}")
     ours_sps = states_per_s(nm.rhs, Y, repeats)
     py_sps = states_per_s(nm_py.rhs, Y, repeats)
     hand_sps = states_per_s(hand[1], Y, repeats)
     same = np.allclose(nm.rhs(0.0, Y), hand[1](0.0, Y), rtol=1e-9, atol=1e-9)
-    print(f"  {'vectorised, K = %d' % K_STATES:28s} {'states/s':>9s} {'ours/peer':>10s}")
-    print(f"  {ours:28s} {ours_sps:9.3g}")
+    print(f"  {'vectorised, K = %d' % K_STATES:30s} {'states/s':>9s} {'CPU':>9s} "
+          f"{'ours/peer':>10s}")
+    print(f"  {ours:30s} {ours_sps[0]:9.3g} {ours_sps[1]:9.3g}")
     if compiled:
-        print(f"  {'dualmech (NumPy backend)':28s} {py_sps:9.3g} {ours_sps / py_sps:10.2f}")
-    print(f"  {'hand-written NumPy (batched)':28s} {hand_sps:9.3g} {ours_sps / hand_sps:10.2f}"
-          + ("" if same else "  (RESULTS DIFFER)"))
+        print(f"  {'dualmech (NumPy backend)':30s} {py_sps[0]:9.3g} {py_sps[1]:9.3g} "
+              f"{ours_sps[0] / py_sps[0]:10.2f}")
+    print(f"  {'hand-written NumPy (batched)':30s} {hand_sps[0]:9.3g} {hand_sps[1]:9.3g} "
+          f"{ours_sps[0] / hand_sps[0]:10.2f}" + ("" if same else "  (RESULTS DIFFER)"))
     for f in failures:
         print(f"  WARNING result mismatch, not timed: {f}")
 
@@ -270,6 +295,9 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true", help="3 repeats instead of 7")
     args = parser.parse_args()
     repeats = 3 if args.quick else 7
+    load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
+    print(f"load average {load:.1f} on {os.cpu_count()} cores: wall-clock figures are "
+          "inflated by other processes; ratios come from the same run. Ratios use wall time.")
     eqs, values, hand = toy_car()
     run("toy car", eqs, values, hand, repeats)
     for n in (2, 10):

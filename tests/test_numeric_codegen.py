@@ -218,3 +218,21 @@ def test_unknown_backend_is_refused(models):
     eqs, values = models["three-link"]
     with pytest.raises(ValueError, match="`backend` must be 'auto', 'python' or 'c'"):
         NumericModel(eqs, values, backend="fortran")
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_pickled_model_rebuilds_its_code(models, backend):
+    import pickle
+    eqs, values = models["three-link"]
+    nm = NumericModel(eqs, values, backend=backend)
+    y = _states(3, 1)[:, 0]
+    again = pickle.loads(pickle.dumps(nm))
+    assert np.array_equal(again.rhs(0.3, y), nm.rhs(0.3, y))
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_non_finite_state_is_named_not_called_singular(models, backend):
+    eqs, values = models["toy car (lagrange)"]
+    nm = NumericModel(eqs, values, backend=backend)
+    with pytest.raises(ValueError, match=r"not finite at t=0, theta=nan, phi=0\.2"):
+        nm.rhs(0.0, np.array([np.nan, 0.2, 0.0, 0.0]))

@@ -157,6 +157,21 @@ class NumericModel:
         self.n = eqs.n
         self._code = code = _generated(eqs)
         p = _bind(code.params, params, f"model `{eqs.name}`")
+        self._setup(p, backend)
+
+    def __getstate__(self) -> dict:
+        """Pickled as the equations, parameter values and backend (code is rebuilt)."""
+        return {"eqs": self.eqs, "p": tuple(self._c_args[0].tolist()), "backend": self.backend}
+
+    def __setstate__(self, state: dict) -> None:
+        self.eqs = state["eqs"]
+        self.states = [state_symbols(q) for q in self.eqs.coordinates]
+        self.n = self.eqs.n
+        self._code = _generated(self.eqs)
+        self._setup(state["p"], state["backend"])
+
+    def _setup(self, p: tuple, backend: str) -> None:
+        code = self._code
         k = code.module.static(p)
         self._scalar = code.module.scalar(p, k)
         self._vector = code.module.vector(p, k)
@@ -323,13 +338,14 @@ class NumericModel:
 
     def _check(self, A: np.ndarray, scale: float, time, y) -> None:
         """Raise :class:`SingularityError` if ``A`` is singular by the exact test."""
-        if np.isfinite(A).all():
-            sv = np.linalg.svd(A, compute_uv=False)
-            cond = sv[0] / sv[-1] if sv[-1] > 0 else np.inf
-            if np.isfinite(cond) and cond <= COND_LIMIT and sv[-1] >= SCALE_LIMIT * scale:
-                return
-        else:
-            cond = np.nan
+        if not (np.isfinite(A).all() and np.isfinite(y).all() and np.isfinite(time)):
+            raise ValueError(f"the system of `{self.eqs.name}` is not finite at "
+                             f"{self._state_text(time, y)}: check the state and the "
+                             "parameter values (a diverging integration ends like this).")
+        sv = np.linalg.svd(A, compute_uv=False)
+        cond = sv[0] / sv[-1] if sv[-1] > 0 else np.inf
+        if np.isfinite(cond) and cond <= COND_LIMIT and sv[-1] >= SCALE_LIMIT * scale:
+            return
         raise SingularityError(self._singular_message(time, y, cond))
 
     # -- many states -----------------------------------------------------------------------
@@ -385,6 +401,10 @@ class NumericModel:
                 self._check(A[i], sc[i], times[i], Y[:, i].tolist())
                 x[:, i] = np.linalg.solve(A[i], b[i])
         return x
+
+    def _state_text(self, time, y) -> str:
+        names = [s.name for s in self.states] + [f"{s.name}'" for s in self.states]
+        return f"t={float(time):.6g}, " + ", ".join(f"{n}={v:.6g}" for n, v in zip(names, y))
 
     def _singular_message(self, time, y, cond) -> str:
         st = ", ".join(f"{s.name}={v:.6g}" for s, v in zip(self.states, y))
