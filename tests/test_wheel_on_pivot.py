@@ -1,0 +1,92 @@
+"""Wheel rolling round a pivot (problems/wheel_on_pivot.py): steady motion and contact force."""
+import pytest
+import sympy as sp
+
+from dualmech import t
+from dualmech.compare import compare
+from problems.wheel_on_pivot import WheelOnPivot, a, direct_form, frames, g, l, m, phi
+
+problem = WheelOnPivot()
+D = lambda q: q.diff(t)  # noqa: E731
+DD = lambda q: q.diff(t, 2)  # noqa: E731
+F_x, F_y, F_z, R_x, R_y, R_z = sp.symbols("F_x F_y F_z R_x R_y R_z", real=True)
+W = D(phi)  # the precession rate Omega on the motion
+
+
+@pytest.fixture(scope="module")
+def comparison():
+    return compare(problem)
+
+
+def test_declaration_validates():
+    problem.validate()
+    assert problem.model_names == ["newton_euler", "lagrange", "angular_momentum", "multiplier"]
+    assert problem.dimension_issues() == []
+
+
+def test_every_constant_rate_is_a_motion():
+    # nothing does work, so phi'' = 0: the steady motion phi' = Omega solves the equations
+    assert problem.model("lagrange").accelerations_solved() == {DD(phi): 0}
+
+
+def test_the_wheels_contact_point_is_at_rest():
+    # rolling built into the frames (psi = -(l/a) phi): v_G + w x (C - G) = 0
+    f = frames()
+    v_C = f.G.vel(f.O) + f.W.ang_vel_in(f.O).cross(f.C.pos_from(f.G))
+    assert v_C.is_zero()
+
+
+def _solved(model):
+    sol = model.solve()
+    return {u.name: sp.simplify(sol[u]) for u in model.unknowns}
+
+
+def test_reactions_on_the_steady_motion_are_the_hand_ones():
+    # hand (module docstring): F = (0, 0, m g + m a W^2/2), R = (-m l W^2, 0, -m a W^2/2)
+    hand = {"F_x": 0, "F_y": 0, "F_z": m * g + m * a * W**2 / 2,
+            "R_x": -m * l * W**2, "R_y": 0, "R_z": -m * a * W**2 / 2}
+    got = _solved(problem.model("newton_euler"))
+    assert {k: sp.simplify(v - hand[k]) for k, v in got.items()} == {k: 0 for k in hand}
+    am = _solved(problem.model("angular_momentum"))
+    assert {k: sp.simplify(v - hand[k]) for k, v in am.items()} == {k: 0 for k in am}
+
+
+def test_printed_relation_holds_whichever_way_the_radial_force_is_split():
+    # the other closure: no axial force in the axle (R_x = 0), friction carries m l W^2
+    ne, f = direct_form("newton_euler", closure="R_x")
+    for axis in (f.A.x, f.A.y, f.A.z):
+        ne.linear_momentum(f.wheel, axis)
+        ne.angular_momentum(f.wheel, axis)
+    other = _solved(ne.equations())
+    assert sp.simplify(other["F_x"] + m * l * W**2) == 0
+    assert sp.simplify(other["F_z"] - m * g - 3 * m * a * W**2 / 2) == 0
+    printed = m * a * l * W**2 / 2 - a * F_x - (F_z - m * g) * l
+    for sol in (other, _solved(problem.model("newton_euler"))):
+        assert sp.simplify(printed.subs({F_x: sol["F_x"], F_z: sol["F_z"]})) == 0
+
+
+def test_all_three_routes_give_the_same_contact_force(comparison):
+    pairs = [p for p in comparison.pairs if p.kind == "reactions"]
+    assert pairs and all(p.equivalent and p.method == "exact" for p in pairs)
+    names = " ".join(f"{p.reference} {p.candidate} {' '.join(p.reactions)}" for p in pairs)
+    assert all(n in names for n in ("angular_momentum", "multiplier", "F_y", "F_z"))
+
+
+EXPECTED = {
+    "(a) inertia about G": "correct",
+    "(a) spin rate": "correct",
+    "(a) L_G": "correct",
+    "(a) p, r_OG, r_OC": "correct",
+    "(a) L_O, first line": "wrong",          # L_G copied with -(l/a) i for -(2l/a) i
+    "(a) L_O": "correct",
+    "(b) rate of L_O": "correct",
+    "(b) rate of L_O, steady": "correct",
+    "(b) sum of moments about O": "correct",
+    "(b) F_y": "correct",
+    "(b) contact force relation": "correct",
+}
+
+
+def test_published_verdicts(comparison):
+    assert comparison.equivalent, str(comparison)
+    assert {v.label: v.verdict for v in comparison.published} == EXPECTED
