@@ -1,0 +1,719 @@
+r"""Parsed answers made into formulas: resolved names, exact evaluation, degree and dimensions.
+
+A :class:`Formula` is a small tree over the problem's own symbols, compiled into closures that
+evaluate it at a sampled point -- exactly, in ``Fraction`` arithmetic, or in high-precision
+floating point (mpmath) where the answer leaves the rational world (``sqrt``, ``exp``,
+``sin(theta/2)``).  The exact method is the one of :mod:`dualmech.exact`: after expanding
+multiple and compound angles, ``sin`` and ``cos`` of each angle monomial ``a`` are taken at a
+rational point of the unit circle, ``(cos a, sin a) = ((1 - u^2), 2u) / (1 + u^2)``, with ``u``
+drawn independently of every other variable -- including ``a`` itself where it also appears
+outside a trigonometric function (a torsional spring's ``k_t theta``): by Ax's theorem the
+functions ``a`` and ``exp(i a)`` satisfy no algebraic relation, so the independent draw is sound.
+
+Building a formula never evaluates text and never calls ``sympify``: each node is made from
+the parser's tree with the operations listed here, under the :class:`~.parser.Limits`
+(exponents, degree, size of constants).
+
+Example
+-------
+>>> import sympy as sp
+>>> from fractions import Fraction
+>>> from dualmech.grade.parser import parse
+>>> from dualmech.grade.vocabulary import Vocabulary
+>>> m, g = sp.symbols("m g", positive=True); th = sp.Symbol("th", real=True)
+>>> v = Vocabulary.build(parameters=[m, g, th])
+>>> f = Formula.from_node(parse("m*g*sin(2*th)")[0].lhs, v)
+>>> env = Env({m: Fraction(2), g: Fraction(3), th: Fraction(5)}, atoms={((th, 1),): Fraction(1, 2)})
+>>> f.evaluate(env)   # cos = 3/5, sin = 4/5 at u = 1/2: 2*3*2*(4/5)*(3/5)
+Fraction(144, 25)
+>>> f.exact, f.sympy()
+(True, g*m*sin(2*th))
+"""
+from __future__ import annotations
+
+import random
+from fractions import Fraction
+from typing import Callable
+
+import mpmath
+import sympy as sp
+from sympy.printing.str import StrPrinter
+
+from ..dimensions import format_dimension, reduce
+from ..exact import MP_DIGITS
+from .parser import LIMITS, AnswerError, AnswerTooLarge, Limits, Node, to_text
+from .vocabulary import Vocabulary
+
+__all__ = ["Formula", "Env", "display", "Dims", "difference", "dimension_issues",
+           "expected_dimension"]
+
+Dims = tuple
+_PI = "pi"
+_MAX_BITS = 4000        # largest constant, in bits
+_MAX_MULTIPLE = 24      # largest multiple of an angle evaluated exactly (sin(24 theta))
+_MP_FUNCS = {"sin": mpmath.sin, "cos": mpmath.cos, "tan": mpmath.tan, "cot": mpmath.cot,
+             "sec": mpmath.sec, "csc": mpmath.csc, "sqrt": mpmath.sqrt, "exp": mpmath.exp,
+             "log": mpmath.log}
+_SP_FUNCS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec,
+             "csc": sp.csc, "sqrt": sp.sqrt, "exp": sp.exp, "log": sp.log}
+_TRIG = ("sin", "cos", "tan", "cot", "sec", "csc")
+
+
+# -- evaluation environments ----------------------------------------------------------------
+class Env:
+    """Values at one point: ``values[symbol]``; ``atoms[monomial] = u`` for each angle.
+
+    ``exact`` selects Fractions (``True``) or mpmath numbers.  An angle monomial not in
+    ``atoms`` gets its ``u`` from ``draw(monomial)`` (deterministic per point), so every
+    formula evaluated at this point sees the same ``sin`` and ``cos`` of every angle.
+    """
+
+    __slots__ = ("values", "exact", "atoms", "draw", "_z")
+
+    def __init__(self, values: dict, exact: bool = True, atoms: dict | None = None,
+                 draw: Callable | None = None):
+        self.values = values
+        self.exact = exact
+        self.atoms = atoms if atoms is not None else {}
+        self.draw = draw
+        self._z: dict = {}
+
+    def with_values(self, changes: dict) -> "Env":
+        """The same point with some values replaced (shares the angles)."""
+        new = Env({**self.values, **changes}, self.exact, self.atoms, self.draw)
+        new._z = self._z
+        return new
+
+    def unit(self, mono) -> tuple:
+        """``(cos a, sin a)`` of the angle monomial ``mono``, exactly."""
+        z = self._z.get(mono)
+        if z is None:
+            u = self.atoms.get(mono)
+            if u is None:
+                if self.draw is None:
+                    raise KeyError(f"no angle value for {mono}")
+                u = self.atoms[mono] = self.draw(mono)
+            d = 1 + u * u
+            z = self._z[mono] = ((1 - u * u) / d, 2 * u / d)
+        return z
+
+
+def seeded_draw(seed: str) -> Callable:
+    """A ``draw`` for :class:`Env`: the same ``u`` for the same monomial and seed, always."""
+    def draw(mono):
+        key = seed + "|" + ",".join(f"{s}^{p}" for s, p in mono)
+        rng = random.Random(key)
+        return Fraction(rng.randrange(-(1 << 61), 1 << 61))
+    return draw
+
+
+def _cmul(a, b):
+    return (a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0])
+
+
+def _cpow(z, k):
+    out = (Fraction(1), Fraction(0))
+    if k < 0:
+        z, k = (z[0], -z[1]), -k
+    while k:
+        if k & 1:
+            out = _cmul(out, z)
+        z = _cmul(z, z)
+        k >>= 1
+    return out
+
+
+# -- polynomial view of an angle ------------------------------------------------------------
+def _poly(tree, limit=40):
+    """``{monomial: coefficient}`` of a polynomial tree (``pi`` as the monomial "pi"), or None."""
+    op = tree[0]
+    if op == "c":
+        return {(): tree[1]}
+    if op == "s":
+        return {((tree[1], 1),): Fraction(1)}
+    if op == "pi":
+        return {_PI: Fraction(1)}
+    if op == "add":
+        out: dict = {}
+        for c in tree[1]:
+            p = _poly(c, limit)
+            if p is None:
+                return None
+            for k, v in p.items():
+                out[k] = out.get(k, 0) + v
+        out = {k: v for k, v in out.items() if v != 0}
+        return out if len(out) <= limit else None
+    if op == "mul":
+        out = {(): Fraction(1)}
+        for c in tree[1]:
+            p = _poly(c, limit)
+            if p is None:
+                return None
+            out = _pmul(out, p)
+            if out is None or len(out) > limit:
+                return None
+        return out
+    if op == "pow" and tree[2] >= 0:
+        p = _poly(tree[1], limit)
+        out = {(): Fraction(1)}
+        for _ in range(tree[2]):
+            if p is None:
+                return None
+            out = _pmul(out, p)
+            if out is None or len(out) > limit:
+                return None
+        return out
+    return None
+
+
+def _pmul(a, b):
+    out: dict = {}
+    for ka, va in a.items():
+        for kb, vb in b.items():
+            if ka == _PI or kb == _PI:
+                if ka != () and kb != ():
+                    return None  # pi times a symbol: not an angle we evaluate exactly
+                k = _PI
+            else:
+                powers = dict(ka)
+                for s, p in kb:
+                    powers[s] = powers.get(s, 0) + p
+                k = tuple(sorted(powers.items(), key=lambda sp_: str(sp_[0])))
+            out[k] = out.get(k, 0) + va * vb
+    return {k: v for k, v in out.items() if v != 0}
+
+
+def _angle(tree):
+    """``(((monomial, k), ...), quarter_turns)`` when ``tree`` is an integer combination of
+    monomials plus a multiple of pi/2; else ``None`` (then only mpmath evaluates it)."""
+    p = _poly(tree)
+    if p is None:
+        return None
+    quarter = 0
+    parts = []
+    for k, v in p.items():
+        if k == _PI:
+            if (2 * v).denominator != 1:
+                return None
+            quarter = int(2 * v) % 4
+        elif k == ():
+            return None  # sin(1): a transcendental constant
+        else:
+            if v.denominator != 1 or abs(v) > _MAX_MULTIPLE:
+                return None
+            parts.append((k, int(v)))
+    return tuple(sorted(parts, key=str)), quarter
+
+
+_QUARTER = ((Fraction(1), Fraction(0)), (Fraction(0), Fraction(1)),
+            (Fraction(-1), Fraction(0)), (Fraction(0), Fraction(-1)))
+
+
+# -- formulas ---------------------------------------------------------------------------------
+class Formula:
+    """A resolved answer expression (see the module docstring).
+
+    Attributes: ``tree`` (nested tuples), ``exact`` (evaluable in Fractions), ``degree``
+    (bound on numerator + denominator degree in the sampled variables), ``symbols`` (the
+    symbols it uses).  :meth:`evaluate` gives its value at an :class:`Env`.
+    """
+
+    __slots__ = ("tree", "exact", "degree", "symbols", "_fn", "_sympy", "text", "_parts")
+
+    def __init__(self, tree, text: str = ""):
+        self.tree = tree
+        self.text = text
+        self.symbols: set = set()
+        self.exact = True
+        self._sympy = None
+        self._parts = None
+        self.degree = sum(self._scan(tree))
+        self._fn = self._compile(tree)
+
+    # -- construction -----------------------------------------------------------------
+    @classmethod
+    def from_node(cls, node: Node, vocabulary: Vocabulary, limits: Limits = LIMITS,
+                  text: str = "") -> "Formula":
+        """Resolve the parser's tree against ``vocabulary`` (raises ``UnknownName``)."""
+        tree = _resolve(node, vocabulary, limits)
+        f = cls(tree, text or to_text(node))
+        if f.degree > limits.degree:
+            raise AnswerTooLarge(f"the answer's degree (about {f.degree}) is above "
+                                 f"{limits.degree}; expand less or simplify it first.")
+        return f
+
+    @classmethod
+    def from_sympy(cls, expr) -> "Formula":
+        """A formula of a sympy expression built by the library (never of text)."""
+        return cls(_from_sympy(expr), "")
+
+    # -- facts ------------------------------------------------------------------------
+    def _scan(self, tree):
+        """Collect symbols and exactness; return the (numerator, denominator) degree bound."""
+        op = tree[0]
+        if op == "c":
+            return (0, 0)
+        if op == "s":
+            self.symbols.add(tree[1])
+            return (1, 0)
+        if op == "pi":
+            self.exact = False
+            return (0, 0)
+        if op == "add":
+            parts = [self._scan(c) for c in tree[1]]
+            den = sum(d for _, d in parts)
+            return (max(n + den - d for n, d in parts), den)
+        if op == "mul":
+            parts = [self._scan(c) for c in tree[1]]
+            return (sum(n for n, _ in parts), sum(d for _, d in parts))
+        if op == "pow":
+            n, d = self._scan(tree[1])
+            k = tree[2]
+            return (n * k, d * k) if k >= 0 else (d * -k, n * -k)
+        if op == "rpow":
+            self.exact = False
+            self._scan(tree[1])
+            return (0, 0)
+        if op == "f":
+            name, arg = tree[1], tree[2]
+            inner = Formula.__new__(Formula)
+            inner.symbols, inner.exact = set(), True
+            inner._scan(arg)
+            self.symbols |= inner.symbols
+            ang = _angle(arg) if name in _TRIG else None
+            if ang is None:
+                self.exact = False
+                return (0, 0)
+            k = sum(abs(m) for _, m in ang[0])
+            return (2 * k, 2 * k) if name in ("sin", "cos") else (4 * k, 4 * k)
+        if op == "vec":
+            parts = [self._scan(c) for c in tree[1]]
+            return max(parts, key=sum, default=(0, 0))
+        raise AssertionError(op)
+
+    def unknown_degree(self, unknowns: set) -> int | None:
+        """Polynomial degree in ``unknowns`` (None if they appear non-polynomially)."""
+        return _udeg(self.tree, unknowns)
+
+    # -- evaluation -----------------------------------------------------------------------
+    def evaluate(self, env: Env):
+        """The value at ``env`` (a Fraction, an mpmath number, or a list for a vector)."""
+        return self._fn(env)
+
+    def _compile(self, tree):
+        op = tree[0]
+        if op == "c":
+            v = tree[1]
+            with mpmath.workdps(MP_DIGITS):
+                mv = mpmath.mpf(v.numerator) / v.denominator
+            return lambda env: v if env.exact else mv
+        if op == "s":
+            s = tree[1]
+            return lambda env: env.values[s]
+        if op == "pi":
+            return lambda env: mpmath.pi if not env.exact else _not_exact()
+        if op == "add":
+            fs = [self._compile(c) for c in tree[1]]
+            first, rest = fs[0], fs[1:]
+
+            def add(env):
+                v = first(env)
+                for f in rest:
+                    v = v + f(env)
+                return v
+            return add
+        if op == "mul":
+            fs = [self._compile(c) for c in tree[1]]
+            first, rest = fs[0], fs[1:]
+
+            def mul(env):
+                v = first(env)
+                for f in rest:
+                    v = v * f(env)
+                return v
+            return mul
+        if op == "pow":
+            b, k = self._compile(tree[1]), tree[2]
+            return lambda env: b(env) ** k
+        if op == "rpow":
+            b, e = self._compile(tree[1]), tree[2]
+            with mpmath.workdps(MP_DIGITS):
+                me = mpmath.mpf(e.numerator) / e.denominator
+            return lambda env: b(env) ** me if not env.exact else _not_exact()
+        if op == "f":
+            return self._compile_function(tree[1], tree[2])
+        if op == "vec":
+            fs = [self._compile(c) for c in tree[1]]
+            return lambda env: [f(env) for f in fs]
+        raise AssertionError(op)
+
+    def _compile_function(self, name, arg):
+        argf = self._compile(arg)
+        mpf = _MP_FUNCS[name]
+        ang = _angle(arg) if name in _TRIG else None
+        if ang is None:
+            return lambda env: mpf(argf(env)) if not env.exact else _not_exact()
+        parts, quarter = ang
+
+        def unit(env):
+            z = _QUARTER[quarter]
+            for mono, k in parts:
+                z = _cmul(z, _cpow(env.unit(mono), k))
+            return z
+        pick = {"sin": lambda z: z[1], "cos": lambda z: z[0], "tan": lambda z: z[1] / z[0],
+                "cot": lambda z: z[0] / z[1], "sec": lambda z: 1 / z[0],
+                "csc": lambda z: 1 / z[1]}[name]
+        return lambda env: pick(unit(env)) if env.exact else mpf(argf(env))
+
+    def term_values(self, env: Env) -> list:
+        """Values of the top-level terms (the scale of a high-precision zero test)."""
+        if self._parts is None:
+            kids = self.tree[1] if self.tree[0] == "add" else (self.tree,)
+            self._parts = [Formula(k) for k in kids]
+        return [p.evaluate(env) for p in self._parts]
+
+    def written_terms(self) -> list:
+        """The top-level terms as written (sympy), for feedback that keeps them apart."""
+        kids = self.tree[1] if self.tree[0] == "add" else (self.tree,)
+        return [_to_sympy(k) for k in kids]
+
+    def expanded_size(self) -> int:
+        """Number of terms after expanding products (an upper estimate, capped)."""
+        return _expanded_size(self.tree)
+
+    # -- sympy, for display and symbolic feedback -------------------------------------
+    def sympy(self):
+        """The formula as a sympy expression (built from its tree, never from text)."""
+        if self._sympy is None:
+            self._sympy = _to_sympy(self.tree)
+        return self._sympy
+
+    def __repr__(self) -> str:
+        return f"Formula({self.text or self.sympy()})"
+
+
+def _expanded_size(tree, cap=10 ** 6) -> int:
+    op = tree[0]
+    if op in ("c", "s", "pi", "f", "rpow"):
+        return 1
+    if op in ("add", "vec"):
+        return min(cap, sum(_expanded_size(c) for c in tree[1]))
+    if op == "mul":
+        out = 1
+        for c in tree[1]:
+            out = min(cap, out * _expanded_size(c))
+        return out
+    if op == "pow":
+        return min(cap, _expanded_size(tree[1]) ** abs(tree[2])) if tree[2] else 1
+    return 1
+
+
+def difference(lhs: Formula, rhs: Formula | None) -> Formula:
+    """``lhs - rhs`` as one flat sum (``lhs`` itself when there is no right side)."""
+    if rhs is None:
+        return lhs
+    left = lhs.tree[1] if lhs.tree[0] == "add" else (lhs.tree,)
+    right = rhs.tree[1] if rhs.tree[0] == "add" else (rhs.tree,)
+    neg = tuple(("mul", (("c", Fraction(-1)), r)) for r in right)
+    return Formula(("add", left + neg), f"{lhs.text} = {rhs.text}")
+
+
+def _not_exact():
+    raise TypeError("this formula needs the high-precision method")
+
+
+def _udeg(tree, unknowns):
+    op = tree[0]
+    if op in ("c", "pi"):
+        return 0
+    if op == "s":
+        return 1 if tree[1] in unknowns else 0
+    if op in ("add", "vec"):
+        ds = [_udeg(c, unknowns) for c in tree[1]]
+        return None if None in ds else max(ds)
+    if op == "mul":
+        ds = [_udeg(c, unknowns) for c in tree[1]]
+        return None if None in ds else sum(ds)
+    if op == "pow":
+        d = _udeg(tree[1], unknowns)
+        if d is None:
+            return None
+        if d and tree[2] < 0:
+            return None
+        return d * max(tree[2], 0)
+    if op == "rpow":
+        return 0 if _udeg(tree[1], unknowns) == 0 else None
+    if op == "f":
+        return 0 if _udeg(tree[2], unknowns) == 0 else None
+    raise AssertionError(op)
+
+
+# -- resolving the parser's tree --------------------------------------------------------------
+def _resolve(node: Node, voc: Vocabulary, limits: Limits):
+    op, a = node.op, node.args
+    if op == "num":
+        return ("c", a[0])
+    if op == "name":
+        refs = voc.resolve(a[0], a[1])
+        leaves = [("pi",) if r.kind == "constant" else ("s", r.symbol) for r in refs]
+        return leaves[0] if len(leaves) == 1 else ("mul", tuple(leaves))
+    if op == "group":
+        return _resolve(a[0], voc, limits)
+    if op == "neg":
+        return ("mul", (("c", Fraction(-1)), _resolve(a[0], voc, limits)))
+    if op == "inv":
+        inner = _resolve(a[0], voc, limits)
+        if inner[0] == "c":
+            return ("c", 1 / inner[1]) if inner[1] != 0 else _zero_division()
+        return ("pow", inner, -1)
+    if op == "add":
+        return ("add", tuple(_resolve(c, voc, limits) for c in a))
+    if op == "mul":
+        return ("mul", tuple(_resolve(c, voc, limits) for c in _drop_of_t(a, voc)))
+    if op == "pow":
+        base = _resolve(a[0], voc, limits)
+        e = _constant(a[1], limits)
+        if e.denominator == 1:
+            if abs(e) > limits.exponent:
+                raise AnswerTooLarge(f"the exponent {e} is larger than {limits.exponent}.")
+            if base[0] == "c":
+                _check_bits(base[1], int(e))
+                return ("c", base[1] ** int(e)) if base[1] != 0 or e >= 0 else \
+                    _zero_division()
+            return ("pow", base, int(e))
+        if e.denominator > 12 or abs(e) > limits.exponent:
+            raise AnswerTooLarge(f"the exponent {e} is not supported (use small fractions).")
+        return ("rpow", base, e)
+    if op == "func":
+        arg = _resolve(a[1], voc, limits)
+        if a[0] == "sqrt":
+            return ("rpow", arg, Fraction(1, 2))
+        return ("f", a[0], arg)
+    if op == "vec":
+        return ("vec", tuple(_resolve(c, voc, limits) for c in a))
+    raise AssertionError(op)
+
+
+def _zero_division():
+    raise AnswerError("the answer divides by zero.")
+
+
+def _check_bits(base: Fraction, k: int) -> None:
+    bits = max(abs(base.numerator), base.denominator).bit_length() * abs(k)
+    if bits > _MAX_BITS:
+        raise AnswerTooLarge(f"a number in the answer is too large (about {bits} bits).")
+
+
+def _drop_of_t(args, voc: Vocabulary):
+    """``theta(t)`` is the coordinate itself, not ``theta*t``."""
+    out = []
+    for node in args:
+        if (node.op == "group" and out and out[-1].op == "name" and node.args[0].op == "name"
+                and node.args[0].args == ("t", 0)):
+            ref = voc.lookup(out[-1].args[0], out[-1].args[1])
+            if ref is not None and ref.kind == "coordinate":
+                continue
+        out.append(node)
+    return out
+
+
+def _constant(node: Node, limits: Limits) -> Fraction:
+    """Value of a constant exponent, refusing anything large before computing it."""
+    op, a = node.op, node.args
+    if op == "num":
+        return a[0]
+    if op == "group":
+        return _constant(a[0], limits)
+    if op == "neg":
+        return -_constant(a[0], limits)
+    if op == "inv":
+        v = _constant(a[0], limits)
+        if v == 0:
+            raise AnswerError("the answer divides by zero in an exponent.")
+        return 1 / v
+    if op in ("add", "mul"):
+        vals = [_constant(c, limits) for c in a]
+        out = Fraction(0) if op == "add" else Fraction(1)
+        for v in vals:
+            out = out + v if op == "add" else out * v
+        _bound(out, limits)
+        return out
+    if op == "pow":
+        b, e = _constant(a[0], limits), _constant(a[1], limits)
+        if e.denominator != 1 or abs(e) > limits.exponent:
+            raise AnswerTooLarge(f"the exponent {e} is larger than {limits.exponent} (or not "
+                                 "a whole number).")
+        if b == 0 and e < 0:
+            raise AnswerError("the answer divides by zero in an exponent.")
+        _check_bits(b, int(e))
+        out = b ** int(e)
+        _bound(out, limits)
+        return out
+    raise AnswerError(f"exponents must be numbers; `{to_text(node)}` is not.")
+
+
+def _bound(v: Fraction, limits: Limits) -> None:
+    if abs(v) > 10 ** limits.digits or v.denominator > 10 ** limits.digits:
+        raise AnswerTooLarge(f"the exponent {v} is too large.")
+
+
+# -- sympy conversions ----------------------------------------------------------------------
+def _to_sympy(tree):
+    op = tree[0]
+    if op == "c":
+        return sp.Rational(tree[1].numerator, tree[1].denominator)
+    if op == "s":
+        return tree[1]
+    if op == "pi":
+        return sp.pi
+    if op == "add":
+        return sp.Add(*[_to_sympy(c) for c in tree[1]])
+    if op == "mul":
+        return sp.Mul(*[_to_sympy(c) for c in tree[1]])
+    if op == "pow":
+        return sp.Pow(_to_sympy(tree[1]), sp.Integer(tree[2]))
+    if op == "rpow":
+        return sp.Pow(_to_sympy(tree[1]), sp.Rational(tree[2].numerator, tree[2].denominator))
+    if op == "f":
+        return _SP_FUNCS[tree[1]](_to_sympy(tree[2]))
+    if op == "vec":
+        return sp.Matrix([_to_sympy(c) for c in tree[1]])
+    raise AssertionError(op)
+
+
+_FROM_SP = {sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.cot: "cot", sp.sec: "sec",
+            sp.csc: "csc", sp.exp: "exp", sp.log: "log"}
+
+
+def _from_sympy(e):
+    if e.is_Integer or e.is_Rational:
+        return ("c", Fraction(int(e.p), int(e.q)))
+    if e is sp.pi:
+        return ("pi",)
+    if e.is_Symbol:
+        return ("s", e)
+    if e.is_Add:
+        return ("add", tuple(_from_sympy(a) for a in e.args))
+    if e.is_Mul:
+        return ("mul", tuple(_from_sympy(a) for a in e.args))
+    if e.is_Pow:
+        base, ex = e.args
+        if ex.is_Integer:
+            return ("pow", _from_sympy(base), int(ex))
+        if ex.is_Rational:
+            return ("rpow", _from_sympy(base), Fraction(int(ex.p), int(ex.q)))
+    if isinstance(e, sp.Function) and type(e) in _FROM_SP:
+        return ("f", _FROM_SP[type(e)], _from_sympy(e.args[0]))
+    if e.is_Float:
+        return ("rpow", ("c", Fraction(str(e))), Fraction(1))
+    raise TypeError(f"cannot evaluate {e} ({type(e).__name__}) in a grading formula")
+
+
+# -- display and dimensions -----------------------------------------------------------------
+class _PrimePrinter(StrPrinter):
+    """Plain state symbols printed as the student writes them: ``theta'``, ``theta''``."""
+
+    def __init__(self, names: dict):
+        super().__init__()
+        self._names = names
+
+    def _print_Symbol(self, expr):
+        return self._names.get(expr, expr.name)
+
+
+def display(expr, names: dict | None = None) -> str:
+    """``expr`` as text, with ``names`` (symbol -> text) for the coordinates' derivatives."""
+    s = _PrimePrinter(names or {}).doprint(expr)
+    return s
+
+
+def dimension_issues(tree, dims: dict, names: dict, expected: Dims | None = None) -> list[str]:
+    """Terms of the formula whose dimensions disagree, as sentences (empty when consistent).
+
+    ``dims`` maps every symbol to its reduced dimension (``dimensions.reduce``); angles are
+    dimensionless.  ``expected``, when given, is the dimension the whole answer must have.
+    """
+    issues: list[str] = []
+    top = _dim(tree, dims, names, issues)
+    if not issues and expected is not None and top is not None and top != expected:
+        issues.append(f"the answer has dimension {_fmt(top)}, but the quantity asked for has "
+                      f"{_fmt(expected)}")
+    return issues
+
+
+def expected_dimension(formula: "Formula", dims: dict) -> Dims | None:
+    """Dimension of a (library-built) formula, None when it is zero or inconsistent."""
+    issues: list = []
+    d = _dim(formula.tree, dims, {}, issues)
+    return None if issues else d
+
+
+def _fmt(d: Dims) -> str:
+    return format_dimension(d) if d else "1 (dimensionless)"
+
+
+def _dmul(a: Dims, b: Dims, k=1) -> Dims:
+    out = dict(a)
+    for name, e in b:
+        out[name] = out.get(name, 0) + k * e
+    return tuple(sorted((n, e) for n, e in out.items() if e != 0))
+
+
+def _dim(tree, dims, names, issues) -> Dims | None:
+    """Dimension of ``tree`` (None for zero, which has every dimension)."""
+    op = tree[0]
+    if op == "c":
+        return None if tree[1] == 0 else ()
+    if op == "pi":
+        return ()
+    if op == "s":
+        return dims.get(tree[1], ())
+    if op in ("add", "vec"):
+        terms = [(c, _dim(c, dims, names, issues)) for c in tree[1]]
+        known = [(c, d) for c, d in terms if d is not None]
+        if not known:
+            return None
+        counts: dict = {}
+        for _, d in known:
+            counts[d] = counts.get(d, 0) + 1
+        ranked = sorted(counts.items(), key=lambda kv: -kv[1])
+        main = ranked[0][0]
+        if len(ranked) > 1 and op == "add":
+            if ranked[0][1] == ranked[1][1]:
+                listing = "; ".join(f"`{display(_to_sympy(c), names)}` has {_fmt(d)}"
+                                    for c, d in known)
+                issues.append(f"the terms do not share one dimension: {listing}")
+            else:
+                for c, d in known:
+                    if d != main:
+                        issues.append(f"the term `{display(_to_sympy(c), names)}` has dimension "
+                                      f"{_fmt(d)} where the other terms have {_fmt(main)}")
+        return main
+    if op == "mul":
+        out: Dims = ()
+        for c in tree[1]:
+            d = _dim(c, dims, names, issues)
+            if d is None:
+                return None
+            out = _dmul(out, d)
+        return out
+    if op in ("pow", "rpow"):
+        d = _dim(tree[1], dims, names, issues)
+        if d is None:
+            return None
+        k = tree[2]
+        return tuple((n, e * k) for n, e in d) if k else ()
+    if op == "f":
+        d = _dim(tree[2], dims, names, issues)
+        if tree[1] == "sqrt":
+            return tuple((n, e / 2) for n, e in d) if d else d
+        if d:
+            issues.append(f"the argument `{display(_to_sympy(tree[2]), names)}` of {tree[1]} has "
+                          f"dimension {_fmt(d)}; it must be dimensionless")
+        return ()
+    raise AssertionError(op)
+
+
+def reduced(dim) -> Dims:
+    """A sympy Dimension as the sorted tuple this module uses."""
+    return tuple(sorted(reduce(dim)))

@@ -1,0 +1,232 @@
+r"""The names an answer may use for one problem, with their accepted aliases.
+
+A :class:`Vocabulary` maps what a student types to the problem's own sympy symbols: the
+coordinates and their first and second derivatives (as the plain symbols of
+:func:`dualmech.equations.state_symbols`), the parameters, the reactions and multipliers, time
+``t``, ``pi`` and, for vector answers, the basis vectors of the quantity asked for.
+
+Aliases, for a coordinate ``theta``: ``θ``, ``\theta``, ``th``; derivatives ``theta'``,
+``theta''``, ``thetadot``, ``thetaddot``, ``theta_dot``, ``theta_ddot``, ``theta_d``,
+``theta_dd``, ``dtheta``, ``ddtheta``, ``\dot{\theta}``, ``θ̇``.  Subscripts may be written
+with or without ``_`` and braces (``m_0``, ``m0``, ``m_{0}``).  A name that is none of these is
+read as a product of known names when it splits in exactly one shortest way (``mgl`` is
+``m*g*l``).  An alias that would mean two different things in one problem is dropped.
+
+Example
+-------
+>>> import sympy as sp
+>>> from dualmech import coordinate
+>>> th = coordinate("theta"); m, l, g = sp.symbols("m l g", positive=True)
+>>> v = Vocabulary.build(coordinates=[th], parameters=[m, l, g])
+>>> v.lookup("thetadot", 0).symbol, v.lookup("θ", 2).symbol, v.lookup("ml", 0)
+(theta_dot, theta_ddot, None)
+>>> [r.symbol for r in v.split("mgl")]
+[m, g, l]
+"""
+from __future__ import annotations
+
+import difflib
+from dataclasses import dataclass, field
+from typing import Sequence
+
+import sympy as sp
+
+from ..equations import state_symbols
+from ..kinematics import t as TIME
+from .parser import GREEK
+
+__all__ = ["Ref", "Vocabulary", "UnknownName"]
+
+_LETTER = {v: k for k, v in GREEK.items() if not k.startswith("var")}  # θ -> theta
+_SHORT = {"theta": "th", "phi": "ph", "psi": "ps", "omega": "w"}
+_ORDER_WORDS = (("ddot", 2), ("_ddot", 2), ("dot", 1), ("_dot", 1), ("_dd", 2), ("_d", 1))
+
+
+class UnknownName(ValueError):
+    """A name the problem does not define; the message lists the names it does."""
+
+
+@dataclass(frozen=True)
+class Ref:
+    """What a name means: ``kind`` (``coordinate``, ``parameter``, ``reaction``, ``time``,
+    ``constant``, ``basis``), the plain ``symbol`` and, for coordinates, the derivative
+    ``order`` (0, 1 or 2) and the coordinate's ``base`` name."""
+
+    kind: str
+    symbol: object
+    order: int = 0
+    base: str = ""
+
+    def differentiated(self, n: int) -> "Ref | None":
+        """The same name with ``n`` more primes (``None`` if that is not allowed)."""
+        if n == 0:
+            return self
+        if self.kind != "coordinate" or self.order + n > 2:
+            return None
+        return _coordinate_refs[(self.base, self.order + n)]
+
+
+_coordinate_refs: dict = {}
+
+
+def _greek_forms(name: str) -> list[str]:
+    """``theta1`` -> ``θ1``; ``omega`` -> ``ω``; names that are not Greek -> []."""
+    for word in sorted(GREEK, key=len, reverse=True):
+        if name.startswith(word) and not word.startswith("var"):
+            rest = name[len(word):]
+            if rest == "" or rest[0].isdigit() or rest[0] == "_":
+                return [GREEK[word] + rest]
+    return []
+
+
+def _normal(name: str) -> str:
+    return name.replace("_", "")
+
+
+@dataclass
+class Vocabulary:
+    """Names -> :class:`Ref`; build with :meth:`build` (see the module docstring)."""
+
+    table: dict = field(default_factory=dict)      # exact alias -> Ref
+    normal: dict = field(default_factory=dict)     # alias without underscores -> Ref
+    canonical: dict = field(default_factory=dict)  # kind -> [display names]
+    aliases: dict = field(default_factory=dict)    # canonical name -> [aliases]
+    _owners: dict = field(default_factory=dict)    # canonical name -> its Ref
+
+    @classmethod
+    def build(cls, coordinates: Sequence = (), parameters: Sequence = (),
+              reactions: Sequence = (), basis: Sequence[str] = (),
+              extra_coordinates: Sequence = ()) -> "Vocabulary":
+        """Vocabulary of coordinates ``q(t)``, parameter and reaction symbols, basis names."""
+        v = cls()
+        clash: set = set()
+        for q in list(coordinates) + list(extra_coordinates):
+            s = state_symbols(q)
+            name = s.name
+            for order, sym in enumerate((s.q, s.qd, s.qdd)):
+                _coordinate_refs[(name, order)] = Ref("coordinate", sym, order, name)
+            ref = _coordinate_refs[(name, 0)]
+            forms = [name] + _greek_forms(name)
+            if name in _SHORT:
+                forms.append(_SHORT[name])
+            v._add(name, "coordinate", forms, ref, clash)
+            for a in forms:
+                for word, order in _ORDER_WORDS:
+                    v._put(a + word, _coordinate_refs[(name, order)], clash)
+                v._put("d" + a, _coordinate_refs[(name, 1)], clash)
+                v._put("dd" + a, _coordinate_refs[(name, 2)], clash)
+        for p in parameters:
+            v._add(str(p), "parameter", [str(p)] + _greek_forms(str(p)), Ref("parameter", p),
+                   clash)
+        for r in reactions:
+            v._add(str(r), "reaction", [str(r)], Ref("reaction", r), clash)
+        for b in basis:
+            v._add(b, "basis", [b], Ref("basis", sp.Symbol(b, commutative=True)), clash)
+        if "t" not in v.table:
+            v._add("t", "time", ["t"], Ref("time", TIME), clash)
+        for name in ("pi", "π"):
+            if name not in v.table:
+                v.table[name] = Ref("constant", sp.pi)
+        for alias in clash:
+            owner = v._owners.get(alias)
+            if owner is not None:
+                v.table[alias] = owner      # a symbol's own name beats another's alias
+            else:
+                v.table.pop(alias, None)
+        for alias, ref in v.table.items():
+            key = _normal(alias)
+            if key in v.normal and v.normal[key] != ref:
+                v.normal[key] = None  # ambiguous without underscores
+            else:
+                v.normal.setdefault(key, ref)
+        return v
+
+    def _add(self, name, kind, forms, ref, clash):
+        if name in self._owners and self._owners[name] != ref:
+            self._owners[name] = None       # two symbols with one name: neither wins
+        else:
+            self._owners[name] = ref
+        self.canonical.setdefault(kind, []).append(name)
+        self.aliases[name] = [f for f in forms if f != name]
+        for f in forms:
+            self._put(f, ref, clash)
+
+    def _put(self, alias, ref, clash):
+        old = self.table.get(alias)
+        if old is not None and old != ref:
+            clash.add(alias)
+        self.table[alias] = ref
+
+    # -- lookup ------------------------------------------------------------------------
+    def lookup(self, name: str, primes: int = 0) -> Ref | None:
+        """The meaning of ``name`` with ``primes`` extra derivatives, or ``None``."""
+        ref = self.table.get(name)
+        if ref is None:
+            ref = self.normal.get(_normal(name))
+        return ref.differentiated(primes) if ref is not None else None
+
+    def split(self, name: str, primes: int = 0) -> list[Ref] | None:
+        """``name`` as the unique shortest product of known names (primes on the last)."""
+        if not name.isalnum() or len(name) > 24:
+            return None
+        best: dict = {0: [[]]}  # position -> splits reaching it (shortest only)
+        for i in range(len(name)):
+            if i not in best:
+                continue
+            for j in range(i + 1, len(name) + 1):
+                ref = self.table.get(name[i:j])
+                if ref is None or ref.kind == "basis":
+                    continue
+                paths = [p + [name[i:j]] for p in best[i]]
+                if j not in best or len(paths[0]) < len(best[j][0]):
+                    best[j] = paths
+                elif len(paths[0]) == len(best[j][0]):
+                    best[j] = best[j] + paths
+        found = best.get(len(name))
+        if not found or len(found) != 1 or len(found[0]) < 2:
+            return None
+        refs = [self.table[p] for p in found[0]]
+        last = refs[-1].differentiated(primes)
+        return None if last is None else refs[:-1] + [last]
+
+    def resolve(self, name: str, primes: int = 0) -> list[Ref]:
+        """``[Ref]`` for a known name, several for an implicit product; else :class:`UnknownName`."""
+        ref = self.lookup(name, primes)
+        if ref is not None:
+            return [ref]
+        base = self.lookup(name, 0)
+        if base is not None:
+            if base.kind == "coordinate":
+                raise UnknownName(f"`{name}" + "'" * primes + f"`: at most second derivatives "
+                                  "of a coordinate may appear.")
+            raise UnknownName(f"`{name}" + "'" * primes + f"`: only coordinates have "
+                              f"derivatives; `{name}` is a {base.kind}.")
+        parts = self.split(name, primes)
+        if parts is not None:
+            return parts
+        raise UnknownName(self.unknown_message(name))
+
+    def unknown_message(self, name: str) -> str:
+        close = difflib.get_close_matches(name, list(self.table), n=3, cutoff=0.6)
+        hint = f" Did you mean {', '.join(f'`{c}`' for c in close)}?" if close else ""
+        return f"unknown name `{name}`.{hint} {self.describe()}"
+
+    def describe(self) -> str:
+        """The problem's names and aliases, in one paragraph."""
+        parts = []
+        for kind, label in (("coordinate", "coordinates"), ("parameter", "parameters"),
+                            ("reaction", "reactions"), ("basis", "basis vectors")):
+            names = self.canonical.get(kind, [])
+            if names:
+                shown = []
+                for n in names:
+                    al = [a for a in self.aliases.get(n, []) if self.table.get(a) is not None]
+                    shown.append(f"{n} ({', '.join(al)})" if al else n)
+                parts.append(f"{label}: {', '.join(shown)}")
+        coords = self.canonical.get("coordinate", [])
+        if coords:
+            q = coords[0]
+            parts.append(f"derivatives: {q}', {q}'' (or {q}dot, {q}ddot, {q}_d, {q}_dd, "
+                         f"d{q}, dd{q}, \\dot{{{q}}})")
+        parts.append("time: t")
+        return "The problem's names are: " + "; ".join(parts) + "."
