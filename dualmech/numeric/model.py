@@ -47,8 +47,10 @@ COND_LIMIT, SCALE_LIMIT = 1e12, 1e-12
 #: The cheap estimate trips (and the exact test runs) well before those limits.
 _TRIP = 1e-8
 _PROBE = np.random.default_rng(20240611).standard_normal(64)
-#: Largest square system solved by the compiled code (its matrix lives on the C stack).
-_C_MAX = 120
+#: Sizes of the square systems that ``backend="auto"`` solves with compiled code: from 3 on
+#: (below, the closed forms in Python cost no more than a call into C, and nothing needs
+#: compiling) up to 120 (the matrix lives on the C stack).
+_C_MIN, _C_MAX = 3, 120
 
 
 class SingularityError(ModelError):
@@ -143,6 +145,12 @@ class NumericModel:
     eqs : EquationSet
     params : mapping symbol (or its name) -> float
         A value for every parameter symbol in the equations (others are ignored).
+    backend : {"auto", "python", "c"}, optional
+        Where :meth:`solve` and :meth:`rhs` run: generated Python/NumPy code, or the same
+        program compiled to C (:mod:`~dualmech.numeric.cbackend`, compiled on first use and
+        cached).  ``"auto"`` (default; ``$DUALMECH_BACKEND`` overrides) compiles square
+        systems of 3 to 120 unknowns when a C compiler exists.  :meth:`system` always runs
+        the Python/NumPy code.
 
     States are given as ``q`` and ``qd`` of shape ``(n,)`` (one state) or ``(n, K)`` (``K``
     states in the columns); ``time`` is a number or, for many states, an array ``(K,)``.
@@ -179,8 +187,10 @@ class NumericModel:
         self._mn = code.shape[0] * code.shape[1]
         self.backend = backend
         self._c_args = (np.array(p, dtype=float), np.array(k, dtype=float))
-        self._c = None if backend == "python" or code.shape[0] != code.shape[1] \
-            or code.shape[1] > _C_MAX else False  # False: not loaded yet
+        m, N = code.shape
+        usable = m == N and N <= _C_MAX and (backend == "c" or (
+            backend == "auto" and N >= _C_MIN and cbackend.compiler() is not None))
+        self._c = False if usable else None  # False: not loaded yet
 
     def _c_solver(self):
         """The compiled solver (loaded, or compiled, on first use), or ``None``."""

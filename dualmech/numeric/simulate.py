@@ -211,8 +211,8 @@ def reactions_along(problem, traj: Trajectory, values: Mapping) -> dict:
     Each direct model is solved at all samples at once (one batched solve).
     """
     out: dict = {}
-    for m in _direct_models(problem):
-        rows = NumericModel(m, values).solve(traj.t, traj.q, traj.qd)[m.n:]
+    for m in _direct_models(problem):  # one batched solve: nothing to compile for it
+        rows = NumericModel(m, values, backend="python").solve(traj.t, traj.q, traj.qd)[m.n:]
         for name, row in zip((u.name for u in m.unknowns), rows):
             out.setdefault(name, row)
     return out
