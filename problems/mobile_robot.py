@@ -294,7 +294,10 @@ class MobileRobot(Problem):
                "free-body diagrams and as a multiplier; the difference from the simplified "
                "model along the motion profile and the homework's simulations.")
     parameters = _parameters()
-    coordinates = MobileRobotSimplified.coordinates
+    coordinates = (
+        Coordinate(x, LENGTH, (-1.0, 6.0), (-3.0, 3.0), "position of the base"),
+        Coordinate(phi, ANGLE, (-3.0, 3.0), (-3.0, 3.0), "arm angle from the upward vertical"),
+    )
     extra_coordinates = (
         Coordinate(u, LENGTH, (-0.05, 0.05), (-0.2, 0.2), "slip of the pivot along the base"),
     )
