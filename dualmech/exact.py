@@ -1,59 +1,127 @@
-"""Exact evaluation of expressions at random rational points.
+"""Deciding identities fast and soundly: exact evaluation at random rational points.
 
-The equivalence test of DESIGN.md: evaluate both sides at random *rational* points in exact
-arithmetic, with ``sin`` and ``cos`` of each angle taken at a rational point of the unit circle
-``(c, s) = ((1 - u^2)/(1 + u^2), 2u/(1 + u^2))``.
+The equivalence test of DESIGN.md.  :meth:`ExactForm.build` compiles a list of expressions;
+:meth:`~ExactForm.sample` draws a random point, :meth:`~ExactForm.evaluate` gives the values.
+A caller decides an identity by evaluating at a few points (and doing exact linear algebra on the
+values, :mod:`dualmech.verify.linalg`); :func:`is_zero` is the zero test.  Three methods:
 
-Why that is sound.  After ``expand_trig``, every trigonometric argument is a monomial ``a``
-(``theta``, ``omega*t``...).  Distinct monomials are linearly independent over Q, so by Ax's
-theorem the functions ``a`` and ``exp(i a)`` satisfy no algebraic relation other than
-``sin^2 + cos^2 = 1``: an identity in the original functions holds exactly when it holds in the
-polynomial ring where each pair ``(sin a, cos a)`` is a point of the unit circle, independent of
-every other variable (including ``a`` itself where it appears outside a trig function).  The
-circle is parametrised rationally by ``u``, so a nonzero rational function of degree ``D``
-vanishes at a random point drawn from a set of size ``N`` with probability at most ``D/N``
-(Schwartz--Zippel).  A nonzero value is a certain counter-example.
+``"exact"`` (:data:`METHOD_NAMES`).  The expressions are rewritten as rational functions of
+*world variables* (:mod:`dualmech.verify.world`): the symbols, ``pi``, for each *circle atom*
+``a`` (a monomial in the symbols over an integer: ``theta``, ``omega*t``, ``theta/2``) the point
+``exp(i a)`` of the unit circle, for each *growth atom* ``b`` the value ``exp(b)``.  Why that is
+sound: distinct monomials are linearly independent, so no nonzero integer combination of the
+atoms is constant, and by Ax's theorem (the functional Schanuel statement; for exponentials of
+rational functions already the Kolchin--Ostrowski/Rosenlicht structure theorem) the functions
+``exp(i a_j)``, ``exp(b_k)`` are algebraically independent over the rational functions of the
+symbols.  ``pi`` is transcendental, so a polynomial in it vanishes only when every coefficient
+does; constants inside ``sin``/``exp`` (``sin(1)``, ``E``) are atoms too, by Lindemann--Weierstrass,
+but not beside ``pi`` (whether ``pi`` and ``e`` are independent is unknown: interval fallback).
+Hence an identity holds exactly when it holds in the ring where every world variable is an
+independent indeterminate: each symbol and ``pi`` is sampled as a random integer, each circle
+atom as a rational point ``((1 - u^2), 2u)/(1 + u^2)`` at a random integer ``u``, each growth atom
+as a random positive integer; ``sin``/``cos`` of ``k_1 a_1 + ...`` are exact powers of Gaussian
+rationals (:mod:`dualmech.verify.circle`), so ``sin(1000 t)`` costs ten squarings.  Float
+constants are taken at their exact binary value.  A nonzero rational function of total degree
+``D`` in the sampled integers vanishes at a random point (each integer uniform over
+``2**SAMPLE_BITS`` values) with probability at most ``D / 2**SAMPLE_BITS`` (Schwartz--Zippel), so
+``k`` zero points leave a chance of a false "equal" at most ``(D / 2**SAMPLE_BITS)**k``
+(:meth:`~ExactForm.false_equal_bound`); a nonzero value is a certain counter-example.
 
-Expressions that leave this world (square roots, exponentials, floats, ``sin(theta/2)`` beside
-``sin(theta)``) are evaluated in high-precision floating point (mpmath) instead, and the result
-says so.
+*Square roots* ``sqrt(X)`` of rational world expressions stay exact: at the point, ``d = X(point)``
+and ``sqrt(d)`` is a formal root with ``r**2 = d`` (:mod:`dualmech.verify.surd`).  When the
+radicands are multiplicatively independent modulo squares (checked at the point; a persistent
+dependency sends the form to the interval method), ``Q(x)(sqrt X_1, ...)`` has degree ``2**m``
+over the rational functions and the evaluation is a field homomorphism: a nonzero value is a
+certain counter-example, and a zero value makes the *norm* (a rational function of degree at
+most ``2**m`` times the weighted degree) vanish, which the bound covers.  A radicand that is a
+perfect square (``1 - sin^2``) is factored: ``sqrt(c Y^2 S) = |Y| sqrt(c S)``.
+
+*Branch functions* (``Abs``, ``sign``, ``Heaviside``, ``Max``, ``Min``, ``Piecewise``, and the
+``|Y|`` above) with rational conditions are split into *cases*
+(:mod:`dualmech.verify.branches`): on each region of fixed condition signs the expression is one
+rational piece, and two expressions agree almost everywhere exactly when their pieces agree
+on every region with interior points in the *domain* -- each symbol's natural domain (from its
+assumptions; ``t`` any real) or a domain a problem declares (``domains``).  Regions are
+witnessed by real points in interval arithmetic or proved empty by interval bisection; each
+remaining case is tested exactly.  Points cycle through the cases (:attr:`ExactForm.cases`).  A
+difference in a witnessed case is certain; one in a case neither witnessed nor excluded is not
+(:meth:`ExactForm.certain` says so; the caller must then refuse, not report a difference).
+
+``"interval"``.  What leaves the exact world (inverse trigonometric functions, logarithms,
+other roots, symbolic exponents, ``pi`` beside ``E``...) is evaluated at random *real* points over
+each symbol's whole domain (never the working ranges) in rigorous interval arithmetic at
+``MP_DIGITS`` digits (:mod:`dualmech.verify.interval`).  A value whose interval excludes 0 is a
+certain difference; "equal" means every interval contained 0 -- evidence, not a proof.
+
+``"mpmath"`` (``force_mp=True``): plain high-precision floats inside the given working ranges,
+for display (values at a physical state); never for a verdict.
+
+What none of these can decide (undefined functions, complex values, integer symbols inside
+transcendental functions, contradictory assumptions) raises :class:`Undecidable`, which names
+the sub-expression and why.
 
 Example
 -------
->>> import sympy as sp
+>>> import random, sympy as sp
 >>> th, w = sp.symbols("theta omega")
 >>> ev = ExactForm.build([sp.sin(2*th) - 2*sp.sin(th)*sp.cos(th), sp.cos(th)**2 + w], [th, w])
 >>> ev.method
 'exact'
->>> import random
 >>> vals = ev.evaluate(ev.sample(random.Random(1)))
 >>> vals[0] == 0, vals[1] == 0
 (True, False)
+>>> ev = ExactForm.build([sp.Abs(sp.cos(th)) - sp.cos(th)], [th])
+>>> len(ev.cases), any(ev.evaluate(ev.sample(random.Random(1)))[0] != 0 for _ in range(2))
+(2, True)
 """
 from __future__ import annotations
 
 import random
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Callable, Sequence
 
 import mpmath
 import sympy as sp
-from ._expr import as_expr
 from sympy.printing.pycode import PythonCodePrinter
 
-__all__ = ["ExactForm", "NotRational", "SAMPLE_BITS", "MP_DIGITS"]
+from ._expr import as_expr
+from .verify import interval as _iv
+from .verify.branches import Case, find_cases
+from .verify.circle import world_values
+from .verify.surd import Surd, independent
+from .verify.world import (AtomKey, NotExact, Undecidable, World, analyse, degree_bound)
+
+__all__ = ["ExactForm", "Undecidable", "NotRational", "METHOD_NAMES", "CASE", "SAMPLE_BITS",
+           "MP_DIGITS", "is_zero"]
 
 #: Integers for each variable are drawn uniformly from a set of 2**SAMPLE_BITS values.
 SAMPLE_BITS = 62
-#: Working precision (decimal digits) of the high-precision fallback.
-MP_DIGITS = 60
+#: Working precision (decimal digits) of the interval and high-precision methods.
+MP_DIGITS = _iv.DIGITS
 
-_TRIG = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc)
+#: What each ``ExactForm.method`` means, for reports.
+METHOD_NAMES = {
+    "exact": "exact rational-point test",
+    "interval": "rigorous interval arithmetic at real points over the whole domain "
+                "(evidence, not proof)",
+    "mpmath": "high-precision floats in the working ranges (display only)",
+}
+
+NotRational = NotExact  # former name
 
 
-class NotRational(Exception):
-    """The expression cannot be evaluated exactly at rational points."""
+class _CaseKey:
+    """Key of the branch case in a sampled point (no symbols: shared like a parameter)."""
+
+    free_symbols: frozenset = frozenset()
+
+    def __repr__(self) -> str:
+        return "CASE"
+
+
+#: Key under which a sampled point records its branch case (an index into ``form.cases``).
+CASE = _CaseKey()
 
 
 class _FractionPrinter(PythonCodePrinter):
@@ -75,198 +143,383 @@ class _FractionPrinter(PythonCodePrinter):
             if exp < 0:
                 return f"(Fraction(1) / ({b})**{-int(exp)})"
             return f"({b})**{int(exp)}"
-        raise NotRational(f"non-integer power {expr}")
+        raise NotExact(expr, "non-integer power")
 
     def _print_Float(self, expr):
-        raise NotRational(f"floating-point constant {expr}")
+        raise NotExact(expr, "floating-point constant")
 
 
-def _monomial(arg: sp.Expr) -> bool:
-    """A product of symbols with positive integer powers (coefficient 1)."""
-    for f in sp.Mul.make_args(arg):
-        base, e = f.as_base_exp()
-        if not (base.is_Symbol and e.is_Integer and e > 0):
-            return False
-    return True
-
-
-def _trig_atoms(expr: sp.Expr) -> tuple[sp.Expr, dict]:
-    """Expand trig functions until every argument is a monomial; map each to (s, c) symbols."""
-    # tan etc. -> sin/cos; then expand multiple and compound angles
-    expr = expr.rewrite(sp.cos, sp.sin) if expr.has(sp.sec, sp.csc, sp.cot) else expr
-    expr = expr.replace(lambda e: isinstance(e, sp.tan), lambda e: sp.sin(e.args[0]) / sp.cos(e.args[0]))
-    expr = expr.replace(lambda e: isinstance(e, (sp.sin, sp.cos)) and not _monomial(sp.expand(e.args[0])),
-                        lambda e: _expand_one(e))
-    atoms: dict = {}
-    for f in expr.atoms(sp.sin, sp.cos):
-        a = f.args[0]
-        if not _monomial(a):
-            raise NotRational(f"trigonometric argument {a} is not an integer combination of "
-                              "monomials")
-        if a not in atoms:
-            name = str(a).replace("*", "_")
-            atoms[a] = (sp.Dummy(f"s_{name}"), sp.Dummy(f"c_{name}"))
-    rules = {}
-    for a, (s, c) in atoms.items():
-        rules[sp.sin(a)] = s
-        rules[sp.cos(a)] = c
-    return expr.xreplace(rules), atoms
-
-
-def _expand_one(e):
-    arg = sp.expand(e.args[0])
-    terms = sp.Add.make_args(arg)
-    for term in terms:
-        coeff, mono = term.as_coeff_Mul()
-        if not (coeff.is_Integer and _monomial(mono)):
-            raise NotRational(f"trigonometric argument {e.args[0]} has a non-integer multiple "
-                              f"{term}")
-    return sp.expand_trig(type(e)(arg))
-
-
-def _degree(expr, weights: dict, memo: dict | None = None) -> tuple[int, int]:
-    """Bound on (numerator degree, denominator degree) of ``expr`` as a rational function.
-
-    Works on the tree as it stands (no ``together``, which is slow on large input); shared
-    subtrees are bounded once.
-    """
-    memo = {} if memo is None else memo
-    hit = memo.get(expr)
-    if hit is not None:
-        return hit
-    if expr.is_Number:
-        out = (0, 0)
-    elif expr.is_Symbol:
-        out = weights.get(expr, (1, 0))
-    elif expr.is_Add:
-        parts = [_degree(a, weights, memo) for a in expr.args]
-        den = sum(d for _, d in parts)
-        out = (max(n + den - d for n, d in parts), den)
-    elif expr.is_Mul:
-        parts = [_degree(a, weights, memo) for a in expr.args]
-        out = (sum(n for n, _ in parts), sum(d for _, d in parts))
-    elif expr.is_Pow:
-        n, d = _degree(expr.base, weights, memo)
-        e = int(expr.exp)
-        out = (n * e, d * e) if e >= 0 else (d * -e, n * -e)
-    else:
-        raise NotRational(f"cannot bound the degree of {expr}")
-    memo[expr] = out
-    return out
+def _compile(args, exprs):
+    printer = _FractionPrinter({"fully_qualified_modules": False, "inline": True})
+    return sp.lambdify(args, exprs, modules=[{"Fraction": Fraction}], printer=printer,
+                       cse=True, dummify=True)
 
 
 @dataclass
 class ExactForm:
-    """A list of expressions compiled for exact (or high-precision) evaluation.
+    """A list of expressions compiled for deciding identities (see the module docstring).
 
-    Use :meth:`build`; then :meth:`sample` draws a point and :meth:`evaluate` gives the values.
-    ``method`` is ``"exact"`` or ``"mpmath"``; ``degree`` bounds the total degree of every
-    expression as a rational function of the sampled integers (exact method only).
+    Attributes: ``method`` (a key of :data:`METHOD_NAMES`), ``degree`` (total-degree bound of
+    every expression in the sampled integers, exact method), ``cases`` (branch cases the points
+    cycle through; one when there are no branches), ``notes`` (what was unified or why the
+    exact method did not apply).
     """
 
     symbols: tuple
     method: str
-    degree: int
-    _fn: Callable
-    _sampled: tuple  # what the sampler draws: symbols and the u of each trig atom
-    _trig: dict      # atom -> (s, c)
+    degree: int = 0
+    cases: list = field(default_factory=lambda: [Case((), (), "witnessed")])
+    notes: list = field(default_factory=list)
+    _read: dict = field(default_factory=dict, repr=False)      # canonical -> keys to read
+    _world: World | None = field(default=None, repr=False)
+    _fn: Callable | None = field(default=None, repr=False)
+    _radicands: Callable | None = field(default=None, repr=False)
+    _choices: list = field(default_factory=list, repr=False)
+    _program: object = field(default=None, repr=False)
+    _domains: dict = field(default_factory=dict, repr=False)
+    _counter: int = field(default=0, repr=False)
 
+    # -- building ----------------------------------------------------------------------------
     @classmethod
-    def build(cls, exprs: Sequence, symbols: Sequence, force_mp: bool = False) -> "ExactForm":
+    def build(cls, exprs: Sequence, symbols: Sequence, force_mp: bool = False,
+              domains: dict | None = None) -> "ExactForm":
+        """Compile ``exprs`` in ``symbols``; ``domains`` maps symbols to a declared ``(lo, hi)``.
+
+        Raises ``ValueError`` for undeclared symbols and :class:`Undecidable` for what cannot
+        be decided soundly.
+        """
         exprs = [as_expr(e) for e in exprs]
         symbols = tuple(symbols)
-        free = set().union(*(e.free_symbols for e in exprs)) if exprs else set()
-        extra = free - set(symbols)
-        if extra:
-            raise ValueError(f"expressions use undeclared symbols {sorted(map(str, extra))}.")
-        if not force_mp:
-            try:
-                return cls._build_exact(exprs, symbols)
-            except NotRational:
-                pass
-        return cls._build_mp(exprs, symbols)
+        exprs, canon, read, notes = _unify(exprs, symbols)
+        floats = set().union(*(e.atoms(sp.Float) for e in exprs)) if exprs else set()
+        if floats:
+            exact = {f: sp.Rational(f) for f in floats}
+            exprs = [e.xreplace(exact) for e in exprs]
+        doms = {}
+        for s, rng in (domains or {}).items():
+            doms[canon.get(s, s)] = (float(rng[0]), float(rng[1]))
+        base = dict(symbols=symbols, _read=read, notes=notes, _domains=doms)
+        if force_mp:
+            return cls._build_mp(exprs, base)
+        try:
+            return cls._build_exact(exprs, base)
+        except NotExact as exc:
+            why = f"exact test not applicable: `{exc.expr}`: {exc.why}"
+        try:
+            program = _iv.IntervalProgram(exprs)
+        except _iv.Unsupported as exc:
+            raise Undecidable(exc.expr, exc.why) from None
+        return cls(method="interval", _program=program, **{**base, "notes": notes + [why]})
 
     @classmethod
-    def _build_exact(cls, exprs, symbols):
-        rewritten, atoms = [], {}
-        for e in exprs:
-            r, a = _trig_atoms(e)
-            for k, v in a.items():
-                if k in atoms:
-                    r = r.xreplace({v[0]: atoms[k][0], v[1]: atoms[k][1]})
-                else:
-                    atoms[k] = v
-            rewritten.append(r)
-        for e in rewritten:
-            bad = [f for f in e.atoms(sp.Function)]
-            if bad:
-                raise NotRational(f"function {bad[0]} is not rational")
-        weights = {}
-        for s, c in atoms.values():
-            weights[s] = (1, 2)
-            weights[c] = (2, 2)
-        memo: dict = {}
-        degree = max((sum(_degree(e, weights, memo)) for e in rewritten), default=0)
-        trig_syms = [x for pair in atoms.values() for x in pair]
-        args = list(symbols) + trig_syms
-        printer = _FractionPrinter({"fully_qualified_modules": False, "inline": True})
-        fn = sp.lambdify(args, rewritten, modules=[{"Fraction": Fraction}], printer=printer,
-                         cse=True)
-        sampled = tuple(symbols) + tuple(atoms)
-        return cls(symbols, "exact", max(degree, 1), fn, sampled, dict(atoms))
+    def _build_exact(cls, exprs, base) -> "ExactForm":
+        world = analyse(exprs, list(base["_read"]))
+        cases = find_cases(world, base["_domains"])
+        args = _world_args(world)
+        fn = _compile(args, world.exprs)
+        radicands = _compile(args, [r for _, r in world.radicals]) if world.radicals else None
+        choices = [[_compile(args, c) for c in b.choices] for b in world.branches]
+        form = cls(method="exact", cases=cases, _world=world, _fn=fn, _radicands=radicands,
+                   _choices=choices, **base)
+        form.degree = _degree(world)
+        if world.radicals:
+            form._check_radicals()
+        return form
 
     @classmethod
-    def _build_mp(cls, exprs, symbols):
-        fn = sp.lambdify(symbols, exprs, modules="mpmath", cse=True)
-        return cls(symbols, "mpmath", 0, fn, tuple(symbols), {})
+    def _build_mp(cls, exprs, base) -> "ExactForm":
+        syms = list(base["_read"])
+        try:
+            fn = sp.lambdify(syms, exprs, modules="mpmath", cse=True, dummify=True)
+        except (SyntaxError, NameError) as exc:  # pragma: no cover - lambdify's own limits
+            raise Undecidable(exprs, f"cannot compile for mpmath: {exc}") from None
+        return cls(method="mpmath", _fn=fn, **base)
 
-    # -- points ------------------------------------------------------------------------
+    def _check_radicals(self) -> None:
+        """Radicands that are dependent at two random points are dependent identically."""
+        rng = random.Random(7)
+        for _ in range(2):
+            point = self._sample_exact(rng)
+            self._counter = 0
+            d = [x for x in self._radicand_list(self._args(point, radicals=False)) if x != 0]
+            if independent([x for x in d if not _square(x)]):
+                return
+        raise NotExact(self._world.radicals[0][1], "square roots whose product is a perfect "
+                                                  "square (write them with one root)")
+
+    # -- points ------------------------------------------------------------------------------
     def sample(self, rng: random.Random, floats: dict | None = None) -> dict:
-        """A random point: ``{symbol: value}`` (plus ``{atom: u}`` for each trig atom).
+        """A random point: ``{symbol: value}``, plus ``{AtomKey: u or w}``, ``pi`` and
+        :data:`CASE` for the exact method.
 
-        Exact method: random integers (and a random rational ``u`` for each angle).  mpmath
-        method: ``floats`` gives a real value (or a ``(low, high)`` range) per symbol.
+        Exact: random integers (cases in turn).  Interval: random reals over each symbol's
+        domain (``floats``, the working ranges, are ignored).  mpmath: inside ``floats``.
         """
         if self.method == "exact":
-            half = 1 << (SAMPLE_BITS - 1)
-            return {s: Fraction(rng.randrange(-half, half)) for s in self._sampled}
+            return self._sample_exact(rng)
         point = {}
-        for s in self.symbols:
-            lo, hi = (floats or {}).get(s, (-2.0, 2.0))
-            point[s] = mpmath.mpf(rng.uniform(lo, hi))
+        for c, keys in self._read.items():
+            if self.method == "interval":
+                v = _iv.real_sample(rng, *_iv.domain_of(c, self._domains))
+            else:
+                lo, hi = _range(floats, keys)
+                v = mpmath.mpf(rng.uniform(lo, hi))
+            for k in keys:
+                point[k] = v
+        return point
+
+    def _sample_exact(self, rng) -> dict:
+        half = 1 << (SAMPLE_BITS - 1)
+        point: dict = {}
+        for keys in self._read.values():
+            v = Fraction(rng.randrange(-half, half))
+            for k in keys:
+                point[k] = v
+        for a in self._world.atoms:
+            point[a] = Fraction(rng.randrange(-half, half)) if a.kind == "circle" \
+                else Fraction(rng.randrange(1, 2 * half + 1))
+        if self._world.pi is not None:
+            point[sp.pi] = Fraction(rng.randrange(-half, half))
+        point[CASE] = self._counter % len(self.cases)
+        self._counter += 1
         return point
 
     def evaluate(self, point: dict) -> list:
-        """Values of the expressions at ``point`` (Fractions, or mpf for the fallback)."""
-        if self.method == "exact":
-            args = [point[s] for s in self.symbols]
-            for atom in self._trig:
-                u = point[atom]
-                d = 1 + u * u
-                args.append(2 * u / d)
-                args.append((1 - u * u) / d)
-            return list(self._fn(*args))
-        with mpmath.workdps(MP_DIGITS):
-            return list(self._fn(*[point[s] for s in self.symbols]))
+        """Values at ``point``: Fractions (or exact :class:`~dualmech.verify.surd.Surd` numbers
+        with square roots), intervals (``mpmath.iv``), or mpf for the display method.
 
-    def false_equal_bound(self, points: int, extra_degree: int = 0) -> float:
-        """Upper bound on the chance that a nonzero result vanished at ``points`` random points."""
+        Raises ``ZeroDivisionError`` or ``ValueError`` where the point is singular, outside a
+        domain or undecided (the caller skips it).
+        """
+        if self.method == "interval":
+            return self._program.evaluate({c: point[keys[0]] for c, keys in self._read.items()})
+        if self.method == "mpmath":
+            with mpmath.workdps(MP_DIGITS):
+                return list(self._fn(*[point[keys[0]] for keys in self._read.values()]))
+        args = self._args(point)
+        return list(self._fn(*args))
+
+    def _args(self, point, radicals: bool = True) -> list:
+        """Arguments of the compiled functions: symbols, world values, roots, branch pieces."""
+        w = self._world
+        args = [point[keys[0]] for keys in self._read.values()]
+        us = {i: point[a] for i, a in enumerate(w.atoms)}
+        for vals in world_values(w.args, us):
+            args.extend(vals)
+        args.extend(us[i] for i in range(len(w.atoms)))
+        if w.pi is not None:
+            args.append(point[sp.pi])
+        if not radicals:
+            return args
+        if w.radicals:
+            args.extend(self._roots(args))
+        if w.branches:
+            case = self.cases[point.get(CASE, 0)]
+            base = len(args)
+            args.extend([0] * len(w.branches))
+            for i, (fns, c) in enumerate(zip(self._choices, case.choices)):
+                args[base + i] = fns[c](*args)
+        return args
+
+    def _radicand_list(self, args) -> list:
+        pad = args + [0] * (len(self._world.radicals) + len(self._world.branches))
+        vals = list(self._radicands(*pad))
+        for v in vals:
+            if not isinstance(v, (int, Fraction)):
+                raise ValueError("a radicand is not rational at this point")
+        return vals
+
+    def _roots(self, args) -> list:
+        ds = self._radicand_list(args)
+        irr = [d for d in ds if d != 0 and not _square(d)]
+        if not independent(irr):
+            raise ValueError("square roots dependent at this point")
+        return [Surd.root(d) for d in ds]
+
+    # -- what a verdict means ----------------------------------------------------------------
+    def certain(self, point: dict) -> bool:
+        """Does a nonzero result at ``point`` prove a difference?  False in an ``unknown``
+        branch case (and for the display method): the caller must refuse, not report."""
+        if self.method == "mpmath":
+            return False
+        if self.method == "interval":
+            return True
+        return self.cases[point.get(CASE, 0)].status == "witnessed"
+
+    def where(self, point: dict) -> str:
+        """The branch case of ``point`` in words ("" without branches)."""
+        if self.method != "exact":
+            return ""
+        return self.cases[point.get(CASE, 0)].where
+
+    def points_needed(self, per_case: int) -> int:
+        """Points to draw so that every branch case gets ``per_case`` of them."""
+        return per_case * len(self.cases)
+
+    def false_equal_bound(self, points, extra_degree: int = 0) -> float:
+        """Bound on the chance that a nonzero result vanished at every point (exact method).
+
+        ``points`` is a count (points drawn in turn from :meth:`sample`, none skipped) or the
+        list of points that were used, which counts each case exactly.  NaN for the other
+        methods (no probability claim); 1.0 when some case got no point.
+        """
         if self.method != "exact":
             return float("nan")
-        p = min(1.0, (self.degree + extra_degree) / 2.0**SAMPLE_BITS)
-        return p**points
+        n = len(self.cases)
+        if isinstance(points, int):
+            counts = [points // n] * n      # sample() cycles through the cases
+        else:
+            counts = [0] * n
+            for p in points:
+                counts[p.get(CASE, 0)] += 1
+        p1 = min(1.0, (self.degree + extra_degree) / 2.0**SAMPLE_BITS)
+        return max(p1 ** c for c in counts)
+
+    def describe(self, points, extra_degree: int = 0) -> str:
+        """How an "equal" from ``points`` zero points was reached and how sure it is."""
+        k = points if isinstance(points, int) else len(points)
+        if self.method == "exact":
+            text = (f"{METHOD_NAMES['exact']}: exactly 0 at {k} random points; "
+                    f"P(false equal) <= {self.false_equal_bound(points, extra_degree):.1e} "
+                    f"(Schwartz-Zippel, degree <= {self.degree + extra_degree})")
+            if len(self.cases) > 1:
+                unknown = [c.where for c in self.cases if c.status != "witnessed"]
+                text += f"; in each of {len(self.cases)} branch cases"
+                if unknown:
+                    text += " (some not seen in the domain: " + "; ".join(unknown) + ")"
+            if self._world.radicals:
+                text += "; square roots as exact algebraic numbers"
+            return text
+        if self.method == "interval":
+            return (f"{METHOD_NAMES['interval']}: every interval contained 0 at {k} random real "
+                    f"points ({MP_DIGITS} digits); evidence, not a proof")
+        return METHOD_NAMES["mpmath"]
 
 
 def is_zero(value, scale=1) -> bool:
-    """Exact zero test, or the mpmath tolerance ``10**(-MP_DIGITS/2)`` relative to ``scale``."""
+    """The zero test on an evaluated value.
+
+    Exact numbers: ``== 0``.  Intervals: the interval contains 0 (a ``False`` is certain).
+    mpf (display method): ``|value| <= 10**(-MP_DIGITS/2) * |scale|`` -- relative, no floor.
+    """
     if isinstance(value, (Fraction, int)):
         return value == 0
+    if isinstance(value, Surd):
+        return value.is_zero()
+    if isinstance(value, _iv.iv.mpf):
+        return value.a <= 0 <= value.b
     if isinstance(value, float):
         raise TypeError("a float reached an exact zero test; exact arithmetic was lost "
                         "(int / int?)")
     with mpmath.workdps(MP_DIGITS):
-        return abs(value) <= mpmath.mpf(10) ** (-(MP_DIGITS // 2)) * (1 + abs(scale))
+        return abs(value) <= mpmath.mpf(10) ** (-(MP_DIGITS // 2)) * abs(scale)
 
 
 def as_float(value) -> float:
+    if isinstance(value, _iv.iv.mpf):
+        return float(value.mid)
     return float(value)
+
+
+# ---------------------------------------------------------------------------------------------
+def _square(d) -> bool:
+    from .verify.surd import is_square
+    return is_square(d)
+
+
+def _range(floats, keys) -> tuple:
+    for k in keys:
+        if floats and k in floats:
+            return floats[k]
+    return (-2.0, 2.0)
+
+
+def _world_args(world: World) -> list:
+    args = list(world.symbols)
+    for _, _, dummies in world.args:
+        args.extend(dummies)
+    args.extend(world.u_dummies[i] for i in range(len(world.atoms)))
+    if world.pi is not None:
+        args.append(world.pi)
+    args.extend(d for d, _ in world.radicals)
+    args.extend(b.dummy for b in world.branches)
+    return args
+
+
+def _degree(world: World) -> int:
+    """Total-degree bound over every case, times ``2**m`` for ``m`` square roots (the norm)."""
+    weights: dict = {}
+    for kind, terms, dummies in world.args:
+        K = sum(abs(k) for _, k in terms)
+        if kind == "circle":
+            weights[dummies[0]] = (1, 2) if K == 1 else (2 * K, 2 * K)
+            weights[dummies[1]] = (2, 2) if K == 1 else (2 * K, 2 * K)
+        else:
+            weights[dummies[0]] = (sum(k for _, k in terms if k > 0),
+                                   sum(-k for _, k in terms if k < 0))
+    memo: dict = {}
+    for d, radicand in world.radicals:
+        n, m = degree_bound(radicand, weights, memo)
+        weights[d] = ((n + m + 1) // 2, 0)
+    for b in world.branches:
+        parts = [degree_bound(c, weights, memo) for c in b.choices]
+        weights[b.dummy] = (max(p[0] for p in parts), max(p[1] for p in parts))
+    total = max((sum(degree_bound(e, weights, memo)) for e in world.exprs), default=0)
+    return max(total, 1) * 2 ** len(world.radicals)
+
+
+def _unify(exprs, symbols):
+    """Symbols that share a name become one (the one with the narrowest assumptions)."""
+    free = set().union(*(e.free_symbols for e in exprs)) if exprs else set()
+    groups: dict = {}
+    for s in list(symbols) + sorted(free - set(symbols), key=str):
+        key = s.name if type(s) is sp.Symbol else s
+        group = groups.setdefault(key, [])
+        if s not in group:
+            group.append(s)
+    alias, read, notes = {}, {}, []
+    declared = set(symbols)
+    for key, group in groups.items():
+        canon = _narrowest(group) if len(group) > 1 else group[0]
+        if len(group) > 1:
+            notes.append(f"symbols named {key!r} with different assumptions were unified as "
+                         f"{_assumption_text(canon)}")
+            for s in group:
+                if s != canon:
+                    alias[s] = canon
+        keys = [s for s in group if s in declared]
+        if not keys:
+            continue
+        read[canon] = keys
+    extra = [s for s in free if alias.get(s, s) not in read]
+    if extra:
+        raise ValueError(f"expressions use undeclared symbols {sorted(map(str, extra))}.")
+    if alias:
+        exprs = [e.xreplace(alias) for e in exprs]
+    return exprs, alias, read, notes
+
+
+def _interval_of(s) -> tuple:
+    lo, hi = _iv.domain_of(s)
+    return lo, hi, bool(s.is_integer)
+
+
+def _narrowest(group):
+    doms = {s: _interval_of(s) for s in group}
+    lo = max(d[0] for d in doms.values())
+    hi = min(d[1] for d in doms.values())
+    if lo >= hi:
+        raise Undecidable(group[0], "symbols with this name carry contradictory assumptions "
+                                    f"({', '.join(_assumption_text(s) for s in group)}); "
+                                    "use one symbol")
+    for s, d in doms.items():
+        if d[0] == lo and d[1] == hi and (d[2] or not any(x[2] for x in doms.values())):
+            return s
+    raise Undecidable(group[0], "symbols with this name carry assumptions that no one of them "
+                                "summarises; use one symbol")
+
+
+def _assumption_text(s) -> str:
+    flags = [k for k in ("positive", "negative", "nonnegative", "nonpositive", "integer", "real")
+             if getattr(s, f"is_{k}")]
+    return f"{s} ({', '.join(flags) or 'no assumptions'})"

@@ -48,13 +48,28 @@ def test_angle_and_its_sine_are_independent_variables():
     assert vals[0] != 0
 
 
-@pytest.mark.parametrize("expr", [sp.sqrt(a), sp.exp(a), sp.Float(0.5) * a,
-                                  sp.sin(th / 2) + sp.sin(th)],
-                         ids=["sqrt", "exp", "float", "half-angle"])
-def test_irrational_expressions_fall_back_to_mpmath(expr):
+@pytest.mark.parametrize("identity", [
+    sp.sqrt(a) ** 2 - a,
+    sp.exp(a) * sp.exp(-a) - 1,
+    sp.exp(2 * a) - sp.exp(a) ** 2,
+    sp.Float(0.5) * a - a / 2,                          # 0.5 is exactly 1/2 in binary
+    sp.sin(th / 2) ** 2 - (1 - sp.cos(th)) / 2,         # half angle: the atom is theta/2
+    sp.cosh(a) ** 2 - sp.sinh(a) ** 2 - 1,
+], ids=["sqrt", "exp", "exp-double", "float", "half-angle", "hyperbolic"])
+def test_roots_exponentials_and_floats_stay_exact(identity):
+    form, vals = _values([identity], [a, th])
+    assert form.method == "exact"
+    assert vals == [0]
+    assert form.false_equal_bound(5) < 1e-60
+
+
+@pytest.mark.parametrize("expr", [sp.atan(a), sp.log(1 + a**2), a ** sp.Rational(1, 3)],
+                         ids=["atan", "log", "cube-root"])
+def test_what_leaves_the_exact_world_falls_back_to_intervals(expr):
     form = ExactForm.build([expr], [a, th])
-    assert form.method == "mpmath"
+    assert form.method == "interval"
     assert form.false_equal_bound(5) != form.false_equal_bound(5)  # nan: no probability claim
+    assert "exact test not applicable" in form.notes[-1]
 
 
 def test_undeclared_symbol_is_a_clear_error():

@@ -57,14 +57,23 @@ class Case:
 
     choices: tuple
     signs: tuple
-    status: str   # "witnessed" or "unknown"
-    where: str    # the conditions' signs, readable
+    status: str          # "witnessed" or "unknown"
+    labels: tuple = ()   # where each chosen piece applies (written out on demand)
+
+    @property
+    def where(self) -> str:
+        """The case in words: the conditions under which its pieces apply."""
+        out: list = []
+        for label in map(str, self.labels):
+            if label not in out:
+                out.append(label)
+        return " and ".join(out)
 
 
 def find_cases(world: World, domains: dict, seed: int = 0) -> list[Case]:
     """The cases of ``world``'s branches that can occur in the domain, witnessed ones first."""
     if not world.branches:
-        return [Case((), (), "witnessed", "")]
+        return [Case((), (), "witnessed")]
     conds = world.conds
     if len(conds) > MAX_CONDITIONS:
         raise NotExact(world.branches[0].node,
@@ -77,35 +86,40 @@ def find_cases(world: World, domains: dict, seed: int = 0) -> list[Case]:
             groups.setdefault(choices, []).append(signs)
     if len(groups) > MAX_CASES:
         raise NotExact(world.branches[0].node, f"{len(groups)} combinations of branch pieces")
+    space = _world_space(world, domains)
+    if space is not None:
+        exprs, boxes = space
+        natural = boxes
+    else:
+        exprs = [c.real for c in conds]
+        syms = sorted(set().union(*(e.free_symbols for e in exprs)), key=str)
+        periods = periods_of(exprs, syms)
+        boxes = {s: _box(s, domains, periods) for s in syms}
+        natural = {s: domain_of(s, domains) for s in syms}
     try:
-        prog = IntervalProgram([c.real for c in conds])
+        prog = IntervalProgram(exprs)
     except Unsupported as exc:
         raise NotExact(exc.expr, f"a branch condition has no interval evaluation: {exc.why}")
-    syms = sorted(set().union(*(c.real.free_symbols for c in conds)), key=str)
-    periods = periods_of([c.real for c in conds], syms)
-    boxes = {s: _box(s, domains, periods) for s in syms}
+    syms = list(boxes)
     wanted = {s for sigmas in groups.values() for s in sigmas}
-    seen = _random_witnesses(prog, syms, boxes, domains, wanted, random.Random(seed))
+    seen = _random_witnesses(prog, syms, boxes, natural, wanted, random.Random(seed))
     open_boxes: list = []
     if wanted - seen:
         seen |= _bisect(prog, boxes, wanted - seen, open_boxes)
     out = []
     for choices, sigmas in groups.items():
         hit = [s for s in sigmas if s in seen]
+        where = tuple(b.labels[c] for b, c in zip(world.branches, choices))
         if hit:
-            out.append(Case(choices, hit[0], "witnessed", _where(conds, hit[0])))
+            out.append(Case(choices, hit[0], "witnessed", where))
             continue
         possible = [s for s in sigmas if any(_consistent(s, p) for p in open_boxes)]
         if possible:
-            out.append(Case(choices, possible[0], "unknown", _where(conds, possible[0])))
+            out.append(Case(choices, possible[0], "unknown", where))
     out.sort(key=lambda c: c.status != "witnessed")
     if not out:
         raise NotExact(world.branches[0].node, "no branch case occurs in the declared domain")
     return out
-
-
-def _where(conds, signs) -> str:
-    return " and ".join(f"{c.real} {'>' if s > 0 else '<'} 0" for c, s in zip(conds, signs))
 
 
 def _box(sym, domains, periods) -> tuple[float, float]:
@@ -134,12 +148,12 @@ def _certain(vals) -> tuple | None:
     return tuple(out)
 
 
-def _random_witnesses(prog, syms, boxes, domains, wanted, rng) -> set:
+def _random_witnesses(prog, syms, boxes, natural, wanted, rng) -> set:
     seen: set = set()
     for _ in range(_RANDOM_POINTS):
         point = {}
         for s in syms:
-            lo, hi = boxes[s] if rng.random() < 0.5 else domain_of(s, domains)
+            lo, hi = boxes[s] if rng.random() < 0.5 else natural[s]
             point[s] = real_sample(rng, lo, hi)
         try:
             signs = _certain(prog.evaluate(point))
@@ -213,6 +227,57 @@ def _split(box):
     a, b = dict(box), dict(box)
     a[best], b[best] = (lo, mid), (mid, hi)
     return [a, b]
+
+
+def _world_space(world: World, domains: dict):
+    """The conditions in the world's own variables, with each variable's box, when those
+    variables are independent images of the domain (each symbol feeds one of them: bare, or
+    one atom ``symbol/L``); else ``None`` (the conditions are then read in the symbols).
+
+    A circle atom's ``u = tan(a/2)`` covers all reals for a full turn of its symbol, else the
+    image of the declared interval (no pole inside); a growth atom's ``w = exp(b)`` the image of
+    the symbol's interval.  Polynomial conditions in these variables bisect well.
+    """
+    conds = world.conds
+    if any(c.u_form is None for c in conds):
+        return None
+    atom_of = {d: i for i, d in world.u_dummies.items()}
+    back = {world.pi: sp.pi} if world.pi is not None else {}
+    exprs = [c.u_form.xreplace(back) for c in conds]
+    boxes, sources = {}, set()
+    for v in sorted(set().union(*(e.free_symbols for e in exprs)), key=str):
+        i = atom_of.get(v)
+        if i is None:
+            sym, box = v, domain_of(v, domains)
+        else:
+            kind, mono, L = world.scales[i]
+            if not mono.is_Symbol:
+                return None
+            sym, box = mono, _atom_box(kind, L, domain_of(mono, domains))
+            if box is None:
+                return None
+        if sym in sources:
+            return None
+        sources.add(sym)
+        boxes[v] = box
+    return exprs, boxes
+
+
+def _atom_box(kind, L, dom):
+    lo, hi = dom
+    if kind == "growth":
+        return (math.exp(lo / L) if math.isfinite(lo) else 0.0,
+                math.exp(hi / L) if math.isfinite(hi) else math.inf)
+    a, b = lo / (2 * L), hi / (2 * L)
+    if not (math.isfinite(a) and math.isfinite(b)) or b - a >= math.pi:
+        return (-math.inf, math.inf)
+    pole = math.pi / 2 + math.ceil((a - math.pi / 2) / math.pi) * math.pi
+    margin = 1e-12 * max(1.0, abs(pole))
+    if a < pole - margin and pole + margin < b:
+        return None
+    ta = -math.inf if abs(a - pole) <= margin else math.tan(a)
+    tb = math.inf if abs(b - pole) <= margin or abs(b - pole - math.pi) <= margin else math.tan(b)
+    return (ta, tb)
 
 
 def periods_of(exprs, symbols) -> dict:

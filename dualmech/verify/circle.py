@@ -17,24 +17,63 @@ True
 """
 from __future__ import annotations
 
+import numbers
 from fractions import Fraction
 
 __all__ = ["world_values"]
 
 
+class _Lowest:
+    """A rational already in lowest terms; ``Fraction(_Lowest(n, d))`` copies it without a gcd
+    (the documented conversion of a ``numbers.Rational``), which matters for the long numbers
+    of large multiples."""
+
+    __slots__ = ("numerator", "denominator")
+
+    def __init__(self, n: int, d: int):
+        self.numerator, self.denominator = n, d
+
+
+numbers.Rational.register(_Lowest)
+
+
+def _over(n: int, d: int, single: bool) -> Fraction:
+    """``n/d`` for ``d > 0``.  For a single atom at an integer ``u`` only a power of 2 can divide
+    both (an odd prime dividing ``1 + u^2`` splits in Z[i] into a prime dividing ``1 + iu`` and
+    one dividing ``1 - iu``, and only one of them divides the numerator)."""
+    if not single or n == 0:
+        return Fraction(n, d)
+    shift = min((n & -n).bit_length(), (d & -d).bit_length()) - 1
+    return Fraction(_Lowest(n >> shift, d >> shift))
+
+
 def _gmul(a, b):
-    return (a[0] * b[0] - a[1] * b[1], a[0] * b[1] + a[1] * b[0])
+    # three integer products (Karatsuba): the integers get long for large multiples
+    ac, bd = a[0] * b[0], a[1] * b[1]
+    return (ac - bd, (a[0] + a[1]) * (b[0] + b[1]) - ac - bd)
 
 
-def _gpow(g, k: int):
-    out, base = (1, 0), g
-    while k:
-        if k & 1:
-            out = _gmul(out, base)
-        k >>= 1
-        if k:
-            base = _gmul(base, base)
-    return out
+def _gsq(a):
+    return ((a[0] + a[1]) * (a[0] - a[1]), 2 * a[0] * a[1])
+
+
+class _Powers:
+    """``g**k`` for one Gaussian integer, sharing the squarings ``g**(2**j)`` among exponents."""
+
+    def __init__(self, g):
+        self.squares = [g]
+
+    def __call__(self, k: int):
+        out = None
+        j = 0
+        while k:
+            if j == len(self.squares):
+                self.squares.append(_gsq(self.squares[-1]))
+            if k & 1:
+                out = self.squares[j] if out is None else _gmul(out, self.squares[j])
+            k >>= 1
+            j += 1
+        return out if out is not None else (1, 0)
 
 
 def world_values(args, us: dict) -> list[tuple]:
@@ -43,22 +82,24 @@ def world_values(args, us: dict) -> list[tuple]:
     ``args`` are ``(kind, ((atom, multiple), ...), _)``; ``us`` maps an atom to its sampled
     ``u`` (circle) or ``w`` (growth).
     """
-    unit: dict = {}
-    powers: dict = {}
+    unit: dict = {}     # atom -> (powers of g, norm of g)
+    powers: dict = {}   # (atom, k) -> (g**|k| or its conjugate, norm**|k|)
     out = []
     for kind, terms, _ in args:
         if kind == "circle":
             num, den = (1, 0), 1
+            single = len(terms) == 1 and Fraction(us[terms[0][0]]).denominator == 1
             for i, k in terms:
                 key = (i, k)
                 hit = powers.get(key)
                 if hit is None:
-                    g, d = unit.get(i) or unit.setdefault(i, _unit(us[i]))
+                    pw, d = unit.get(i) or unit.setdefault(i, _unit(us[i]))
+                    g = pw(abs(k))
                     if k < 0:
                         g = (g[0], -g[1])
-                    hit = powers[key] = (_gpow(g, abs(k)), d ** abs(k))
+                    hit = powers[key] = (g, d ** abs(k))
                 num, den = _gmul(num, hit[0]), den * hit[1]
-            out.append((Fraction(num[1], den), Fraction(num[0], den)))
+            out.append((_over(num[1], den, single), _over(num[0], den, single)))
         else:
             v = Fraction(1)
             for i, k in terms:
@@ -70,4 +111,4 @@ def world_values(args, us: dict) -> list[tuple]:
 def _unit(u) -> tuple:
     u = Fraction(u)
     p, q = u.numerator, u.denominator
-    return (q * q - p * p, 2 * p * q), p * p + q * q
+    return _Powers((q * q - p * p, 2 * p * q)), p * p + q * q

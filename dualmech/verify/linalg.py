@@ -56,6 +56,12 @@ def _prepare(rows, kind):
     return [list(r) for r in rows]
 
 
+def _size(v) -> int:
+    if isinstance(v, Fraction):
+        return v.numerator.bit_length() + v.denominator.bit_length()
+    return 1 << 30  # a square-root number: prefer a rational pivot
+
+
 def _exact_zero(v) -> bool:
     if isinstance(v, iv.mpf):
         return v.a == 0 and v.b == 0
@@ -66,10 +72,10 @@ def _pivot(A, r, c, kind, tol):
     """Row index of the pivot in column ``c`` (rows ``r:``), or ``None``; and ambiguity."""
     rows = range(r, len(A))
     if kind == "exact":
-        if all(isinstance(A[i][c], Fraction) for i in rows):
-            best = max(rows, key=lambda i: abs(A[i][c]), default=None)
-            return (best if best is not None and A[best][c] != 0 else None), False
-        return next((i for i in rows if A[i][c] != 0), None), False
+        # the reduced echelon form is unique: any nonzero pivot gives the same result, and the
+        # shortest one keeps the numbers short
+        nonzero = [i for i in rows if A[i][c] != 0]
+        return (min(nonzero, key=lambda i: _size(A[i][c])) if nonzero else None), False
     if kind == "interval":
         sure = [i for i in rows if A[i][c].a > 0 or A[i][c].b < 0]
         if sure:

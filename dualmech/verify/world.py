@@ -82,10 +82,13 @@ class AtomKey:
 
 @dataclass
 class Cond:
-    """A branch condition ``g`` (its sign picks the pieces): world form and real form."""
+    """An atomic branch condition: an irreducible factor of a condition ``g`` whose sign picks
+    the pieces.  ``real`` is it in the original symbols; ``u_form`` in the world's own
+    variables (symbols, each atom's ``u``/``w``, ``pi``) when it is a polynomial there."""
 
     world: sp.Expr
     real: sp.Expr
+    u_form: sp.Expr | None = None
 
 
 @dataclass
@@ -96,6 +99,7 @@ class Branch:
     dummy: sp.Dummy
     choices: list
     pick: Callable  # (sign vector tuple) -> index into choices, or None (undefined there)
+    labels: list    # per choice: where it applies, in words
 
 
 @dataclass
@@ -111,6 +115,7 @@ class World:
     radicals: list                     # (Dummy, world radicand)
     conds: list                        # Cond
     branches: list                     # Branch, inner before outer
+    scales: list                       # per atom: (kind, monomial, L): the atom is monomial/L
 
 
 # ---------------------------------------------------------------------------------------
@@ -314,6 +319,8 @@ class _Builder:
         self.conds: list = []
         self.cond_index: dict = {}
         self.branches: list = []
+        self.scales: list = []
+        self.u_cache: dict = {}
 
     # -- atoms and arguments -------------------------------------------------------------
     def _atoms(self) -> None:
@@ -325,6 +332,7 @@ class _Builder:
         for (kind, m), L in sorted(lcd.items(), key=lambda kv: (kv[0][0], sp.default_sort_key(kv[0][1]))):
             self.atom_index[(kind, m)] = (len(self.atoms), L)
             self.atoms.append(AtomKey(kind, m / L))
+            self.scales.append((kind, m, L))
             self.u[len(self.atoms) - 1] = sp.Dummy(("u_" if kind == "circle" else "w_") + str(m / L))
 
     def _arg(self, kind, lin, node):
@@ -373,7 +381,7 @@ class _Builder:
             self._branch(node)
         out = [e.xreplace(self.rule) for e in exprs]
         return World(out, self.symbols, self.atoms, self.args, self.pi, self.u, self.radicals,
-                     self.conds, self.branches)
+                     self.conds, self.branches, self.scales)
 
     def _radical(self, node, radicand) -> sp.Expr:
         """``sqrt(radicand)``: a radical dummy, or ``|Y| * sqrt(rest)`` for a square factor."""
@@ -409,36 +417,76 @@ class _Builder:
         return expr_world.xreplace(back)
 
     # -- branches --------------------------------------------------------------------------
-    def _cond(self, g_world, g_real) -> tuple[int, int]:
-        """Index and orientation of the condition ``g`` (``-g`` shares the index)."""
-        hit = self.cond_index.get(g_world)
+    def _cond(self, g_world, g_real) -> Callable:
+        """The sign of the condition ``g`` as a function of the atomic conditions' signs.
+
+        ``g`` is factored in the world's own variables (``sin``/``cos`` as rational functions of
+        ``u``): its sign is a constant times the signs of its odd-multiplicity irreducible
+        factors, so ``Abs(cos(theta))`` and the ``|Y|`` of ``sqrt(1 - sin(theta)**2)`` share
+        their atomic conditions.  Conditions too large to factor stay atomic.
+        """
+        parts = self._factors(g_world)
+        if parts is None:
+            j, o = self._atomic(g_world, g_real, None)
+            return lambda s: o * s[j]
+        const, factors = parts
+        idx = [self._atomic(f, self._real_form(f), f) for f in factors]
+        return lambda s: const * math.prod(o * s[j] for j, o in idx)
+
+    def _atomic(self, key, real, u_form) -> tuple[int, int]:
+        hit = self.cond_index.get(key)
         if hit is not None:
             return hit, 1
-        hit = self.cond_index.get(-g_world)
+        hit = self.cond_index.get(-key)
         if hit is not None:
             return hit, -1
-        self.cond_index[g_world] = len(self.conds)
-        self.conds.append(Cond(g_world, g_real))
+        self.cond_index[key] = len(self.conds)
+        self.conds.append(Cond(key, real, u_form))
         return len(self.conds) - 1, 1
 
-    def _add_branch(self, node, choices, pick) -> sp.Dummy:
+    def _factors(self, g_world):
+        """``(sign constant, [irreducible factors with odd multiplicity])`` or ``None``."""
+        if g_world.is_number:
+            return (1 if g_world > 0 else -1), []
+        rule = _u_rule(self, g_world)
+        if rule is None:
+            return None
+        X = sp.cancel(sp.together(g_world.xreplace(rule)))
+        if sp.count_ops(X) > 400:
+            return None
+        const, out = 1, []
+        for poly in sp.fraction(X):
+            c, factors = sp.factor_list(poly)
+            const *= 1 if c > 0 else -1
+            for f, mult in factors:
+                if mult % 2 == 0:
+                    continue
+                if _leading_negative(f):
+                    f, const = -f, -const
+                out.append(f)
+        return const, out
+
+    def _add_branch(self, node, choices, pick, labels) -> sp.Dummy:
         beta = sp.Dummy(f"b{len(self.branches)}")
-        self.branches.append(Branch(node, beta, choices, pick))
+        self.branches.append(Branch(node, beta, choices, pick, labels))
         self.rule[node] = beta
         return beta
 
     def _abs_branch(self, node, g_world, g_real) -> sp.Dummy:
-        j, o = self._cond(g_world, g_real)
-        return self._add_branch(node, [g_world, -g_world], lambda s: 0 if s[j] * o > 0 else 1)
+        sign = self._cond(g_world, g_real)
+        return self._add_branch(node, [g_world, -g_world], lambda s: 0 if sign(s) > 0 else 1,
+                                [_Label(g_real, "> 0"), _Label(g_real, "< 0")])
 
     def _branch(self, node) -> None:
         w = lambda e: e.xreplace(self.rule)  # noqa: E731
         if isinstance(node, sp.Abs):
             self._abs_branch(node, w(node.args[0]), node.args[0])
         elif isinstance(node, (sp.sign, sp.Heaviside)):
-            j, o = self._cond(w(node.args[0]), node.args[0])
+            sign = self._cond(w(node.args[0]), node.args[0])
             vals = [sp.S.One, -sp.S.One] if isinstance(node, sp.sign) else [sp.S.One, sp.S.Zero]
-            self._add_branch(node, vals, lambda s, j=j, o=o: 0 if s[j] * o > 0 else 1)
+            g = node.args[0]
+            self._add_branch(node, vals, lambda s: 0 if sign(s) > 0 else 1,
+                             [f"{g} > 0", f"{g} < 0"])
         elif isinstance(node, (sp.Max, sp.Min)):
             self._extremum(node, w)
         else:
@@ -455,11 +503,11 @@ class _Builder:
         def pick(s):
             best = 0
             for i in range(1, len(args)):
-                j, o = pairs[(i, best)]          # the sign of args[i] - args[best]
-                if s[j] * o * sign > 0:
+                if pairs[(i, best)](s) * sign > 0:   # the sign of args[i] - args[best]
                     best = i
             return best
-        self._add_branch(node, [w(a) for a in args], pick)
+        self._add_branch(node, [w(a) for a in args], pick,
+                         [f"{node} = {a}" for a in args])
 
     def _piecewise(self, node, w) -> None:
         tests = [self._truth(cond) for _, cond in node.args]
@@ -469,7 +517,9 @@ class _Builder:
                 if test(s):
                     return i
             return None
-        self._add_branch(node, [w(v) for v, _ in node.args], pick)
+        self._add_branch(node, [w(v) for v, _ in node.args], pick,
+                         [f"{node.func.__name__} piece {i + 1} ({c})"
+                          for i, (_, c) in enumerate(node.args)])
 
     def _truth(self, cond) -> Callable:
         if cond is sp.true or isinstance(cond, sp.Ne):
@@ -484,32 +534,41 @@ class _Builder:
             inner = self._truth(cond.args[0])
             return lambda s: not inner(s)
         g = cond.lhs - cond.rhs
-        j, o = self._cond(g.xreplace(self.rule), g)
+        sign = self._cond(g.xreplace(self.rule), g)
         want = 1 if isinstance(cond, (sp.StrictGreaterThan, sp.GreaterThan)) else -1
-        return lambda s: s[j] * o == want
+        return lambda s: sign(s) == want
 
 
 # ---------------------------------------------------------------------------------------
 # square roots of squares
-def _u_forms(b: _Builder, limit: int = _MAX_RADICAND_MULTIPLE) -> dict:
-    """World dummies as rational functions of the atoms' ``u``/``w`` (for factoring)."""
+def _u_rule(b: _Builder, expr) -> dict | None:
+    """World dummies of ``expr`` as rational functions of the atoms' ``u``/``w`` (for factoring),
+    or ``None`` when an angle's multiple is too large to expand."""
     rule = {}
-    for kind, terms, dummies in b.args:
-        if kind == "circle":
-            if sum(abs(k) for _, k in terms) > limit:
-                raise NotExact(dummies[0], "a square root of a large multiple of an angle")
-            num, den = sp.S.One, sp.S.One
-            for i, k in terms:
-                u = b.u[i]
-                num *= (1 + sp.I * u * (1 if k > 0 else -1)) ** (2 * abs(k))
-                den *= (1 + u**2) ** abs(k)
-            num = sp.expand(num)
-            conj = num.subs(sp.I, -sp.I)
-            rule[dummies[0]] = sp.expand((num - conj) / (2 * sp.I)) / den
-            rule[dummies[1]] = sp.expand((num + conj) / 2) / den
-        else:
-            rule[dummies[0]] = sp.Mul(*[b.u[i] ** k for i, k in terms])
+    free = expr.free_symbols
+    for n, (kind, terms, dummies) in enumerate(b.args):
+        if not any(d in free for d in dummies):
+            continue
+        hit = b.u_cache.get(n)
+        if hit is None:
+            if kind == "circle" and sum(abs(k) for _, k in terms) > _MAX_RADICAND_MULTIPLE:
+                return None
+            hit = b.u_cache[n] = _u_form_of(b, kind, terms)
+        rule.update(zip(dummies, hit))
     return rule
+
+
+def _u_form_of(b: _Builder, kind, terms) -> tuple:
+    if kind != "circle":
+        return (sp.Mul(*[b.u[i] ** k for i, k in terms]),)
+    num, den = sp.S.One, sp.S.One
+    for i, k in terms:
+        u = b.u[i]
+        num *= (1 + sp.I * u * (1 if k > 0 else -1)) ** (2 * abs(k))
+        den *= (1 + u**2) ** abs(k)
+    num = sp.expand(num)
+    conj = num.subs(sp.I, -sp.I)
+    return sp.expand((num - conj) / (2 * sp.I)) / den, sp.expand((num + conj) / 2) / den
 
 
 def _square_at_points(b: _Builder, radicand) -> bool:
@@ -545,7 +604,9 @@ def _world_point(b: _Builder, rng, expr) -> dict:
 
 def _split_square(b: _Builder, radicand, node):
     """``radicand = c * Y**2 * rest`` with ``rest`` square-free; world expressions in u/w."""
-    u_rule = _u_forms(b)
+    u_rule = _u_rule(b, radicand)
+    if u_rule is None:
+        raise NotExact(node, "a square root of a large multiple of an angle")
     X = sp.cancel(sp.together(radicand.xreplace(u_rule)))
     num, den = sp.fraction(X)
     c, Y, rest = sp.S.One, sp.S.One, sp.S.One
@@ -560,6 +621,36 @@ def _split_square(b: _Builder, radicand, node):
         raise Undecidable(node, "the square root of a negative square is imaginary wherever "
                                 "it is defined")
     return c, Y, rest
+
+
+class _Label:
+    """``expr`` and a relation, written out when first shown (a ``tan(a/2)`` form from a square
+    root is then simplified, if small: display only, never for a decision)."""
+
+    def __init__(self, expr, relation: str):
+        self.expr, self.relation, self._text = expr, relation, None
+
+    def __str__(self) -> str:
+        if self._text is None:
+            expr = self.expr
+            if expr.has(sp.tan) and sp.count_ops(expr) < 40:
+                try:
+                    expr = sp.trigsimp(sp.simplify(expr))
+                except Exception:  # display only: keep the plain form
+                    pass
+            self._text = f"{expr} {self.relation}"
+        return self._text
+
+    def __eq__(self, other) -> bool:
+        return str(self) == str(other)
+
+    __hash__ = None
+
+
+def _leading_negative(f) -> bool:
+    """Is the leading coefficient of ``f`` negative (in a fixed order of its symbols)?"""
+    gens = sorted(f.free_symbols, key=sp.default_sort_key)
+    return sp.Poly(f, *gens).LC() < 0
 
 
 def degree_bound(expr, weights: dict, memo: dict | None = None) -> tuple[int, int]:
