@@ -61,7 +61,8 @@ def test_reactions_at_one_state_match_the_hand_formula():
     ({"l": 50}, r"l = 50 is outside the admissible range \[0\.2, 3\]"),
     ({l: -1.0}, r"l = -1\.0 is outside the admissible range"),
     ({"g": "ten"}, r"g = 'ten' is not a number"),
-], ids=["misspelt-name", "unknown-symbol", "above-range", "below-range", "text-value"])
+    ({"g": float("inf")}, r"g = inf must be finite"),
+], ids=["misspelt-name", "unknown-symbol", "above-range", "below-range", "text-value", "inf"])
 def test_bad_parameters_are_refused(params, message):
     with pytest.raises(ValueError, match=message):
         simulate(Pendulum(), t_span=(0, 0.1), params=params)
@@ -101,3 +102,10 @@ def test_backward_span_and_right_hand_side_of_a_problem():
                                                               rel=1e-15)
     Y = np.array([[0.4, -0.2], [0.3, 0.0]])
     assert np.allclose(rhs(0.0, Y)[1], -9.81 / 2.0 * np.sin(Y[0]), rtol=1e-15)
+
+
+def test_range_check_can_be_lifted_on_purpose():
+    from dualmech.numeric import reactions_at
+    # hand: S = m g cos(theta) + m l theta'^2 with l = 50 (outside the declared [0.2, 3])
+    out = reactions_at(Pendulum(), [0.7], [1.3], params={"l": 50}, check_ranges=False)
+    assert out["S"] == pytest.approx(9.81 * np.cos(0.7) + 50 * 1.3**2, rel=1e-12)

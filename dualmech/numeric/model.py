@@ -44,7 +44,8 @@ __all__ = ["NumericModel", "SingularityError", "StateFunction"]
 #: The exact test: a system is singular where its condition number exceeds COND_LIMIT or its
 #: smallest singular value is below SCALE_LIMIT times the scale of its entries' terms.
 COND_LIMIT, SCALE_LIMIT = 1e12, 1e-12
-#: The cheap estimate trips (and the exact test runs) well before those limits.
+#: The cheap estimate trips (and the exact test runs) well before those limits.  It is
+#: compiled into the C code: change codegen.GENERATOR_VERSION with it.
 _TRIP = 1e-8
 _PROBE = np.random.default_rng(20240611).standard_normal(64)
 #: Sizes of the square systems that ``backend="auto"`` solves with compiled code: from 3 on

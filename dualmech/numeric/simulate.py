@@ -44,11 +44,13 @@ class Trajectory:
     message: str = ""
 
 
-def problem_parameters(problem, params: Mapping | None = None) -> dict:
+def problem_parameters(problem, params: Mapping | None = None, *,
+                       check_ranges: bool = True) -> dict:
     """The problem's default parameter values with ``params`` (symbols or names) applied.
 
     Every key must be one of the problem's parameters (a misspelt name is refused with the
-    close ones suggested) and every value a finite number inside the parameter's declared range.
+    close ones suggested) and every value a finite number inside the parameter's declared
+    range (``check_ranges=False`` lets a study go outside it on purpose, e.g. a stiff spring).
 
     Example
     -------
@@ -68,9 +70,12 @@ def problem_parameters(problem, params: Mapping | None = None) -> dict:
         except (TypeError, ValueError):
             raise ValueError(f"`params`: {symbol.name} = {value!r} is not a number.") from None
         lo, hi = (float(x) for x in decl.range)
-        if not lo <= v <= hi:
+        if not math.isfinite(v):
+            raise ValueError(f"`params`: {symbol.name} = {value!r} must be finite.")
+        if check_ranges and not lo <= v <= hi:
             raise ValueError(f"`params`: {symbol.name} = {value!r} is outside the admissible "
-                             f"range [{lo:g}, {hi:g}] declared by problem `{problem.name}`.")
+                             f"range [{lo:g}, {hi:g}] declared by problem `{problem.name}` "
+                             "(pass check_ranges=False to go outside it on purpose).")
         values[symbol] = v
     return values
 
@@ -120,18 +125,21 @@ def default_initial_state(problem) -> tuple[list, list]:
     return q0, [0.0] * len(q0)
 
 
-def right_hand_side(problem, params: Mapping | None = None) -> Callable:
+def right_hand_side(problem, params: Mapping | None = None, *,
+                    check_ranges: bool = True) -> Callable:
     """``rhs(t, y)`` of the problem's reference model for :func:`solve_ivp`.
 
     ``y`` is ``[q..., q'...]`` of shape ``(2n,)``, or ``(2n, K)`` for ``K`` states at once
     (``solve_ivp(..., vectorized=True)``); each call returns a new array.
     """
-    return NumericModel(problem.model(problem.reference), problem_parameters(problem, params)).rhs
+    values = problem_parameters(problem, params, check_ranges=check_ranges)
+    return NumericModel(problem.model(problem.reference), values).rhs
 
 
 def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
              samples: int = 200, rtol: float = 1e-9, atol: float = 1e-11,
-             method: str = "DOP853", **solve_ivp_kwargs) -> Trajectory:
+             method: str = "DOP853", *, check_ranges: bool = True,
+             **solve_ivp_kwargs) -> Trajectory:
     """Integrate the reference model and recover the direct model's reactions along the way.
 
     Parameters
@@ -148,6 +156,8 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
         Number of evenly spaced output times (at least 2).
     rtol, atol, method, **solve_ivp_kwargs
         Passed to :func:`scipy.integrate.solve_ivp`.
+    check_ranges : bool
+        Refuse parameter values outside their declared ranges (default).
 
     Raises
     ------
@@ -157,7 +167,7 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
     t0, t1 = check_t_span(t_span)
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:
         raise ValueError(f"`samples` must be an integer >= 2, got {samples!r}.")
-    values = problem_parameters(problem, params)
+    values = problem_parameters(problem, params, check_ranges=check_ranges)
     ref = problem.model(problem.reference)
     model = NumericModel(ref, values)
     n = ref.n
@@ -187,13 +197,13 @@ def _direct_models(problem):
 
 
 def reactions_at(problem, q: Sequence[float], qd: Sequence[float], time: float = 0.0,
-                 params: Mapping | None = None) -> dict:
+                 params: Mapping | None = None, *, check_ranges: bool = True) -> dict:
     """Reactions ``{name: value}`` of the direct model(s) at one state (reference coordinates).
 
     The accelerations are the reference model's; each direct model's reactions are then its
     solution of ``A [q''; lambda] = b``.
     """
-    values = problem_parameters(problem, params)
+    values = problem_parameters(problem, params, check_ranges=check_ranges)
     ref = problem.model(problem.reference)
     qdd = NumericModel(ref, values).accelerations(time, q, qd)
     out: dict = {}
