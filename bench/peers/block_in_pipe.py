@@ -3,8 +3,9 @@
 A block m in a massless pipe swinging about O, spring k (free length y0) and damper d along
 the pipe (source 003).  What a user of sympy.physics.mechanics writes: Lagrange's method in
 (theta, y) with the damper in the force list; Kane's method with an auxiliary speed across the
-pipe to expose its normal force N (N on the block, -N on the massless pipe at the block); the accelerations compared with LUsolve + simplify; N from
-the auxiliary equation (it vanishes: the massless pipe only guides the block).
+pipe to expose its normal force N (N on the block, -N on the massless pipe at the block); the
+accelerations compared with LUsolve + simplify; N from the auxiliary equation (it vanishes:
+the massless pipe only guides the block).
 """
 import sympy as sp
 from sympy.physics.mechanics import (KanesMethod, LagrangesMethod, Lagrangian, Particle, Point,
