@@ -195,11 +195,13 @@ class Frame:
         so a deep chain (z-y-z Euler angles) gives the short textbook components instead of
         the root components multiplied through every rotation matrix.
         """
-        w = sp.zeros(3, 1)
-        for f in self.chain()[1:]:
-            w_rel = unskew(f.rotation.T * f.rotation.diff(t)).applyfunc(sp.trigsimp)
-            w = f.rotation.T * w + w_rel
-        return Vector(self, w)
+        if self.__dict__.get("_w_root") is None:
+            w = sp.zeros(3, 1)
+            for f in self.chain()[1:]:
+                w_rel = unskew(f.rotation.T * f.rotation.diff(t)).applyfunc(sp.trigsimp)
+                w = f.rotation.T * w + w_rel
+            self._w_root = Vector(self, w)  # a frame's rotation never changes: built once
+        return self._w_root
 
     def origin_from_root(self) -> "Vector":
         """Position of this frame's origin relative to the root origin."""
@@ -317,7 +319,14 @@ class Point:
         return cls(name or frame.name, frame.origin_from_root())
 
     def locate(self, name: str, r: Vector) -> "Point":
-        """The point at ``r`` from this one."""
+        """The point at ``r`` from this one.
+
+        From a point at the root origin the position keeps ``r``'s own frame (e.g. a body's
+        axes), so its derivatives stay short instead of passing through every rotation matrix
+        up to the root.
+        """
+        if self._position.components.is_zero_matrix:
+            return Point(name, r)
         return Point(name, self._position + r)
 
     def pos_from(self, other: "Point | None" = None) -> Vector:
