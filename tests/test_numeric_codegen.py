@@ -236,3 +236,14 @@ def test_non_finite_state_is_named_not_called_singular(models, backend):
     nm = NumericModel(eqs, values, backend=backend)
     with pytest.raises(ValueError, match=r"not finite at t=0, theta=nan, phi=0\.2"):
         nm.rhs(0.0, np.array([np.nan, 0.2, 0.0, 0.0]))
+
+
+def test_math_error_names_the_state():
+    x = coordinate("x")
+    eqs = EquationSet("root", (x,), (x.diff(t, 2) - sp.sqrt(x) - 1 / (x.diff(t) - 1),))
+    nm = NumericModel(eqs, {}, backend="python")
+    assert nm.accelerations(0.0, [4.0], [3.0])[0] == 2.5      # sqrt(4) + 1/(3 - 1)
+    with pytest.raises(ValueError, match=r"evaluating `root` at t=0, x=-1, x'=0 failed"):
+        nm.accelerations(0.0, [-1.0], [0.0])
+    with pytest.raises(ValueError, match=r"x=4, x'=1 failed \(ZeroDivisionError"):
+        nm.rhs(0.0, np.array([4.0, 1.0]))

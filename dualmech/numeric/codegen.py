@@ -38,7 +38,7 @@ import sympy as sp
 __all__ = ["GENERATOR_VERSION", "Program", "Printer", "program", "python_source"]
 
 #: Bumped whenever the generated code changes meaning or form (invalidates every cache entry).
-GENERATOR_VERSION = "3"
+GENERATOR_VERSION = "4"
 
 
 @dataclass(frozen=True)
@@ -242,7 +242,9 @@ class Printer:
         self.sqrt = "_np.sqrt" if numpy else "_sqrt"
 
     def power(self, base: str, ex: str) -> str:
-        return f"{base}**{ex}"
+        if self.numpy:
+            return f"{base}**{ex}"
+        return f"_pow({base}, {ex})"  # math.pow: an error, never a complex number
 
     def __call__(self, e) -> str:
         name = type(e).__name__
@@ -352,7 +354,8 @@ def python_source(prog: Program, key: str) -> str:
              "import math as _m", "import numpy as _np", "",
              "from math import (sin as _sin, cos as _cos, tan as _tan, asin as _asin, "
              "acos as _acos, atan as _atan,", "                  atan2 as _atan2, sinh as _sinh, "
-             "cosh as _cosh, tanh as _tanh, log as _log, exp as _exp, sqrt as _sqrt)",
+             "cosh as _cosh, tanh as _tanh, log as _log, exp as _exp, sqrt as _sqrt,",
+             "                  pow as _pow)",
              "math = _m", "numpy = _np", "",
              f"KEY = {key!r}", f"VERSION = {GENERATOR_VERSION!r}",
              f"N_OUTPUTS = {len(prog.outputs)}", "", "",

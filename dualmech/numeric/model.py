@@ -264,7 +264,7 @@ class NumericModel:
         if y.ndim == 2:
             A, b, _ = self._many(time, y)
             return A, b
-        outs = self._scalar(time, y.tolist())
+        outs = self._eval_one(time, y.tolist())
         return (np.array(outs[: self._mn]).reshape(self.shape),
                 np.array(outs[self._mn: self._mn + self.shape[0]]))
 
@@ -317,8 +317,14 @@ class NumericModel:
             out[offset:, i] = self._solve_one(times[i], Y[:, i].tolist())[:rows]
 
     # -- one state -------------------------------------------------------------------------
+    def _eval_one(self, time, y: list) -> tuple:
+        try:
+            return self._scalar(time, y)
+        except (ValueError, ZeroDivisionError, OverflowError) as exc:
+            raise ValueError(_failed(self.eqs.name, self._state_text(time, y), exc)) from None
+
     def _solve_one(self, time, y: list) -> list:
-        outs = self._scalar(time, y)
+        outs = self._eval_one(time, y)
         m, N = self.shape
         mn = self._mn
         if m != N:
@@ -424,6 +430,11 @@ class NumericModel:
                 "there; stay away from the problem's singular set or choose other coordinates.")
 
 
+def _failed(what: str, where: str, exc: Exception) -> str:
+    return (f"evaluating `{what}` at {where} failed ({type(exc).__name__}: {exc}): a square "
+            "root or logarithm of a negative number, or a division by zero, at this state.")
+
+
 class StateFunction:
     """Generated code for any expressions of the state, e.g. an energy or a constraint.
 
@@ -471,7 +482,11 @@ class StateFunction:
         if y.shape[0] != 2 * self.n:
             raise ValueError(f"`q` and `qd` must each hold {self.n} numbers.")
         if y.ndim == 1:
-            return np.array(self._scalar(time, y.tolist()), dtype=float)
+            try:
+                return np.array(self._scalar(time, y.tolist()), dtype=float)
+            except (ValueError, ZeroDivisionError, OverflowError) as exc:
+                raise ValueError(_failed("state function", f"t={time}, y={y.tolist()}",
+                                         exc)) from None
         out = np.empty((self.size, y.shape[1]))
         for j, v in enumerate(self._vector(time, y)):
             out[j] = v
