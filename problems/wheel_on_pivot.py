@@ -20,16 +20,19 @@ Frames.  ``O`` inertial (``I, J, K``); axle ``A = O.child(rot_z(phi))`` (``i = A
 
 Modelling the steady motion.  A steady motion has no free coordinate if every rate is
 prescribed; here the precession angle ``phi`` is kept as the one free coordinate (rolling ties
-the spin to it) and its steady solution is *checked*: the equations of motion give
-``phi'' = 0`` (nothing does work: gravity keeps its height, the contact point is at rest), so
-every constant rate ``phi' = Omega`` is a motion of the system.  The source's ``Omega``
-(extracted also as ``U`` and ``v``) is ``phi'`` on it.
+the spin to it) and its steady solution is *checked*.  A drive torque ``tau K`` on the axle
+(a motor at O; not in the source) is added: the equations of motion give ``J phi'' = tau``
+with ``J = 3/2 m l^2 + m a^2/4``, so the source's motion -- every constant rate ``phi' =
+Omega`` -- is exactly the case ``tau = 0`` (nothing else does work: gravity keeps its height,
+the contact point is at rest).  Without ``tau`` the equation would be ``J phi'' = 0`` whatever
+``J``, and no check could see a wrong inertia about the vertical.  The source's ``Omega``
+(extracted also as ``U`` and ``v``) is ``phi'``; its steady claims are judged on ``tau = 0``.
 
 Body: the wheel, mass ``m`` at G, inertia about G in ``W`` axes ``diag(m a^2/2, m a^2/4,
 m a^2/4)`` (thin disk, normal ``i``).  The axle is massless and carries the pivot force.
 
 Free-body diagram (wheel with its axle): weight ``-m g k`` at G; contact force ``F`` at C;
-pivot force ``R = R_x i + R_y j + R_z k`` at O.  Rigid-body mechanics fixes only
+pivot force ``R = R_x i + R_y j + R_z k`` at O; drive torque ``tau k``.  Rigid-body mechanics fixes only
 ``a F_x + l F_z`` and ``R_x + F_x`` (the radial friction and the axle's axial force share the
 centripetal force in any proportion: statically indeterminate).  The models close it with the
 classic assumption that the contact transmits no radial friction, ``F_x = 0`` (a closure
@@ -40,27 +43,28 @@ Angular momentum about O (the source's route; ``R`` has no moment about O)::
 
     H_O = phi' (-(1/2) m a l i + (m a^2/4 + m l^2) k)
     dH_O/dt = phi'' (-(1/2) m a l i + (m a^2/4 + m l^2) k) - (1/2) m a l phi'^2 j
-    sum M_O = a F_y i + (-a F_x - l F_z + m g l) j + l F_y k
+    sum M_O = a F_y i + (-a F_x - l F_z + m g l) j + (l F_y + tau) k
 
-so ``a F_y = -(1/2) m a l phi''`` and ``l F_y = (m a^2/4 + m l^2) phi''`` give ``phi'' = 0``
-and ``F_y = 0``; on ``j``: ``a F_x + (F_z - m g) l = (1/2) m a l phi'^2``.  With ``F_x = 0``::
+so ``a F_y = -(1/2) m a l phi''`` and ``l F_y + tau = (m a^2/4 + m l^2) phi''`` give
+``J phi'' = tau`` and ``F_y = -(1/2) m l phi''`` (zero on the steady motion); on ``j``:
+``a F_x + (F_z - m g) l = (1/2) m a l phi'^2``.  With ``F_x = 0``::
 
-    F_z = m g + (1/2) m a phi'^2,     R = (-m l phi'^2, 0, -(1/2) m a phi'^2)
+    F_z = m g + (1/2) m a phi'^2,     R = (-m l phi'^2, (3/2) m l phi'', -(1/2) m a phi'^2)
 
 Direct form (``newton_euler``): ``sum F = m a_G`` (``a_G = -l phi'^2 i + l phi'' j``) and
 Euler's equation about G, all on ``i, j, k``, with ``R`` and ``F`` unknown, plus the closure.
 
 Lagrangian, written independently::
 
-    T = m (l phi')^2/2 + (m a^2/2) (l phi'/a)^2/2 + (m a^2/4) phi'^2/2,   V = const
-    (3/2 m l^2 + m a^2/4) phi'' = 0
+    T = m (l phi')^2/2 + (m a^2/2) (l phi'/a)^2/2 + (m a^2/4) phi'^2/2,   V = const,  Q = tau
+    (3/2 m l^2 + m a^2/4) phi'' = tau
 
 The contact force once more (``multiplier``), independently: free the axle to tilt by
 ``eps`` (raising G) and the spin ``psi`` from the rolling.  With ``n = (cos eps, 0, sin eps)``
 along the axle, the wheel's rate ``w = phi' K - eps' j + psi' n``::
 
     T = m l^2 (eps'^2 + phi'^2 cos^2 eps)/2 + (m a^2/2)(psi' + phi' sin eps)^2/2
-        + (m a^2/4)(eps'^2 + phi'^2 cos^2 eps)/2,          V = m g l sin eps
+        + (m a^2/4)(eps'^2 + phi'^2 cos^2 eps)/2,          V = m g l sin eps,    Q = (tau, 0, 0)
     rolling:  (l cos eps + a sin eps) phi' + a psi' = 0      (slip velocity of C along j; F_y)
     contact:  a + l sin eps - a cos eps = 0                  (height of the rim's lowest point)
 
@@ -80,7 +84,7 @@ Example
 -------
 >>> p = WheelOnPivot(); p.validate()
 >>> p.model("lagrange").accelerations_solved()
-{Derivative(phi(t), (t, 2)): 0}
+{Derivative(phi(t), (t, 2)): 4*tau/(m*(a**2 + 6*l**2))}
 """
 from __future__ import annotations
 
@@ -90,13 +94,15 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_x, rot_z,
                       t, thin_disk)
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
+from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, TORQUE
 from dualmech.equations import EquationSet
 from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
 
-__all__ = ["WheelOnPivot", "PROBLEMS", "frames", "direct_form", "m", "a", "l", "g", "phi"]
+__all__ = ["WheelOnPivot", "PROBLEMS", "frames", "direct_form", "m", "a", "l", "g", "tau",
+           "phi"]
 
 m, a, l, g = sp.symbols("m a l g", positive=True)
+tau = sp.Symbol("tau", real=True)
 phi = coordinate("phi")
 psi, eps = coordinate("psi"), coordinate("eps")
 F_x, F_y, F_z = sp.symbols("F_x F_y F_z", real=True)
@@ -128,6 +134,7 @@ def direct_form(name: str, closure: str = "F_x") -> tuple[NewtonEuler, SimpleNam
     ne = NewtonEuler(name, coordinates=[phi], ground=f.O,
                      description=f"wheel and axle; closure {closure} = 0")
     ne.gravity(-g * f.O.z)
+    ne.torque("drive", f.wheel, tau * f.O.z)
     F = ne.reaction_vector("F", f.wheel, f.A, at=f.C)
     unknowns = {"F_x": F.dot(f.A.x)}
     if name != "angular_momentum":
@@ -143,13 +150,14 @@ class WheelOnPivot(Problem):
     name = "wheel_on_pivot"
     title = "Wheel rolling round a pivot (steady motion, contact force)"
     source = "004_f75aa9bb64d0737a.txt: question 2 (a), (b)"
-    summary = ("Precession angle as the free coordinate (phi'' = 0: every rate is steady); "
+    summary = ("Precession angle as the free coordinate (J phi'' = tau: steady iff tau = 0); "
                "contact force from H_O, from Newton-Euler and from multipliers.")
     parameters = (
         Parameter(m, MASS, 2.0, (0.1, 10.0), "mass of the wheel"),
         Parameter(a, LENGTH, 0.3, (0.05, 1.0), "radius of the wheel"),
         Parameter(l, LENGTH, 0.8, (0.1, 3.0), "axle length, O to G"),
         Parameter(g, ACCELERATION, 9.81, (1.0, 20.0), "gravitational acceleration"),
+        Parameter(tau, TORQUE, 0.0, (-2.0, 2.0), "drive torque on the axle about K (0: steady)"),
     )
     coordinates = (
         Coordinate(phi, ANGLE, (-3.0, 3.0), (-6.0, 6.0), "azimuth of the axle (rate Omega)"),
@@ -194,6 +202,7 @@ class WheelOnPivot(Problem):
         lg.kinetic("T of wheel, translation", m * (l * D(phi))**2 / 2)
         lg.kinetic("T of wheel, spin", m * a**2 / 2 * (l / a * D(phi))**2 / 2)
         lg.kinetic("T of wheel, precession", m * a**2 / 4 * D(phi)**2 / 2)
+        lg.generalized_force("drive", [tau])
         return lg.equations()
 
     def multiplier(self) -> EquationSet:
@@ -205,6 +214,7 @@ class WheelOnPivot(Problem):
         lg.kinetic("T of wheel, rotation", m * a**2 / 2 * (D(psi) + D(phi) * se)**2 / 2
                    + m * a**2 / 4 * (D(eps)**2 + D(phi)**2 * ce**2) / 2)
         lg.potential("gravity", m * g * l * se)
+        lg.generalized_force("drive", [tau, 0, 0])
         lg.velocity_constraint("F_y", [l * ce + a * se, a, 0])
         lg.constraint("F_z", a + l * se - a * ce)
         return lg.equations()
@@ -222,6 +232,7 @@ class WheelOnPivot(Problem):
         F = F_x * i + F_y * j + F_z * k
         M_O = f.C.pos_from(f.o).cross(F) + f.G.pos_from(f.o).cross(-m * g * O.z)
         H_O_vec = (-m * a * l / 2) * i + (m * a**2 / 4 + m * l**2) * k
+        steady_F_y = self.model("angular_momentum").substitute({tau: 0}).reactions_solved()[F_y]
         return [
             Published("(a) inertia about G", "expression",
                       (m * a**2 / 2, m * a**2 / 4, m * a**2 / 4), (I_G[0, 0], I_G[1, 1], I_G[2, 2]),
@@ -245,11 +256,14 @@ class WheelOnPivot(Problem):
                       inA(H_O.dt(O)) + inA(H_O.dt(O)),
                       where="(b): Omega' (...) + w x L_O, and with k x i = j"),
             Published("(b) rate of L_O, steady", "expression",
-                      inA(-W1**2 * m * a * l / 2 * j), inA(H_O.dt(O)),
-                      where="(b): Omega constant"),
+                      inA(-W1**2 * m * a * l / 2 * j), inA(H_O.dt(O).subs(W2, 0)),
+                      where="(b): Omega constant (reference: dH_O/dt at phi'' = 0)"),
             Published("(b) sum of moments about O", "expression",
-                      (F_y * a, -a * F_x - l * F_z + m * g * l, F_y * l), inA(M_O), where="(b)"),
-            Published("(b) F_y", "expression", (0,), (F_y,), where="(b)"),
+                      (F_y * a, -a * F_x - l * F_z + m * g * l, F_y * l), inA(M_O),
+                      where="(b): contact force and weight (the drive is not in the source)"),
+            Published("(b) F_y", "expression", (0,), (steady_F_y,),
+                      where="(b): on the steady motion (reference: the angular-momentum "
+                      "model's F_y at tau = 0)"),
             Published("(b) contact force relation", "equation",
                       (m * a * l * W1**2 / 2 - a * F_x - (F_z - m * g) * l,),
                       where="(b): (1/2) m a l v^2 = a F_x + (F_z - m g) l, v read as Omega"),

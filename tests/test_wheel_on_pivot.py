@@ -4,7 +4,7 @@ import sympy as sp
 
 from dualmech import t
 from dualmech.compare import compare
-from problems.wheel_on_pivot import WheelOnPivot, a, direct_form, frames, g, l, m, phi
+from problems.wheel_on_pivot import WheelOnPivot, a, direct_form, frames, g, l, m, phi, tau
 
 problem = WheelOnPivot()
 D = lambda q: q.diff(t)  # noqa: E731
@@ -24,9 +24,14 @@ def test_declaration_validates():
     assert problem.dimension_issues() == []
 
 
-def test_every_constant_rate_is_a_motion():
-    # nothing does work, so phi'' = 0: the steady motion phi' = Omega solves the equations
-    assert problem.model("lagrange").accelerations_solved() == {DD(phi): 0}
+J = 3 * m * l**2 / 2 + m * a**2 / 4     # inertia about the vertical, rolling included (hand)
+
+
+def test_steady_exactly_when_nothing_drives_the_axle():
+    # J phi'' = tau: every constant rate phi' = Omega is a motion iff tau = 0
+    (acc,) = problem.model("lagrange").accelerations_solved().values()
+    assert sp.simplify(acc - tau / J) == 0
+    assert acc.subs(tau, 0) == 0
 
 
 def test_the_wheels_contact_point_is_at_rest():
@@ -41,10 +46,11 @@ def _solved(model):
     return {u.name: sp.simplify(sol[u]) for u in model.unknowns}
 
 
-def test_reactions_on_the_steady_motion_are_the_hand_ones():
-    # hand (module docstring): F = (0, 0, m g + m a W^2/2), R = (-m l W^2, 0, -m a W^2/2)
-    hand = {"F_x": 0, "F_y": 0, "F_z": m * g + m * a * W**2 / 2,
-            "R_x": -m * l * W**2, "R_y": 0, "R_z": -m * a * W**2 / 2}
+def test_reactions_are_the_hand_ones():
+    # hand (module docstring), phi'' = tau/J: F = (0, -m l phi''/2, m g + m a W^2/2),
+    # R = (-m l W^2, 3 m l phi''/2, -m a W^2/2); on the steady motion (tau = 0) F_y = R_y = 0
+    hand = {"F_x": 0, "F_y": -m * l * tau / J / 2, "F_z": m * g + m * a * W**2 / 2,
+            "R_x": -m * l * W**2, "R_y": 3 * m * l * tau / J / 2, "R_z": -m * a * W**2 / 2}
     got = _solved(problem.model("newton_euler"))
     assert {k: sp.simplify(v - hand[k]) for k, v in got.items()} == {k: 0 for k in hand}
     am = _solved(problem.model("angular_momentum"))
