@@ -1,0 +1,244 @@
+"""Every way a problem's models can be integrated: ODE forms and DAE forms, side by side.
+
+A **formulation** is one model of a problem made into ``y' = f(t, y)``:
+
+* ``ode`` -- a square model (the Lagrangian in minimal coordinates, or a direct model whose
+  reactions are unknowns next to the accelerations): ``A [q''; lambda] = b`` solved at each
+  call;
+* ``dae`` -- a model in maximal coordinates with constraints (a multiplier model, or a direct
+  model in the same coordinates completed by the multiplier model's constraints), as an
+  index-1 DAE, unstabilised, with Baumgarte stabilisation or with projection
+  (:class:`~dualmech.numeric.dae.ConstrainedModel`).
+
+Each formulation starts from the problem's initial state mapped into its own coordinates
+(:meth:`Problem.coordinate_maps <dualmech.problem.Problem.coordinate_maps>`) and can map any
+reference trajectory the same way, so all of them are compared in their own coordinates
+against one reference motion.  Reactions come from the formulation itself when it has them
+(direct models, multipliers), else from the problem's direct models at its states.
+
+Example
+-------
+>>> from problems import get                                     # doctest: +SKIP
+>>> [f.name for f in formulations(get("pendulum_particle"))[0]]   # doctest: +SKIP
+['lagrange', 'newton_euler', 'newton_euler_inertial (DAE, index 1)', ...]
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable, Mapping, Sequence
+
+import numpy as np
+
+from ..equations import EquationSet, ModelError
+from ..kinematics import t
+from .dae import STABILISATIONS, ConstrainedModel, constraints_of
+from .energy import EnergyFunction, conservative_reason, dynamic_rows
+from .integrators import Run, integrate
+from .model import NumericModel, StateFunction
+from .simulate import default_initial_state, problem_parameters
+
+__all__ = ["Formulation", "formulations", "state_scales"]
+
+_LABEL = {"none": "DAE, index 1", "baumgarte": "DAE, Baumgarte", "projection": "DAE, projection"}
+
+
+@dataclass
+class Formulation:
+    """One integrable form of a problem (see the module docstring).
+
+    ``coordinates`` are its ``q(t)``; ``y0`` its initial state; ``scales`` the width of each
+    coordinate's and rate's declared range (the unit of the state errors).
+    """
+
+    name: str
+    kind: str
+    model: EquationSet
+    rhs: Callable
+    y0: np.ndarray
+    scales: np.ndarray
+    mapping: StateFunction
+    reaction_names: tuple = ()
+    constrained: ConstrainedModel | None = None
+    energy: EnergyFunction | None = None
+    energy_note: str = ""
+    _solve: Callable | None = field(default=None, repr=False)
+    _outside: Callable | None = field(default=None, repr=False)
+
+    @property
+    def coordinates(self) -> tuple:
+        return self.model.coordinates
+
+    @property
+    def n(self) -> int:
+        return self.model.n
+
+    @property
+    def stabilisation(self) -> str:
+        return self.constrained.stabilisation if self.constrained else ""
+
+    def from_reference(self, time, q, qd) -> np.ndarray:
+        """A reference trajectory (states in columns) in this formulation's coordinates."""
+        return self.mapping(time, q, qd)
+
+    def reactions(self, time, y: np.ndarray) -> dict:
+        """``{name: (K,)}`` along states ``y`` (``(2n, K)``)."""
+        n = self.n
+        if self._solve is not None:
+            rows = self._solve(time, y[:n], y[n:])[n:]
+            return dict(zip(self.reaction_names, rows))
+        if self._outside is not None:
+            return self._outside(time, y[:n], y[n:])
+        return {}
+
+    def drift(self, y: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+        """``(g, g')`` along states ``y`` for a DAE form, else ``None``."""
+        if self.constrained is None:
+            return None
+        return self.constrained.residuals(y[: self.n], y[self.n:])
+
+    def energy_change(self, y: np.ndarray) -> np.ndarray | None:
+        """``E(t) - E(t0)`` along states ``y`` when the model conserves energy, else ``None``."""
+        if self.energy is None:
+            return None
+        return self.energy.along(y[: self.n], y[self.n:])
+
+    def run(self, method: str, t_span, t_eval, rtol: float = 1e-6, step: float | None = None,
+            events: Sequence = ()) -> Run:
+        """Integrate from ``y0`` (``atol = rtol * scales``; projection at the samples)."""
+        project = self.constrained.project if self.stabilisation == "projection" else None
+        return integrate(self.rhs, t_span, self.y0, method, t_eval=t_eval, rtol=rtol,
+                         atol=rtol * self.scales, step=step, events=events,
+                         projector=project, hamiltonian=self.energy)
+
+
+def state_scales(problem, coordinates) -> np.ndarray:
+    """Width of each coordinate's and each rate's declared range (``(2n,)``)."""
+    infos = [problem.coordinate_info(q) for q in coordinates]
+    widths = [c.range[1] - c.range[0] for c in infos]
+    rates = [c.rate_range[1] - c.rate_range[0] for c in infos]
+    return np.array(widths + rates, dtype=float)
+
+
+def _mapping(problem, ref: EquationSet, eqs: EquationSet, values) -> StateFunction:
+    if set(eqs.coordinates) == set(ref.coordinates):
+        exprs = list(eqs.coordinates)
+    else:
+        maps = problem.coordinate_maps()
+        if eqs.name not in maps:
+            raise ModelError(f"model `{eqs.name}` has no coordinate map to the reference.")
+        exprs = [maps[eqs.name][q] for q in eqs.coordinates]
+    return StateFunction(exprs + [e.diff(t) for e in exprs], ref.coordinates, values)
+
+
+def _energy(problem, eqs: EquationSet, values, q0) -> tuple[EnergyFunction | None, str]:
+    """The energy of ``eqs``' coordinates from the first conservative model that has them
+    (and a positive definite mass matrix at ``q0``: a direct model's rows may be signed)."""
+    candidates = [eqs] + [m for m in problem.models().values()
+                          if m is not eqs and tuple(m.coordinates) == tuple(eqs.coordinates)]
+    reason = ""
+    for m in candidates:
+        why = conservative_reason(m, values)
+        if why is None:
+            energy = EnergyFunction(m, values)
+            try:
+                np.linalg.cholesky(energy.mass_matrix(q0))
+                return energy, ""
+            except np.linalg.LinAlgError:
+                why = "its mass matrix is not positive definite (signed rows)"
+        reason = reason or why
+    return None, reason or "no model in these coordinates"
+
+
+def _outside_reactions(problem, values) -> Callable:
+    """Reactions of the problem's direct models at states in the reference coordinates."""
+    direct = [problem.in_reference_coordinates(m) for m in problem.models().values()
+              if m.unknowns]
+    numeric = [(m, NumericModel(m, values)) for m in direct if m.is_square]
+
+    def reactions(time, q, qd) -> dict:
+        out: dict = {}
+        for m, nm in numeric:
+            for u, row in zip(m.unknowns, nm.solve(time, q, qd)[m.n:]):
+                out.setdefault(u.name, row)
+        return out
+    return reactions
+
+
+def formulations(problem, params: Mapping | None = None, y0=None,
+                 stabilisations: Sequence[str] = STABILISATIONS,
+                 models: Sequence[str] | None = None) -> tuple[list[Formulation], dict]:
+    """The problem's formulations and ``{model: why it is not one}`` for the rest.
+
+    ``y0`` is the initial state in the reference coordinates (default
+    :func:`~dualmech.numeric.simulate.default_initial_state`); ``models`` limits the models.
+    The reference model comes first.
+    """
+    values = problem_parameters(problem, params)
+    ref = problem.model(problem.reference)
+    if y0 is None:
+        q0, qd0 = default_initial_state(problem)
+        y0 = q0 + qd0
+    y0 = np.asarray(y0, dtype=float)
+    n = ref.n
+    names = [problem.reference] + [m for m in problem.models() if m != problem.reference]
+    if models is not None:
+        names = [m for m in names if m in models]
+    out, skipped = [], {}
+    for name in names:
+        eqs = problem.model(name)
+        try:
+            out.extend(_forms(problem, ref, eqs, values, y0, n, stabilisations))
+        except ModelError as exc:
+            skipped[name] = str(exc)
+    return out, skipped
+
+
+def _forms(problem, ref, eqs, values, y0, n, stabilisations) -> list[Formulation]:
+    mapping = _mapping(problem, ref, eqs, values)
+    y_own = mapping(0.0, y0[:n], y0[n:])
+    scales = state_scales(problem, eqs.coordinates)
+    energy, note = _energy(problem, eqs, values, y_own[: eqs.n])
+    constraint_rows = len(eqs.equations) - len(dynamic_rows(eqs))
+    square = len(eqs.equations) == eqs.n + len(eqs.unknowns)
+    if square and not constraint_rows:
+        nm = NumericModel(eqs, values)
+        own = bool(eqs.unknowns)
+        in_ref = tuple(eqs.coordinates) == tuple(ref.coordinates)
+        return [Formulation(eqs.name, "ode", eqs, nm.rhs, y_own, scales, mapping,
+                            tuple(u.name for u in eqs.unknowns), None, energy, note,
+                            nm.solve if own else None,
+                            _outside_reactions(problem, values) if in_ref and not own
+                            else None)]
+    if square:
+        constraints = constraints_of(eqs)
+    elif len(eqs.equations) < eqs.n + len(eqs.unknowns):
+        constraints = _borrowed_constraints(problem, eqs)
+    else:
+        raise ModelError(f"model `{eqs.name}` has more equations than unknowns.")
+    out = []
+    for stab in stabilisations:
+        cm = ConstrainedModel(eqs, values, constraints, anchor=y_own[: eqs.n],
+                              stabilisation=stab)
+        out.append(Formulation(f"{eqs.name} ({_LABEL[stab]})", "dae", eqs, cm.rhs, y_own,
+                               scales, mapping, cm.reaction_names, cm, energy, note,
+                               cm.numeric.solve))
+    return out
+
+
+def _borrowed_constraints(problem, eqs: EquationSet):
+    """The constraints of a multiplier model in ``eqs``' coordinates holding its reactions."""
+    names = {u.name for u in eqs.unknowns}
+    for other in problem.models().values():
+        if other is eqs or tuple(other.coordinates) != tuple(eqs.coordinates):
+            continue
+        try:
+            c = constraints_of(other)
+        except ModelError:
+            continue
+        if {u.name for u in c.multipliers} == names:
+            order = {u.name: i for i, u in enumerate(c.multipliers)}
+            idx = [order[u.name] for u in eqs.unknowns]
+            return type(c)(c.coordinates, tuple(eqs.unknowns),
+                           tuple(c.expressions[i] for i in idx))
+    raise ModelError(f"model `{eqs.name}` has fewer equations than unknowns and no multiplier "
+                     "model in its coordinates supplies the constraints.")

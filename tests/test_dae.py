@@ -1,0 +1,186 @@
+"""Maximal-coordinate DAE forms and the integrators (dualmech.numeric.dae, .integrators, .energy).
+
+The model case is the particle pendulum of source 003 (problems/pendulum_particle.py): the
+bob in (x, y) with the rod as a constraint (index 3), the rod force S as the multiplier.
+Reference values are the hand formula ``S = m (g cos(theta) + l theta'^2)`` (the body-axes
+balance, solved by hand in the problem module) and the minimal-coordinate ODE.
+"""
+import numpy as np
+import pytest
+import sympy as sp
+
+from dualmech import Lagrangian, coordinate, t
+from dualmech.equations import ModelError
+from dualmech.numeric.dae import constraints_of
+from dualmech.numeric.energy import EnergyFunction, conservative_reason
+from dualmech.numeric.formulations import formulations
+from dualmech.numeric.integrators import METHODS, integrate
+from problems import get
+from problems.pendulum_particle import l, x, y
+
+EPS = np.finfo(float).eps
+M_, L_, G_ = 1.0, 1.0, 9.81          # the problem's default m, l, g
+THETA0 = 1.0                          # released at rest from 1 rad
+
+
+@pytest.fixture(scope="module")
+def pendulum():
+    forms, skipped = formulations(get("pendulum_particle"), y0=[THETA0, 0.0])
+    assert skipped == {}
+    return {f.name: f for f in forms}
+
+
+@pytest.fixture(scope="module")
+def reference(pendulum):
+    """The minimal-coordinate ODE at DOP853's tightest useful tolerance, 20 s."""
+    te = np.linspace(0.0, 20.0, 401)
+    run = pendulum["lagrange"].run("DOP853", (0.0, 20.0), te, rtol=1e-13)
+    return te, run
+
+
+def _theta(y):
+    """The hand inverse of the map x = l sin(theta), y = l cos(theta)."""
+    th = np.arctan2(y[0], y[1])
+    thd = (y[2] * y[1] - y[0] * y[3]) / (y[0]**2 + y[1]**2)
+    return th, thd
+
+
+# -- constraints recovered from the acceleration rows -------------------------------------
+def test_rod_constraint_is_recovered_from_the_acceleration_row():
+    c = constraints_of(get("pendulum_particle").model("cartesian"))
+    g = c.expressions[0]
+    # the model wrote (l^2 - x^2 - y^2)/(2 l): the recovered g differs by a constant only
+    assert sp.expand(g.diff(x) + x / l) == 0 and sp.expand(g.diff(y) + y / l) == 0
+    assert [u.name for u in c.multipliers] == ["S"]
+
+
+def test_velocity_level_constraint_is_refused_with_what_to_do():
+    # knife edge: sin(th) x' - cos(th) y' = 0 cannot be written as g(x, y, th) = 0
+    X, Y, th = coordinate("X"), coordinate("Y"), coordinate("th")
+    m = sp.Symbol("m", positive=True)
+    lg = Lagrangian("knife", coordinates=[X, Y, th])
+    lg.kinetic("T", m * (X.diff(t)**2 + Y.diff(t)**2 + th.diff(t)**2) / 2)
+    lg.velocity_constraint("F", [sp.sin(th), -sp.cos(th), 0])
+    with pytest.raises(ModelError, match="velocity-level constraint.*constraints="):
+        constraints_of(lg.equations())
+
+
+def test_direct_inertial_form_borrows_the_multiplier_models_constraint(pendulum):
+    f = pendulum["newton_euler_inertial (DAE, index 1)"]
+    assert f.kind == "dae" and f.reaction_names == ("S",)
+    assert [str(e) for e in f.constrained.constraints.expressions] == \
+        [str(e) for e in constraints_of(get("pendulum_particle").model("cartesian")).expressions]
+
+
+# -- reactions: both routes ---------------------------------------------------------------
+@pytest.mark.parametrize("name", ["cartesian (DAE, index 1)", "cartesian (DAE, Baumgarte)",
+                                  "newton_euler_inertial (DAE, index 1)"])
+def test_multiplier_at_a_state_on_the_rod_is_the_hand_rod_force(pendulum, reference, name):
+    """At states on the manifold every DAE form gives S = m (g cos + l theta'^2) to rounding:
+    a few dozen operations on terms no larger than m g + m l theta'^2."""
+    te, run = reference
+    f = pendulum[name]
+    th, thd = run.y
+    Y = f.from_reference(te, run.y[:1], run.y[1:])
+    S = f.reactions(te, Y)["S"]
+    hand = M_ * (G_ * np.cos(th) + L_ * thd**2)
+    scale = M_ * G_ + M_ * L_ * thd**2
+    assert np.abs(S - hand).max() <= 64 * EPS * scale.max()
+
+
+def test_reactions_along_the_dae_and_the_ode_converge_to_one_another(pendulum):
+    """Each route's error is estimated against its own run at 1/1000 of the tolerance; the
+    routes' disagreement at the loose tolerance must fit inside the sum of the two."""
+    te = np.linspace(0.0, 5.0, 101)
+    ode, dae = pendulum["lagrange"], pendulum["cartesian (DAE, Baumgarte)"]
+
+    def rod_force(f, rtol):
+        run = f.run("DOP853", (0.0, 5.0), te, rtol=rtol)
+        return f.reactions(te, run.y)["S"] if f is dae else \
+            M_ * (G_ * np.cos(run.y[0]) + L_ * run.y[1]**2)
+    loose = {f.name: rod_force(f, 1e-6) for f in (ode, dae)}
+    tight = {f.name: rod_force(f, 1e-9) for f in (ode, dae)}
+    estimate = sum(np.abs(loose[k] - tight[k]).max() for k in loose)
+    assert np.abs(loose[ode.name] - loose[dae.name]).max() <= estimate
+
+
+# -- drift ----------------------------------------------------------------------------------
+def _growth(te, g):
+    """Exponent p of |g| ~ t^p: least squares on the running maximum, t in [1, end]."""
+    envelope = np.maximum.accumulate(np.abs(g))
+    keep = te >= 1.0
+    return np.polyfit(np.log(te[keep]), np.log(envelope[keep]), 1)[0]
+
+
+@pytest.fixture(scope="module")
+def drifts(pendulum):
+    te = np.linspace(0.0, 20.0, 401)
+    out = {}
+    for stab in ("index 1", "Baumgarte", "projection"):
+        f = pendulum[f"cartesian (DAE, {stab})"]
+        run = f.run("RK45", (0.0, 20.0), te, rtol=1e-6)
+        assert run.success
+        out[stab] = f.drift(run.y)[0][0]
+    return te, out
+
+
+def test_index_one_drift_grows_faster_than_linearly(drifts):
+    te, g = drifts
+    # g'' = 0 is all the index-1 form holds: errors in g' add up, g integrates them (~t^2)
+    assert _growth(te, g["index 1"]) > 1
+
+
+def test_baumgarte_keeps_the_drift_bounded(drifts):
+    te, g = drifts
+    assert _growth(te, g["Baumgarte"]) < 1
+    assert np.abs(g["Baumgarte"][-100:]).max() < np.abs(g["index 1"][-100:]).max()
+
+
+def test_projection_holds_the_rod_length_to_its_own_stopping_rule(drifts):
+    te, g = drifts
+    assert np.abs(g["projection"]).max() <= 1e-13 * L_   # ConstrainedModel.project's test
+
+
+# -- integrators ----------------------------------------------------------------------------
+@pytest.mark.parametrize("method", [m for m in METHODS if m != "midpoint"])
+def test_scipy_methods_solve_the_harmonic_oscillator(method):
+    """y = sin t: each run's error is within the error it estimated for itself (tolerances
+    times the solution's size, summed over the steps it took)."""
+    te = np.linspace(0, 2 * np.pi, 9)
+    run = integrate(lambda s, y: np.array([y[1], -y[0]]) if np.ndim(y) == 1
+                    else np.vstack([y[1], -y[0]]), (0, 2 * np.pi), [0.0, 1.0], method,
+                    t_eval=te, rtol=1e-8, atol=1e-10)
+    assert run.success and run.steps > 0 and run.calls >= run.steps
+    assert np.abs(run.y[0] - np.sin(te)).max() <= run.steps * (1e-8 + 1e-10)
+
+
+def test_midpoint_rule_is_second_order_in_energy():
+    lag = formulations(get("pendulum_particle"), y0=[THETA0, 0.0],
+                       models=["lagrange"])[0][0]
+    te = np.linspace(0, 2.0, 21)
+    errs = []
+    for h in (0.04, 0.02, 0.01):
+        run = lag.run("midpoint", (0, 2.0), te, step=h)
+        errs.append(np.abs(lag.energy_change(run.y)).max())
+    order = np.polyfit(np.log([0.04, 0.02, 0.01]), np.log(errs), 1)[0]
+    assert round(order) == 2
+
+
+def test_midpoint_energy_error_is_bounded_where_rk45_drifts():
+    """Growth exponent of the energy error's envelope over 40 small-angle periods: 0 for the
+    symplectic rule (bounded), 1 for RK45 (a drift linear in time)."""
+    lag = formulations(get("pendulum_particle"), y0=[THETA0, 0.0],
+                       models=["lagrange"])[0][0]
+    end = 40 * 2 * np.pi * np.sqrt(L_ / G_)
+    te = np.linspace(0, end, 2001)
+    mid = lag.run("midpoint", (0, end), te, step=0.02)
+    rk = lag.run("RK45", (0, end), te, rtol=1e-6)
+    assert round(_growth(te, lag.energy_change(mid.y))) == 0
+    assert round(_growth(te, lag.energy_change(rk.y))) == 1
+
+
+def test_energy_of_a_damped_model_is_refused_with_the_reason():
+    p = get("falling_container")
+    assert "dissipation" in conservative_reason(p.model("lagrange"))
+    with pytest.raises(ModelError, match="no conserved energy"):
+        EnergyFunction(p.model("lagrange"), p.defaults())
