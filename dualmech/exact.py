@@ -241,7 +241,9 @@ class ExactForm:
         for _ in range(2):
             point = self._sample_exact(rng)
             self._counter = 0
-            d = [x for x in self._radicand_list(self._args(point, radicals=False)) if x != 0]
+            args = self._args(point, radicals=False)
+            args += [0] * (len(self._world.radicals) + len(self._world.branches))
+            d = [x for x in self._radicand_list(args) if x != 0]
             if independent([x for x in d if not _square(x)]):
                 return
         raise NotExact(self._world.radicals[0][1], "square roots whose product is a perfect "
@@ -300,7 +302,10 @@ class ExactForm:
         return list(self._fn(*args))
 
     def _args(self, point, radicals: bool = True) -> list:
-        """Arguments of the compiled functions: symbols, world values, roots, branch pieces."""
+        """Arguments of the compiled functions: symbols, world values, roots, branch pieces.
+
+        Branches with constant pieces (signs) come first: a root's radicand may use them.
+        """
         w = self._world
         args = [point[keys[0]] for keys in self._read.values()]
         us = {i: point[a] for i, a in enumerate(w.atoms)}
@@ -311,19 +316,20 @@ class ExactForm:
             args.append(point[sp.pi])
         if not radicals:
             return args
-        if w.radicals:
-            args.extend(self._roots(args))
-        if w.branches:
-            case = self.cases[point.get(CASE, 0)]
-            base = len(args)
-            args.extend([0] * len(w.branches))
-            for i, (fns, c) in enumerate(zip(self._choices, case.choices)):
-                args[base + i] = fns[c](*args)
+        roots_at = len(args)
+        branches_at = roots_at + len(w.radicals)
+        args.extend([0] * (len(w.radicals) + len(w.branches)))
+        case = self.cases[point.get(CASE, 0)] if w.branches else None
+        for pre in (True, False):
+            if not pre and w.radicals:
+                args[roots_at:branches_at] = self._roots(args)
+            for i, (b, fns) in enumerate(zip(w.branches, self._choices)):
+                if b.pre == pre:
+                    args[branches_at + i] = fns[case.choices[i]](*args)
         return args
 
     def _radicand_list(self, args) -> list:
-        pad = args + [0] * (len(self._world.radicals) + len(self._world.branches))
-        vals = list(self._radicands(*pad))
+        vals = list(self._radicands(*args))
         for v in vals:
             if not isinstance(v, (int, Fraction)):
                 raise ValueError("a radicand is not rational at this point")

@@ -53,7 +53,13 @@ def _prepare(rows, kind):
         return [[v if isinstance(v, (Fraction, Surd)) else Fraction(v) for v in r] for r in rows]
     if kind == "interval":
         return [[to_interval(v) for v in r] for r in rows]
-    return [list(r) for r in rows]
+    return [[_mpf(v) for v in r] for r in rows]
+
+
+def _mpf(v):
+    if isinstance(v, Fraction):
+        return mpmath.mpf(v.numerator) / v.denominator
+    return v if isinstance(v, mpmath.mpf) else mpmath.mpf(v)
 
 
 def _size(v) -> int:

@@ -25,43 +25,25 @@ first sub-expression that leaves it (the caller then falls back to interval arit
 from __future__ import annotations
 
 import math
-import random
 from dataclasses import dataclass
-from fractions import Fraction
 from typing import Callable
 
 import sympy as sp
+
+from .errors import NotExact, Undecidable
+from .radicals import factor_signs, factored_sqrt, radicals_dependent, square_sqrt
 
 __all__ = ["Undecidable", "NotExact", "AtomKey", "World", "analyse", "MAX_MULTIPLE",
            "degree_bound"]
 
 #: Largest total multiple ``sum |k_j|`` of an exact trigonometric/exponential argument; beyond
 #: it the numbers grow too long and interval arithmetic takes over.
-MAX_MULTIPLE = 4096
+MAX_MULTIPLE = 2048
 _MAX_RADICAND_MULTIPLE = 16
 
 _CIRCLE = {sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc}
 _GROWTH = {sp.exp, sp.sinh, sp.cosh, sp.tanh, sp.coth, sp.sech, sp.csch}
 _BRANCH = (sp.Abs, sp.sign, sp.Heaviside, sp.Max, sp.Min, sp.Piecewise)
-
-
-class Undecidable(ValueError):
-    """No method here can decide this soundly; ``expr`` is the sub-expression, ``why`` the reason.
-
-    Raised instead of ever giving a verdict that could be wrong.
-    """
-
-    def __init__(self, expr, why: str):
-        self.expr, self.why = expr, why
-        super().__init__(f"cannot decide identities involving `{expr}`: {why}")
-
-
-class NotExact(Exception):
-    """``expr`` leaves the exact world (``why``); interval arithmetic may still evaluate it."""
-
-    def __init__(self, expr, why: str):
-        self.expr, self.why = expr, why
-        super().__init__(f"{expr}: {why}")
 
 
 @dataclass(frozen=True)
@@ -100,6 +82,11 @@ class Branch:
     choices: list
     pick: Callable  # (sign vector tuple) -> index into choices, or None (undefined there)
     labels: list    # per choice: where it applies, in words
+
+    @property
+    def pre(self) -> bool:
+        """Constant pieces (a sign): evaluated before the square roots, which may use it."""
+        return all(c.is_number for c in self.choices)
 
 
 @dataclass
@@ -375,8 +362,14 @@ class _Builder:
     def build(self, exprs) -> World:
         self._atoms()
         self._trig_rules()
-        for node, (radicand, p) in self.scan.radicals.items():
-            self.rule[node] = self._radical(node, radicand.xreplace(self.rule)) ** p
+        roots = [(node, radicand.xreplace(self.rule), p)
+                 for node, (radicand, p) in self.scan.radicals.items()]
+        # independent radicands stay whole; dependent ones (sqrt(2)*sqrt(x^2+1) beside
+        # sqrt(2*x^2+2)) are split into roots of irreducible factors, with their signs as cases
+        split = len(roots) > 1 and radicals_dependent(self, [r for _, r, _ in roots])
+        for node, radicand, p in roots:
+            root = factored_sqrt(self, node, radicand) if split else self._radical(node, radicand)
+            self.rule[node] = root ** p
         for node in self.scan.branches:
             self._branch(node)
         out = [e.xreplace(self.rule) for e in exprs]
@@ -385,14 +378,7 @@ class _Builder:
 
     def _radical(self, node, radicand) -> sp.Expr:
         """``sqrt(radicand)``: a radical dummy, or ``|Y| * sqrt(rest)`` for a square factor."""
-        if _square_at_points(self, radicand):
-            c, Y, rest = _split_square(self, radicand, node)
-            abs_y = self._abs_branch(sp.Abs(Y), Y, self._real_form(Y)) if Y.free_symbols \
-                else abs(Y)
-            if rest == 1 and sp.sqrt(c).is_Rational:
-                return sp.sqrt(c) * abs_y
-            return abs_y * self._radical_dummy(c * rest)
-        return self._radical_dummy(radicand)
+        return square_sqrt(self, node, radicand) or self._radical_dummy(radicand)
 
     def _radical_dummy(self, radicand):
         hit = self.radical_index.get(radicand)
@@ -446,25 +432,7 @@ class _Builder:
 
     def _factors(self, g_world):
         """``(sign constant, [irreducible factors with odd multiplicity])`` or ``None``."""
-        if g_world.is_number:
-            return (1 if g_world > 0 else -1), []
-        rule = _u_rule(self, g_world)
-        if rule is None:
-            return None
-        X = sp.cancel(sp.together(g_world.xreplace(rule)))
-        if sp.count_ops(X) > 400:
-            return None
-        const, out = 1, []
-        for poly in sp.fraction(X):
-            c, factors = sp.factor_list(poly)
-            const *= 1 if c > 0 else -1
-            for f, mult in factors:
-                if mult % 2 == 0:
-                    continue
-                if _leading_negative(f):
-                    f, const = -f, -const
-                out.append(f)
-        return const, out
+        return factor_signs(self, g_world)
 
     def _add_branch(self, node, choices, pick, labels) -> sp.Dummy:
         beta = sp.Dummy(f"b{len(self.branches)}")
@@ -541,88 +509,6 @@ class _Builder:
 
 # ---------------------------------------------------------------------------------------
 # square roots of squares
-def _u_rule(b: _Builder, expr) -> dict | None:
-    """World dummies of ``expr`` as rational functions of the atoms' ``u``/``w`` (for factoring),
-    or ``None`` when an angle's multiple is too large to expand."""
-    rule = {}
-    free = expr.free_symbols
-    for n, (kind, terms, dummies) in enumerate(b.args):
-        if not any(d in free for d in dummies):
-            continue
-        hit = b.u_cache.get(n)
-        if hit is None:
-            if kind == "circle" and sum(abs(k) for _, k in terms) > _MAX_RADICAND_MULTIPLE:
-                return None
-            hit = b.u_cache[n] = _u_form_of(b, kind, terms)
-        rule.update(zip(dummies, hit))
-    return rule
-
-
-def _u_form_of(b: _Builder, kind, terms) -> tuple:
-    if kind != "circle":
-        return (sp.Mul(*[b.u[i] ** k for i, k in terms]),)
-    num, den = sp.S.One, sp.S.One
-    for i, k in terms:
-        u = b.u[i]
-        num *= (1 + sp.I * u * (1 if k > 0 else -1)) ** (2 * abs(k))
-        den *= (1 + u**2) ** abs(k)
-    num = sp.expand(num)
-    conj = num.subs(sp.I, -sp.I)
-    return sp.expand((num - conj) / (2 * sp.I)) / den, sp.expand((num + conj) / 2) / den
-
-
-def _square_at_points(b: _Builder, radicand) -> bool:
-    """Is the radicand a rational square at two random world points?  (Cheap screen.)"""
-    from .surd import is_square
-    if not radicand.free_symbols:
-        return False
-    rng = random.Random(1)
-    for _ in range(2):
-        values = {s: sp.Integer(rng.randrange(-2**40, 2**40)) for s in radicand.free_symbols}
-        values.update(_world_point(b, rng, radicand))
-        v = radicand.xreplace(values)
-        if not v.is_Rational or not is_square(Fraction(int(v.p), int(v.q))):
-            return False
-    return True
-
-
-def _world_point(b: _Builder, rng, expr) -> dict:
-    from .circle import world_values
-    us = {i: Fraction(rng.randrange(-2**40, 2**40)) if a.kind == "circle"
-          else Fraction(rng.randrange(1, 2**40)) for i, a in enumerate(b.atoms)}
-    vals = world_values(b.args, us)
-    out = {}
-    for (kind, terms, dummies), v in zip(b.args, vals):
-        for d, x in zip(dummies, v):
-            out[d] = sp.Rational(x.numerator, x.denominator)
-    for i, x in us.items():
-        out[b.u[i]] = sp.Rational(x.numerator, x.denominator)
-    if b.pi is not None:
-        out[b.pi] = sp.Integer(rng.randrange(-2**40, 2**40))
-    return out
-
-
-def _split_square(b: _Builder, radicand, node):
-    """``radicand = c * Y**2 * rest`` with ``rest`` square-free; world expressions in u/w."""
-    u_rule = _u_rule(b, radicand)
-    if u_rule is None:
-        raise NotExact(node, "a square root of a large multiple of an angle")
-    X = sp.cancel(sp.together(radicand.xreplace(u_rule)))
-    num, den = sp.fraction(X)
-    c, Y, rest = sp.S.One, sp.S.One, sp.S.One
-    for poly, power in ((num, 1), (den, -1)):
-        coeff, factors = sp.sqf_list(poly)
-        c *= coeff ** power
-        for f, mult in factors:
-            Y *= f ** ((mult // 2) * power)
-            if mult % 2:
-                rest *= f ** power
-    if rest == 1 and c.is_negative:
-        raise Undecidable(node, "the square root of a negative square is imaginary wherever "
-                                "it is defined")
-    return c, Y, rest
-
-
 class _Label:
     """``expr`` and a relation, written out when first shown (a ``tan(a/2)`` form from a square
     root is then simplified, if small: display only, never for a decision)."""
@@ -645,12 +531,6 @@ class _Label:
         return str(self) == str(other)
 
     __hash__ = None
-
-
-def _leading_negative(f) -> bool:
-    """Is the leading coefficient of ``f`` negative (in a fixed order of its symbols)?"""
-    gens = sorted(f.free_symbols, key=sp.default_sort_key)
-    return sp.Poly(f, *gens).LC() < 0
 
 
 def degree_bound(expr, weights: dict, memo: dict | None = None) -> tuple[int, int]:
