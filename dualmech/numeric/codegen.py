@@ -38,7 +38,7 @@ import sympy as sp
 __all__ = ["GENERATOR_VERSION", "Program", "Printer", "program", "python_source"]
 
 #: Bumped whenever the generated code changes meaning or form (invalidates every cache entry).
-GENERATOR_VERSION = "4"
+GENERATOR_VERSION = "7"
 
 
 @dataclass(frozen=True)
@@ -102,12 +102,18 @@ class _Splitter:
                 (dy.append(self.inner(f)) if f.free_symbols & self.dynamic else st.append(f))
             d = se.Mul(*dy)
             out[d] = out.get(d, 0) + se.Mul(*st)
-        return {d: c for d, c in out.items() if c != 0}
+        return _pythagoras({d: c for d, c in out.items() if c != 0})
 
     def split(self, expr):
+        """``expr`` as static coefficients times dynamic monomials, with the most frequent
+        factors taken out of the sums (``s1 (k1 c2 + k2 c3)``, not ``k1 s1 c2 + k2 s1 c3``)."""
         if self.is_static(expr):
             return self.statics.symbol(expr)
-        return se.Add(*[self.statics.symbol(c) * d for d, c in self.groups(expr).items()])
+        terms = []
+        for d, c in self.groups(expr).items():
+            k = self.statics.symbol(c)
+            terms.append([f for f in _args(k, "Mul") + _args(d, "Mul") if f != 1])
+        return _horner(terms)
 
     def inner(self, f):
         """A dynamic factor with the static parts of its arguments hoisted as well."""
@@ -142,6 +148,57 @@ class _Splitter:
                 mono = se.Mul(*[_untrig(f) for f in _args(d, "Mul")])
                 by_mono[mono] = by_mono.get(mono, 0) + se.Abs(c)
         return se.Add(*[self.statics.symbol(c) * m for m, c in by_mono.items()])
+
+
+def _pythagoras(groups: dict) -> dict:
+    """Merge ``c X cos(a)^2 + c X sin(a)^2`` into ``c X`` (same coefficient ``c`` only, so no
+    cancellation is introduced: ``1 - sin^2`` would lose digits where ``cos`` is small)."""
+    changed = True
+    while changed:
+        changed = False
+        for d in list(groups):
+            for f in _args(d, "Mul"):
+                if not (type(f).__name__ == "Pow" and f.args[1] == 2
+                        and type(f.args[0]).__name__ == "cos"):
+                    continue
+                rest = d / f
+                partner = rest * se.sin(f.args[0].args[0]) ** 2
+                if partner in groups and se.expand(groups[partner] - groups[d]) == 0:
+                    c = groups.pop(d)
+                    groups.pop(partner)
+                    groups[rest] = groups.get(rest, 0) + c
+                    if groups[rest] == 0:
+                        del groups[rest]
+                    changed = True
+                    break
+            if changed:
+                break
+    return groups
+
+
+def _horner(terms: list) -> object:
+    """The sum of the products ``terms`` (lists of factors), the most frequent factor taken
+    out first, recursively (a multivariate Horner scheme: fewer multiplications)."""
+    if len(terms) < 2:
+        return se.Add(*[se.Mul(*t) for t in terms])
+    counts: dict = {}
+    for t in terms:
+        for f in set(t):
+            if not f.is_Number:
+                counts[f] = counts.get(f, 0) + 1
+    best = max(counts.items(), key=lambda kv: kv[1], default=(None, 0))
+    if best[1] < 2:
+        return se.Add(*[se.Mul(*t) for t in terms])
+    f = best[0]
+    inside, outside = [], []
+    for t in terms:
+        if f in t:
+            rest = list(t)
+            rest.remove(f)
+            inside.append(rest)
+        else:
+            outside.append(t)
+    return se.Add(se.Mul(f, _horner(inside)), _horner(outside))
 
 
 def _untrig(f):

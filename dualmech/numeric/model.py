@@ -342,13 +342,14 @@ class NumericModel:
             if det * det > _TRIP * _TRIP * fro * max(fro, scale * scale):
                 return [(d * f0 - b * f1) / det, (a * f1 - c * f0) / det]
         else:
-            A = np.array(outs[:mn]).reshape(N, N)
-            lu, _, x, info = dgesv(A, np.array(outs[mn: mn + N]))
-            if info == 0:
-                piv = np.abs(lu.diagonal())
-                low = piv.min()
-                if low > _TRIP * max(piv.max(), scale) and np.isfinite(x).all():
-                    return x.tolist()
+            A = np.fromiter(outs[:mn], float, mn).reshape(N, N)
+            lu, _, x, info = dgesv(A, np.fromiter(outs[mn: mn + N], float, N))
+            if info == 0:  # (Python on short lists is faster than NumPy reductions here)
+                piv = [abs(v) for v in lu.diagonal().tolist()]
+                xl = x.tolist()
+                total = sum(xl)
+                if min(piv) > _TRIP * max(max(piv), scale) and total - total == 0.0:
+                    return xl
         A = np.array(outs[:mn], dtype=float).reshape(N, N)
         self._check(A, scale, time, y)
         return np.linalg.solve(A, np.array(outs[mn: mn + N], dtype=float)).tolist()
