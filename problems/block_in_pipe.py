@@ -132,9 +132,6 @@ class BlockInPipe(Problem):
         Coordinate(theta, ANGLE, (-2.5, 2.5), (-4.0, 4.0), "pipe angle from the downward vertical"),
         Coordinate(y, LENGTH, (0.1, 2.5), (-3.0, 3.0), "distance of the block from O"),
     )
-    extra_coordinates = (
-        Coordinate(w, LENGTH, (-0.05, 0.05), (-0.5, 0.5), "block off the pipe's axis, along e_th"),
-    )
     reactions = (Reaction("N", FORCE, "pipe on the block, along e_th = P.x"),)
     singular = (y,)
 

@@ -247,6 +247,10 @@ class InertiaWheelPendulum(Problem):
                       where="(d II): WRONG as extracted, I2 (q1'' + q2'') for I2 (q1' + q2')"),
             Published("(d II) q2 equation", "equation", (I2 * (a1 + a2) - tau,),
                       where="(d II)"),
+            Published("(d) equations of motion", "motion",
+                      (m1 * l_c1 * a1 + I1 * a1 + m2 * l1**2 * a1 + I2 * (a1 + a2)
+                       + m1 * l_c1 * g * s + m2 * l1 * g * s, I2 * (a1 + a2) - tau),
+                      where="(d), (d II) together: WRONG, the q1 equation (m1 l_c1 q1'')"),
         ]
 
 

@@ -186,7 +186,7 @@ class InvertedPendulumSprings(Problem):
                        -k * a**2 * sp.sin(2 * theta) + m * g * l * s),
                       (L.diff(th1), L.diff(th1).diff(t), L.diff(theta), L.diff(theta)),
                       where=where + " b"),
-            Published("(b) equation of motion", "equation",
+            Published("(b) equation of motion", "motion",
                       (m * l**2 * th2 + k * a**2 * sp.sin(2 * theta) - m * g * l * s,),
                       where=where + " b"),
             Published("(c) first-order form", "expression",

@@ -171,7 +171,6 @@ class PendulumOnRotatingPlane(Problem):
         Coordinate(theta, ANGLE, (-3.0, 3.0), (-4.0, 4.0), "rod angle in the plane, from i"),
     )
     extra_coordinates = (
-        Coordinate(beta, ANGLE, (-3.0, 3.0), (-3.0, 3.0), "plane's angle (prescribed)"),
         Coordinate(b, ANGLE, (-3.0, 3.0), (-3.0, 3.0), "mass's own angle about Y"),
         Coordinate(z, LENGTH, (-0.05, 0.05), (-0.5, 0.5), "height of the mass off the plane"),
     )
@@ -273,8 +272,10 @@ class PendulumOnRotatingPlane(Problem):
                        m * b1**2 * lever * l * s - m * g * l * s * sb),
                       (L.diff(th1), L.diff(th1).diff(t), L.diff(theta)), where="(d)"),
             Published("(d) theta equation", "equation",
-                      (m * l**2 * th2 - m * b1**2 * lever * l * s + m * g * l * s * sb,
-                       l * th2 - b1**2 * lever * s + g * s * sb), where="(d), and boxed"),
+                      (m * l**2 * th2 - m * b1**2 * lever * l * s + m * g * l * s * sb,),
+                      where="(d)"),
+            Published("(d) equation of motion", "motion",
+                      (l * th2 - b1**2 * lever * s + g * s * sb,), where="(d), boxed"),
             Published("(d) beta: dL/dbeta', d/dt, dL/dbeta", "expression",
                       (m * b1 * lever**2, m * b2 * lever**2 + 2 * m * b1 * lever * l * s * th1,
                        -m * g * lever * cb),

@@ -1,4 +1,4 @@
-r"""The pendulum as a particle: inertial Cartesian coordinates (an index-3 DAE) and body coordinates.
+r"""The pendulum as a particle: inertial Cartesian coordinates (index-3 DAE) and body coordinates.
 
 Source: ``sources/003_d6818267b4d96a20.txt``, lecture 18, "Example: Pendulum" (the slides
 "Pendulum - inertial", "Differential index I/II", "Pendulum - body I/II", "Pendulum -
@@ -161,7 +161,7 @@ class PendulumParticle(Problem):
         return ne.equations().simplified()
 
     def newton_euler_inertial(self) -> EquationSet:
-        """Inertial axes, equations (1), (2): the bob at ``x i1 - y i2``, ``b2 = (-x i1 + y i2)/l``."""
+        """Inertial axes, equations (1), (2): bob at ``x i1 - y i2``, ``b2 = (-x i1 + y i2)/l``."""
         O = Frame.ground("O")
         bob = Particle("bob", m, Point.origin(O).locate("bob", x * O.x - y * O.y))
         ne = NewtonEuler("newton_euler_inertial", coordinates=[x, y], ground=O,
@@ -193,7 +193,7 @@ class PendulumParticle(Problem):
     def published(self) -> list[Published]:
         f = frames()
         O, B = f.O, f.B
-        i1, i2, b1, b2 = O.x, O.y, B.x, B.y
+        i2, b1, b2 = O.y, B.x, B.y
         s, c = sp.sin(theta), sp.cos(theta)
         th1, th2 = D(theta), DD(theta)
         inB = lambda v: tuple(v.express(B).components)  # noqa: E731
@@ -240,9 +240,10 @@ class PendulumParticle(Problem):
                       "m l^2 theta'"),
             Published("dL/dtheta", "expression", (-m * g * l * s,), (L.diff(theta),),
                       where="Pendulum - Lagrange"),
-            Published("equation of motion", "equation",
-                      (m * l**2 * th2 + m * g * l * s, l * th2 + g * s),
+            Published("equation of motion", "equation", (m * l**2 * th2 + m * g * l * s,),
                       where="Pendulum - Lagrange"),
+            Published("equation of motion, final", "motion", (l * th2 + g * s,),
+                      where="Pendulum - Lagrange, last line"),
             Published("r, v, v.v", "expression",
                       (l * s, -l * c, l * c * th1, l * s * th1, l**2 * th1**2),
                       tuple(f.bob.pos_from(f.o).express(O).components[:2])

@@ -189,8 +189,9 @@ class RigidRodPendulum(Problem):
                       (m * l**2 * th1 / 3, -m * g * l / 2 * sp.sin(theta)),
                       (L.diff(th1), L.diff(theta)), where=where2),
             Published("equation of motion", "equation",
-                      (m * l**2 * th2 / 3 + m * g * l / 2 * sp.sin(theta),
-                       th2 + sp.Rational(3, 2) * g / l * sp.sin(theta)), where=where2),
+                      (m * l**2 * th2 / 3 + m * g * l / 2 * sp.sin(theta),), where=where2),
+            Published("equation of motion, final", "motion",
+                      (th2 + sp.Rational(3, 2) * g / l * sp.sin(theta),), where=where2),
         ]
 
 

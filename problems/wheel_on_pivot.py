@@ -32,12 +32,12 @@ Body: the wheel, mass ``m`` at G, inertia about G in ``W`` axes ``diag(m a^2/2, 
 m a^2/4)`` (thin disk, normal ``i``).  The axle is massless and carries the pivot force.
 
 Free-body diagram (wheel with its axle): weight ``-m g k`` at G; contact force ``F`` at C;
-pivot force ``R = R_x i + R_y j + R_z k`` at O; drive torque ``tau k``.  Rigid-body mechanics fixes only
-``a F_x + l F_z`` and ``R_x + F_x`` (the radial friction and the axle's axial force share the
-centripetal force in any proportion: statically indeterminate).  The models close it with the
-classic assumption that the contact transmits no radial friction, ``F_x = 0`` (a closure
-equation in the direct forms); the source's printed relation does not depend on it (the tests
-check it with the other extreme, ``R_x = 0``, too).
+pivot force ``R = R_x i + R_y j + R_z k`` at O; drive torque ``tau k``. Rigid-body mechanics
+fixes only ``a F_x + l F_z`` and ``R_x + F_x`` (the radial friction and the axle's axial force
+share the centripetal force in any proportion: statically indeterminate). The models close it
+with the classic assumption that the contact transmits no radial friction, ``F_x = 0`` (a
+closure equation in the direct forms); the source's printed relation does not depend on it (the
+tests check it with the other extreme, ``R_x = 0``, too).
 
 Angular momentum about O (the source's route; ``R`` has no moment about O)::
 

@@ -2,7 +2,6 @@
 import pytest
 import sympy as sp
 
-from dualmech import t
 from dualmech.compare import compare, compare_models
 from problems.block_in_pipe import BlockInPipe, g, k, m, multiplier_model, theta, y, y0
 

@@ -91,6 +91,7 @@ EXPECTED = {
     "(d) q1 equation": "wrong",             # m1 l_c1 q1'' must be m1 l_c1^2 q1''
     "(d II) dL/dq2', dL/dq2": "wrong",      # I2 (q1'' + q2'') for I2 (q1' + q2')
     "(d II) q2 equation": "correct",
+    "(d) equations of motion": "wrong",     # the set holds the wrong q1 equation
 }
 
 

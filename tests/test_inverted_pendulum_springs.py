@@ -1,4 +1,4 @@
-"""Inverted pendulum with springs (problems/inverted_pendulum_springs.py): stability by the library."""
+"""Inverted pendulum with springs (problems/inverted_pendulum_springs.py): stability, derived."""
 import pytest
 import sympy as sp
 

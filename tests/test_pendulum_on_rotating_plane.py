@@ -1,4 +1,4 @@
-"""Pendulum on a rotating plane (problems/pendulum_on_rotating_plane.py): normal force three ways."""
+"""Pendulum on a rotating plane (problems/pendulum_on_rotating_plane.py): the normal force."""
 import random
 
 import pytest
@@ -81,6 +81,7 @@ EXPECTED = {
     "(d) constraint v_z": "correct",
     "(d) theta: dL/dtheta', d/dt, dL/dtheta": "correct",
     "(d) theta equation": "correct",
+    "(d) equation of motion": "correct",
     "(d) beta: dL/dbeta', d/dt, dL/dbeta": "correct",
     "(d) beta equation with lambda_B": "correct",
     "(d) normal force lambda_B": "correct",

@@ -65,4 +65,4 @@ def test_published_verdicts(comparison):
     assert {v.label: v.verdict for v in comparison.published} == {
         "v_c": "correct", "w_ib": "correct", "I_z": "correct", "T": "correct",
         "U": "correct", "L": "correct", "dL/dtheta', dL/dtheta": "correct",
-        "equation of motion": "correct"}
+        "equation of motion": "correct", "equation of motion, final": "correct"}

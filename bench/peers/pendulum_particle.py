@@ -17,7 +17,7 @@ def run() -> None:
     m, l, g = sp.symbols("m l g", positive=True)
     S = sp.Symbol("S", real=True)
     th, w, ua = dynamicsymbols("theta omega u_a")
-    thd, thdd = dynamicsymbols("theta", 1), dynamicsymbols("theta", 2)
+    thd = dynamicsymbols("theta", 1)
     N = ReferenceFrame("N")
     B = N.orientnew("B", "Axis", (th, N.z))      # B.y points from the bob to the pivot
     O = Point("O")
