@@ -7,34 +7,39 @@ values, :mod:`dualmech.verify.linalg`); :func:`is_zero` is the zero test.  Three
 
 ``"exact"`` (:data:`METHOD_NAMES`).  The expressions are rewritten as rational functions of
 *world variables* (:mod:`dualmech.verify.world`): the symbols, ``pi``, for each *circle atom*
-``a`` (a monomial in the symbols over an integer: ``theta``, ``omega*t``, ``theta/2``) the point
-``exp(i a)`` of the unit circle, for each *growth atom* ``b`` the value ``exp(b)``.  Why that is
-sound: distinct monomials are linearly independent, so no nonzero integer combination of the
-atoms is constant, and by Ax's theorem (the functional Schanuel statement; for exponentials of
-rational functions already the Kolchin--Ostrowski/Rosenlicht structure theorem) the functions
-``exp(i a_j)``, ``exp(b_k)`` are algebraically independent over the rational functions of the
-symbols.  ``pi`` is transcendental, so a polynomial in it vanishes only when every coefficient
-does; constants inside ``sin``/``exp`` (``sin(1)``, ``E``) are atoms too, by Lindemann--Weierstrass,
-but not beside ``pi`` (whether ``pi`` and ``e`` are independent is unknown: interval fallback).
-Hence an identity holds exactly when it holds in the ring where every world variable is an
-independent indeterminate: each symbol and ``pi`` is sampled as a random integer, each circle
-atom as a rational point ``((1 - u^2), 2u)/(1 + u^2)`` at a random integer ``u``, each growth atom
-as a random positive integer; ``sin``/``cos`` of ``k_1 a_1 + ...`` are exact powers of Gaussian
-rationals (:mod:`dualmech.verify.circle`), so ``sin(1000 t)`` costs ten squarings.  Float
-constants are taken at their exact binary value.  A nonzero rational function of total degree
-``D`` in the sampled integers vanishes at a random point (each integer uniform over
-``2**SAMPLE_BITS`` values) with probability at most ``D / 2**SAMPLE_BITS`` (Schwartz--Zippel), so
-``k`` zero points leave a chance of a false "equal" at most ``(D / 2**SAMPLE_BITS)**k``
+``a`` (a Laurent monomial in the symbols over an integer: ``theta``, ``omega*t``, ``t/tau``,
+``theta/2``) the point ``exp(i a)`` of the unit circle, for each *growth atom* ``b`` the value
+``exp(b)``.  Why that is sound: distinct Laurent monomials are linearly independent, so no
+nonzero integer combination of the atoms is constant, and by Ax's theorem (the functional
+Schanuel statement; for exponentials of rational functions already the Kolchin--Ostrowski
+theorem as Rosenlicht states it) the functions ``exp(i a_j)``, ``exp(b_k)`` are algebraically
+independent over the rational functions of the symbols.  ``pi`` is transcendental, so a
+polynomial in it vanishes only when every coefficient does; constants inside ``sin``/``exp``
+(``sin(1)``, ``E``) are atoms too, by Lindemann--Weierstrass, but not beside ``pi`` (whether
+``pi`` and ``e`` are independent is unknown: interval fallback).  Hence an identity holds exactly
+when it holds in the ring where every world variable is an independent indeterminate: each
+symbol and ``pi`` is sampled as a random integer, each circle atom as a rational point
+``((1 - u^2), 2u)/(1 + u^2)`` at a random integer ``u``, each growth atom as a random positive
+integer; ``sin``/``cos`` of ``k_1 a_1 + ...`` are exact powers of Gaussian rationals
+(:mod:`dualmech.verify.circle`), so ``sin(1000 t)`` costs ten squarings.  Float constants are
+taken at their exact binary value.  A nonzero rational function of total degree ``D`` in the
+sampled integers vanishes at a random point (each integer uniform over ``2**SAMPLE_BITS``
+values) with probability at most ``D / 2**SAMPLE_BITS`` (Schwartz--Zippel), so ``k`` zero points
+leave a chance of a false "equal" at most ``(D / 2**SAMPLE_BITS)**k``
 (:meth:`~ExactForm.false_equal_bound`); a nonzero value is a certain counter-example.
 
-*Square roots* ``sqrt(X)`` of rational world expressions stay exact: at the point, ``d = X(point)``
-and ``sqrt(d)`` is a formal root with ``r**2 = d`` (:mod:`dualmech.verify.surd`).  When the
-radicands are multiplicatively independent modulo squares (checked at the point; a persistent
-dependency sends the form to the interval method), ``Q(x)(sqrt X_1, ...)`` has degree ``2**m``
-over the rational functions and the evaluation is a field homomorphism: a nonzero value is a
-certain counter-example, and a zero value makes the *norm* (a rational function of degree at
-most ``2**m`` times the weighted degree) vanish, which the bound covers.  A radicand that is a
-perfect square (``1 - sin^2``) is factored: ``sqrt(c Y^2 S) = |Y| sqrt(c S)``.
+*Square roots* ``sqrt(X)`` of rational world expressions stay exact: at the point,
+``d = X(point)`` and ``sqrt(d)`` is a formal root with ``r**2 = d``
+(:mod:`dualmech.verify.surd`).  When the radicands are multiplicatively independent modulo
+squares (checked at every point, which is skipped otherwise), ``Q(x)(sqrt X_1, ...)`` has degree
+``2**m`` over the rational functions and the evaluation is a field homomorphism: a nonzero
+value is a certain counter-example, and a zero value makes the *norm* (a rational function of
+degree at most ``2**m`` times the weighted degree) vanish, which the bound covers.  Radicands
+are factored where needed (:mod:`dualmech.verify.radicals`): ``sqrt(c Y^2 f_1 f_2 ...)`` is real
+where ``c f_1 f_2 ... >= 0`` and there equals ``|Y| sqrt|c| sqrt|f_1| sqrt|f_2| ...``; a perfect
+square becomes ``|Y|`` (``sqrt(1 - sin^2) = |cos|``), and radicands that are dependent
+(``sqrt(2) sqrt(x^2 + 1)`` beside ``sqrt(2 x^2 + 2)``) are rewritten over roots of their
+irreducible factors, the factors' signs being branch cases.
 
 *Branch functions* (``Abs``, ``sign``, ``Heaviside``, ``Max``, ``Min``, ``Piecewise``, and the
 ``|Y|`` above) with rational conditions are split into *cases*
@@ -92,8 +97,8 @@ from .verify.circle import world_values
 from .verify.surd import Surd, independent
 from .verify.world import (AtomKey, NotExact, Undecidable, World, analyse, degree_bound)
 
-__all__ = ["ExactForm", "Undecidable", "NotRational", "METHOD_NAMES", "CASE", "SAMPLE_BITS",
-           "MP_DIGITS", "is_zero"]
+__all__ = ["ExactForm", "Undecidable", "NotRational", "METHOD_NAMES", "CASE", "AtomKey",
+           "SAMPLE_BITS", "MP_DIGITS", "is_zero"]
 
 #: Integers for each variable are drawn uniformly from a set of 2**SAMPLE_BITS values.
 SAMPLE_BITS = 62

@@ -88,3 +88,84 @@ def test_degree_bound_counts_circle_parametrisation():
     # sin(theta) = 2u/(1+u^2): numerator degree 1, denominator 2 -> total 3
     assert ExactForm.build([sp.sin(th)], [th]).degree == 3
     assert ExactForm.build([a**4], [a]).degree == 4
+
+
+def test_degree_bound_counts_multiples_and_square_roots():
+    # sin(5 theta) = Im((1 + iu)^10) / (1 + u^2)^5: degree <= 10 over 10
+    assert ExactForm.build([sp.sin(5 * th)], [th]).degree == 20
+    # sqrt(a^2 + 1): the norm (a^2 + 1 - r^2 style) doubles the weighted degree
+    assert ExactForm.build([sp.sqrt(a**2 + 1)], [a]).degree == 2 * 1
+
+
+# -- the pieces --------------------------------------------------------------------------------
+def test_square_root_numbers_are_exact():
+    from dualmech.verify.surd import Surd, independent
+    r2, r3 = Surd.root(2), Surd.root(3)
+    assert (r2 + r3) * (r2 - r3) == -1 and (r2 * r3) ** 2 == 6
+    assert 1 / (1 + r2) == r2 - 1
+    assert Surd.root(Fraction(9, 4)) == Fraction(3, 2)
+    assert not independent([2, 8]) and independent([2, 3, 5])
+    with pytest.raises(ValueError, match="not independent"):
+        Surd.root(2) * Surd.root(8)
+
+
+def test_multiples_are_powers_on_the_circle():
+    from dualmech.verify.circle import world_values
+    u = Fraction(2**61 - 1)
+    (s1000, c1000), (s1, c1) = world_values([("circle", ((0, 1000),), None),
+                                             ("circle", ((0, 1),), None)], {0: u})
+    assert s1**2 + c1**2 == 1 and s1000**2 + c1000**2 == 1
+    # de Moivre, checked with a different route: (c + i s)^1000 by repeated multiplication
+    z = (c1, s1)
+    acc = (Fraction(1), Fraction(0))
+    for _ in range(10):
+        acc = (acc[0] * z[0] - acc[1] * z[1], acc[0] * z[1] + acc[1] * z[0])
+    (s10, c10), = world_values([("circle", ((0, 10),), None)], {0: u})
+    assert (c10, s10) == acc
+
+
+def test_points_cycle_through_branch_cases_and_say_where():
+    from dualmech.exact import CASE
+    form = ExactForm.build([sp.Abs(sp.cos(th))], [th])
+    rng = random.Random(0)
+    points = [form.sample(rng) for _ in range(form.points_needed(3))]
+    assert len(form.cases) == 2 and sorted(p[CASE] for p in points) == [0, 0, 0, 1, 1, 1]
+    assert {form.where(p) for p in points} == {"cos(theta) > 0", "cos(theta) < 0"}
+    assert all(form.certain(p) for p in points)
+    assert form.false_equal_bound(points) == form.false_equal_bound(6)
+    only_first = [p for p in points if p[CASE] == 0]
+    assert form.false_equal_bound(only_first) == 1.0       # the other case got no point
+    assert "branch cases" in form.describe(6)
+
+
+def test_interval_values_are_rigorous_and_zero_test_is_containment():
+    from dualmech.exact import METHOD_NAMES, is_zero
+    form = ExactForm.build([sp.atan(a) - sp.atan(a), sp.atan(a)], [a])
+    assert form.method == "interval" and "evidence" in METHOD_NAMES["interval"]
+    zero, value = form.evaluate({a: Fraction(1)})
+    assert is_zero(zero) and not is_zero(value)
+    import mpmath
+    with mpmath.workdps(100):
+        assert mpmath.mpf(value.a) <= mpmath.pi / 4 <= mpmath.mpf(value.b)
+    assert value.delta < 1e-55
+
+
+def test_linear_algebra_on_intervals_refuses_undecided_ranks():
+    from mpmath import iv
+    from dualmech.verify import linalg as la
+    eps = iv.mpf([-1e-70, 1e-70])          # consistent with zero, not certainly zero
+    assert la.solve_square([[iv.mpf(1), iv.mpf(1)], [iv.mpf(1), 1 + eps]], [1, 2]) is None
+    _, piv, ambiguous = la.rref_info([[iv.mpf(1), iv.mpf(1)], [iv.mpf(1), 1 + eps]])
+    assert piv == [0] and ambiguous == [1]
+    from dualmech.exact import is_zero
+    res, _, undetermined = la.residual_after_least_squares([[iv.mpf(1)], [eps]], [0, 1])
+    assert undetermined == [] and not is_zero(res[1])       # a certain residual
+    res, _, undetermined = la.residual_after_least_squares([[eps], [eps]], [1, 1])
+    assert undetermined == [0] and all(v.a <= 0 <= v.b for v in res)   # claims nothing
+
+
+def test_display_method_keeps_the_working_ranges():
+    form = ExactForm.build([sp.sin(th)], [th], force_mp=True)
+    rng = random.Random(0)
+    assert form.method == "mpmath" and not form.certain({})
+    assert all(-1.2 <= form.sample(rng, {th: (-1.2, 1.2)})[th] <= 1.2 for _ in range(50))

@@ -1,4 +1,4 @@
-"""Why an expression is not decided exactly (:class:`NotExact`) or not at all (:class:`Undecidable`)."""
+"""Why an expression is not decided exactly (:class:`NotExact`) or at all (:class:`Undecidable`)."""
 from __future__ import annotations
 
 __all__ = ["Undecidable", "NotExact"]

@@ -159,6 +159,11 @@ def _in_unit(x):
         raise Ambiguous("argument of acos/asin/atanh not certainly in [-1, 1]")
 
 
+def _atanh(x):
+    _in_unit(x)
+    return iv.log(_positive(1 + x, "atanh") / _positive(1 - x, "atanh")) / 2
+
+
 def _clip0(x):
     # 1 - x^2 with x certainly in [-1, 1] is >= 0; clip the rounding below 0
     return iv.mpf([max(x.a, 0), max(x.b, 0)])
@@ -214,7 +219,7 @@ _UNARY = {
     sp.asinh: lambda x: iv.log(x + iv.sqrt(x * x + 1)) if x.a >= 0
     else -iv.log(-x + iv.sqrt(x * x + 1)),
     sp.acosh: lambda x: iv.log(x + iv.sqrt(_positive(x - 1, "acosh") * (x + 1))),
-    sp.atanh: lambda x: (_in_unit(x), iv.log(_positive(1 + x, "atanh") / _positive(1 - x, "atanh")) / 2)[1],
+    sp.atanh: lambda x: _atanh(x),
     sp.Abs: abs, sp.floor: _floor, sp.ceiling: lambda x: -_floor(-x),
     sp.erf: iv.erf,
 }

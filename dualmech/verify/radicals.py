@@ -12,6 +12,15 @@ sympy can factor.  Factoring serves two ends:
   multiplicatively dependent (``sqrt(2) sqrt(x^2 + 1)`` beside ``sqrt(2 x^2 + 2)``) are rewritten
   over independent ones with the signs ``|f_i| = +-f_i`` as branch cases
   (:func:`factored_sqrt`).
+
+Example
+-------
+>>> import sympy as sp
+>>> from dualmech.verify.world import analyse
+>>> th = sp.Symbol("theta")
+>>> w = analyse([sp.sqrt(1 - sp.sin(th)**2)], [th])        # |cos(theta)|: a branch, no root
+>>> len(w.radicals), [str(label) for label in w.branches[0].labels]
+(0, ['cos(theta) < 0', 'cos(theta) > 0'])
 """
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Exact numbers with square roots: elements of a multi-quadratic field ``Q(sqrt d_1, ..., sqrt d_k)``.
+"""Exact numbers with square roots: elements of a field ``Q(sqrt d_1, ..., sqrt d_k)``.
 
 The exact evaluator (:mod:`dualmech.exact`) keeps a square root ``sqrt(X)`` of a rational
 expression exact by evaluating ``X`` at the sampled rational point, ``d = X(point)``, and

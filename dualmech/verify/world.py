@@ -21,6 +21,13 @@ variables that are algebraically independent as functions (see its docstring for
 :func:`analyse` rewrites expressions into that world, or raises :class:`NotExact` naming the
 first sub-expression that leaves it (the caller then falls back to interval arithmetic) or
 :class:`Undecidable` for what no method here can decide.
+
+Example
+-------
+>>> th, t = sp.symbols("theta t")
+>>> w = analyse([sp.sin(2*th) + sp.cos(th/3 + 1000*t)], [th, t])
+>>> [str(a) for a in w.atoms], [terms for _, terms, _ in w.args]
+(['exp(i*t)', 'exp(i*theta/3)'], [((0, 1000), (1, 1)), ((1, 6),)])
 """
 from __future__ import annotations
 
@@ -316,11 +323,14 @@ class _Builder:
             for m, c in lin.items():
                 key = (kind, m)
                 lcd[key] = math.lcm(lcd.get(key, 1), int(sp.Rational(c).q))
-        for (kind, m), L in sorted(lcd.items(), key=lambda kv: (kv[0][0], sp.default_sort_key(kv[0][1]))):
+        order = sorted(lcd, key=lambda km: (km[0], sp.default_sort_key(km[1])))
+        for kind, m in order:
+            L = lcd[(kind, m)]
             self.atom_index[(kind, m)] = (len(self.atoms), L)
             self.atoms.append(AtomKey(kind, m / L))
             self.scales.append((kind, m, L))
-            self.u[len(self.atoms) - 1] = sp.Dummy(("u_" if kind == "circle" else "w_") + str(m / L))
+            prefix = "u_" if kind == "circle" else "w_"
+            self.u[len(self.atoms) - 1] = sp.Dummy(prefix + str(m / L))
 
     def _arg(self, kind, lin, node):
         terms = []
@@ -524,7 +534,12 @@ class _Label:
                     expr = sp.trigsimp(sp.simplify(expr))
                 except Exception:  # display only: keep the plain form
                     pass
-            self._text = f"{expr} {self.relation}"
+            relation = self.relation
+            if expr.could_extract_minus_sign():
+                flip = {">": "<", "<": ">", ">=": "<=", "<=": ">="}
+                op, rest = relation.split(" ", 1)
+                expr, relation = -expr, f"{flip[op]} {rest}"
+            self._text = f"{expr} {relation}"
         return self._text
 
     def __eq__(self, other) -> bool:
