@@ -6,6 +6,7 @@ import sys
 import textwrap
 from pathlib import Path
 
+import numpy as np
 import pytest
 import sympy as sp
 
@@ -127,3 +128,21 @@ def test_another_process_reuses_the_cache(cache):
                           env=env, cwd=Path(__file__).resolve().parent.parent, timeout=300)
     assert done.returncode == 0, done.stderr
     assert float(done.stdout) == -10.5
+
+
+def three_unknowns():
+    """x'' = -k x with two reactions fixed by two trivial equations (a 3x3 system)."""
+    a, b = sp.Symbol("a"), sp.Symbol("b")
+    return EquationSet("three", (x,), (x.diff(t, 2) + k * x, 2 * a - k, b + a - 1), (a, b))
+
+
+def test_without_a_working_compiler_auto_falls_back_and_c_says_why(cache, monkeypatch):
+    monkeypatch.setenv("CC", "false")          # found, but compiles nothing
+    nm = NumericModel(three_unknowns(), {k: 3.0})
+    # hand: x'' = -1.5, a = k/2 = 1.5, b = 1 - a = -0.5
+    assert np.array_equal(nm.solve(0.0, [0.5], [0.0]), [-1.5, 1.5, -0.5])
+    assert nm._c is None and not list(cache.glob("*.so"))
+    monkeypatch.setattr(cbackend, "compiler", lambda: None)
+    forget()
+    with pytest.raises(RuntimeError, match=r"`backend='c'` needs a working C compiler"):
+        NumericModel(three_unknowns(), {k: 3.0}, backend="c").rhs(0.0, np.array([0.5, 0.0]))

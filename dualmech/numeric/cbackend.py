@@ -24,6 +24,7 @@ True
 from __future__ import annotations
 
 import ctypes
+import functools
 import itertools
 import os
 import shlex
@@ -162,7 +163,12 @@ def c_source(prog: codegen.Program, key: str, shape: tuple, trip: float = 1e-8) 
 
 def compiler() -> list[str] | None:
     """The C compiler command (``$CC``, Python's configured ``CC``, ``cc``), if one exists."""
-    for cand in (os.environ.get("CC"), sysconfig.get_config_var("CC"), "cc", "gcc", "clang"):
+    return _find_compiler(os.environ.get("CC", ""), os.environ.get("PATH", ""))
+
+
+@functools.lru_cache(maxsize=8)
+def _find_compiler(cc: str, _path: str) -> list[str] | None:
+    for cand in (cc, sysconfig.get_config_var("CC"), "cc", "gcc", "clang"):
         if not cand:
             continue
         argv = shlex.split(cand)
