@@ -184,3 +184,40 @@ def test_energy_of_a_damped_model_is_refused_with_the_reason():
     assert "dissipation" in conservative_reason(p.model("lagrange"))
     with pytest.raises(ModelError, match="no conserved energy"):
         EnergyFunction(p.model("lagrange"), p.defaults())
+
+
+# -- one-sided contacts and the span that fits the scene ---------------------------------------
+def test_string_goes_slack_where_the_hand_energy_balance_says():
+    """Simple pendulum (string length a = 0.8, g = 9.81) thrown from theta0 = 2 at 4 rad/s.
+    By hand: T = M (g cos + a theta'^2) and theta'^2 = theta0'^2 + 2 g/a (cos - cos theta0), so
+    T = 0 at cos(theta) = (2 g cos(theta0) - a theta0'^2) / (3 g) -- no integration."""
+    from dualmech.numeric.contacts import watch
+    a, g, th0, w0 = 0.8, 9.81, 2.0, 4.0
+    hand = np.arccos((2 * g * np.cos(th0) - a * w0**2) / (3 * g))
+    p = get("simple_pendulum")
+    loose = watch(p, (0, 5), y0=[th0, w0], rtol=1e-9, atol=1e-11).first
+    tight = watch(p, (0, 5), y0=[th0, w0], rtol=1e-11, atol=1e-13).first
+    assert tight.reaction == "T" and "slack" in str(tight) and not tight.at_start
+    assert abs(tight.state["theta"] - hand) <= abs(loose.state["theta"] - tight.state["theta"]) \
+        + 8 * EPS * hand
+
+
+def test_contact_that_would_have_to_pull_from_the_start_is_named():
+    from dualmech.numeric.contacts import watch
+    # track tilted past the horizontal (phi = 2.4), car at rest: F_r = m g cos(phi) cos(theta) < 0
+    report = watch(get("toy_car"), (0, 1), y0=[0.3, 2.4, 0.0, 0.0])
+    assert report.first.at_start and report.first.reaction == "F_r"
+    assert "leaves the track" in str(report)
+
+
+def test_scene_ends_where_the_block_reaches_the_end_of_the_incline():
+    """Block on wedge (m = 1, M = 3, alpha = 0.6, g = 9.81), released at rest 1.2 m down a
+    2 m incline (60 % into the declared range): q1'' = (M + m) g sin(a) / (M + m sin^2(a))
+    is constant, so t = sqrt(2 (2 - 1.2) / q1'') -- and the integrator is exact on a parabola:
+    only the root finder's rounding remains."""
+    from dualmech.numeric.contacts import scene_span
+    m, M, g, al = 1.0, 3.0, 9.81, 0.6
+    acc = (M + m) * g * np.sin(al) / (M + m * np.sin(al)**2)
+    span = scene_span(get("block_on_wedge"), 5.0)
+    assert span.t_end == pytest.approx(np.sqrt(2 * 0.8 / acc), abs=64 * EPS)
+    assert "q1 leaves its declared range [0, 2]" in span.reason

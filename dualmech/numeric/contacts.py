@@ -1,0 +1,221 @@
+"""Unilateral contacts watched, and simulated spans that fit the scene.
+
+A contact that can only push (a track under a car, an incline under a block, the ground) or
+a string that can only pull is modelled as a bilateral constraint: the equations hold it
+closed whatever force that takes.  :func:`watch` integrates the problem's reference model
+with an event on each such reaction and stops where it changes sign -- *when* (the event is
+located by the integrator's root finder on its dense output) and *where* (the state there) --
+saying that the model's assumption breaks, instead of going on silently.
+
+Which reactions are one-sided is physics the equations do not carry: a problem may declare
+``unilateral = {"N": "the block lifts off"}`` (the force must stay >= 0 along its declared
+direction); for the catalogue's problems that do not, :data:`UNILATERAL` reads it from the
+reaction's stated direction.
+
+:func:`scene_span` also ends a simulation where a length coordinate leaves the range the
+problem declares for it (the block at the end of its incline, the container at the floor of
+its working range), so a chart never shows a block sliding 85 m down a 2 m wedge.
+
+Example
+-------
+>>> from problems import get                                         # doctest: +SKIP
+>>> print(watch(get("toy_car"), (0, 3), y0=[0.3, 2.4, 0.0, 0.0]))     # doctest: +SKIP
+F_r changes sign (+ to -) at t = 0 s ...: the car leaves the track ...
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Mapping, Sequence
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from ..dimensions import ANGLE, reduce
+from .model import NumericModel, SingularityError
+from .simulate import default_initial_state, problem_parameters
+
+__all__ = ["UNILATERAL", "ContactBreak", "ContactReport", "unilateral_of", "watch",
+           "scene_span", "SceneSpan"]
+
+#: One-sided reactions of the catalogue: ``{problem: {reaction: what happens when it would
+#: have to change sign}}``; each must stay >= 0 along the direction its problem declares.
+UNILATERAL = {
+    "toy_car": {"F_r": "the car leaves the track (the track cannot pull it towards O)"},
+    "block_on_wedge": {"N1": "the block lifts off the incline",
+                       "N2": "the wedge lifts off the ground"},
+    "simple_pendulum": {"T": "the string goes slack"},
+    "ball_in_sphere": {"N": "the ball leaves the sphere's wall"},
+    "cart_pendulum": {"N": "the cart lifts off its bed"},
+    "pulley_bent_track": {"T1": "the string to M1 goes slack", "T2": "the string to M2 goes "
+                          "slack", "N1": "M1 lifts off its track", "N2": "M2 lifts off the "
+                          "incline"},
+    "rolling_cylinder": {"N": "the cylinder lifts off the ground"},
+    "wheel_on_pivot": {"F_z": "the wheel lifts off the plane"},
+}
+
+
+def unilateral_of(problem) -> dict:
+    """``{reaction: consequence}`` of the problem's one-sided reactions (see the module doc)."""
+    declared = getattr(problem, "unilateral", None)
+    if declared:
+        return dict(declared)
+    return dict(UNILATERAL.get(problem.name, {}))
+
+
+@dataclass(frozen=True)
+class ContactBreak:
+    """A one-sided reaction reaching zero: when, where, which way, and what it means."""
+
+    reaction: str
+    time: float
+    state: dict
+    meaning: str
+    at_start: bool = False
+
+    def __str__(self) -> str:
+        where = ", ".join(f"{k} = {v:.4g}" for k, v in self.state.items())
+        when = "from the start" if self.at_start else f"at t = {self.time:.6g} s"
+        return (f"{self.reaction} changes sign (+ to -) {when} ({where}): {self.meaning}; "
+                "the model holds the contact closed, so its motion after this instant is "
+                "not the real one")
+
+
+@dataclass
+class ContactReport:
+    """What :func:`watch` found: the first break (or ``None``) and each force's smallest value
+    before it (``minimum = {name: (value, time)}``)."""
+
+    watched: dict
+    t_end: float
+    first: ContactBreak | None = None
+    minimum: dict = field(default_factory=dict)
+
+    def __str__(self) -> str:
+        if not self.watched:
+            return "no one-sided contact declared"
+        if self.first is not None:
+            return str(self.first)
+        mins = "; ".join(f"{k} >= {v:.4g} (at t = {s:.3g} s)" for k, (v, s) in
+                         self.minimum.items())
+        return f"every one-sided contact holds up to t = {self.t_end:.6g} s: {mins}"
+
+
+def _reaction_functions(problem, values, names) -> dict:
+    """``{name: f(t, y) -> float}`` from the direct models in the reference coordinates."""
+    out = {}
+    for m in problem.models().values():
+        if not m.unknowns:
+            continue
+        m = problem.in_reference_coordinates(m)
+        if not m.is_square:
+            continue
+        nm = NumericModel(m, values)
+        for i, u in enumerate(m.unknowns):
+            if u.name in names and u.name not in out:
+                out[u.name] = (lambda t, y, nm=nm, k=m.n + i, n=m.n:
+                               float(nm.solve(t, y[:n], y[n:])[k]))
+    return out
+
+
+def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = None,
+          rtol: float = 1e-9, atol: float = 1e-11, method: str = "DOP853") -> ContactReport:
+    """Integrate the reference model until a one-sided reaction changes sign (or the end)."""
+    values = problem_parameters(problem, params)
+    watched = unilateral_of(problem)
+    ref = problem.model(problem.reference)
+    n = ref.n
+    if y0 is None:
+        q0, qd0 = default_initial_state(problem)
+        y0 = q0 + qd0
+    y0 = np.asarray(y0, dtype=float)
+    forces = _reaction_functions(problem, values, set(watched))
+    names = [k for k in watched if k in forces]
+    report = ContactReport({k: watched[k] for k in names}, float(t_span[1]))
+    coords = [q.func.__name__ for q in ref.coordinates]
+    for k in names:
+        value = forces[k](t_span[0], y0)
+        report.minimum[k] = (value, float(t_span[0]))
+        if value < 0:
+            report.first = ContactBreak(k, float(t_span[0]), dict(zip(coords, y0[:n])),
+                                        watched[k], at_start=True)
+            report.t_end = float(t_span[0])
+            return report
+    if not names:
+        return report
+    events = []
+    for k in names:
+        ev = (lambda t, y, f=forces[k]: f(t, y))
+        ev.terminal, ev.direction = True, -1
+        events.append(ev)
+    model = NumericModel(ref, values)
+    sol = solve_ivp(model.rhs, tuple(t_span), y0, method=method, rtol=rtol, atol=atol,
+                    events=events, dense_output=True)
+    if sol.status < 0:
+        raise SingularityError(f"integration of `{problem.name}` failed: {sol.message}")
+    report.t_end = float(sol.t[-1])
+    grid = np.linspace(t_span[0], report.t_end, 400)
+    states = sol.sol(grid)
+    for k in names:
+        vals = np.array([forces[k](s, states[:, j]) for j, s in enumerate(grid)])
+        j = int(np.argmin(vals))
+        report.minimum[k] = (float(vals[j]), float(grid[j]))
+    for k, times, ys in zip(names, sol.t_events, sol.y_events):
+        if len(times):
+            report.first = ContactBreak(k, float(times[0]), dict(zip(coords, ys[0][:n])),
+                                        watched[k])
+    return report
+
+
+@dataclass(frozen=True)
+class SceneSpan:
+    """The simulated span ``(t0, t_end)`` and why it ends there (``""``: the full duration)."""
+
+    t0: float
+    t_end: float
+    reason: str = ""
+
+
+def _range_events(problem, ref, values) -> list:
+    """Terminal events for the length coordinates leaving their declared ranges."""
+    events = []
+    for i, q in enumerate(ref.coordinates):
+        info = problem.coordinate_info(q)
+        if info.dimension == ANGLE or not reduce(info.dimension):
+            continue
+        lo, hi = (float(v) for v in info.range)
+        for bound, side in ((lo, "below"), (hi, "above")):
+            ev = (lambda t, y, i=i, b=bound: y[i] - b)
+            ev.terminal, ev.direction = True, (-1 if side == "below" else 1)
+            ev.what = (f"{info.name} leaves its declared range [{lo:g}, {hi:g}]"
+                       + (f" ({info.description})" if info.description else ""))
+            events.append(ev)
+    return events
+
+
+def scene_span(problem, duration: float, y0=None, params: Mapping | None = None,
+               t0: float = 0.0) -> SceneSpan:
+    """The part of ``(t0, t0 + duration)`` in which the problem's model describes its scene.
+
+    Ends where a length coordinate leaves its declared range, or where a one-sided contact
+    would have to pull (:func:`watch`), whichever comes first.
+    """
+    values = problem_parameters(problem, params)
+    ref = problem.model(problem.reference)
+    if y0 is None:
+        q0, qd0 = default_initial_state(problem)
+        y0 = q0 + qd0
+    y0 = np.asarray(y0, dtype=float)
+    end, reason = t0 + float(duration), ""
+    events = _range_events(problem, ref, values)
+    if events:
+        sol = solve_ivp(NumericModel(ref, values).rhs, (t0, end), y0, method="DOP853",
+                        rtol=1e-9, atol=1e-11, events=events)
+        for ev, times in zip(events, sol.t_events or []):
+            if len(times) and times[0] < end:
+                end, reason = float(times[0]), f"{ev.what} at t = {times[0]:.3g} s"
+    contact = watch(problem, (t0, end), y0, params)
+    if contact.first is not None and contact.first.time < end:
+        end = contact.first.time
+        reason = f"{contact.first.reaction} would have to change sign at t = {end:.3g} s: " \
+                 f"{contact.first.meaning}"
+    return SceneSpan(t0, end, reason)

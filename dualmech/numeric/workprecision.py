@@ -1,0 +1,280 @@
+"""Speed against accuracy: work-precision diagrams per problem, formulation and integrator.
+
+:func:`work_precision` integrates every formulation of a problem
+(:func:`~dualmech.numeric.formulations.formulations`: the Lagrangian ODE, the direct forms,
+the maximal-coordinate DAEs) with every integrator over a sweep of tolerances (the
+symplectic midpoint rule over a sweep of step sizes) and measures, against a high-accuracy
+reference (the reference model with DOP853 at ``rtol = 1e-13``):
+
+* **final error** and **path error**: the largest state error at the last sample and over
+  all samples, each component divided by the width of its declared range (dimensionless);
+* **reaction error**: the largest reaction error over the path divided by the largest
+  reaction (dimensionless);
+* **constraint drift**: the largest ``|g|`` of a DAE form (unit of the constraint);
+* **energy drift**: the largest ``|E(t) - E(0)|`` where the model conserves energy (N m);
+
+against the CPU seconds of the integration.  The reference's own error is estimated by
+running it again at ``1e-12``: no error below that is resolved.  :meth:`WorkPrecision.write`
+saves the data as CSV and JSON and the diagram as PNG and SVG: one panel per measure, log
+scales, labelled axes, a legend for the integrators (colours) and one for the formulations
+(line styles); curves that coincide exactly (two forms that are the same ODE) are drawn once
+and named in the legend.
+
+Example
+-------
+>>> from problems import get                                          # doctest: +SKIP
+>>> wp = work_precision(get("pendulum_particle"), tolerances=(1e-4, 1e-8))  # doctest: +SKIP
+>>> wp.write(Path("out"))                                             # doctest: +SKIP
+"""
+from __future__ import annotations
+
+import csv
+import json
+import math
+import sys
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Mapping, Sequence
+
+import numpy as np
+
+from .contacts import scene_span
+from .formulations import Formulation, formulations
+from .integrators import METHODS, Run
+from .units import work_conjugate_unit
+
+__all__ = ["RunResult", "WorkPrecision", "work_precision", "TOLERANCES", "STEPS", "MEASURES"]
+
+TOLERANCES = tuple(10.0 ** -k for k in range(3, 11))
+#: Steps per span of the midpoint rule's sweep.
+STEPS = (32, 64, 128, 256, 512, 1024, 2048)
+REFERENCE_RTOL, CHECK_RTOL = 1e-13, 1e-12
+#: ``(field, axis label)`` of the measures, one chart panel each.
+MEASURES = (("final_error", "state error at the end\n[relative to range]"),
+            ("path_error", "state error along the path\n[relative to range]"),
+            ("reaction_error", "reaction error\n[relative to largest]"),
+            ("drift", "constraint drift |g| [{drift_unit}]"),
+            ("energy_drift", "energy drift |E - E0| [N m]"))
+
+
+@dataclass
+class RunResult:
+    """One point of the diagram (``nan`` where a measure does not apply)."""
+
+    formulation: str
+    kind: str
+    method: str
+    tolerance: float
+    cpu: float
+    calls: int
+    evaluations: int
+    steps: int
+    success: bool
+    message: str
+    final_error: float = math.nan
+    path_error: float = math.nan
+    reaction_error: float = math.nan
+    drift: float = math.nan
+    energy_drift: float = math.nan
+    same_as: str = ""
+
+    @property
+    def curve(self) -> tuple[str, str]:
+        return self.formulation, self.method
+
+
+@dataclass
+class WorkPrecision:
+    """The sweep's results; :meth:`write` saves data and charts."""
+
+    problem: str
+    title: str
+    span: tuple
+    span_note: str
+    samples: int
+    reference_error: float
+    drift_unit: str
+    runs: list = field(default_factory=list)
+    skipped: dict = field(default_factory=dict)
+
+    def curves(self) -> dict:
+        """``{(formulation, method): [RunResult, ...]}`` in sweep order."""
+        out: dict = {}
+        for r in self.runs:
+            out.setdefault(r.curve, []).append(r)
+        return out
+
+    def to_dict(self) -> dict:
+        head = {k: getattr(self, k) for k in ("problem", "title", "span", "span_note",
+                                              "samples", "reference_error", "drift_unit",
+                                              "skipped")}
+        head["span"] = list(self.span)
+        head["runs"] = [{k: _json(v) for k, v in asdict(r).items()} for r in self.runs]
+        return head
+
+    def write(self, out_dir: Path) -> list[Path]:
+        """``NAME_workprecision.{csv,json,png,svg}`` in ``out_dir``; returns the paths."""
+        out_dir = Path(out_dir)
+        out_dir.mkdir(parents=True, exist_ok=True)
+        stem = out_dir / f"{self.problem}_workprecision"
+        rows = [asdict(r) for r in self.runs]
+        with open(stem.with_suffix(".csv"), "w", newline="") as fh:
+            writer = csv.DictWriter(fh, fieldnames=list(rows[0]) if rows else ["formulation"])
+            writer.writeheader()
+            writer.writerows(rows)
+        stem.with_suffix(".json").write_text(json.dumps(self.to_dict(), indent=1) + "\n")
+        return [stem.with_suffix(".csv"), stem.with_suffix(".json")] + self.chart(stem)
+
+    def chart(self, stem: Path) -> list[Path]:
+        from .charts import METHOD_COLORS, panels, save, style_of
+        measures = [(k, label.format(drift_unit=self.drift_unit)) for k, label in MEASURES
+                    if any(np.isfinite(getattr(r, k)) for r in self.runs)]
+        fig, axes = panels(len(measures), f"{self.problem}: work against precision, "
+                           f"t in [{self.span[0]:g}, {self.span[1]:.3g}] s", height=2.3,
+                           width=12.0)
+        forms = list(dict.fromkeys(r.formulation for r in self.runs))
+        for (key, label), ax in zip(measures, axes):
+            for (form, method), runs in self.curves().items():
+                if runs[0].same_as:
+                    continue
+                ok = [r for r in runs if r.success and np.isfinite(getattr(r, key))]
+                if not ok:
+                    continue
+                ls, mk = style_of(forms.index(form))
+                ax.plot([max(r.cpu, 1e-5) for r in ok],
+                        [max(getattr(r, key), 1e-17) for r in ok], linestyle=ls, marker=mk,
+                        markersize=3.5, color=METHOD_COLORS.get(method, "k"), linewidth=1.1)
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.set_ylabel(label, fontsize="small")
+            ax.grid(True, which="major", alpha=0.3)
+            if key in ("final_error", "path_error"):
+                ax.axhline(self.reference_error, color="0.5", linewidth=0.8, linestyle=":")
+        axes[-1].set_xlabel("CPU time of the integration [s]")
+        _legends(fig, self, forms)
+        fig.subplots_adjust(left=0.09, right=0.56, top=0.95, bottom=0.07, hspace=0.3)
+        return save(fig, stem, tight=False)
+
+
+def _legends(fig, wp: WorkPrecision, forms) -> None:
+    from matplotlib.lines import Line2D
+    from .charts import METHOD_COLORS, style_of
+    methods = list(dict.fromkeys(r.method for r in wp.runs))
+    same = {r.formulation: r.same_as.split(" x ")[0] for r in wp.runs if r.same_as}
+    h1 = [Line2D([], [], color=METHOD_COLORS.get(m, "k"), label=m) for m in methods]
+    h2 = []
+    for i, f in enumerate(forms):
+        ls, mk = style_of(i)
+        note = f"\n    identical to {same[f]}: drawn once" if f in same else ""
+        h2.append(Line2D([], [], color="0.3", linestyle=ls, marker=mk, label=f + note))
+    h2.append(Line2D([], [], color="0.5", linestyle=":", label="reference's own error"))
+    fig.legend(handles=h1, title="integrator (colour)", fontsize="small", loc="upper left",
+               bbox_to_anchor=(0.58, 0.95))
+    fig.legend(handles=h2, title="formulation (line and marker)", fontsize="small",
+               loc="upper left", bbox_to_anchor=(0.58, 0.95 - 0.035 * (len(methods) + 2)))
+
+
+def _json(v):
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    if isinstance(v, (np.floating, np.integer)):
+        return _json(v.item())
+    return v
+
+
+def _measure(f: Formulation, run: Run, ref: dict, te: np.ndarray) -> dict:
+    """The five measures of one run against the mapped reference ``ref``."""
+    out = {}
+    if not run.success or run.t.size != te.size:
+        return out
+    Yr = ref["states"][f.name]
+    err = np.abs(run.y - Yr) / f.scales[:, None]
+    out["final_error"] = float(err[:, -1].max())
+    out["path_error"] = float(err.max())
+    R = f.reactions(te, run.y)
+    common = [k for k in R if k in ref["reactions"]]
+    if common and ref["reaction_scale"] > 0:
+        out["reaction_error"] = max(float(np.abs(R[k] - ref["reactions"][k]).max())
+                                    for k in common) / ref["reaction_scale"]
+    d = f.drift(run.y)
+    if d is not None:
+        out["drift"] = float(np.abs(d[0]).max())
+    dE = f.energy_change(run.y)
+    if dE is not None:
+        out["energy_drift"] = float(np.abs(dE).max())
+    return out
+
+
+def _reference(forms, span, te) -> tuple[dict, float]:
+    base = forms[0]
+    n = base.n
+    run = base.run("DOP853", span, te, rtol=REFERENCE_RTOL)
+    check = base.run("DOP853", span, te, rtol=CHECK_RTOL)
+    if not (run.success and check.success):
+        raise RuntimeError(f"the reference run failed: {run.message or check.message}")
+    error = float((np.abs(run.y - check.y) / base.scales[:, None]).max())
+    states = {f.name: f.from_reference(te, run.y[:n], run.y[n:]) for f in forms}
+    reactions = {}
+    for f in forms:
+        for k, v in f.reactions(te, states[f.name]).items():
+            reactions.setdefault(k, v)
+    scale = max((float(np.abs(v).max()) for v in reactions.values()), default=0.0)
+    return {"states": states, "reactions": reactions, "reaction_scale": scale}, error
+
+
+def _identical(runs: list[RunResult]) -> None:
+    """Mark curves whose every run equals an earlier curve's (same steps, same errors)."""
+    curves: dict = {}
+    for r in runs:
+        curves.setdefault(r.curve, []).append(r)
+    seen = []
+    keys = ("steps", "calls", "final_error", "path_error", "reaction_error", "energy_drift")
+    for curve, rs in curves.items():
+        sig = [tuple(_json(getattr(r, k)) for k in keys) for r in rs]
+        for other, osig in seen:
+            if other[1] == curve[1] and osig == sig:
+                for r in rs:
+                    r.same_as = f"{other[0]} x {other[1]}"
+                break
+        else:
+            seen.append((curve, sig))
+
+
+def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float] = TOLERANCES,
+                   steps: Sequence[int] = STEPS, methods: Sequence[str] = METHODS,
+                   models: Sequence[str] | None = None, samples: int = 101,
+                   params: Mapping | None = None, y0=None, progress: bool = True) -> WorkPrecision:
+    """The sweep of the module docstring over ``duration`` seconds (cut to fit the scene)."""
+    from tqdm import tqdm
+    scene = scene_span(problem, duration, y0, params)
+    span = (scene.t0, scene.t_end)
+    te = np.linspace(span[0], span[1], samples)
+    forms, skipped = formulations(problem, params, y0, models=models)
+    ref, ref_error = _reference(forms, span, te)
+    units = {work_conjugate_unit(problem.reaction_info()[u.name].dimension)
+             for f in forms if f.constrained for u in f.constrained.constraints.multipliers
+             if u.name in problem.reaction_info()}
+    wp = WorkPrecision(problem.name, problem.title, span, scene.reason, samples, ref_error,
+                       ", ".join(sorted(units)) or "-", skipped=skipped)
+    jobs = []
+    for f in forms:
+        for m in methods:
+            if m == "midpoint":
+                if f.kind == "ode" and f.energy is not None:
+                    jobs += [(f, m, (span[1] - span[0]) / s) for s in steps]
+            else:
+                jobs += [(f, m, tol) for tol in tolerances]
+    bar = tqdm(jobs, desc=f"{problem.name}: work-precision", unit="run", file=sys.stderr,
+               leave=False, disable=not progress)
+    for f, m, tol in bar:
+        try:
+            run = f.run(m, span, te, rtol=tol, step=tol)
+        except Exception as exc:  # noqa: BLE001 - a failed run is a point of the diagram
+            wp.runs.append(RunResult(f.name, f.kind, m, tol, math.nan, 0, 0, 0, False,
+                                     f"{type(exc).__name__}: {exc}"))
+            continue
+        wp.runs.append(RunResult(f.name, f.kind, m, tol, run.cpu, run.calls, run.evaluations,
+                                 run.steps, run.success, str(run.message),
+                                 **_measure(f, run, ref, te)))
+    _identical(wp.runs)
+    return wp

@@ -1,0 +1,97 @@
+"""Work-precision sweeps (dualmech.numeric.workprecision) on the particle pendulum of source 003.
+
+What is asserted are the measured numbers and their bookkeeping, not the pictures: the
+errors are recomputed independently for one run, RK45's error is proportional to its
+tolerance, the midpoint rule's to the square of its step, and formulations that are the same
+ODE are recognised as the same curve.
+"""
+import csv
+import json
+
+import numpy as np
+import pytest
+
+from dualmech.numeric.formulations import formulations
+from dualmech.numeric.workprecision import work_precision
+from problems import get
+
+TOLS = (1e-4, 1e-6, 1e-8)
+STEPS = (32, 64, 128)
+
+
+@pytest.fixture(scope="module")
+def wp():
+    return work_precision(get("pendulum_particle"), duration=3.0, tolerances=TOLS,
+                          steps=STEPS, methods=("RK45", "DOP853", "midpoint"),
+                          models=("lagrange", "newton_euler", "cartesian"), samples=51,
+                          y0=[1.0, 0.0], progress=False)
+
+
+def _curve(wp, form, method):
+    return wp.curves()[(form, method)]
+
+
+def test_every_run_succeeded_and_the_path_error_bounds_the_final_one(wp):
+    assert wp.runs and all(r.success for r in wp.runs)
+    assert all(r.path_error >= r.final_error for r in wp.runs)
+
+
+def test_measures_apply_where_they_mean_something(wp):
+    for r in wp.runs:
+        assert np.isfinite(r.reaction_error) and np.isfinite(r.energy_drift)
+        assert np.isfinite(r.drift) == (r.kind == "dae")
+    assert wp.drift_unit == "m"
+
+
+def test_one_run_recomputed_by_hand(wp):
+    """The Baumgarte DAE with RK45 at 1e-6, measured again without the sweep's bookkeeping."""
+    f = {g.name: g for g in formulations(get("pendulum_particle"), y0=[1.0, 0.0])[0]}
+    te = np.linspace(0.0, 3.0, 51)
+    ref = f["lagrange"].run("DOP853", (0.0, 3.0), te, rtol=1e-13)
+    th, thd = ref.y
+    bob = np.vstack([np.sin(th), np.cos(th), np.cos(th) * thd, -np.sin(th) * thd])  # l = 1
+    dae = f["cartesian (DAE, Baumgarte)"]
+    run = dae.run("RK45", (0.0, 3.0), te, rtol=1e-6)
+    err = np.abs(run.y - bob) / dae.scales[:, None]
+    point = [r for r in _curve(wp, dae.name, "RK45") if r.tolerance == 1e-6][0]
+    assert point.final_error == pytest.approx(err[:, -1].max(), rel=1e-6)
+    assert point.path_error == pytest.approx(err.max(), rel=1e-6)
+    S_hand = 9.81 * np.cos(th) + thd**2                       # m = l = 1
+    S = dae.reactions(te, run.y)["S"]
+    assert point.reaction_error == pytest.approx(np.abs(S - S_hand).max()
+                                                 / np.abs(S_hand).max(), rel=1e-6)
+
+
+def test_rk45_error_is_proportional_to_its_tolerance(wp):
+    runs = _curve(wp, "lagrange", "RK45")
+    slope = np.polyfit(np.log([r.tolerance for r in runs]),
+                       np.log([r.path_error for r in runs]), 1)[0]
+    assert round(slope) == 1
+
+
+def test_midpoint_error_falls_with_the_square_of_the_step(wp):
+    runs = _curve(wp, "lagrange", "midpoint")
+    order = np.polyfit(np.log([r.tolerance for r in runs]),
+                       np.log([r.path_error for r in runs]), 1)[0]
+    assert round(order) == 2
+    assert [r.steps for r in runs] == list(STEPS)
+
+
+def test_same_ode_is_recognised_as_the_same_curve(wp):
+    # the body-axes direct form solves the same theta'' as the Lagrangian: same steps, errors
+    for method in ("RK45", "DOP853", "midpoint"):
+        assert all(r.same_as == f"lagrange x {method}"
+                   for r in _curve(wp, "newton_euler", method))
+    assert not any(r.same_as for r in _curve(wp, "cartesian (DAE, index 1)", "RK45"))
+
+
+def test_data_and_charts_are_written(wp, tmp_path):
+    paths = wp.write(tmp_path)
+    assert sorted(p.suffix for p in paths) == [".csv", ".json", ".png", ".svg"]
+    assert all(p.stat().st_size > 0 for p in paths)
+    with open(tmp_path / "pendulum_particle_workprecision.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert len(rows) == len(wp.runs)
+    assert [float(r["path_error"]) for r in rows] == [r.path_error for r in wp.runs]
+    data = json.loads((tmp_path / "pendulum_particle_workprecision.json").read_text())
+    assert data["span"] == [0.0, 3.0] and len(data["runs"]) == len(wp.runs)
