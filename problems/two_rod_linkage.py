@@ -58,7 +58,9 @@ of m ``l sin(theta) = sqrt(D)/2``::
 Branch: ``sqrt(D) = 2 l sin(theta)`` holds only for ``sin(theta) > 0`` -- m above the line of
 the spring, as the source assumes.  The ``x`` form is a model of that branch only (below the
 line the height of m is ``-sqrt(D)/2``); its map to the reference, ``x = 2 l cos(theta) - l0``,
-is valid everywhere.  At ``sin(theta) = 0`` (the rods folded flat, ``x = +-2l - l0``) the map
+is valid everywhere.  ``theta`` therefore declares the domain ``(0, pi)``: the comparator
+decides identities over that domain, where ``sqrt(4 l^2 sin^2(theta)) = 2 l sin(theta)``
+holds, instead of over every real ``theta``.  At ``sin(theta) = 0`` (the rods folded flat, ``x = +-2l - l0``) the map
 ``theta -> x`` has zero derivative and the ``x`` form's mass ``M + m l^2/D`` is infinite: that is
 the singular set declared.  Near it the ``x`` form also loses digits in floating point
 (``D = 4 l^2 - (l0 + x)^2`` cancels, relative error ~ ``eps/sin^2(theta)``), so the working
@@ -158,7 +160,8 @@ class TwoRodLinkage(Problem):
         Parameter(g, ACCELERATION, 9.81, (9.0, 10.0), "gravitational acceleration"),
     )
     coordinates = (
-        Coordinate(theta, ANGLE, (0.4, 2.7), (-3.0, 3.0), "angle of OA above OB"),
+        Coordinate(theta, ANGLE, (0.4, 2.7), (-3.0, 3.0), "angle of OA above OB",
+                   domain=(0.0, 3.141592653589793)),   # (0, pi): m above the line
     )
     extra_coordinates = (
         Coordinate(x, LENGTH, (-2.5, 1.5), (-4.0, 4.0),

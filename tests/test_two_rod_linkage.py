@@ -5,7 +5,7 @@ import sympy as sp
 from hypothesis import given, settings
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.compare import compare, compare_models
 from dualmech.equations import to_plain
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
@@ -81,6 +81,14 @@ def test_x_form_describes_the_upper_branch_only(sin_value, same):
     assert (_at_pythagorean_angle(lhs, sin_value) == 0) is same
 
 
+def test_without_the_declared_domain_the_x_form_is_a_different_motion():
+    # over every real theta, sqrt(4 l^2 sin^2(theta)) is 2 l |sin(theta)|: the comparator must
+    # refuse to call the x form equivalent when it is not told that m stays above the line
+    mapped = problem.in_reference_coordinates(problem.model("lagrange_x"))
+    result = compare_models(problem.model("lagrange"), mapped, explain=False)
+    assert not result.equivalent
+
+
 def test_printed_x_equation_misses_a_factor_half_and_has_the_wrong_sign_of_x():
     # on the motion the printed left side is the true one plus
     # m g ((l0 + x)/2 - (l0 - x))/sqrt(D); at cos = 3/5, sin = 4/5: x + l0 = 6 l/5, sqrt(D) = 8 l/5
@@ -143,10 +151,11 @@ EXPECTED = {
 
 def test_comparator_agrees_and_judges_the_printed_answers(comparison):
     assert comparison.equivalent, str(comparison)
-    # (the x form's sqrt takes these decisions out of exact rational arithmetic)
+    # exact even for the x form's sqrt: decided over theta's declared domain (0, pi)
     pairs = {(p.kind, p.candidate): p for p in comparison.pairs}
     assert {c for kind, c in pairs if kind == "motion"} == {"newton_euler", "lagrange_x",
                                                             "multiplier"}
+    assert all(p.method == "exact" for p in comparison.pairs)
     assert pairs[("reactions", "multiplier")].equivalent
     assert set(pairs[("reactions", "multiplier")].reactions) == {"F_R", "N"}
     assert {v.label: v.verdict for v in comparison.published} == EXPECTED
