@@ -207,13 +207,10 @@ class PendulumOnRotatingPlane(Problem):
 
     def multiplier(self) -> EquationSet:
         """The mass off the plane by ``z``, held on it by ``N``."""
-        bt = sp.Symbol("beta_")  # the plane's angle inside the rotation; replaced below
-        rho = l * sp.cos(theta) - c
-        r_plane = sp.Matrix([rho, l * sp.sin(theta), z])
-        r = rot_y(bt) * r_plane
+        r_plane = sp.Matrix([l * sp.cos(theta) - c, l * sp.sin(theta), z])
+        r = rot_y(beta) * r_plane               # inertial X, Y, Z components
         lg = Lagrangian("multiplier", coordinates=[theta, z, beta],
                         description="mass freed from the plane, held by N")
-        r = r.xreplace({bt: beta})
         lg.kinetic("T of mass", m * (D(r).T * D(r))[0, 0] / 2)
         lg.potential("gravity", m * g * r[2])
         lg.constraint("N", z)
