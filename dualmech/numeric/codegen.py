@@ -23,7 +23,7 @@ Example
 >>> import sympy as sp
 >>> x, v, k = sp.symbols("x v k")
 >>> prog = program([k * sp.sin(x) * v**2], t=sp.Symbol("t"), q=[x], qd=[v], params=[k])
->>> src = python_source(prog, key="example")
+>>> src = python_source(prog, key="example", params=[k])
 >>> "def vector" in src and "def scalar" in src
 True
 """
@@ -38,7 +38,7 @@ import sympy as sp
 __all__ = ["GENERATOR_VERSION", "Program", "Printer", "program", "python_source"]
 
 #: Bumped whenever the generated code changes meaning or form (invalidates every cache entry).
-GENERATOR_VERSION = "7"
+GENERATOR_VERSION = "9"
 
 
 @dataclass(frozen=True)
@@ -216,7 +216,7 @@ def _args(e, kind: str) -> tuple:
 
 
 def _positional(t, q, qd, params):
-    """Renaming of the inputs to positional, assumption-free symbols."""
+    """Renaming of the inputs to positional symbols."""
     rename = {t: sp.Symbol("t_")}
     rename.update({s: sp.Symbol(f"q_{i}") for i, s in enumerate(q)})
     rename.update({s: sp.Symbol(f"u_{i}") for i, s in enumerate(qd)})
@@ -231,12 +231,17 @@ def program(outputs: Sequence, *, t, q: Sequence, qd: Sequence, params: Sequence
     With ``scale_of = k > 0`` one output is appended: the magnitude (see
     :meth:`_Splitter.magnitude`) of the first ``k`` outputs.
     """
-    rename = _positional(t, q, qd, params)
-    extra = set().union(*[sp.sympify(o).free_symbols for o in outputs]) - set(rename)
+    rename = {se.Symbol(k.name): se.Symbol(v.name)
+              for k, v in _positional(t, q, qd, params).items()}
+    if len(rename) != 1 + len(q) + len(qd) + len(params):
+        raise ValueError("two inputs share a name; give every state symbol and parameter "
+                         "its own name.")
+    # symengine receives sympy objects (converted node by node, never through text)
+    exprs = [se.sympify(o).xreplace(rename) for o in outputs]
+    extra = set().union(*[e.free_symbols for e in exprs]) - set(rename.values())
     if extra:
         raise ValueError(f"the expressions use {sorted(map(str, extra))}, which are neither "
                          "state symbols nor parameters.")
-    exprs = [se.sympify(sp.sympify(o).xreplace(rename)) for o in outputs]
     dynamic = {se.Symbol("t_")} | {se.Symbol(f"q_{i}") for i in range(len(q))} \
         | {se.Symbol(f"u_{i}") for i in range(len(qd))}
     splitter = _Splitter(dynamic)
@@ -245,35 +250,11 @@ def program(outputs: Sequence, *, t, q: Sequence, qd: Sequence, params: Sequence
         split.append(splitter.magnitude(exprs[:scale_of]))
     names = tuple(splitter.statics.defs.values())
     static_repl, static_out = se.cse(list(splitter.statics.defs.keys())) if names else ([], [])
-    static = tuple(static_repl) + tuple(zip(names, static_out))
     body, outs = se.cse(split)
-    return Program(len(q), len(params), _rename_temps(static, "s"), names,
-                   *_rename_body(body, outs))
-
-
-def _rename_temps(assignments, prefix):
-    """Give common-subexpression temporaries a prefix of their own (``s0``, ``c0``, ...)."""
-    mapping, out = {}, []
-    for sym, expr in assignments:
-        expr = expr.xreplace(mapping) if mapping else expr
-        if sym.name.startswith("x"):
-            new = se.Symbol(f"{prefix}{len(mapping)}")
-            mapping[sym] = new
-            sym = new
-        out.append((sym, expr))
-    return tuple(out)
-
-
-def _rename_body(body, outputs):
-    mapping = {}
-    out = []
-    for sym, expr in body:
-        expr = expr.xreplace(mapping) if mapping else expr
-        new = se.Symbol(f"c{len(mapping)}")
-        mapping[sym] = new
-        out.append((new, expr))
-    outs = tuple(o.xreplace(mapping) if mapping else o for o in outputs)
-    return tuple(out), outs
+    # temporaries are x0, x1, ... in each of two scopes (static, and per state): no clash
+    # with the positional inputs t_, q_i, u_i, p_i, k_i
+    return Program(len(q), len(params), tuple(static_repl) + tuple(zip(names, static_out)),
+                   names, tuple(body), tuple(outs))
 
 
 # -- printing ----------------------------------------------------------------------------
@@ -396,15 +377,18 @@ def _unpack(names: Sequence[str], source: str, indent: str) -> list[str]:
     return [f"{indent}{', '.join(names)}, = {source}"]
 
 
-def python_source(prog: Program, key: str) -> str:
+def python_source(prog: Program, key: str, params: Sequence = ()) -> str:
     """A module with ``static(p)``, ``scalar(p, k)`` and ``vector(p, k)``.
+
+    ``params`` (the parameter symbols, in order) are recorded as ``PARAMS``: names and
+    assumptions, from which a cache hit rebuilds the symbols without reading the equations.
 
     ``static(p)`` returns the tuple ``k`` of static values; ``scalar(p, k)`` and
     ``vector(p, k)`` return ``evaluate(t_, y)`` for one state (a list ``[q..., q'...]``) or for
     states in the columns of an array ``(2n, K)``, giving the tuple of outputs.
     """
     n = prog.n
-    params = [f"p_{i}" for i in range(prog.n_params)]
+    p_names = [f"p_{i}" for i in range(prog.n_params)]
     states = [f"q_{i}" for i in range(n)] + [f"u_{i}" for i in range(n)]
     k_names = [s.name for s in prog.static_names]
     lines = [f'"""Generated by dualmech.numeric.codegen {GENERATOR_VERSION}; do not edit."""',
@@ -415,16 +399,18 @@ def python_source(prog: Program, key: str) -> str:
              "                  pow as _pow)",
              "math = _m", "numpy = _np", "",
              f"KEY = {key!r}", f"VERSION = {GENERATOR_VERSION!r}",
-             f"N_OUTPUTS = {len(prog.outputs)}", "", "",
+             f"N_OUTPUTS = {len(prog.outputs)}",
+             "PARAMS = " + repr(tuple((s.name, dict(sorted(s.assumptions0.items())))
+                                      for s in params)), "", "",
              "def _sign(x):", "    return (x > 0) - (x < 0)", "", "",
              "def static(p):"]
-    lines += _unpack(params, "p", "    ")
+    lines += _unpack(p_names, "p", "    ")
     scalar = Printer(numpy=False)
     lines += _block(prog.static, scalar, "    ")
     lines += [f"    return ({''.join(k + ', ' for k in k_names)})", ""]
     for kind, printer in (("scalar", scalar), ("vector", Printer(numpy=True))):
         lines += ["", f"def {kind}(p, k):"]
-        lines += _unpack(params, "p", "    ") + _unpack(k_names, "k", "    ")
+        lines += _unpack(p_names, "p", "    ") + _unpack(k_names, "k", "    ")
         lines += ["", "    def evaluate(t_, y):"]
         lines += _unpack(states, "y", "        ")
         lines += _block(prog.body, printer, "        ")

@@ -29,6 +29,7 @@ from typing import Callable, Mapping, Sequence
 
 import numpy as np
 
+from .._expr import as_expr
 from ..equations import EquationSet, ModelError
 from ..kinematics import t
 from .dae import STABILISATIONS, ConstrainedModel, constraints_of
@@ -37,7 +38,7 @@ from .integrators import Run, integrate
 from .model import NumericModel, StateFunction
 from .simulate import default_initial_state, problem_parameters
 
-__all__ = ["Formulation", "formulations", "state_scales"]
+__all__ = ["Formulation", "formulations", "state_scales", "outside_parameters"]
 
 _LABEL = {"none": "DAE, index 1", "baumgarte": "DAE, Baumgarte", "projection": "DAE, projection"}
 
@@ -126,7 +127,7 @@ def _mapping(problem, ref: EquationSet, eqs: EquationSet, values) -> StateFuncti
         maps = problem.coordinate_maps()
         if eqs.name not in maps:
             raise ModelError(f"model `{eqs.name}` has no coordinate map to the reference.")
-        exprs = [maps[eqs.name][q] for q in eqs.coordinates]
+        exprs = [as_expr(maps[eqs.name][q]) for q in eqs.coordinates]
     return StateFunction(exprs + [e.diff(t) for e in exprs], ref.coordinates, values)
 
 
@@ -164,16 +165,32 @@ def _outside_reactions(problem, values) -> Callable:
     return reactions
 
 
+def outside_parameters(problem, params: Mapping) -> dict:
+    """The defaults with ``params`` applied by name or symbol, past the declared ranges (for
+    studies that leave them on purpose, such as a stiff spring); names are still checked."""
+    values = problem_parameters(problem)
+    by_name = {s.name: s for s in values}
+    for k, v in params.items():
+        name = k if isinstance(k, str) else k.name
+        if name not in by_name:
+            problem_parameters(problem, {k: v})  # raises with the close names suggested
+        values[by_name[name]] = float(v)
+    return values
+
+
 def formulations(problem, params: Mapping | None = None, y0=None,
                  stabilisations: Sequence[str] = STABILISATIONS,
-                 models: Sequence[str] | None = None) -> tuple[list[Formulation], dict]:
+                 models: Sequence[str] | None = None,
+                 strict: bool = True) -> tuple[list[Formulation], dict]:
     """The problem's formulations and ``{model: why it is not one}`` for the rest.
 
     ``y0`` is the initial state in the reference coordinates (default
     :func:`~dualmech.numeric.simulate.default_initial_state`); ``models`` limits the models.
-    The reference model comes first.
+    The reference model comes first.  ``strict=False`` lets ``params`` leave the declared
+    ranges (:func:`outside_parameters`).
     """
-    values = problem_parameters(problem, params)
+    values = problem_parameters(problem, params) if strict else \
+        outside_parameters(problem, params or {})
     ref = problem.model(problem.reference)
     if y0 is None:
         q0, qd0 = default_initial_state(problem)
@@ -188,7 +205,7 @@ def formulations(problem, params: Mapping | None = None, y0=None,
         eqs = problem.model(name)
         try:
             out.extend(_forms(problem, ref, eqs, values, y0, n, stabilisations))
-        except ModelError as exc:
+        except (ModelError, ValueError, NotImplementedError, ZeroDivisionError) as exc:
             skipped[name] = str(exc)
     return out, skipped
 

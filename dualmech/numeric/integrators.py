@@ -134,7 +134,9 @@ def _scipy(fun, t_span, y0, method, t_eval, rtol, atol, events, first_step=None)
     try:
         sol = solve_ivp(fun, tuple(t_span), y0, method=method, rtol=rtol, atol=atol,
                         dense_output=True, events=list(events) or None, **kwargs)
-    except SingularityError as exc:
+    except (SingularityError, ValueError, ZeroDivisionError, FloatingPointError) as exc:
+        # a singular system or a state outside the model's domain (a square root of a
+        # negative number): the run ends here, with the model's own message
         return Run(method, t_eval[:0], np.empty((y0.size, 0)), False, str(exc), 0.0, 0, 0, 0)
     reached = t_eval[t_eval <= sol.t[-1] + 1e-12 * max(1.0, abs(sol.t[-1]))]
     y = sol.sol(reached) if reached.size else np.empty((y0.size, 0))

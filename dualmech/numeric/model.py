@@ -89,21 +89,26 @@ def _generated(eqs: EquationSet) -> _Code:
     hit = _BY_ID.get(id(eqs))
     if hit is not None and hit[0] is eqs:
         return hit[1]
-    params = parameters_of(eqs.equations, eqs.unknowns)
     key = digest("equations", codegen.GENERATOR_VERSION, eqs.coordinates, eqs.unknowns,
                  eqs.equations)
     A, b = eqs.plain_matrix()
 
     @lru_cache(maxsize=1)
-    def prog() -> codegen.Program:
-        outs = list(A) + list(b)
+    def prog(params: tuple) -> codegen.Program:
         states = [state_symbols(q) for q in eqs.coordinates]
-        return codegen.program(outs, t=t, q=[s.q for s in states], qd=[s.qd for s in states],
-                               params=params, scale_of=A.rows * A.cols)
+        return codegen.program(list(A) + list(b), t=t, q=[s.q for s in states],
+                               qd=[s.qd for s in states], params=params,
+                               scale_of=A.rows * A.cols)
 
-    module = load_module(key, lambda: codegen.python_source(prog(), key))
+    def build() -> str:
+        params = parameters_of(eqs.equations, eqs.unknowns)
+        return codegen.python_source(prog(params), key, params)
+
+    module = load_module(key, build)
+    # the parameters as the code was generated for them (a cache hit skips the tree walk)
+    params = tuple(sp.Symbol(name, **assumptions) for name, assumptions in module.PARAMS)
     code = _Code(module, params, A.shape, key,
-                 lambda: cbackend.c_source(prog(), key, A.shape, _TRIP))
+                 lambda: cbackend.c_source(prog(params), key, A.shape, _TRIP))
     _BY_ID[id(eqs)] = (eqs, code)  # keep eqs alive so its id is not reused
     return code
 
@@ -469,7 +474,7 @@ class StateFunction:
             outs = [to_plain(e, coords) for e in exprs]
             prog = codegen.program(outs, t=t, q=[s.q for s in states],
                                    qd=[s.qd for s in states], params=code_params)
-            return codegen.python_source(prog, key)
+            return codegen.python_source(prog, key, code_params)
 
         module = load_module(key, build)
         p = _bind(code_params, params, "state function")
