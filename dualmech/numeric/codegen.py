@@ -8,11 +8,12 @@ A list of expressions in the state ``(t, q, q')`` and the parameters becomes one
 2. each expression is expanded (symengine) and written as a sum of *static* coefficients (the
    parameter-only factors) times *dynamic* monomials (products of powers of the state and of
    functions of it); every distinct coefficient becomes one static value ``k_i``, computed once
-   per parameter set instead of once per call;
-3. common subexpressions of the dynamic part (and, separately, of the static part) are
-   eliminated (``symengine.cse``);
+   per parameter set instead of once per call; ``c X cos^2 + c X sin^2`` becomes ``c X``;
+3. each sum is factored by its most frequent factor, recursively (a multivariate Horner
+   scheme), then common subexpressions of the dynamic part (and, separately, of the static
+   part) are eliminated (``symengine.cse``);
 4. the program is printed twice: scalar Python (``math``) for one state and NumPy for arrays of
-   states (the same operations elementwise).
+   states (the same operations elementwise); :mod:`~dualmech.numeric.cbackend` prints it as C.
 
 Expressions are never passed through text: symengine receives sympy objects, and the printer
 walks symengine's trees.  Node types the printer does not know (``Piecewise``,
