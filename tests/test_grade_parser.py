@@ -14,9 +14,9 @@ import sympy as sp
 
 from dualmech import coordinate
 from dualmech.equations import state_symbols
-from dualmech.grade.formula import Env, Formula, difference, dimension_issues
-from dualmech.grade.parser import (AnswerError, AnswerSyntaxError, AnswerTooLarge, Limits,
-                                   parse)
+from dualmech.grade.audit import dimension_issues
+from dualmech.grade.formula import Env, Formula, difference
+from dualmech.grade.parser import AnswerError, AnswerTooLarge, Limits, parse
 from dualmech.grade.vocabulary import UnknownName, Vocabulary
 
 theta, x1 = coordinate("theta"), coordinate("x1")

@@ -37,19 +37,15 @@ from typing import Callable
 
 import mpmath
 import sympy as sp
-from sympy.printing.str import StrPrinter
 
-from ..dimensions import format_dimension, reduce
 from ..exact import MP_DIGITS
-from .parser import LIMITS, AnswerError, AnswerTooLarge, Limits, Node, to_text
+from .parser import LIMITS, AnswerTooLarge, Limits, Node, to_text
+from .resolve import resolve
 from .vocabulary import Vocabulary
 
-__all__ = ["Formula", "Env", "display", "Dims", "difference", "dimension_issues",
-           "expected_dimension"]
+__all__ = ["Formula", "Env", "difference", "seeded_draw", "tree_to_sympy", "sympy_to_tree"]
 
-Dims = tuple
 _PI = "pi"
-_MAX_BITS = 4000        # largest constant, in bits
 _MAX_MULTIPLE = 24      # largest multiple of an angle evaluated exactly (sin(24 theta))
 _MP_FUNCS = {"sin": mpmath.sin, "cos": mpmath.cos, "tan": mpmath.tan, "cot": mpmath.cot,
              "sec": mpmath.sec, "csc": mpmath.csc, "sqrt": mpmath.sqrt, "exp": mpmath.exp,
@@ -235,17 +231,18 @@ class Formula:
     def from_node(cls, node: Node, vocabulary: Vocabulary, limits: Limits = LIMITS,
                   text: str = "") -> "Formula":
         """Resolve the parser's tree against ``vocabulary`` (raises ``UnknownName``)."""
-        tree = _resolve(node, vocabulary, limits)
+        tree = resolve(node, vocabulary, limits)
         f = cls(tree, text or to_text(node))
-        if f.degree > limits.degree:
-            raise AnswerTooLarge(f"the answer's degree (about {f.degree}) is above "
-                                 f"{limits.degree}; expand less or simplify it first.")
+        size = _term_degree(tree)
+        if size > limits.degree:
+            raise AnswerTooLarge(f"a term of the answer has degree about {size}, above "
+                                 f"{limits.degree}; write it with smaller powers.")
         return f
 
     @classmethod
     def from_sympy(cls, expr) -> "Formula":
         """A formula of a sympy expression built by the library (never of text)."""
-        return cls(_from_sympy(expr), "")
+        return cls(sympy_to_tree(expr), "")
 
     # -- facts ------------------------------------------------------------------------
     def _scan(self, tree):
@@ -375,7 +372,7 @@ class Formula:
     def written_terms(self) -> list:
         """The top-level terms as written (sympy), for feedback that keeps them apart."""
         kids = self.tree[1] if self.tree[0] == "add" else (self.tree,)
-        return [_to_sympy(k) for k in kids]
+        return [tree_to_sympy(k) for k in kids]
 
     def expanded_size(self) -> int:
         """Number of terms after expanding products (an upper estimate, capped)."""
@@ -385,11 +382,32 @@ class Formula:
     def sympy(self):
         """The formula as a sympy expression (built from its tree, never from text)."""
         if self._sympy is None:
-            self._sympy = _to_sympy(self.tree)
+            self._sympy = tree_to_sympy(self.tree)
         return self._sympy
 
     def __repr__(self) -> str:
         return f"Formula({self.text or self.sympy()})"
+
+
+def _term_degree(tree) -> int:
+    """Largest degree of one product in the formula (what sizes the exact numbers)."""
+    op = tree[0]
+    if op in ("c", "pi"):
+        return 0
+    if op == "s":
+        return 1
+    if op in ("add", "vec"):
+        return max((_term_degree(c) for c in tree[1]), default=0)
+    if op == "mul":
+        return sum(_term_degree(c) for c in tree[1])
+    if op in ("pow", "rpow"):
+        return _term_degree(tree[1]) * max(1, abs(int(tree[2])))
+    if op == "f":
+        ang = _angle(tree[2]) if tree[1] in _TRIG else None
+        if ang is None:
+            return _term_degree(tree[2])
+        return 4 * sum(abs(k) for _, k in ang[0])
+    raise AssertionError(op)
 
 
 def _expanded_size(tree, cap=10 ** 6) -> int:
@@ -448,117 +466,9 @@ def _udeg(tree, unknowns):
     raise AssertionError(op)
 
 
-# -- resolving the parser's tree --------------------------------------------------------------
-def _resolve(node: Node, voc: Vocabulary, limits: Limits):
-    op, a = node.op, node.args
-    if op == "num":
-        return ("c", a[0])
-    if op == "name":
-        refs = voc.resolve(a[0], a[1])
-        leaves = [("pi",) if r.kind == "constant" else ("s", r.symbol) for r in refs]
-        return leaves[0] if len(leaves) == 1 else ("mul", tuple(leaves))
-    if op == "group":
-        return _resolve(a[0], voc, limits)
-    if op == "neg":
-        return ("mul", (("c", Fraction(-1)), _resolve(a[0], voc, limits)))
-    if op == "inv":
-        inner = _resolve(a[0], voc, limits)
-        if inner[0] == "c":
-            return ("c", 1 / inner[1]) if inner[1] != 0 else _zero_division()
-        return ("pow", inner, -1)
-    if op == "add":
-        return ("add", tuple(_resolve(c, voc, limits) for c in a))
-    if op == "mul":
-        return ("mul", tuple(_resolve(c, voc, limits) for c in _drop_of_t(a, voc)))
-    if op == "pow":
-        base = _resolve(a[0], voc, limits)
-        e = _constant(a[1], limits)
-        if e.denominator == 1:
-            if abs(e) > limits.exponent:
-                raise AnswerTooLarge(f"the exponent {e} is larger than {limits.exponent}.")
-            if base[0] == "c":
-                _check_bits(base[1], int(e))
-                return ("c", base[1] ** int(e)) if base[1] != 0 or e >= 0 else \
-                    _zero_division()
-            return ("pow", base, int(e))
-        if e.denominator > 12 or abs(e) > limits.exponent:
-            raise AnswerTooLarge(f"the exponent {e} is not supported (use small fractions).")
-        return ("rpow", base, e)
-    if op == "func":
-        arg = _resolve(a[1], voc, limits)
-        if a[0] == "sqrt":
-            return ("rpow", arg, Fraction(1, 2))
-        return ("f", a[0], arg)
-    if op == "vec":
-        return ("vec", tuple(_resolve(c, voc, limits) for c in a))
-    raise AssertionError(op)
-
-
-def _zero_division():
-    raise AnswerError("the answer divides by zero.")
-
-
-def _check_bits(base: Fraction, k: int) -> None:
-    bits = max(abs(base.numerator), base.denominator).bit_length() * abs(k)
-    if bits > _MAX_BITS:
-        raise AnswerTooLarge(f"a number in the answer is too large (about {bits} bits).")
-
-
-def _drop_of_t(args, voc: Vocabulary):
-    """``theta(t)`` is the coordinate itself, not ``theta*t``."""
-    out = []
-    for node in args:
-        if (node.op == "group" and out and out[-1].op == "name" and node.args[0].op == "name"
-                and node.args[0].args == ("t", 0)):
-            ref = voc.lookup(out[-1].args[0], out[-1].args[1])
-            if ref is not None and ref.kind == "coordinate":
-                continue
-        out.append(node)
-    return out
-
-
-def _constant(node: Node, limits: Limits) -> Fraction:
-    """Value of a constant exponent, refusing anything large before computing it."""
-    op, a = node.op, node.args
-    if op == "num":
-        return a[0]
-    if op == "group":
-        return _constant(a[0], limits)
-    if op == "neg":
-        return -_constant(a[0], limits)
-    if op == "inv":
-        v = _constant(a[0], limits)
-        if v == 0:
-            raise AnswerError("the answer divides by zero in an exponent.")
-        return 1 / v
-    if op in ("add", "mul"):
-        vals = [_constant(c, limits) for c in a]
-        out = Fraction(0) if op == "add" else Fraction(1)
-        for v in vals:
-            out = out + v if op == "add" else out * v
-        _bound(out, limits)
-        return out
-    if op == "pow":
-        b, e = _constant(a[0], limits), _constant(a[1], limits)
-        if e.denominator != 1 or abs(e) > limits.exponent:
-            raise AnswerTooLarge(f"the exponent {e} is larger than {limits.exponent} (or not "
-                                 "a whole number).")
-        if b == 0 and e < 0:
-            raise AnswerError("the answer divides by zero in an exponent.")
-        _check_bits(b, int(e))
-        out = b ** int(e)
-        _bound(out, limits)
-        return out
-    raise AnswerError(f"exponents must be numbers; `{to_text(node)}` is not.")
-
-
-def _bound(v: Fraction, limits: Limits) -> None:
-    if abs(v) > 10 ** limits.digits or v.denominator > 10 ** limits.digits:
-        raise AnswerTooLarge(f"the exponent {v} is too large.")
-
-
 # -- sympy conversions ----------------------------------------------------------------------
-def _to_sympy(tree):
+def tree_to_sympy(tree):
+    """The sympy expression of a formula tree (built from symbols, never from text)."""
     op = tree[0]
     if op == "c":
         return sp.Rational(tree[1].numerator, tree[1].denominator)
@@ -567,17 +477,17 @@ def _to_sympy(tree):
     if op == "pi":
         return sp.pi
     if op == "add":
-        return sp.Add(*[_to_sympy(c) for c in tree[1]])
+        return sp.Add(*[tree_to_sympy(c) for c in tree[1]])
     if op == "mul":
-        return sp.Mul(*[_to_sympy(c) for c in tree[1]])
+        return sp.Mul(*[tree_to_sympy(c) for c in tree[1]])
     if op == "pow":
-        return sp.Pow(_to_sympy(tree[1]), sp.Integer(tree[2]))
+        return sp.Pow(tree_to_sympy(tree[1]), sp.Integer(tree[2]))
     if op == "rpow":
-        return sp.Pow(_to_sympy(tree[1]), sp.Rational(tree[2].numerator, tree[2].denominator))
+        return sp.Pow(tree_to_sympy(tree[1]), sp.Rational(tree[2].numerator, tree[2].denominator))
     if op == "f":
-        return _SP_FUNCS[tree[1]](_to_sympy(tree[2]))
+        return _SP_FUNCS[tree[1]](tree_to_sympy(tree[2]))
     if op == "vec":
-        return sp.Matrix([_to_sympy(c) for c in tree[1]])
+        return sp.Matrix([tree_to_sympy(c) for c in tree[1]])
     raise AssertionError(op)
 
 
@@ -585,7 +495,8 @@ _FROM_SP = {sp.sin: "sin", sp.cos: "cos", sp.tan: "tan", sp.cot: "cot", sp.sec: 
             sp.csc: "csc", sp.exp: "exp", sp.log: "log"}
 
 
-def _from_sympy(e):
+def sympy_to_tree(e):
+    """The formula tree of a sympy expression built by the library."""
     if e.is_Integer or e.is_Rational:
         return ("c", Fraction(int(e.p), int(e.q)))
     if e is sp.pi:
@@ -593,127 +504,17 @@ def _from_sympy(e):
     if e.is_Symbol:
         return ("s", e)
     if e.is_Add:
-        return ("add", tuple(_from_sympy(a) for a in e.args))
+        return ("add", tuple(sympy_to_tree(a) for a in e.args))
     if e.is_Mul:
-        return ("mul", tuple(_from_sympy(a) for a in e.args))
+        return ("mul", tuple(sympy_to_tree(a) for a in e.args))
     if e.is_Pow:
         base, ex = e.args
         if ex.is_Integer:
-            return ("pow", _from_sympy(base), int(ex))
+            return ("pow", sympy_to_tree(base), int(ex))
         if ex.is_Rational:
-            return ("rpow", _from_sympy(base), Fraction(int(ex.p), int(ex.q)))
+            return ("rpow", sympy_to_tree(base), Fraction(int(ex.p), int(ex.q)))
     if isinstance(e, sp.Function) and type(e) in _FROM_SP:
-        return ("f", _FROM_SP[type(e)], _from_sympy(e.args[0]))
+        return ("f", _FROM_SP[type(e)], sympy_to_tree(e.args[0]))
     if e.is_Float:
         return ("rpow", ("c", Fraction(str(e))), Fraction(1))
     raise TypeError(f"cannot evaluate {e} ({type(e).__name__}) in a grading formula")
-
-
-# -- display and dimensions -----------------------------------------------------------------
-class _PrimePrinter(StrPrinter):
-    """Plain state symbols printed as the student writes them: ``theta'``, ``theta''``."""
-
-    def __init__(self, names: dict):
-        super().__init__()
-        self._names = names
-
-    def _print_Symbol(self, expr):
-        return self._names.get(expr, expr.name)
-
-
-def display(expr, names: dict | None = None) -> str:
-    """``expr`` as text, with ``names`` (symbol -> text) for the coordinates' derivatives."""
-    s = _PrimePrinter(names or {}).doprint(expr)
-    return s
-
-
-def dimension_issues(tree, dims: dict, names: dict, expected: Dims | None = None) -> list[str]:
-    """Terms of the formula whose dimensions disagree, as sentences (empty when consistent).
-
-    ``dims`` maps every symbol to its reduced dimension (``dimensions.reduce``); angles are
-    dimensionless.  ``expected``, when given, is the dimension the whole answer must have.
-    """
-    issues: list[str] = []
-    top = _dim(tree, dims, names, issues)
-    if not issues and expected is not None and top is not None and top != expected:
-        issues.append(f"the answer has dimension {_fmt(top)}, but the quantity asked for has "
-                      f"{_fmt(expected)}")
-    return issues
-
-
-def expected_dimension(formula: "Formula", dims: dict) -> Dims | None:
-    """Dimension of a (library-built) formula, None when it is zero or inconsistent."""
-    issues: list = []
-    d = _dim(formula.tree, dims, {}, issues)
-    return None if issues else d
-
-
-def _fmt(d: Dims) -> str:
-    return format_dimension(d) if d else "1 (dimensionless)"
-
-
-def _dmul(a: Dims, b: Dims, k=1) -> Dims:
-    out = dict(a)
-    for name, e in b:
-        out[name] = out.get(name, 0) + k * e
-    return tuple(sorted((n, e) for n, e in out.items() if e != 0))
-
-
-def _dim(tree, dims, names, issues) -> Dims | None:
-    """Dimension of ``tree`` (None for zero, which has every dimension)."""
-    op = tree[0]
-    if op == "c":
-        return None if tree[1] == 0 else ()
-    if op == "pi":
-        return ()
-    if op == "s":
-        return dims.get(tree[1], ())
-    if op in ("add", "vec"):
-        terms = [(c, _dim(c, dims, names, issues)) for c in tree[1]]
-        known = [(c, d) for c, d in terms if d is not None]
-        if not known:
-            return None
-        counts: dict = {}
-        for _, d in known:
-            counts[d] = counts.get(d, 0) + 1
-        ranked = sorted(counts.items(), key=lambda kv: -kv[1])
-        main = ranked[0][0]
-        if len(ranked) > 1 and op == "add":
-            if ranked[0][1] == ranked[1][1]:
-                listing = "; ".join(f"`{display(_to_sympy(c), names)}` has {_fmt(d)}"
-                                    for c, d in known)
-                issues.append(f"the terms do not share one dimension: {listing}")
-            else:
-                for c, d in known:
-                    if d != main:
-                        issues.append(f"the term `{display(_to_sympy(c), names)}` has dimension "
-                                      f"{_fmt(d)} where the other terms have {_fmt(main)}")
-        return main
-    if op == "mul":
-        out: Dims = ()
-        for c in tree[1]:
-            d = _dim(c, dims, names, issues)
-            if d is None:
-                return None
-            out = _dmul(out, d)
-        return out
-    if op in ("pow", "rpow"):
-        d = _dim(tree[1], dims, names, issues)
-        if d is None:
-            return None
-        k = tree[2]
-        return tuple((n, e * k) for n, e in d) if k else ()
-    if op == "f":
-        d = _dim(tree[2], dims, names, issues)
-        if tree[1] == "sqrt":
-            return tuple((n, e / 2) for n, e in d) if d else d
-        if d:
-            issues.append(f"the argument `{display(_to_sympy(tree[2]), names)}` of {tree[1]} has "
-                          f"dimension {_fmt(d)}; it must be dimensionless")
-        return ()
-    raise AssertionError(op)
-
-
-def reduced(dim) -> Dims:
-    """A sympy Dimension as the sorted tuple this module uses."""
-    return tuple(sorted(reduce(dim)))

@@ -56,7 +56,7 @@ class Limits:
     depth: int = 40
     nodes: int = 2000
     exponent: int = 24
-    degree: int = 120
+    degree: int = 200
     digits: int = 30
     equations: int = 24
     seconds: float = 2.0

@@ -197,7 +197,7 @@ class Vocabulary:
         base = self.lookup(name, 0)
         if base is not None:
             if base.kind == "coordinate":
-                raise UnknownName(f"`{name}" + "'" * primes + f"`: at most second derivatives "
+                raise UnknownName(f"`{name}" + "'" * primes + "`: at most second derivatives "
                                   "of a coordinate may appear.")
             raise UnknownName(f"`{name}" + "'" * primes + f"`: only coordinates have "
                               f"derivatives; `{name}` is a {base.kind}.")

@@ -1,0 +1,189 @@
+r"""Grade one typed answer: :func:`grade` and the reusable :class:`Grader`.
+
+Example
+-------
+>>> g = grade("simple_pendulum", "a*theta'' + g*sin(theta) = 0")
+>>> g.status, g.summary
+('right', 'equivalent to the equations of motion: every equation follows from them and together they determine the accelerations')
+>>> print(grade("simple_pendulum", "a*theta'' - g*sin(theta) = 0"))  # doctest: +ELLIPSIS
+WRONG: the equation does not follow from the equations of motion
+  smallest edit that makes it right:
+    - the term `-g*sin(theta)` has the wrong sign: it is `g*sin(theta)` (a gravity term)
+  the equation is closest to ...
+"""
+from __future__ import annotations
+
+import time
+
+import sympy as sp
+
+from .answers import Quantity, catalogue, find_quantity, linearised_context
+from .context import GradingUnavailable, ProblemContext
+from .formula import Formula, difference
+from .judge import Deadline, judge_equations, judge_expression
+from .judge_energy import judge_force, judge_kinetic, judge_lagrangian, judge_potential
+from .parser import LIMITS, AnswerError, Limits, parse
+from .result import Grade
+from .vocabulary import UnknownName, Vocabulary
+
+__all__ = ["grade", "Grader"]
+
+_METHODS = {"exact": "exact rational-point test", "slow": "library comparator"}
+
+
+class Grader:
+    """Grades answers to one problem; the problem's models and points are built once.
+
+    ``problem`` is a :class:`~dualmech.problem.Problem` or a catalogue name.
+    """
+
+    _cache: dict = {}
+
+    def __init__(self, problem, seed: int = 0, limits: Limits = LIMITS):
+        if isinstance(problem, str):
+            import problems as catalogue_
+            try:
+                problem = catalogue_.get(problem)
+            except KeyError as exc:
+                raise AnswerError(exc.args[0] if exc.args else str(exc)) from None
+        self.problem = problem
+        self.seed = seed
+        self.limits = limits
+        self._ctx = None
+
+    @classmethod
+    def of(cls, name: str, seed: int = 0, limits: Limits = LIMITS) -> "Grader":
+        """The cached grader of catalogue problem ``name``."""
+        key = (name, seed, limits)
+        if key not in cls._cache:
+            cls._cache[key] = cls(name, seed, limits)
+        return cls._cache[key]
+
+    @property
+    def context(self) -> ProblemContext:
+        if self._ctx is None:
+            self._ctx = ProblemContext.of(self.problem, self.seed)
+        return self._ctx
+
+    def quantities(self) -> dict[str, str]:
+        """``{name: description}`` of everything an answer to this problem may be."""
+        return {n: q.description for n, q in catalogue(self.context).items()}
+
+    def grade(self, answer: str, quantity: str | None = None, about: str | None = None) -> Grade:
+        """Grade ``answer`` (text) as ``quantity`` (default: equations of motion, or one
+        equation when a single one is given for several coordinates); never raises for a bad
+        answer -- the :class:`~.result.Grade` says what is wrong."""
+        t0 = time.perf_counter()
+        qname = quantity or "auto"
+        shown = answer if isinstance(answer, str) else repr(answer)
+        try:
+            verdict, qname, kind, ctx = self._grade(answer, quantity, about)
+        except (AnswerError, UnknownName, GradingUnavailable) as exc:
+            return Grade(self.problem.name, qname, "", shown[:1000], "invalid", str(exc),
+                         seconds=time.perf_counter() - t0)
+        except Exception as exc:  # a bug here must not stop a batch; it is reported as such
+            return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
+                         f"could not grade this answer: internal error "
+                         f"({type(exc).__name__}: {exc}); please report it",
+                         seconds=time.perf_counter() - t0)
+        bound = ctx.false_right_bound(verdict.degree, verdict.method) if verdict.status == \
+            "right" else float("nan")
+        method = verdict.method_text or _METHODS[verdict.method]
+        if verdict.status == "right" and verdict.method == "exact":
+            method += f", {len(ctx.points('exact'))} points, P(wrong answer passes) <= {bound:.1e}"
+        return Grade(self.problem.name, qname, kind, shown, verdict.status, verdict.summary,
+                     verdict.details, verdict.edits, verdict.dimension_issues, verdict.matches,
+                     verdict.state, method, bound, time.perf_counter() - t0)
+
+    def _grade(self, answer, quantity, about):
+        deadline = Deadline(self.limits.seconds)
+        ctx = self.context
+        eqs = parse(answer, self.limits)
+        n = len(ctx.states)
+        if quantity is None:
+            q = find_quantity(ctx, "eom" if len(eqs) > 1 or n == 1 else "equation")
+        else:
+            q = find_quantity(ctx, quantity)
+        if q.name == "linearised":
+            ctx = linearised_context(ctx, about)
+            q = find_quantity(ctx, "eom" if len(eqs) > 1 or n == 1 else "equation")
+        voc = self._vocabulary(ctx, q)
+        if q.kind in ("equations", "equation"):
+            formulas = [difference(Formula.from_node(e.lhs, voc, self.limits, e.text),
+                                   Formula.from_node(e.rhs, voc, self.limits)
+                                   if e.rhs is not None else None) for e in eqs]
+            v = judge_equations(ctx, formulas, q, deadline, single=q.kind == "equation")
+            return v, q.name, q.kind, ctx
+        f = _expression(eqs, q, voc, self.limits)
+        if q.kind == "expression":
+            return judge_expression(ctx, f, q, deadline, _components(ctx, f, q)), q.name, \
+                q.kind, ctx
+        if q.kind == "force":
+            comps = [Formula(c) for c in f.tree[1]] if f.tree[0] == "vec" else [f]
+            return judge_force(ctx, comps, q, deadline), q.name, q.kind, ctx
+        if f.tree[0] == "vec":
+            raise AnswerError(f"{q.description} is a scalar, not a vector.")
+        judge = {"kinetic": judge_kinetic, "potential": judge_potential,
+                 "lagrangian": judge_lagrangian}[q.kind]
+        return judge(ctx, f, q, deadline), q.name, q.kind, ctx
+
+    def _vocabulary(self, ctx, q: Quantity) -> Vocabulary:
+        if not q.basis:
+            return ctx.vocabulary
+        key = ("vocabulary", q.basis)
+        if key not in ctx.store:
+            ctx.store[key] = Vocabulary.build(ctx.coordinates, ctx.parameters, ctx.reactions,
+                                              q.basis, [q for q, _ in ctx._extra_coordinates()])
+        return ctx.store[key]
+
+
+def _expression(eqs, q: Quantity, voc, limits) -> Formula:
+    """The one expression of an answer; ``X = expr`` is accepted when ``X`` is a name."""
+    if len(eqs) != 1:
+        raise AnswerError(f"{q.description} is one expression; the answer has {len(eqs)} "
+                          "parts (separate vector components with commas: [a, b, c]).")
+    e = eqs[0]
+    if e.rhs is None:
+        return Formula.from_node(e.lhs, voc, limits, e.text)
+    if e.lhs.op != "name":
+        raise AnswerError(f"give {q.description} as an expression, or as `{q.name} = ...` "
+                          "with a single name on the left.")
+    return Formula.from_node(e.rhs, voc, limits, e.text)
+
+
+def _components(ctx, f: Formula, q: Quantity) -> list | None:
+    """Components of a vector answer: a ``[a, b, c]`` literal, or coefficients of the basis."""
+    if f.tree[0] == "vec":
+        return [Formula(c) for c in f.tree[1]]
+    if not q.basis:
+        return None
+    basis = [sp.Symbol(b, commutative=True) for b in q.basis]
+    if not f.symbols & set(basis):
+        if len(q.reference) > 1:
+            raise AnswerError(f"{q.name} is a vector: write it with "
+                              f"{', '.join(q.basis)} or as [{', '.join(['...'] * len(basis))}].")
+        return None
+    d = f.unknown_degree(set(basis))
+    if d is None or d > 1:
+        raise AnswerError(f"{q.name}: each term must carry exactly one of {', '.join(q.basis)}.")
+    expr = sp.expand(f.sympy())
+    rest = expr.xreplace({b: 0 for b in basis})
+    if rest != 0:
+        raise AnswerError(f"{q.name} is a vector; the terms without {', '.join(q.basis)} "
+                          "add a scalar to it.")
+    return [Formula.from_sympy(sp.diff(expr, b)) for b in basis]
+
+
+def grade(problem, answer: str, quantity: str | None = None, *, about: str | None = None,
+          limits: Limits = LIMITS) -> Grade:
+    """Grade ``answer`` to ``problem`` (a Problem or a catalogue name); see :class:`Grader`.
+
+    An unknown problem name gives an ``invalid`` grade that lists the known ones.
+    """
+    try:
+        grader = Grader.of(problem, limits=limits) if isinstance(problem, str) else \
+            Grader(problem, limits=limits)
+    except AnswerError as exc:
+        return Grade(str(problem), quantity or "auto", "", answer if isinstance(answer, str)
+                     else repr(answer), "invalid", str(exc))
+    return grader.grade(answer, quantity, about)

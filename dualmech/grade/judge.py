@@ -1,0 +1,470 @@
+"""Deciding an answer exactly: equation sets, single equations and expressions.
+
+Every verdict comes from evaluating the answer at the context's points on the verified motion
+(:mod:`.context`): an equation is right when it vanishes there with the true accelerations and
+reactions put in; a set must also determine every acceleration (and every reaction it uses) --
+the rank of its coefficients, computed exactly; an expression must equal the problem's own
+quantity there.  Feedback (:mod:`.feedback`) only explains a verdict already reached.
+
+Example
+-------
+>>> from problems import get
+>>> from dualmech.grade.context import ProblemContext
+>>> from dualmech.grade.answers import find_quantity
+>>> from dualmech.grade.formula import Formula
+>>> from dualmech.grade.parser import parse
+>>> ctx = ProblemContext.of(get("simple_pendulum"))
+>>> f = Formula.from_node(parse("a*theta'' + g*sin(theta)")[0].lhs, ctx.vocabulary)
+>>> judge_equations(ctx, [f], find_quantity(ctx, "eom"), Deadline(5)).status
+'right'
+"""
+from __future__ import annotations
+
+import time
+from fractions import Fraction
+from dataclasses import dataclass, field, replace
+
+import sympy as sp
+
+from ..kinematics import t
+from ..verify import linalg as la
+from .answers import Quantity
+from .context import ProblemContext, build_seconds, zero
+from .feedback import Diagnosis, best_edit, concrete_state
+from .terms import equation_targets, expression_tables, term_table
+from .audit import dimension_issues, display, expected_dimension
+from .formula import Formula
+from .parser import AnswerError
+from .result import Edit
+
+__all__ = ["Verdict", "Deadline", "AnswerTimeout", "judge_equations", "judge_expression",
+           "method_for", "values_at"]
+
+_MAX_FEEDBACK_TERMS = 400
+
+
+class AnswerTimeout(AnswerError):
+    """Grading one answer took longer than its time limit."""
+
+
+class Deadline:
+    """A time limit for one answer; :meth:`check` raises :class:`AnswerTimeout` past it."""
+
+    def __init__(self, seconds: float):
+        self.seconds = seconds
+        self.start = time.perf_counter()
+        self.built = build_seconds()
+
+    def elapsed(self) -> float:
+        """Seconds spent on this answer, leaving out per-problem caches built meanwhile."""
+        return time.perf_counter() - self.start - (build_seconds() - self.built)
+
+    def check(self) -> None:
+        if self.elapsed() > self.seconds:
+            raise AnswerTimeout(f"grading this answer took longer than {self.seconds:g} s; "
+                                "simplify it and try again.")
+
+
+@dataclass
+class Verdict:
+    """What a judge decided, before it becomes a :class:`~.result.Grade`."""
+
+    status: str
+    summary: str
+    details: list = field(default_factory=list)
+    edits: list = field(default_factory=list)
+    dimension_issues: list = field(default_factory=list)
+    matches: str = ""
+    state: dict = field(default_factory=dict)
+    method: str = "exact"
+    degree: int = 1
+    method_text: str = ""
+
+
+def method_for(ctx: ProblemContext, formulas) -> str:
+    """``exact`` when the problem and every formula evaluate exactly (the fast evaluator),
+    else ``slow`` (the library's comparator decides, :mod:`.slow`)."""
+    return "exact" if ctx.method == "exact" and all(f.exact for f in formulas) else "slow"
+
+
+def need_for(ctx: ProblemContext, formulas) -> tuple:
+    derived = ctx.derived_formulas()
+    used = set().union(*(f.symbols for f in formulas)) if formulas else set()
+    return tuple(s for s in derived if s in used)
+
+
+def values_at(ctx, formulas, method, deadline, need=()) -> list:
+    """``[point][formula]`` values on the motion (``ZeroDivisionError`` -> AnswerError)."""
+    out = []
+    for p in ctx.points(method):
+        deadline.check()
+        env = p.env(need=need)
+        try:
+            out.append([(f.evaluate(env), env) for f in formulas])
+        except ZeroDivisionError:
+            raise AnswerError("the answer divides by zero: a denominator vanishes "
+                              "identically.") from None
+    return out
+
+
+def _is_zero(f: Formula, v, env) -> bool:
+    if isinstance(v, list):
+        return all(zero(x) for x in v)
+    return zero(v)
+
+
+# -- equations ----------------------------------------------------------------------------------
+def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
+                    deadline: Deadline, single: bool = False) -> Verdict:
+    """A set of equations (``single``: one equation that must follow from the motion)."""
+    k = len(formulas)
+    name = (lambda i: f"equation {i + 1}") if k > 1 else (lambda i: "the equation")
+    dims = []
+    for i, f in enumerate(formulas):
+        for issue in dimension_issues(f.tree, ctx.dims, ctx.names):
+            dims.append(f"{name(i)}: {issue}" if k > 1 else issue)
+    unknowns = set(ctx.qdd) | set(ctx.reactions) | {
+        s for s in ctx.derived_formulas() if s.name.endswith("_ddot")}
+    for i, f in enumerate(formulas):
+        d = f.unknown_degree(unknowns)
+        if d is None or d > 1:
+            return Verdict("wrong", f"{name(i)} is not linear in the accelerations"
+                           f"{' and reactions' if ctx.reactions else ''}; equations of motion "
+                           "are (no acceleration squared, inside a function or in a "
+                           "denominator).", dimension_issues=dims)
+        if f.tree[0] == "vec":
+            raise AnswerError("an equation cannot be a vector; write one equation per "
+                              "component, on separate lines.")
+    method = method_for(ctx, formulas)
+    if method == "slow":
+        from .slow import slow_equations
+        return slow_equations(ctx, formulas, single or quantity.coordinate is not None, dims)
+    need = need_for(ctx, formulas)
+    table = values_at(ctx, formulas, method, deadline, need)
+    wrong = [i for i, f in enumerate(formulas)
+             if any(not _is_zero(f, row[i][0], row[i][1]) for row in table)]
+    degree = max(f.degree for f in formulas)
+    if wrong:
+        return _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline, need)
+    if dims:
+        return Verdict("wrong", "the answer follows from the equations of motion but is "
+                       "dimensionally inconsistent", dimension_issues=dims, method=method,
+                       degree=degree)
+    points = ctx.points(method)
+    match, coords = describe_match(ctx, formulas[0], points[0], need) if k == 1 else ("", [])
+    if quantity.coordinate is not None:
+        j = quantity.coordinate
+        qname = ctx.states[j].name
+        if coords != [j]:
+            what = f"it matches {match}" if match else "it is a combination of equations"
+            return Verdict("wrong", f"the equation follows from the equations of motion, but "
+                           f"it is not the equation of {qname}: {what}", matches=match,
+                           method=method, degree=degree)
+        return Verdict("right", f"the equation of {qname}: {match}", matches=match,
+                       method=method, degree=degree)
+    if single:
+        return Verdict("right", f"the equation follows from the equations of motion; it "
+                       f"matches {match}", matches=match, method=method, degree=degree)
+    return _determines(ctx, formulas, points, need, method, degree, deadline)
+
+
+def _determines(ctx, formulas, points, need, method, degree, deadline) -> Verdict:
+    """Right when the (correct) equations determine every acceleration and used reaction."""
+    n, k = len(ctx.states), len(formulas)
+    used = [r for r in ctx.reactions if any(r in f.symbols for f in formulas)]
+    cols = list(ctx.qdd) + used
+    for p in (points[0], points[-1]):
+        deadline.check()
+        J = _jacobian(formulas, p, cols, need)
+        rank = la.rank(J)
+        if rank == len(cols):
+            continue
+        piv = la.rref(J)[1]
+        missing = [cols[c] for c in range(len(cols)) if c not in piv]
+        what = ", ".join(ctx.names.get(s, str(s)) for s in missing)
+        if k < len(cols):
+            summary = (f"every equation is right, but {k} equation{'s' if k > 1 else ''} "
+                       f"cannot determine {len(cols)} unknowns ({n} accelerations"
+                       f"{f' and {len(used)} reactions' if used else ''}): {what} "
+                       "undetermined")
+        else:
+            summary = (f"every equation is right, but together they do not determine the "
+                       f"accelerations: {what} undetermined (an equation is a combination of "
+                       "the others)")
+        return Verdict("wrong", summary, method=method, degree=degree)
+    extra = f" and the reactions {', '.join(map(str, used))}" if used else ""
+    return Verdict("right", f"equivalent to the equations of motion: every equation follows "
+                   f"from them and together they determine the accelerations{extra}",
+                   method=method, degree=degree)
+
+
+def _jacobian(formulas, point, cols, need) -> list:
+    env = point.env(need=need)
+    base = [f.evaluate(env) for f in formulas]
+    J = [[None] * len(cols) for _ in formulas]
+    for c, u in enumerate(cols):
+        e2 = point.env({u: env.values[u] + 1}, need=need)
+        for i, f in enumerate(formulas):
+            J[i][c] = f.evaluate(e2) - base[i]
+    return J
+
+
+def describe_match(ctx, f: Formula, point, need) -> tuple[str, list]:
+    """Which derived equation(s) a correct equation is a combination of, in words, and the
+    coordinates whose Lagrange equations it combines (or whose acceleration alone it has)."""
+    used = [r for r in ctx.reactions if r in f.symbols]
+    ref_name = ctx.reference.name
+    for name in [ref_name] + [m for m in point.systems if m != ref_name]:
+        model = ctx.models.get(name, ctx.reference if name == ref_name else None)
+        if model is None or not set(used) <= set(model.unknowns):
+            continue
+        A, _ = point.systems[name]
+        cols = list(ctx.qdd) + list(model.unknowns)
+        J = _jacobian([f], point, cols, need)[0]
+        aug = [[A[i][c] for i in range(len(A))] + [J[c]] for c in range(len(cols))]
+        R, piv = la.rref(aug)
+        if len(A) in piv:
+            continue
+        y = [0] * len(A)
+        for row, c in enumerate(piv):
+            y[c] = R[row][len(A)]
+        rows = [i for i, v in enumerate(y) if not zero(v, [1])]
+        labels = [model.labels[i] for i in rows]
+        coords = _lagrange_coordinates(ctx, labels) if name == ref_name else []
+        only = [j for j, s in enumerate(ctx.states) if not zero(J[j], [1])]
+        if len(only) == 1 and not used:
+            coords = coords or only
+        return _words(name, labels), coords
+    return "", []
+
+
+def _lagrange_coordinates(ctx, labels) -> list:
+    names = [s.name for s in ctx.states]
+    out = []
+    for lb in labels:
+        if lb.startswith("Lagrange, ") and lb[10:] in names:
+            out.append(names.index(lb[10:]))
+        else:
+            return []
+    return out
+
+
+def _words(model: str, labels: list) -> str:
+    def one(lb):
+        if lb.startswith("Lagrange, "):
+            return f"the equation of {lb[10:]} (Lagrange)"
+        if lb.startswith("linearised, "):
+            return f"the linearised equation of {lb[12:]}"
+        return f"{model} [{lb}]"
+    if len(labels) == 1:
+        return one(labels[0])
+    return "a combination of " + " and ".join(one(lb) for lb in labels)
+
+
+def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline, need):
+    edits, details, state = [], [], {}
+    k = len(formulas)
+    for i in wrong:
+        deadline.check()
+        d = None
+        if formulas[i].expanded_size() <= _MAX_FEEDBACK_TERMS:
+            d = best_edit(formulas[i].sympy(), lambda mode: equation_targets(ctx, mode), ctx,
+                          equation=i if k > 1 else None, parts=formulas[i].written_terms())
+        if d is not None:
+            edits += d.edits
+            details.append(f"{name(i)} is closest to {_target_words(d, ctx)}")
+        elif not state:
+            state, value, _ = concrete_state(ctx, formulas[i], None, need)
+            details.append(f"no small edit explains {name(i)}: on the motion, at the state "
+                           f"below, its two sides differ by {value:.6g} (they must be equal)")
+    which = ", ".join(str(i + 1) for i in wrong)
+    if k == 1:
+        summary = "the equation does not follow from the equations of motion"
+    else:
+        summary = (f"equation{'s' if len(wrong) > 1 else ''} {which} "
+                   f"do{'es' if len(wrong) == 1 else ''} not follow from the equations of motion")
+    return Verdict("wrong", summary, details, edits, dims, state=state, method=method,
+                   degree=degree)
+
+
+def _target_words(d, ctx) -> str:
+    scale = "" if d.scale == 1 else f"{display(d.scale, ctx.names)} x "
+    model, _, label = d.label.partition(": ")
+    return f"{scale}{model} [{label}]"
+
+
+# -- expressions --------------------------------------------------------------------------------
+def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
+                     deadline: Deadline, components: list | None = None) -> Verdict:
+    """A scalar or vector quantity compared with the problem's own on the motion."""
+    bad = answer.symbols & quantity.forbid
+    if bad:
+        shown = ", ".join(sorted(ctx.names.get(s, str(s)) for s in bad))
+        raise AnswerError(f"{quantity.name} must be written without {shown}: give it in terms "
+                          "of the coordinates, their rates, time and the parameters.")
+    refs = reference_formulas(ctx, quantity)
+    comps = components if components is not None else [answer]
+    if len(comps) != len(refs):
+        raise AnswerError(f"{quantity.name} has {len(refs)} component"
+                          f"{'s' if len(refs) > 1 else ''}; the answer has {len(comps)}"
+                          + (f" (write it as [{', '.join(['...'] * len(refs))}])"
+                             if len(refs) > 1 else "."))
+    dims = []
+    for j, (c, r) in enumerate(zip(comps, refs)):
+        expected = expected_dimension(r, ctx.dims)
+        for issue in dimension_issues(c.tree, ctx.dims, ctx.names, expected):
+            dims.append(f"component {j + 1}: {issue}" if len(refs) > 1 else issue)
+    method = method_for(ctx, comps + refs)
+    if method == "slow":
+        from .slow import slow_expression
+        return slow_expression(ctx, comps, refs, dims, quantity.description)
+    minus = ("c", Fraction(-1))
+    diffs = [Formula(("add", (c.tree, ("mul", (minus, r.tree))))) for c, r in zip(comps, refs)]
+    need = need_for(ctx, comps + refs)
+    table = values_at(ctx, diffs, method, deadline, need)
+    bad_j = []
+    for j in range(len(diffs)):
+        vals = [row[j][0] for row in table]
+        envs = [row[j][1] for row in table]
+        if quantity.up_to_constant:
+            points = ctx.points(method)
+            ok = all(zero(vals[a] - vals[b], [vals[a], vals[b]])
+                     for a in range(len(points)) for b in range(a + 1, len(points))
+                     if points[a].group == points[b].group)
+        else:
+            ok = all(_is_zero(diffs[j], v, e) for v, e in zip(vals, envs))
+        if not ok:
+            bad_j.append(j)
+    degree = max(c.degree for c in comps)
+    if not bad_j:
+        if dims:
+            return Verdict("wrong", "the value is right but the answer is dimensionally "
+                           "inconsistent", dimension_issues=dims, method=method, degree=degree)
+        note = " (up to a constant)" if quantity.up_to_constant else ""
+        return Verdict("right", f"{quantity.description}{note}", method=method, degree=degree)
+    edits, details, state = [], [], {}
+    for j in bad_j:
+        deadline.check()
+        d = None
+        where = j if len(refs) > 1 else None
+        if comps[j].expanded_size() <= _MAX_FEEDBACK_TERMS:
+            expr, parts = comps[j].sympy(), comps[j].written_terms()
+            several = len(sp.Add.make_args(sp.expand(expr))) > 1
+            for stage in (0, 1):
+                forms = expression_targets(ctx, quantity, stage)[j]
+                if not forms:
+                    continue
+                key = (quantity.name, j, stage)
+                tables = lambda mode, key=key, forms=forms: \
+                    expression_tables(ctx, key, forms, mode)  # noqa: E731
+                d = (several and factor_edit(expr, tables("trig"), ctx, equation=where)) or \
+                    best_edit(expr, tables, ctx, scale=False, equation=where, parts=parts) \
+                    or factor_edit(expr, tables("trig"), ctx, equation=where)
+                if d is not None:
+                    break
+        if d is not None:
+            edits += [replace(e, part="component") if where is not None else e for e in d.edits]
+        elif not state:
+            state, a, b = concrete_state(ctx, comps[j], refs[j], need)
+            details.append(f"no small edit explains {'component %d' % (j + 1) if len(refs) > 1 else 'it'}: "
+                           f"at the state below the answer is {a:.6g}, the right value "
+                           f"{b:.6g}")
+    which = ("components " + ", ".join(str(j + 1) for j in bad_j)) if len(refs) > 1 else "it"
+    return Verdict("wrong", f"{quantity.description}: {which} differ"
+                   f"{'s' if which == 'it' else ''} from the right value on the motion",
+                   details, edits, dims, state=state, method=method, degree=degree)
+
+
+def factor_edit(expr, targets, ctx, equation=None):
+    """A diagnosis when the answer is a constant multiple of a target, possibly after two
+    symbols of one dimension are swapped (``R`` missing and the angles swapped)."""
+    from .feedback import swap_pairs
+    for rule, text in [({}, "")] + swap_pairs(ctx):
+        mine = term_table(expr.xreplace(rule) if rule else expr, ctx)
+        if mine is None:
+            continue
+        for tab in targets:
+            if set(mine.terms) != set(tab.terms):
+                continue
+            ratios = {mine.terms[k][1] / tab.terms[k][1] for k in mine.terms}
+            if len(ratios) != 1:
+                continue
+            k0 = next(iter(mine.terms))
+            c = sp.cancel(mine.terms[k0][0] / tab.terms[k0][0])
+            edits = []
+            if text:
+                edits.append(Edit("swap", equation, display(expr, ctx.names),
+                                  display(sp.expand(expr.xreplace(rule) / c), ctx.names), "",
+                                  text))
+            if c != 1:
+                edits.append(Edit("factor", equation, "", "", "", display(c, ctx.names)))
+            return Diagnosis(tab.label, c, edits, len(edits))
+    return None
+
+
+def reference_formulas(ctx, quantity: Quantity) -> list:
+    return ctx.memo(("reference", quantity.name),
+                    lambda: [Formula.from_sympy(e) for e in quantity.reference])
+
+
+def expression_targets(ctx, quantity: Quantity, stage: int = 0) -> list:
+    """Per component, correct forms (sympy) to compare a wrong answer with (cached).  Stage
+    0: the reference itself, or a reaction/acceleration solved from single rows; stage 1:
+    solved from the whole system (symbolic, slower)."""
+    def build():
+        out = []
+        for ref in quantity.reference:
+            forms = [ref] if stage == 0 else []
+            if ref.is_Symbol and ref in ctx.reactions:
+                forms = _solved_rows(ctx, ref) if stage == 0 else _recovered(ctx, ref)
+            elif ref.is_Symbol and ref in ctx.qdd:
+                forms = _solved_rows(ctx, ref) if stage == 0 else _accelerations(ctx, ref)
+            out.append(forms)
+        return out
+    return ctx.memo(("targets", quantity.name, stage), build)
+
+
+def _solved_rows(ctx, unknown) -> list:
+    """``unknown`` solved from each row that has it as its only reaction/acceleration of its
+    kind (so the form may keep other accelerations: a reaction ``m (g + l theta'')``)."""
+    out = []
+    kind = set(ctx.reactions) if unknown in ctx.reactions else set(ctx.qdd)
+    for m in ctx.models.values():
+        for e in m.equations:
+            e = ctx.plain(e)
+            others = (e.free_symbols & kind) - {unknown}
+            if unknown in e.free_symbols and not others:
+                coeff = sp.diff(e, unknown)
+                if not coeff.free_symbols & kind:
+                    out.append(sp.expand(-(e - coeff * unknown) / coeff))
+    return out[:6]
+
+
+def _recovered(ctx, u) -> list:
+    from ..compare import recover_reactions
+
+    def build():
+        try:
+            return recover_reactions(ctx.problem)
+        except Exception:  # a display aid only: no form, no edit
+            return {}
+    rec = ctx.memo("recovered", build)
+    return [ctx.plain(rec[u.name])] if u.name in rec else []
+
+
+def _accelerations(ctx, a) -> list:
+    if len(ctx.states) > 3:
+        return []
+
+    def build():
+        try:
+            return ctx.reference.accelerations_solved()
+        except Exception:  # a display aid only
+            return {}
+    sol = ctx.memo("accelerations", build)
+    if not sol:
+        return []
+    for q, s in zip(ctx.coordinates, ctx.states):
+        if s.qdd == a:
+            return [ctx.plain(sol[q.diff(t, 2)])]
+    return []

@@ -1,0 +1,306 @@
+r"""Judging energies, Lagrangians and generalised forces against a problem's Lagrange model.
+
+* ``T`` is compared with ``q'^T M q' / 2`` at the points (or, where the kinetic pieces are not
+  of that form -- moving constraints -- by its Lagrange terms, identically in ``q''``).
+* ``V`` is right up to a constant: its gradient must be the potential pieces (plus, optionally,
+  the drives written as a time-dependent potential).
+* ``L`` is right when ``d/dt dL/dq' - dL/dq = c (kinetic + potential pieces [+ drives])`` for
+  every ``q, q', q''`` with ``c`` a nonzero constant (it may depend on the parameters), so
+  ``c L + dF(q, t)/dt`` is right; ``c`` is found from an acceleration coefficient and checked
+  to be the same at two states with the same parameters.
+* ``Q_j`` is right when it is minus the sum of the pieces of a consistent choice of
+  ingredients: every drive, any dampers (or leave them to a dissipation function), any
+  conservative loads (or leave them to ``V``); the verdict says which choice it matched.
+
+See :mod:`.energies` for how ingredients are sorted.
+"""
+from __future__ import annotations
+
+from itertools import combinations
+
+import sympy as sp
+
+from .answers import Quantity
+from .context import GradingUnavailable, ProblemContext, off_motion, zero
+from .energies import LagrangeParts, euler_lagrange
+from .feedback import best_edit, concrete_state
+from .terms import term_table
+from .audit import dimension_issues, reduced
+from .formula import Formula
+from .judge import Deadline, Verdict, factor_edit, method_for
+from .parser import AnswerError
+from ..dimensions import ENERGY
+
+__all__ = ["judge_kinetic", "judge_potential", "judge_lagrangian", "judge_force"]
+
+_MAX_SUBSETS = 512
+
+
+def _exact(ctx, formulas) -> str:
+    method = method_for(ctx, formulas)
+    if method != "exact":
+        raise GradingUnavailable("energies, Lagrangians and generalised forces with sqrt, exp, "
+                                 "log or fractional powers are not graded; write them with "
+                                 "powers, sines and cosines.")
+    return method
+
+
+def _check_symbols(ctx, f: Formula, quantity: Quantity, velocities: bool = True):
+    bad = f.symbols & quantity.forbid
+    if not velocities:
+        bad |= f.symbols & {s.qd for s in ctx.states}
+    if bad:
+        shown = ", ".join(sorted(ctx.names.get(s, str(s)) for s in bad))
+        raise AnswerError(f"{quantity.description} cannot contain {shown}.")
+    if ctx.derived_formulas() and f.symbols & set(ctx.derived_formulas()):
+        raise AnswerError(f"write {quantity.description} in the coordinates "
+                          f"{', '.join(s.name for s in ctx.states)}.")
+
+
+def _energy_dims(ctx, f: Formula) -> list:
+    return dimension_issues(f.tree, ctx.dims, ctx.names, reduced(ENERGY))
+
+
+def _edits(ctx, f: Formula, target, deadline):
+    if target is None or f.expanded_size() > 400:
+        return None
+    deadline.check()
+    right = _drop_constants(target, ctx)
+
+    def tables(mode):
+        tab = term_table(right, ctx, "the right answer", mode)
+        return [tab] if tab is not None and tab.terms else []
+    expr = _drop_constants(f.sympy(), ctx)
+    return best_edit(expr, tables, ctx, scale=False) or factor_edit(expr, tables("trig"), ctx)
+
+
+def _drop_constants(expr, ctx):
+    states = {s.q for s in ctx.states} | {s.qd for s in ctx.states} | {sp.Symbol("t", real=True)}
+    return sp.Add(*[a for a in sp.Add.make_args(sp.expand(expr)) if a.free_symbols & states])
+
+
+def _wrong(ctx, f, truth, summary, dims, method, deadline, target=None, extra=()):
+    d = _edits(ctx, f, target, deadline)
+    details = list(extra)
+    state = {}
+    if d is not None:
+        edits = d.edits
+    else:
+        edits = []
+        if truth is not None:
+            state, a, b = concrete_state(ctx, f, truth)
+            details.append(f"no small edit explains it: at the state below the answer is "
+                           f"{a:.6g}, the right value {b:.6g}")
+    return Verdict("wrong", summary, details, edits, dims, state=state, method=method,
+                   degree=f.degree)
+
+
+# -- T ------------------------------------------------------------------------------------------
+def judge_kinetic(ctx: ProblemContext, f: Formula, quantity: Quantity,
+                  deadline: Deadline) -> Verdict:
+    _check_symbols(ctx, f, quantity)
+    parts = LagrangeParts.of(ctx)
+    dims = _energy_dims(ctx, f)
+    T = parts.kinetic_energy()
+    if T is not None:
+        ref = Formula.from_sympy(T)
+        method = _exact(ctx, [f, ref])
+        ok = all(zero(f.evaluate(e) - ref.evaluate(e), [ref.evaluate(e)])
+                 for e in (p.env() for p in ctx.points(method)))
+        if ok:
+            return Verdict("wrong" if dims else "right", "the kinetic energy" +
+                           (", but dimensionally inconsistent" if dims else ""),
+                           dimension_issues=dims, method=method, degree=f.degree)
+        return _wrong(ctx, f, ref, "this is not the kinetic energy", dims, method, deadline, T)
+    kin = parts.total(parts.keys("kinetic"))
+    ok, method = _same_lagrange_terms(ctx, f, kin)
+    status = "right" if ok and not dims else "wrong"
+    summary = ("its Lagrange terms are those of the kinetic energy (the problem's T has "
+               "terms from moving constraints, so T is judged by its equations)") if ok else \
+        "its Lagrange terms differ from those of the kinetic energy"
+    return Verdict(status, summary, dimension_issues=dims, method=method, degree=f.degree)
+
+
+def _same_lagrange_terms(ctx, f, pieces) -> tuple[bool, str]:
+    el = [Formula.from_sympy(e) for e in euler_lagrange(f.sympy(), ctx.states)]
+    ref = [Formula.from_sympy(e) for e in pieces]
+    method = _exact(ctx, el + ref)
+    for p in ctx.points(method):
+        env = off_motion(p, ctx)
+        for a, b in zip(el, ref):
+            if not zero(a.evaluate(env) - b.evaluate(env), [b.evaluate(env)]):
+                return False, method
+    return True, method
+
+
+# -- V ------------------------------------------------------------------------------------------
+def judge_potential(ctx: ProblemContext, f: Formula, quantity: Quantity,
+                    deadline: Deadline) -> Verdict:
+    _check_symbols(ctx, f, quantity, velocities=False)
+    parts = LagrangeParts.of(ctx)
+    dims = _energy_dims(ctx, f)
+    grad = [Formula.from_sympy(sp.diff(f.sympy(), s.q)) for s in ctx.states]
+    pot, drives = parts.keys("potential"), parts.keys("drive")
+    method = _exact(ctx, grad + [x for k in pot + drives for x in parts.formulas[k]])
+    envs = [p.env() for p in ctx.points(method)]
+    mine = [[g.evaluate(e) for g in grad] for e in envs]
+    for chosen in _subsets(drives):
+        deadline.check()
+        keys = pot + list(chosen)
+        if all(zero(mine[i][j] - sum((parts.formulas[k][j].evaluate(e) for k in keys), 0),
+                    [mine[i][j]])
+               for i, e in enumerate(envs) for j in range(len(ctx.states))):
+            note = f" (with {', '.join(chosen)} as a potential)" if chosen else ""
+            if dims:
+                return Verdict("wrong", "the potential energy, but dimensionally inconsistent",
+                               dimension_issues=dims, method=method, degree=f.degree)
+            return Verdict("right", f"the potential energy, up to a constant{note}",
+                           method=method, degree=f.degree)
+    V = parts.potential_energy()
+    truth = Formula.from_sympy(V) if V is not None else None
+    return _wrong(ctx, f, None, "this is not the potential energy: its gradient differs",
+                  dims, method, deadline, V,
+                  extra=[] if truth is None else
+                  [f"the right potential is {_show(ctx, V)} (up to a constant)"]
+                  if False else [])
+
+
+def _show(ctx, expr) -> str:
+    from .audit import display
+    return display(expr, ctx.names)
+
+
+def _subsets(keys):
+    n = 0
+    for r in range(len(keys) + 1):
+        for c in combinations(keys, r):
+            n += 1
+            if n > _MAX_SUBSETS:
+                return
+            yield c
+
+
+# -- L ------------------------------------------------------------------------------------------
+def judge_lagrangian(ctx: ProblemContext, f: Formula, quantity: Quantity,
+                     deadline: Deadline) -> Verdict:
+    _check_symbols(ctx, f, quantity)
+    parts = LagrangeParts.of(ctx)
+    dims = _energy_dims(ctx, f)
+    el = [Formula.from_sympy(e) for e in euler_lagrange(f.sympy(), ctx.states)]
+    kin, pot, drives = parts.keys("kinetic"), parts.keys("potential"), parts.keys("drive")
+    pieces = [x for k in kin + pot + drives for x in parts.formulas[k]]
+    method = _exact(ctx, el + pieces)
+    points = ctx.points(method)
+    n = len(ctx.states)
+    rows = []  # per point: (mine, core, {drive: values}, c)
+    for p in points:
+        deadline.check()
+        env = off_motion(p, ctx)
+        mine = [g.evaluate(env) for g in el]
+        core = [sum((parts.formulas[k][j].evaluate(env) for k in kin + pot), 0) for j in range(n)]
+        dv = {k: [parts.formulas[k][j].evaluate(env) for j in range(n)] for k in drives}
+        c = _factor(ctx, p, el, kin, parts)
+        rows.append((mine, core, dv, c))
+    if any(r[3] is None for r in rows):
+        return _lagrangian_wrong(ctx, f, parts, dims, method, deadline,
+                                 "this Lagrangian gives no accelerations (it has no kinetic "
+                                 "energy, or the wrong one)")
+    same_c = all(zero(rows[a][3] - rows[b][3], [rows[a][3]])
+                 for a in range(len(points)) for b in range(a + 1, len(points))
+                 if points[a].group == points[b].group)
+    if same_c:
+        for chosen in _subsets(drives):
+            if all(zero(m[j] - c * (core[j] + sum((dv[k][j] for k in chosen), 0)), [m[j]])
+                   for m, core, dv, c in rows for j in range(n)):
+                note = f" (with {', '.join(chosen)} in L as a potential)" if chosen else ""
+                if dims:
+                    return Verdict("wrong", "the Lagrangian gives the right equations but is "
+                                   "dimensionally inconsistent", dimension_issues=dims,
+                                   method=method, degree=f.degree)
+                return Verdict("right", f"the Lagrangian: it gives the same Lagrange "
+                               f"equations{note}", method=method, degree=f.degree)
+    return _lagrangian_wrong(ctx, f, parts, dims, method, deadline,
+                             "this Lagrangian gives different equations of motion")
+
+
+def _factor(ctx, point, el, kin, parts):
+    """``c`` with ``EL(L) = c EL(L_ref)``, from the first acceleration coefficient (or None)."""
+    base = off_motion(point, ctx)
+    n = len(ctx.states)
+    for k, s in enumerate(ctx.states):
+        bumped = off_motion(point, ctx, {s.qdd: base.values[s.qdd] + 1})
+        for j in range(n):
+            ref = sum((parts.formulas[key][j].evaluate(bumped) -
+                       parts.formulas[key][j].evaluate(base) for key in kin), 0)
+            if not zero(ref, [1]):
+                mine = el[j].evaluate(bumped) - el[j].evaluate(base)
+                return None if zero(mine, [ref]) else mine / ref
+    return None
+
+
+def _lagrangian_wrong(ctx, f, parts, dims, method, deadline, summary):
+    T, V = parts.kinetic_energy(), parts.potential_energy()
+    target = (T - V) if T is not None and V is not None else None
+    return _wrong(ctx, f, None, summary, dims, method, deadline, target,
+                  extra=[] if target is not None else
+                  ["(the problem's kinetic or potential energy could not be written out, so "
+                   "no term-by-term edit is given)"])
+
+
+# -- Q ------------------------------------------------------------------------------------------
+def judge_force(ctx: ProblemContext, comps: list, quantity: Quantity,
+                deadline: Deadline) -> Verdict:
+    """``comps``: the answer's generalised forces (one, for ``Q_q``; all, for ``Q``)."""
+    for f in comps:
+        _check_symbols(ctx, f, quantity)
+    parts = LagrangeParts.of(ctx)
+    js = [quantity.coordinate] if quantity.coordinate is not None else list(range(len(ctx.states)))
+    if len(comps) != len(js):
+        raise AnswerError(f"{quantity.name} has {len(js)} component{'s' if len(js) > 1 else ''}"
+                          f"; the answer has {len(comps)} (write Q as "
+                          f"[{', '.join('Q_' + ctx.states[j].name for j in js)}]).")
+    dims = []
+    for f, j in zip(comps, js):
+        expected = reduced(ENERGY)
+        expected = tuple(sorted(_sub(expected, ctx.dims[ctx.states[j].q]).items()))
+        dims += dimension_issues(f.tree, ctx.dims, ctx.names, expected)
+    drives, optional = parts.keys("drive"), parts.keys("velocity", "potential")
+    method = _exact(ctx, comps + [x for k in drives + optional for x in parts.formulas[k]])
+    envs = [p.env() for p in ctx.points(method)]
+    mine = [[f.evaluate(e) for f in comps] for e in envs]
+    vals = {k: [[parts.formulas[k][j].evaluate(e) for j in js] for e in envs]
+            for k in drives + optional}
+    for chosen in _subsets(optional):
+        deadline.check()
+        keys = drives + list(chosen)
+        if all(zero(mine[i][a] + sum((vals[k][i][a] for k in keys), 0), [mine[i][a]])
+               for i in range(len(envs)) for a in range(len(js))):
+            left = [k for k in optional if k not in chosen]
+            note = f"; counted here: {', '.join(keys) or 'nothing'}" + (
+                f"; left to V or R: {', '.join(left)}" if left else "")
+            if dims:
+                return Verdict("wrong", "the generalised force, but dimensionally inconsistent",
+                               dimension_issues=dims, method=method, degree=comps[0].degree)
+            return Verdict("right", f"{quantity.description}{note}", method=method,
+                           degree=max(c.degree for c in comps))
+    target_keys = drives + parts.keys("velocity")
+    edits, details = [], []
+    for a, (f, j) in enumerate(zip(comps, js)):
+        target = -sp.Add(*[parts.pieces[k][j] for k in target_keys])
+        d = _edits(ctx, f, target, deadline)
+        if d is not None:
+            edits += [e.__class__(e.kind, a if len(js) > 1 else None, e.term, e.correct,
+                                  e.category, e.detail) for e in d.edits]
+    if not edits:
+        details.append("compared with the generalised forces of the drives and dampers "
+                       f"({', '.join(target_keys) or 'none'}); conservative loads may be "
+                       "counted in V instead")
+    return Verdict("wrong", f"{quantity.description}: not the virtual work of the loads",
+                   details, edits, dims, method=method, degree=max(c.degree for c in comps))
+
+
+def _sub(a, b) -> dict:
+    out = dict(a)
+    for name, e in b:
+        out[name] = out.get(name, 0) - e
+    return {k: v for k, v in out.items() if v != 0}

@@ -1,0 +1,97 @@
+"""Answers the fast exact evaluator cannot decide, decided by the library's comparator.
+
+An answer with ``sqrt``, ``exp``, ``log``, a fractional power or an angle such as
+``theta/2`` -- or any answer to a problem whose models have them -- is turned into an
+:class:`~dualmech.equations.EquationSet` and judged by :func:`dualmech.compare.compare_models`
+(and :func:`~dualmech.compare.compare_reactions` for the reactions it uses), whose verdict
+names its own method (exact with square roots, or rigorous interval arithmetic, which is
+evidence rather than proof).  A single equation, a reaction or an acceleration becomes one more
+equation beside a model that determines the accelerations (and the reactions): the set is
+equivalent to that model exactly when the answer holds on the motion.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from ..compare import compare_models, compare_reactions, method_name
+from ..equations import EquationSet, ModelError, from_plain
+from .context import GradingUnavailable, ProblemContext
+from .judge import Verdict
+
+__all__ = ["slow_equations", "slow_expression"]
+
+_POINTS = 4
+
+
+def _function_form(ctx: ProblemContext, formula) -> sp.Expr:
+    expr = formula.sympy()
+    derived = ctx.derived_formulas()
+    if expr.free_symbols & set(derived):
+        expr = expr.xreplace({s: f.sympy() for s, f in derived.items()})
+    return from_plain(expr, ctx.coordinates)
+
+
+def _model_with(ctx: ProblemContext, reactions) -> EquationSet:
+    """The reference, or a square model in the reference coordinates with ``reactions``."""
+    if set(reactions) <= set(ctx.reference.unknowns):
+        return ctx.reference
+    for m in ctx.models.values():
+        if set(reactions) <= set(m.unknowns) and m.is_square:
+            return m
+    raise GradingUnavailable(f"no model of `{ctx.problem.name}` determines "
+                             f"{', '.join(map(str, reactions))}.")
+
+
+def _decide(reference: EquationSet, candidate: EquationSet, used) -> tuple[bool, str]:
+    try:
+        r = compare_models(reference, candidate, points=_POINTS, explain=False)
+        ok, method = r.equivalent, r.method
+        if ok and used:
+            rr = compare_reactions(reference, reference, candidate, used, points=_POINTS,
+                                   explain=False)
+            ok = rr.equivalent
+    except ModelError as exc:
+        raise GradingUnavailable(f"the comparator cannot judge this answer: {exc}") from None
+    return ok, _method_words(method)
+
+
+def _method_words(method: str) -> str:
+    try:
+        return method_name(method)
+    except Exception:  # an older or newer comparator: its own word for the method
+        return str(method)
+
+
+def slow_equations(ctx: ProblemContext, formulas: list, single: bool, dims: list) -> Verdict:
+    """A set (or, ``single``, one equation) decided by the comparator."""
+    eqs = [_function_form(ctx, f) for f in formulas]
+    used = [r for r in ctx.reactions if any(r in f.symbols for f in formulas)]
+    model = _model_with(ctx, used)
+    if single:
+        candidate = EquationSet("answer", model.coordinates, model.equations + tuple(eqs),
+                                model.unknowns)
+        ok, method = _decide(model, candidate, [])
+        summary = "the equation follows from the equations of motion" if ok else \
+            "the equation does not follow from the equations of motion"
+    else:
+        candidate = EquationSet("answer", ctx.coordinates, tuple(eqs), tuple(used))
+        ok, method = _decide(model, candidate, used)
+        summary = "equivalent to the equations of motion" if ok else \
+            "not equivalent to the equations of motion"
+    status = "right" if ok and not dims else "wrong"
+    return Verdict(status, summary, dimension_issues=dims, method="slow", method_text=method)
+
+
+def slow_expression(ctx: ProblemContext, comps: list, refs: list, dims: list,
+                    description: str) -> Verdict:
+    """``answer - reference = 0`` for each component, beside a model that determines them."""
+    eqs = [_function_form(ctx, c) - from_plain(r.sympy(), ctx.coordinates)
+           for c, r in zip(comps, refs)]
+    used = [u for u in ctx.reactions if any(u in r.symbols for r in refs)]
+    model = _model_with(ctx, used)
+    candidate = EquationSet("answer", model.coordinates, model.equations + tuple(eqs),
+                            model.unknowns)
+    ok, method = _decide(model, candidate, [])
+    status = "right" if ok and not dims else "wrong"
+    summary = description if ok else f"{description}: it differs from the right value on the motion"
+    return Verdict(status, summary, dimension_issues=dims, method="slow", method_text=method)
