@@ -1,0 +1,372 @@
+"""Say what is wrong with a wrong answer: the smallest edit, named as terms.
+
+A wrong equation is compared with *targets*: correct equations written the way people write
+them -- every row of every model of the problem (Lagrange, Newton--Euler with its reactions,
+angular momentum, ...), in the reference coordinates, and simple combinations that eliminate a
+reaction.  Both sides are expanded into terms ``coefficient x state part`` (the coefficient
+free of the state, the state part a product of coordinates, rates, accelerations, reactions,
+trigonometric functions and time).  For each target and each scale factor suggested by a shared
+term, the terms that differ are the edit: a term **missing**, one **extra**, a wrong **sign**, a
+wrong **coefficient** (``l`` where ``l^2`` belongs), two symbols of the same dimension
+**swapped**.  The target needing the fewest edits wins; a small edit is reported, otherwise a
+concrete state where answer and truth differ.
+
+The edit is only ever a suggestion about *which* correct form the student meant: the verdict
+itself came from exact evaluation (:mod:`.answers`).  Every suggested form is a correct
+equation by construction (a constant multiple of a verified one).  Coefficients are compared
+exactly at a random point of the parameters.
+
+Example
+-------
+>>> from problems import get
+>>> from dualmech.grade.context import ProblemContext
+>>> ctx = ProblemContext.of(get("simple_pendulum"))
+>>> import sympy as sp
+>>> th, thdd = sp.Symbol("theta", real=True), sp.Symbol("theta_ddot", real=True)
+>>> a, g = sp.symbols("a g", positive=True)
+>>> from dualmech.grade.terms import equation_targets
+>>> d = best_edit(a*thdd - g*sp.sin(th), lambda mode: equation_targets(ctx, mode), ctx)
+>>> [e.sentence() for e in d.edits]
+['the term `-g*sin(theta)` has the wrong sign: it is `g*sin(theta)` (a gravity term)']
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+
+import mpmath
+import sympy as sp
+
+from ..dimensions import (ACCELERATION, DAMPING, STIFFNESS, TORSIONAL_DAMPING,
+                          TORSIONAL_STIFFNESS)
+from ..exact import MP_DIGITS
+from ..kinematics import t
+from .context import ProblemContext, zero
+from .audit import display, reduced
+from .formula import Formula
+from .result import Edit
+from .terms import MODES, TermTable, coefficient_env, term_table
+
+__all__ = ["best_edit", "Diagnosis", "concrete_state", "category", "swap_pairs", "MAX_EDITS"]
+
+MAX_EDITS = 3
+
+
+@dataclass
+class Diagnosis:
+    """The closest target, the scale applied to it, and the edits from the answer to it."""
+
+    label: str
+    scale: object
+    edits: list
+    size: int
+
+
+def best_edit(expr, targets, ctx: ProblemContext, scale: bool = True,
+              equation: int | None = None, parts: list | None = None) -> Diagnosis | None:
+    """The target needing the fewest term edits to turn ``expr`` into it, or None when none
+    is small (at most :data:`MAX_EDITS` edits, fewer than the answer has terms).
+
+    ``targets(mode)`` gives the correct forms for each of :data:`MODES`; the first mode
+    reaching the fewest edits wins.  Among equally small edits, a target at the answer's own
+    scale, then an earlier target (the reference model's rows come first), is preferred.
+    """
+    found = None
+    for mode in MODES:
+        d = _best(expr, targets(mode), ctx, scale, equation, mode, parts)
+        if d is not None and (found is None or d.size < found.size):
+            found = d
+        if found is not None and found.size <= 1:
+            break
+    return found
+
+
+def _best(expr, targets, ctx, scale, equation, mode, parts=None) -> Diagnosis | None:
+    mine = term_table(expr, ctx, mode=mode, parts=parts)
+    if mine is None or not mine.terms:
+        return None
+    best = None
+    for index, tab in enumerate(targets):
+        for c in _scales(mine, tab) if scale else [Fraction(1)]:
+            rank = (_count(mine, tab, c), c != 1, index)
+            if best is None or rank < best[0]:
+                best = (rank, tab, c)
+    if best is None:
+        return None
+    (size, _, _), tab, c = best
+    if size == 0 or size > min(MAX_EDITS, max(len(mine.terms) - 1, 1)):
+        return None
+    return _describe(mine, tab, c, ctx, equation)
+
+
+def _scales(mine: TermTable, tab: TermTable) -> list:
+    """Scale factors (values) suggested by terms the two share; accelerations first."""
+    shared = [k for k in mine.terms if k in tab.terms]
+    shared.sort(key=lambda k: 0 if any(s.name.endswith("_ddot") for s in k.free_symbols) else 1)
+    out = []
+    for k in shared:
+        c = mine.terms[k][1] / tab.terms[k][1]
+        if c not in out:
+            out.append(c)
+        if len(out) >= 6:
+            break
+    return out or [Fraction(1)]
+
+
+def _count(mine: TermTable, tab: TermTable, c) -> int:
+    n = 0
+    for k in set(mine.terms) | set(tab.terms):
+        a = mine.terms.get(k, (0, 0))[1]
+        b = tab.terms.get(k, (0, 0))[1] * c
+        if not zero(a - b, [a, b]):
+            n += 1
+    return n
+
+
+def _describe(mine: TermTable, tab: TermTable, c, ctx, equation) -> Diagnosis:
+    shared = [k for k in mine.terms if k in tab.terms
+              and zero(mine.terms[k][1] - c * tab.terms[k][1], [1])]
+    if c == 1 or not shared:
+        c_sym = sp.Integer(1)
+    else:
+        c_sym = sp.cancel(mine.terms[shared[0]][0] / tab.terms[shared[0]][0])
+    names = ctx.names
+    swaps = swap_pairs(ctx)
+    edits, missing, extra = [], [], []
+    for k in list(mine.terms) + [k for k in tab.terms if k not in mine.terms]:
+        a = mine.terms.get(k)
+        b = tab.terms.get(k)
+        av = a[1] if a else 0
+        bv = b[1] * c if b else 0
+        if zero(av - bv, [av, bv]):
+            continue
+        right = sp.expand(c_sym * b[0]) * k if b else None
+        have = a[0] * k if a else None
+        if a is None:
+            missing.append(right)
+        elif b is None:
+            extra.append(have)
+        elif zero(av + bv, [av, bv]):
+            edits.append(Edit("sign", equation, display(have, names), display(right, names),
+                              category(have, ctx)))
+        else:
+            edits += _changed(a, sp.expand(c_sym * b[0]), bv, k, ctx, equation, swaps)
+    for have in list(extra):
+        for right in list(missing):
+            sw = _swap_of(have, right, swaps)
+            if sw:
+                edits.append(Edit("swap", equation, display(have, names), display(right, names),
+                                  category(right, ctx), sw))
+                extra.remove(have)
+                missing.remove(right)
+                break
+    edits += [Edit("missing", equation, "", display(r, names), category(r, ctx)) for r in missing]
+    edits += [Edit("extra", equation, display(h, names), "", category(h, ctx)) for h in extra]
+    return Diagnosis(tab.label, c_sym, edits, len(edits))
+
+
+def _changed(a, right_c, bv, key, ctx, equation, swaps) -> list:
+    """Edits for a term whose coefficient is wrong (``a``: the answer's entry)."""
+    names = ctx.names
+    have, right = a[0] * key, right_c * key
+    sub = _written_term(a, bv, key, ctx, equation, swaps)
+    if sub is not None:
+        return [sub]
+    sw = _swap_of(have, right, swaps)
+    if sw:
+        return [Edit("swap", equation, display(have, names), display(right, names),
+                     category(right, ctx), sw)]
+    split = _monomials(a[0], right_c, key, ctx, equation, swaps)
+    if split is not None:
+        return split
+    return [Edit("coefficient", equation, display(have, names), display(right, names),
+                 category(right, ctx))]
+
+
+def _written_term(a, bv, key, ctx, equation, swaps) -> Edit | None:
+    """When the student wrote several like terms, the one whose change explains the
+    difference: a simple ratio (``25/6`` where ``25/3`` belongs) or two symbols swapped
+    (``m1`` written where ``M`` belongs, beside an ``m1`` that is right) -- else None."""
+    subs = a[2]
+    if len(subs) < 2:
+        return None
+    env = coefficient_env(ctx)
+    delta = bv - a[1]
+    best = None
+    for c_i, v_i in subs:
+        new = v_i + delta
+        for rule, text in swaps:
+            swapped = c_i.xreplace(rule)
+            if swapped != c_i and zero(Formula.from_sympy(swapped).evaluate(env) - new, [new]):
+                return Edit("swap", equation, display(c_i * key, ctx.names),
+                            display(swapped * key, ctx.names), category(swapped * key, ctx),
+                            text)
+        if zero(new, [v_i]):
+            cand = (0, Edit("extra", equation, display(c_i * key, ctx.names), "",
+                            category(c_i * key, ctx)))
+        else:
+            ratio = new / v_i
+            if not isinstance(ratio, Fraction):
+                continue
+            height = max(abs(ratio.numerator), ratio.denominator)
+            if height > 12:
+                continue
+            right = sp.Rational(ratio.numerator, ratio.denominator) * c_i * key
+            kind = "sign" if ratio == -1 else "coefficient"
+            cand = (height, Edit(kind, equation, display(c_i * key, ctx.names),
+                                 display(right, ctx.names), category(right, ctx)))
+        if best is None or cand[0] < best[0]:
+            best = cand
+    return best[1] if best else None
+
+
+def _monomials(have_c, right_c, key, ctx, equation, swaps=()) -> list | None:
+    """A changed coefficient that is a sum, split into the parameter terms that differ
+    (``g*m1`` where ``g*m1 + k*l0`` belongs: the term ``k*l0`` is missing); one term
+    extra and one missing are one wrong coefficient (``R*m`` where ``R**2*m`` belongs), or
+    one symbol written for another (``2*m1`` where ``M + m1`` belongs: ``m1`` for ``M``)."""
+    if not (have_c.is_Add or right_c.is_Add):
+        return None
+
+    def split(c):
+        out = {}
+        for term in sp.Add.make_args(sp.expand(c)):
+            num, rest = term.as_coeff_Mul()
+            out[rest] = out.get(rest, 0) + num
+        return out
+    h, r = split(have_c), split(right_c)
+    changed = [rest for rest in list(h) + [x for x in r if x not in h]
+               if h.get(rest, 0) != r.get(rest, 0)]
+    moved = _moved(h, r, changed, key, ctx, equation, swaps)
+    if moved is not None:
+        return [moved]
+    extra = [x for x in changed if r.get(x, 0) == 0]
+    missing = [x for x in changed if h.get(x, 0) == 0]
+    if len(extra) == 1 and len(missing) == 1 and len(changed) == 2:
+        have, right = h[extra[0]] * extra[0] * key, r[missing[0]] * missing[0] * key
+        return [Edit("coefficient", equation, display(have, ctx.names),
+                     display(right, ctx.names), category(right, ctx))]
+    edits = []
+    for rest in changed:
+        hv, rv = h.get(rest, 0), r.get(rest, 0)
+        have, right = hv * rest * key, rv * rest * key
+        if rv == 0:
+            edits.append(Edit("extra", equation, display(have, ctx.names), "",
+                              category(have, ctx)))
+        elif hv == 0:
+            edits.append(Edit("missing", equation, "", display(right, ctx.names),
+                              category(right, ctx)))
+        else:
+            edits.append(Edit("sign" if hv == -rv else "coefficient", equation,
+                              display(have, ctx.names), display(right, ctx.names),
+                              category(right, ctx)))
+    return edits or None
+
+
+def _moved(h, r, changed, key, ctx, equation, swaps) -> Edit | None:
+    """One parameter term counted under a symbol of the same dimension as another's."""
+    if len(changed) != 2:
+        return None
+    a, b = changed
+    da, db = h.get(a, 0) - r.get(a, 0), h.get(b, 0) - r.get(b, 0)
+    if da != -db:
+        return None
+    # the symbol written by mistake is the one the answer has more of
+    wrong, right = (a, b) if abs(h.get(a, 0)) > abs(r.get(a, 0)) else (b, a)
+    d = h.get(wrong, 0) - r.get(wrong, 0)
+    for rule, text in swaps:
+        if sp.expand(wrong.xreplace(rule) - right) == 0:
+            return Edit("swap", equation, display(d * wrong * key, ctx.names),
+                        display(d * right * key, ctx.names), category(d * right * key, ctx),
+                        text)
+    return None
+
+
+def swap_pairs(ctx) -> list:
+    """Pairs of symbols of one dimension (parameters; coordinates with their derivatives)."""
+    return ctx.memo("swap_pairs", lambda: _buildswap_pairs(ctx))
+
+
+def _buildswap_pairs(ctx) -> list:
+    pairs = []
+    params = list(ctx.parameters)
+    for i, a in enumerate(params):
+        for b in params[i + 1:]:
+            if ctx.dims.get(a) == ctx.dims.get(b):
+                pairs.append(({a: b, b: a}, f"`{a}` and `{b}`"))
+    st = ctx.states
+    for i, a in enumerate(st):
+        for b in st[i + 1:]:
+            if ctx.dims.get(a.q) == ctx.dims.get(b.q):
+                pairs.append(({a.q: b.q, b.q: a.q, a.qd: b.qd, b.qd: a.qd, a.qdd: b.qdd,
+                               b.qdd: a.qdd}, f"`{a.name}` and `{b.name}`"))
+    return pairs
+
+
+def _swap_of(have, right, swaps) -> str:
+    for rule, text in swaps:
+        if sp.expand(have.xreplace(rule) - right) == 0:
+            return text
+    return ""
+
+
+_CATEGORY_DIMS = None
+
+
+def category(term, ctx: ProblemContext) -> str:
+    """A short name for what a term is (inertia, Coriolis, centripetal, damping, ...)."""
+    syms = term.free_symbols
+    qdd = {s.qdd for s in ctx.states}
+    qd = {s.qd for s in ctx.states}
+    if syms & qdd:
+        return "an inertia term"
+    if syms & set(ctx.reactions):
+        return "a reaction term"
+    rates = [s for s in qd if s in syms]
+    dims = {p: ctx.dims.get(p) for p in ctx.parameters if p in syms}
+    damping = {reduced(DAMPING), reduced(TORSIONAL_DAMPING)}
+    if rates and any(d in damping for d in dims.values()):
+        return "a damping term"
+    if len(rates) >= 2:
+        return "a Coriolis term"
+    if rates:
+        powers = term.as_powers_dict()
+        if any(powers.get(r, 0) >= 2 for r in rates):
+            return "a centripetal term"
+        return "a velocity term"
+    if t in syms:
+        return "a driving term"
+    if any(d == reduced(ACCELERATION) for d in dims.values()):
+        return "a gravity term"
+    if any(d in (reduced(STIFFNESS), reduced(TORSIONAL_STIFFNESS)) for d in dims.values()):
+        return "a spring term"
+    return ""
+
+
+def concrete_state(ctx: ProblemContext, answer: Formula, truth: Formula | None,
+                   need=()) -> tuple[dict, float, float]:
+    """A real state in the declared ranges (on the motion): ``(state, answer, truth)`` values.
+
+    ``truth`` None means the answer should vanish there (an equation).
+    """
+    point = ctx.points("mpmath")[0]
+    env = point.env(need=need)
+    with mpmath.workdps(MP_DIGITS):
+        a = answer.evaluate(env)
+        b = truth.evaluate(env) if truth is not None else 0
+    state = {}
+    for s in ctx.parameters:
+        state[str(s)] = float(point.values[s])
+    for s in ctx.states:
+        state[s.name] = float(point.values[s.q])
+        state[s.name + "'"] = float(point.values[s.qd])
+    if any(answer.symbols & {t}) or (truth is not None and t in truth.symbols):
+        state["t"] = float(point.values[t])
+    return state, _real(a), _real(b)
+
+
+def _real(v) -> float:
+    try:
+        return float(v)
+    except TypeError:
+        return float(mpmath.re(v))

@@ -1,0 +1,261 @@
+"""Answers written from a problem's verified equations: correct forms and classic mistakes.
+
+For tests, benchmarks and teachers (distractors for a quiz): :func:`correct_answers` writes the
+verified equations in the answer syntax -- as derived, scaled and rearranged, combined, with a
+trigonometric identity, one equation at a time, the direct form with its reactions, reactions
+solved from the direct form, accelerations -- and :func:`wrong_answers` makes the mistakes
+students make: a wrong sign, a missing Coriolis or centripetal term, ``l`` where ``l^2``
+belongs, swapped masses, a dropped damper, a wrong reaction.  Each wrong answer carries the term
+it broke, so the grader's diagnosis can be checked against it.
+
+Example
+-------
+>>> from dualmech.grade import Grader
+>>> ctx = Grader("simple_pendulum").context
+>>> [s.text for s in correct_answers(ctx) if s.variant == "as derived"]
+["M*a**2*theta'' + M*a*g*sin(theta)"]
+>>> w = next(s for s in wrong_answers(ctx) if s.mistake == "sign")
+>>> w.text, w.term
+("M*a**2*theta'' - M*a*g*sin(theta)", M*a*g*sin(theta))
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+from sympy.printing.str import StrPrinter
+
+from ..dimensions import DAMPING, LENGTH, TORSIONAL_DAMPING
+from .context import ProblemContext
+from .audit import reduced
+
+__all__ = ["Sample", "write", "correct_answers", "wrong_answers", "CannotWrite"]
+
+_FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc, sp.exp, sp.log)
+_MAX_TERMS = 40
+
+
+class CannotWrite(ValueError):
+    """The expression uses something the answer syntax has no notation for (``Abs``, ...)."""
+
+
+@dataclass(frozen=True)
+class Sample:
+    """One answer: its ``text``, the ``quantity`` it answers, whether it is ``right``.
+
+    Wrong samples name the ``mistake`` (``sign``, ``missing``, ``coefficient``, ``swap``,
+    ``damping``, ``reaction``) and the ``term`` concerned as the correct answer has it (for
+    ``sign``/``missing``/``damping``) or as the wrong answer has it (``coefficient``, ``swap``,
+    with ``correct`` the term it replaced); ``equation`` is its index in the answer.
+    """
+
+    text: str
+    quantity: str | None
+    right: bool
+    variant: str
+    mistake: str = ""
+    term: object = None
+    correct: object = None
+    equation: int | None = None
+
+
+class _Writer(StrPrinter):
+    def __init__(self, names):
+        super().__init__()
+        self._names = names
+
+    def _print_Symbol(self, expr):
+        return self._names.get(expr, expr.name)
+
+    def _print_Function(self, expr):
+        if type(expr) in _FUNCTIONS or isinstance(expr, _FUNCTIONS):
+            return super()._print_Function(expr)
+        raise CannotWrite(f"no notation for {type(expr).__name__}")
+
+    def emptyPrinter(self, expr):
+        raise CannotWrite(f"no notation for {type(expr).__name__}")
+
+    def _print_Abs(self, expr):
+        raise CannotWrite("no notation for Abs")
+
+    def _print_Piecewise(self, expr):
+        raise CannotWrite("no notation for Piecewise")
+
+    def _print_Exp1(self, expr):
+        return "exp(1)"
+
+
+def write(expr, ctx: ProblemContext) -> str:
+    """``expr`` (plain symbols) in the answer syntax, e.g. ``m*l**2*theta'' + ...``."""
+    return _Writer(ctx.names).doprint(expr)
+
+
+def _rows(ctx):
+    return [sp.expand(ctx.plain(e)) for e in ctx.reference.equations]
+
+
+def _lines(ctx, exprs) -> str:
+    return "\n".join(write(e, ctx) for e in exprs)
+
+
+def correct_answers(ctx: ProblemContext) -> list[Sample]:
+    """Right answers in several equivalent forms (see the module docstring)."""
+    rows = _rows(ctx)
+    n = len(rows)
+    p = ctx.parameters[0] if ctx.parameters else sp.Integer(3)
+    out = [Sample(_lines(ctx, rows), "eom", True, "as derived")]
+    scaled = []
+    for i, r in enumerate(rows):
+        terms = sp.Add.make_args(r)
+        lhs = (i + 2) * p * terms[0]
+        rhs = -(i + 2) * p * sp.Add(*terms[1:])
+        scaled.append(f"{write(lhs, ctx)} = {write(rhs, ctx)}")
+    out.append(Sample("\n".join(scaled), "eom", True, "scaled and rearranged"))
+    pair = _same_dimension(ctx, rows)
+    if pair is not None:
+        i, j = pair
+        combined = list(rows)
+        combined[i] = rows[i] + rows[j]
+        out.append(Sample(_lines(ctx, combined), "eom", True, "combined"))
+    trig = [sp.expand(r.xreplace({c: 1 - sp.sin(c.base.args[0]) ** 2
+                                  for c in r.atoms(sp.Pow)
+                                  if isinstance(c.base, sp.cos) and c.exp == 2}))
+            for r in rows]
+    if trig != rows:
+        out.append(Sample(_lines(ctx, trig), "eom", True, "trigonometric identity"))
+    if n >= 2:
+        for i, r in enumerate(rows):
+            out.append(Sample(write(r, ctx), "equation", True, f"equation {i + 1} alone",
+                              equation=i))
+    direct = _direct_model(ctx)
+    if direct is not None:
+        out.append(Sample(_lines(ctx, [sp.expand(ctx.plain(e)) for e in direct.equations]),
+                          "eom", True, f"direct form ({direct.name})"))
+    for u, form in _reaction_forms(ctx):
+        out.append(Sample(write(form, ctx), u.name, True, f"reaction {u.name}"))
+    if n == 1:
+        s = ctx.states[0]
+        r = rows[0]
+        coeff = sp.diff(r, s.qdd)
+        if not coeff.free_symbols & {s.qdd}:
+            acc = sp.expand(-(r - coeff * s.qdd) / coeff)
+            out.append(Sample(write(acc, ctx), s.name + "''", True, "acceleration"))
+    return [s for s in out if _writable(s)]
+
+
+def _same_dimension(ctx, rows):
+    """Two rows of one dimension (their sum is then a meaningful equation), or None."""
+    from .audit import expected_dimension
+    from .formula import Formula
+    dims = [expected_dimension(Formula.from_sympy(r), ctx.dims) for r in rows]
+    for i in range(len(rows)):
+        for j in range(i + 1, len(rows)):
+            if dims[i] is not None and dims[i] == dims[j]:
+                return i, j
+    return None
+
+
+def _writable(sample: Sample) -> bool:
+    return "no notation" not in sample.text
+
+
+def _direct_model(ctx):
+    for name, m in ctx.models.items():
+        if m.unknowns and m.is_square and name != ctx.problem.reference:
+            return m
+    return None
+
+
+def _reaction_forms(ctx) -> list:
+    """``(u, u solved from a direct row that has u as its only reaction)``, one per reaction."""
+    out, done = [], set()
+    react = set(ctx.reactions)
+    for m in ctx.models.values():
+        for e in m.equations:
+            e = sp.expand(ctx.plain(e))
+            here = e.free_symbols & react
+            if len(here) != 1:
+                continue
+            (u,) = here
+            coeff = sp.diff(e, u)
+            if u in done or coeff.free_symbols & react or coeff == 0:
+                continue
+            form = sp.expand(-(e - coeff * u) / coeff)
+            if len(sp.Add.make_args(form)) >= 2:
+                out.append((u, form))
+                done.add(u)
+    return out
+
+
+def wrong_answers(ctx: ProblemContext) -> list[Sample]:
+    """Classic mistakes, one per sample, each naming the term it broke."""
+    rows = _rows(ctx)
+    out = []
+    qdd = set(ctx.qdd)
+    qd = {s.qd for s in ctx.states}
+    damping = {p for p in ctx.parameters
+               if ctx.dims.get(p) in (reduced(DAMPING), reduced(TORSIONAL_DAMPING))}
+    lengths = [p for p in ctx.parameters if ctx.dims.get(p) == reduced(LENGTH)]
+    small = [i for i, r in enumerate(rows) if 2 <= len(sp.Add.make_args(r)) <= _MAX_TERMS]
+
+    def pick(test):
+        for i in small:
+            for term in sp.Add.make_args(rows[i]):
+                if test(term):
+                    return i, term
+        return None
+
+    def replaced(i, old, new):
+        return _lines(ctx, rows[:i] + [rows[i] - old + new] + rows[i + 1:])
+
+    found = pick(lambda t: not t.free_symbols & qdd and t.free_symbols - set(ctx.parameters))
+    if found:
+        i, term = found
+        out.append(Sample(replaced(i, term, -term), "eom", False, "sign error", "sign", term,
+                          equation=i))
+    found = pick(lambda t: t.free_symbols & qd and not t.free_symbols & (qdd | damping))
+    if found:
+        i, term = found
+        out.append(Sample(replaced(i, term, 0), "eom", False, "velocity term dropped",
+                          "missing", term, equation=i))
+    for p in lengths:
+        found = pick(lambda t: t.has(p))
+        if found:
+            i, term = found
+            k = sp.degree(term, p) if term.is_polynomial(p) else 1
+            new = term / p if k >= 2 else term * p
+            out.append(Sample(replaced(i, term, new), "eom", False,
+                              f"{p} for {p}**{k}" if k >= 2 else f"{p}**2 for {p}",
+                              "coefficient", new, term, equation=i))
+            break
+    swap = _swap(ctx, rows, small)
+    if swap:
+        i, term, new = swap
+        out.append(Sample(replaced(i, term, new), "eom", False, "parameters swapped", "swap",
+                          new, term, equation=i))
+    for i in small:
+        damped = [t for t in sp.Add.make_args(rows[i]) if t.free_symbols & damping]
+        if damped:
+            out.append(Sample(replaced(i, sp.Add(*damped), 0), "eom", False,
+                              "damping dropped", "damping", sp.Add(*damped), equation=i))
+            break
+    for u, form in _reaction_forms(ctx):
+        terms = sp.Add.make_args(form)
+        term = next((t for t in terms if t.free_symbols - set(ctx.parameters)), terms[0])
+        out.append(Sample(write(form - 2 * term, ctx), u.name, False, f"reaction {u.name}",
+                          "sign", term))
+        break
+    return [s for s in out if _writable(s)]
+
+
+def _swap(ctx, rows, small):
+    """A term with one of two same-dimension parameters, that parameter replaced by the other."""
+    params = list(ctx.parameters)
+    for i in small:
+        for term in sp.Add.make_args(rows[i]):
+            for a in params:
+                for b in params:
+                    if a != b and ctx.dims.get(a) == ctx.dims.get(b) and term.has(a) and \
+                            not term.has(b):
+                        return i, term, term.xreplace({a: b})
+    return None

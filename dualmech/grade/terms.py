@@ -1,0 +1,173 @@
+"""Expressions as tables of terms, and the correct forms a wrong answer is compared with.
+
+A term is ``coefficient x state part``: the coefficient is free of the state (parameters,
+numbers, trigonometric functions of parameters), the state part a product of coordinates,
+rates, accelerations, reactions, trigonometric functions of them and time.  Tables are built in
+three :data:`MODES` -- as written, with multiple and compound angles expanded, and modulo
+``sin^2 + cos^2 = 1`` -- so that the smallest edit can be sought in the form the student wrote.
+Coefficients are compared exactly, by value at one of the context's random points.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from ..kinematics import t
+from .context import ProblemContext, zero
+from .formula import Formula
+
+__all__ = ["TermTable", "term_table", "equation_targets", "expression_tables",
+           "coefficient_env", "MODES"]
+
+_MAX_TERMS = 60
+
+
+@dataclass
+class TermTable:
+    """``terms[key] = (coefficient, value, written)``: expanded terms by state part;
+    ``value`` is the coefficient at the context's first point (exact); ``written`` the like
+    terms as the answer wrote them."""
+
+    label: str
+    expr: object
+    terms: dict
+
+
+def _state_symbols(ctx: ProblemContext) -> set:
+    out = {t} | set(ctx.reactions)
+    for s in ctx.states:
+        out |= {s.q, s.qd, s.qdd}
+    out |= set(ctx.derived_formulas())
+    return out
+
+
+def _normal_trig(expr):
+    """tan, cot, sec, csc as sin and cos; multiple and compound angles expanded."""
+    if expr.has(sp.tan, sp.cot, sp.sec, sp.csc):
+        expr = expr.rewrite(sp.cos, sp.sin) if expr.has(sp.sec, sp.csc, sp.cot) else expr
+        expr = expr.replace(lambda e: isinstance(e, sp.tan),
+                            lambda e: sp.sin(e.args[0]) / sp.cos(e.args[0]))
+    rules = {}
+    for f in expr.atoms(sp.sin, sp.cos):
+        if not f.args[0].is_Symbol:
+            rules[f] = sp.expand_trig(f)
+    return expr.xreplace(rules) if rules else expr
+
+
+def _pythagoras(expr):
+    """Canonical form modulo ``sin^2 + cos^2 = 1``: even powers of cos become powers of sin."""
+    rules = {}
+    for p in expr.atoms(sp.Pow):
+        if isinstance(p.base, sp.cos) and p.exp.is_Integer and p.exp >= 2:
+            n = int(p.exp)
+            rules[p] = sp.cos(p.base.args[0]) ** (n % 2) * \
+                (1 - sp.sin(p.base.args[0]) ** 2) ** (n // 2)
+    return sp.expand(expr.xreplace(rules)) if rules else expr
+
+
+#: Ways to expand before comparing terms: as written (products expanded, trigonometric
+#: functions untouched), multiple and compound angles expanded, and modulo sin^2 + cos^2 = 1.
+MODES = ("written", "trig", "pythagoras")
+
+
+def _normal(expr, mode: str):
+    if mode == "written":
+        return sp.expand(expr)
+    e = sp.expand(_normal_trig(expr))
+    return _pythagoras(e) if mode == "pythagoras" else e
+
+
+def term_table(expr, ctx: ProblemContext, label: str = "", mode: str = "trig",
+               parts: list | None = None):
+    """The :class:`TermTable` of ``expr`` (None when it has too many terms).
+
+    ``mode`` is one of :data:`MODES`.  ``parts`` (the answer's own top-level terms) keeps like
+    terms the student wrote apart: ``terms[key] = (coefficient, value, [(coefficient, value)
+    of each written term])``.
+    """
+    pieces = parts if parts is not None else [expr]
+    states = _state_symbols(ctx)
+    env = coefficient_env(ctx)
+    terms: dict = {}
+    count = 0
+    for piece in pieces:
+        args = sp.Add.make_args(_normal(piece, mode))
+        count += len(args)
+        if count > _MAX_TERMS:
+            return None
+        local: dict = {}
+        for term in args:
+            if term == 0:
+                continue
+            coeff, key = [], []
+            for f in sp.Mul.make_args(term):
+                (key if f.free_symbols & states else coeff).append(f)
+            k = sp.Mul(*key)
+            local[k] = local.get(k, 0) + sp.Mul(*coeff)
+        for k, c in local.items():
+            terms.setdefault(k, []).append(c)
+    out = {}
+    for k, cs in terms.items():
+        try:
+            vals = [Formula.from_sympy(c).evaluate(env) for c in cs]
+        except (TypeError, ZeroDivisionError, KeyError):
+            return None
+        v = sum(vals, 0)
+        if not zero(v, [1]):
+            out[k] = (sp.Add(*cs), v, [(c, x) for c, x in zip(cs, vals) if not zero(x, [1])])
+    return TermTable(label, expr, out)
+
+
+def coefficient_env(ctx: ProblemContext):
+    return ctx.memo("coefficient_env", lambda: ctx.points(ctx.method)[0].env())
+
+
+def equation_targets(ctx: ProblemContext, mode: str = "trig") -> list[TermTable]:
+    """Correct equations to compare a wrong one with (cached per context and mode): the
+    reference model's rows first, then every other model's, then simple eliminations."""
+    def build():
+        out = []
+        names = [ctx.reference.name] + [n for n in ctx.models if n != ctx.reference.name]
+        for name in names:
+            m = ctx.models.get(name, ctx.reference)
+            for label, e in zip(m.labels, m.equations):
+                tab = term_table(ctx.plain(e), ctx, f"{name}: {label}", mode)
+                if tab is not None and tab.terms:
+                    out.append(tab)
+        return out + _eliminations(ctx, out, mode)
+    return ctx.memo(("equation_targets", mode), build)
+
+
+def _eliminations(ctx, rows: list, mode: str) -> list:
+    """Row pairs of one model whose difference (by a constant factor) removes a reaction."""
+    out = []
+    react = set(ctx.reactions)
+    by_model: dict = {}
+    for tab in rows:
+        by_model.setdefault(tab.label.split(":")[0], []).append(tab)
+    for tabs in by_model.values():
+        for i, a in enumerate(tabs):
+            ka = [k for k in a.terms if k.free_symbols & react]
+            if len(ka) != 1:
+                continue
+            for b in tabs[i + 1:]:
+                kb = [k for k in b.terms if k.free_symbols & react]
+                if kb != ka:
+                    continue
+                ratio = a.terms[ka[0]][0] / b.terms[kb[0]][0]
+                expr = sp.expand(a.expr - ratio * b.expr)
+                label = f"{a.label} minus ({ratio}) x {b.label.split(': ')[1]}"
+                tab = term_table(expr, ctx, label, mode)
+                if tab is not None and tab.terms and not any(
+                        k.free_symbols & react for k in tab.terms):
+                    out.append(tab)
+    return out
+
+
+def expression_tables(ctx: ProblemContext, key, forms: list, mode: str) -> list:
+    """Term tables of correct forms of a quantity (cached under ``key`` per mode)."""
+    def build():
+        tabs = [term_table(f, ctx, str(key), mode) for f in forms]
+        return [tb for tb in tabs if tb is not None and tb.terms]
+    return ctx.memo(("expression_tables", key, mode), build)

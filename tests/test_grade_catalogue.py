@@ -1,0 +1,90 @@
+"""Every problem of the catalogue, graded: answers written from its own verified equations.
+
+Nothing here is typed per problem, so problems added later are covered: for each, the answers
+of :mod:`dualmech.grade.generate` -- the equations as derived, scaled and rearranged, combined,
+through a trigonometric identity, one at a time, the direct form with its reactions, reactions
+and accelerations solved from it -- must be accepted, and the classic mistakes (a wrong sign,
+a dropped Coriolis or centripetal term, ``l`` for ``l^2``, swapped masses, a dropped damper, a
+wrong reaction) rejected with the broken term named.
+"""
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+
+import problems
+from dualmech.grade import Grader
+from dualmech.grade.context import GradingUnavailable
+from dualmech.grade.formula import Formula
+from dualmech.grade.generate import correct_answers, wrong_answers
+from dualmech.grade.parser import parse
+
+NAMES = [d.name for d in problems.declarations()]
+_GRADERS: dict = {}
+
+
+def grader(name: str) -> Grader:
+    if name not in _GRADERS:
+        _GRADERS[name] = Grader(name)
+    return _GRADERS[name]
+
+
+def context_or_refusal(name):
+    """The problem's context; a problem the grader cannot take must be refused clearly."""
+    g = grader(name)
+    try:
+        ctx = g.context
+        ctx.points(ctx.method) if ctx.method == "exact" else None
+        return g, ctx
+    except GradingUnavailable:
+        r = g.grade("0")
+        assert r.status == "invalid" and "cannot be graded" in r.summary
+        pytest.skip(f"{name}: refused with a clear reason: {r.summary}")
+
+
+def same(ctx, text: str, expr) -> bool:
+    return sp.expand(Formula.from_node(parse(text)[0].lhs, ctx.vocabulary).sympy() - expr) == 0
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_right_answers_are_accepted(name):
+    g, ctx = context_or_refusal(name)
+    samples = correct_answers(ctx)
+    assert any(s.variant == "as derived" for s in samples)
+    labels = ctx.reference.labels
+    for s in samples:
+        r = g.grade(s.text, s.quantity)
+        assert r.right, (s.variant, s.text[:200], str(r))
+        if s.equation is not None and labels[s.equation].startswith("Lagrange, "):
+            assert r.matches == f"the equation of {labels[s.equation][10:]} (Lagrange)"
+
+
+def _names_the_term(ctx, sample, edits) -> bool:
+    for e in edits:
+        if sample.mistake == "sign" and e.kind == "sign" and (
+                same(ctx, e.term, -sample.term) or same(ctx, e.correct, sample.term)):
+            return True
+        if sample.mistake == "missing" and e.kind == "missing" and \
+                same(ctx, e.correct, sample.term):
+            return True
+        if sample.mistake == "damping" and e.kind == "missing" and \
+                e.category == "a damping term":
+            return True
+        if sample.mistake in ("coefficient", "swap") and e.kind in ("coefficient", "swap") \
+                and same(ctx, e.term, sample.term) and same(ctx, e.correct, sample.correct):
+            return True
+    return False
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_wrong_answers_name_the_wrong_term(name):
+    g, ctx = context_or_refusal(name)
+    samples = wrong_answers(ctx)
+    assert any(s.mistake == "sign" for s in samples)
+    for s in samples:
+        r = g.grade(s.text, s.quantity)
+        assert r.status == "wrong", (s.variant, s.text[:200], str(r))
+        if ctx.method == "exact":
+            assert _names_the_term(ctx, s, r.edits), (s.variant, str(s.term), str(r))
+        else:   # decided by the comparator; the feedback is a concrete state at least
+            assert r.edits or r.state or r.summary
