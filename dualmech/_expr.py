@@ -20,3 +20,16 @@ def as_expr(value):
     except SympifyError as exc:
         raise TypeError(f"cannot use {value!r} ({type(value).__name__}) as an expression") \
             from exc
+
+
+def as_matrix(value) -> sp.Matrix:
+    """``value`` (a sympy Matrix or nested sequences of expressions) as a Matrix, every entry
+    converted by :func:`as_expr` (text refused, never evaluated)."""
+    if isinstance(value, sp.MatrixBase):
+        return value.applyfunc(as_expr) if any(isinstance(x, str) for x in value) else value
+    if isinstance(value, (str, bytes)):
+        as_expr(value)  # raises the TypeError that explains
+    rows = list(value)
+    if rows and isinstance(rows[0], (list, tuple)):
+        return sp.Matrix([[as_expr(x) for x in row] for row in rows])
+    return sp.Matrix([as_expr(x) for x in rows])

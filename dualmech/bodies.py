@@ -28,7 +28,7 @@ from typing import Iterable
 
 import sympy as sp
 
-from ._expr import as_expr
+from ._expr import as_expr, as_matrix
 from .kinematics import Frame, Point, Vector
 
 __all__ = [
@@ -154,7 +154,7 @@ class RigidBody:
     inertia: sp.Matrix = field(compare=False)
 
     def __post_init__(self):
-        I = sp.Matrix(self.inertia)
+        I = as_matrix(self.inertia)
         if I.shape != (3, 3):
             raise ValueError(f"the inertia of body `{self.name}` must be 3x3, got {I.shape}.")
         if (I - I.T).applyfunc(sp.expand) != sp.zeros(3, 3):

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 from typing import Iterable
 
 import sympy as sp
-from ._expr import as_expr
+from ._expr import as_expr, as_matrix
 
 __all__ = [
     "t", "coordinate", "rot_x", "rot_y", "rot_z", "rot_axis", "skew", "unskew",
@@ -49,18 +49,21 @@ def coordinate(name: str) -> sp.Expr:
 
 def rot_x(angle) -> sp.Matrix:
     """Rotation by ``angle`` about the x axis (columns: the rotated axes in the old frame)."""
+    angle = as_expr(angle)
     c, s = sp.cos(angle), sp.sin(angle)
     return sp.Matrix([[1, 0, 0], [0, c, -s], [0, s, c]])
 
 
 def rot_y(angle) -> sp.Matrix:
     """Rotation by ``angle`` about the y axis."""
+    angle = as_expr(angle)
     c, s = sp.cos(angle), sp.sin(angle)
     return sp.Matrix([[c, 0, s], [0, 1, 0], [-s, 0, c]])
 
 
 def rot_z(angle) -> sp.Matrix:
     """Rotation by ``angle`` about the z axis."""
+    angle = as_expr(angle)
     c, s = sp.cos(angle), sp.sin(angle)
     return sp.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])
 
@@ -71,7 +74,8 @@ def rot_axis(axis, angle) -> sp.Matrix:
     ``axis`` is a 3-sequence of components; it must have unit length (checked when the
     components are numbers).
     """
-    n = sp.Matrix(list(axis))
+    n = sp.Matrix([as_expr(c) for c in axis])
+    angle = as_expr(angle)
     if n.shape != (3, 1):
         raise ValueError("`axis` must have 3 components.")
     norm2 = sp.nsimplify(sum(c**2 for c in n)) if all(c.is_number for c in n) else None
@@ -103,7 +107,7 @@ class Frame:
                  origin: "Vector | None"):
         self.name = name
         self.parent = parent
-        self.rotation = sp.Matrix(rotation)
+        self.rotation = as_matrix(rotation)
         if self.rotation.shape != (3, 3):
             raise ValueError(f"the rotation of frame `{name}` must be 3x3, "
                              f"got {self.rotation.shape}.")
@@ -198,8 +202,7 @@ class Frame:
         if self.__dict__.get("_w_root") is None:
             w = sp.zeros(3, 1)
             for f in self.chain()[1:]:
-                w_rel = unskew(f.rotation.T * f.rotation.diff(t)).applyfunc(sp.trigsimp)
-                w = f.rotation.T * w + w_rel
+                w = f.rotation.T * w + _relative_rate(f.rotation)
             self._w_root = Vector(self, w)  # a frame's rotation never changes: built once
         return self._w_root
 
@@ -210,6 +213,20 @@ class Frame:
             if f._origin is not None:
                 total = total + f._origin
         return total
+
+
+def _relative_rate(R: sp.Matrix) -> sp.Matrix:
+    """``unskew(R^T dR/dt)`` in the child's axes: exactly ``a' e_i`` for an elementary
+    rotation by ``a`` about axis ``i`` (no simplification needed), else simplified."""
+    for i, rot in enumerate((rot_x, rot_y, rot_z)):
+        j = (i + 1) % 3
+        if R[i, i] == 1 and isinstance(R[j, j], sp.cos):
+            a = R[j, j].args[0]
+            if R == rot(a):
+                w = [0, 0, 0]
+                w[i] = a.diff(t)
+                return sp.Matrix(w)
+    return unskew(R.T * R.diff(t)).applyfunc(sp.trigsimp)
 
 
 def _same_tree(a: Frame, b: Frame) -> None:
@@ -226,7 +243,7 @@ class Vector:
     components: sp.Matrix = field(compare=False)
 
     def __post_init__(self):
-        comps = sp.Matrix(self.components)
+        comps = as_matrix(self.components)
         if comps.shape != (3, 1):
             raise ValueError(f"a vector needs 3x1 components, got {comps.shape}.")
         object.__setattr__(self, "components", comps)

@@ -34,7 +34,7 @@ from .verify.check import claims_of
 from .verify.sampling import Context
 from .verify.verdicts import judge
 from .dimensions import INERTIA, MASS, reduce
-from .equations import EquationSet, to_plain
+from .equations import EquationSet, ModelError, to_plain
 from .exact import ExactForm
 
 __all__ = ["Mutant", "MutationReport", "mutants", "mutation_report"]
@@ -166,8 +166,12 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
             continue
         trial = dict(models)
         trial[mut.model] = candidate
-        j = judge(trial, context=ctx, points=points, seed=seed, reference=problem.reference,
-                  claims=claims)
+        try:
+            j = judge(trial, context=ctx, points=points, seed=seed,
+                      reference=problem.reference, claims=claims)
+        except ModelError as exc:   # e.g. a static row nobody can sample: refused, caught
+            report.killed.append((mut.description, [f"rejected: {exc}"]))
+            continue
         named = []
         if not j.equivalent and mut.model in j.odd:
             named = [f"{f.model}: {f.kind}" for f in j.faults if f.model == mut.model]

@@ -53,6 +53,16 @@ class Parameter:
     range: tuple[float, float]
     description: str = ""
 
+    def __post_init__(self):
+        if isinstance(self.symbol, str):
+            raise TypeError(f"`Parameter` needs a sympy symbol, got the text {self.symbol!r}: "
+                            f"use `sp.Symbol({self.symbol!r}, positive=True)` (or the "
+                            "assumptions it has).")
+        if not isinstance(self.symbol, sp.Symbol):
+            raise TypeError(f"`Parameter` needs a sympy Symbol, got {self.symbol!r} "
+                            f"({type(self.symbol).__name__}).")
+        _check_range(f"parameter `{self.symbol}`", self.range)
+
 
 @dataclass(frozen=True)
 class Coordinate:
@@ -63,6 +73,18 @@ class Coordinate:
     range: tuple[float, float]
     rate_range: tuple[float, float] = (-2.0, 2.0)
     description: str = ""
+    domain: tuple | None = None
+
+    def __post_init__(self):
+        if isinstance(self.function, str):
+            raise TypeError(f"`Coordinate` needs a coordinate, got the text {self.function!r}: "
+                            f"use `dualmech.coordinate({self.function!r})`.")
+        if not (isinstance(self.function, sp.core.function.AppliedUndef)
+                and len(self.function.args) == 1 and self.function.args[0].is_Symbol):
+            raise TypeError(f"`Coordinate` needs a function of time made by "
+                            f"`dualmech.coordinate(name)`, got {self.function!r}.")
+        _check_range(f"coordinate `{self.function.func.__name__}`", self.range)
+        _check_range(f"coordinate `{self.function.func.__name__}` rate", self.rate_range)
 
     @property
     def name(self) -> str:
@@ -112,6 +134,17 @@ class Published:
         if self.kind == "expression" and len(self.reference) != len(self.printed):
             raise ValueError(f"published `{self.label}`: {len(self.printed)} printed expressions "
                              f"but {len(self.reference)} reference expressions.")
+
+
+def _check_range(what: str, rng) -> None:
+    try:
+        lo, hi = (float(x) for x in rng)
+    except (TypeError, ValueError):
+        raise TypeError(f"{what}: range must be two numbers (low, high), got {rng!r}.") \
+            from None
+    import math
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        raise ValueError(f"{what}: range {rng!r} must be finite.")
 
 
 def _tuple(x) -> tuple:
@@ -268,6 +301,15 @@ class Problem:
             for q in eqs.coordinates:
                 if q not in dims:
                     errors.append(f"model `{mname}`: coordinate {q} is not declared")
+        used_unknowns = {u.name for eqs in models.values() for u in eqs.unknowns}
+        for r in self.reactions:
+            if r.name not in used_unknowns:
+                errors.append(f"reaction `{r.name}` is declared but no model uses it (a typo "
+                              "in the model's reaction name, or a stale declaration)")
+        used_coords = {q for eqs in models.values() for q in eqs.coordinates}
+        for c in self.all_coordinates():
+            if c.function not in used_coords:
+                errors.append(f"coordinate `{c.name}` is declared but no model uses it")
         if errors:
             raise ProblemError(f"problem `{self.name or type(self).__name__}` has "
                                f"{len(errors)} mistake(s):\n  - " + "\n  - ".join(errors))
