@@ -268,31 +268,34 @@ def run(label, eqs, values, hand, repeats, pinocchio_n=None):
     print(f"\n{label}: n = {n}; generated code: Python {build * 1e3:.0f} ms, "
           + (f"C {build_c * 1e3:.0f} ms" if compiled else "no C compiler: Python only")
           + " (build, or load from the cache)")
-    print(f"  {'right-hand side per call':30s} {'wall µs':>9s} {'CPU µs':>9s} {'ours/peer':>10s}")
+    print(f"  {'right-hand side per call':30s} {'wall µs':>9s} {'CPU µs':>9s} {'ours/peer':>10s} "
+          f"{'(CPU)':>7s}")
     print(f"  {ours:30s} {ours_us[0]:9.2f} {ours_us[1]:9.2f}")
     if compiled:
         _check("Python backend", nm.rhs, nm_py.rhs, y, failures)
         print(f"  {'dualmech (Python backend)':30s} {py_us[0]:9.2f} {py_us[1]:9.2f} "
-              f"{ours_us[0] / py_us[0]:10.2f}")
+              f"{ours_us[0] / py_us[0]:10.2f} {ours_us[1] / py_us[1]:7.2f}")
     for name, fn in peers.items():
         check = pin_check if name == "Pinocchio ABA" else fn
         if not _check(name, nm.rhs, check, y, failures):
             continue
         us = per_call_us(fn, y, repeats)
         note = "  (its own relative angles)" if name == "Pinocchio ABA" else ""
-        print(f"  {name:30s} {us[0]:9.2f} {us[1]:9.2f} {ours_us[0] / us[0]:10.2f}{note}")
+        print(f"  {name:30s} {us[0]:9.2f} {us[1]:9.2f} {ours_us[0] / us[0]:10.2f} "
+              f"{ours_us[1] / us[1]:7.2f}{note}")
     ours_sps = states_per_s(nm.rhs, Y, repeats)
     py_sps = states_per_s(nm_py.rhs, Y, repeats)
     hand_sps = states_per_s(hand[1], Y, repeats)
     same = np.allclose(nm.rhs(0.0, Y), hand[1](0.0, Y), rtol=1e-9, atol=1e-9)
     print(f"  {'vectorised, K = %d' % K:30s} {'states/s':>9s} {'CPU':>9s} "
-          f"{'ours/peer':>10s}")
+          f"{'ours/peer':>10s} {'(CPU)':>7s}")
     print(f"  {ours:30s} {ours_sps[0]:9.3g} {ours_sps[1]:9.3g}")
     if compiled:
         print(f"  {'dualmech (NumPy backend)':30s} {py_sps[0]:9.3g} {py_sps[1]:9.3g} "
-              f"{ours_sps[0] / py_sps[0]:10.2f}")
+              f"{ours_sps[0] / py_sps[0]:10.2f} {ours_sps[1] / py_sps[1]:7.2f}")
     print(f"  {'hand-written NumPy (batched)':30s} {hand_sps[0]:9.3g} {hand_sps[1]:9.3g} "
-          f"{ours_sps[0] / hand_sps[0]:10.2f}" + ("" if same else "  (RESULTS DIFFER)"))
+          f"{ours_sps[0] / hand_sps[0]:10.2f} {ours_sps[1] / hand_sps[1]:7.2f}"
+          + ("" if same else "  (RESULTS DIFFER)"))
     for f in failures:
         print(f"  WARNING result mismatch, not timed: {f}")
 
@@ -304,7 +307,7 @@ def main() -> None:
     repeats = 3 if args.quick else 7
     load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
     print(f"load average {load:.1f} on {os.cpu_count()} cores: wall-clock figures are "
-          "inflated by other processes; ratios come from the same run. Ratios use wall time.")
+          "inflated by other processes; ratios come from the same run (wall, and CPU time).")
     eqs, values, hand = toy_car()
     run("toy car", eqs, values, hand, repeats)
     for n in (2, 10):
