@@ -9,8 +9,8 @@ Aliases, for a coordinate ``theta``: ``θ``, ``\theta``, ``th``; derivatives ``t
 ``theta''``, ``thetadot``, ``thetaddot``, ``theta_dot``, ``theta_ddot``, ``theta_d``,
 ``theta_dd``, ``dtheta``, ``ddtheta``, ``\dot{\theta}``, ``θ̇``.  Subscripts may be written
 with or without ``_`` and braces (``m_0``, ``m0``, ``m_{0}``).  A name that is none of these is
-read as a product of known names when it splits in exactly one shortest way (``mgl`` is
-``m*g*l``).  An alias that would mean two different things in one problem is dropped.
+read as a product of one-letter names when every letter is one (``mgl`` is ``m*g*l``;
+``thetaa`` is an unknown name, not ``theta*a``).  An alias that would mean two different things in one problem is dropped.
 
 Example
 -------
@@ -166,14 +166,16 @@ class Vocabulary:
         return ref.differentiated(primes) if ref is not None else None
 
     def split(self, name: str, primes: int = 0) -> list[Ref] | None:
-        """``name`` as the unique shortest product of known names (primes on the last)."""
+        """``name`` as a product of one-letter names (``mgl``; primes on the last), when that
+        reading is unique; longer names are never split (``thetaa`` is a typo, not
+        ``theta*a``)."""
         if not name.isalnum() or len(name) > 24:
             return None
         best: dict = {0: [[]]}  # position -> splits reaching it (shortest only)
         for i in range(len(name)):
             if i not in best:
                 continue
-            for j in range(i + 1, len(name) + 1):
+            for j in range(i + 1, i + 2):
                 ref = self.table.get(name[i:j])
                 if ref is None or ref.kind == "basis":
                     continue

@@ -1,0 +1,199 @@
+"""Grading a class: a CSV of answers, on every core or on a Dask cluster, with a progress bar.
+
+The CSV has a header with the columns ``id`` (the student), ``question`` and ``answer``, and
+optionally ``quantity`` and ``about``; ``question`` is a problem name, or ``name:quantity``
+(``toy_car:F_r``).  An answer may span several lines (quoted, as CSV allows) to give a set of
+equations.
+
+The work is one pure function over chunks of rows, :func:`grade_rows`, mapped by a process
+pool (``workers``) or by ``dask.distributed`` (``scheduler``, the address of a running
+scheduler); rows are grouped by question so each worker builds a problem's points once.  A bad
+row -- an unknown problem, a hostile answer -- gets its own "not graded" result and the batch
+goes on.
+
+Example
+-------
+>>> rows = [{"id": "s1", "question": "simple_pendulum", "answer": "a*theta'' + g*sin(theta)"},
+...         {"id": "s2", "question": "simple_pendulum", "answer": "a*theta'' - g*sin(theta)"}]
+>>> [r["status"] for r in grade_batch(rows, workers=1, progress=False)]
+['right', 'wrong']
+"""
+from __future__ import annotations
+
+import csv
+import os
+from concurrent.futures import ProcessPoolExecutor, as_completed
+from pathlib import Path
+from typing import Iterable, Sequence
+
+from .api import Grader
+
+__all__ = ["read_csv", "grade_rows", "grade_batch", "BatchError", "warm"]
+
+_CHUNK = 20
+_REQUIRED = ("id", "question", "answer")
+
+
+class BatchError(ValueError):
+    """A batch file that cannot be read; the message says what to fix."""
+
+
+def read_csv(path: str | os.PathLike) -> list[dict]:
+    """Rows of a batch CSV, each with ``line`` (its line number) added."""
+    path = Path(path)
+    try:
+        with path.open(newline="", encoding="utf-8") as fh:
+            reader = csv.DictReader(fh)
+            header = [h.strip() for h in (reader.fieldnames or [])]
+            missing = [c for c in _REQUIRED if c not in header]
+            if missing:
+                raise BatchError(f"{path}: the header must have the columns id, question, "
+                                 f"answer (optional: quantity, about); missing "
+                                 f"{', '.join(missing)}; found {', '.join(header) or 'none'}.")
+            rows = []
+            for row in reader:
+                row = {(k or "").strip(): (v or "") for k, v in row.items()}
+                row["line"] = reader.line_num
+                rows.append(row)
+    except FileNotFoundError:
+        raise BatchError(f"{path}: no such file.") from None
+    except UnicodeDecodeError as exc:
+        raise BatchError(f"{path}: not UTF-8 text ({exc.reason}).") from None
+    except csv.Error as exc:
+        raise BatchError(f"{path}: not a valid CSV file ({exc}).") from None
+    if not rows:
+        raise BatchError(f"{path}: no answers (only a header, or empty).")
+    return rows
+
+
+def _question(row: dict) -> tuple[str, str | None]:
+    q = (row.get("question") or "").strip()
+    name, _, quantity = q.partition(":")
+    quantity = (row.get("quantity") or "").strip() or quantity.strip() or None
+    return name.strip(), quantity
+
+
+def grade_rows(rows: Sequence[dict]) -> list[dict]:
+    """Grade ``rows`` (dicts with id, question, answer[, quantity, about]); one result dict
+    per row: the :class:`~.result.Grade` as JSON plus ``id``, ``question`` and ``line``.
+
+    A pure function of its input (graders are cached per process), so any executor may map it.
+    """
+    out = []
+    for row in rows:
+        name, quantity = _question(row)
+        about = (row.get("about") or "").strip() or None
+        try:
+            grader = Grader.of(name)
+            result = grader.grade(row.get("answer", ""), quantity, about).to_dict()
+        except Exception as exc:  # unknown problem, a problem that fails to build: reported
+            result = {"problem": name, "quantity": quantity or "auto", "kind": "",
+                      "answer": row.get("answer", ""), "status": "invalid", "right": False,
+                      "summary": str(exc), "details": [], "edits": [], "dimension_issues": [],
+                      "matches": "", "state": {}, "method": "none", "false_right_bound": None,
+                      "seconds": 0.0}
+        result.update(id=row.get("id", ""), question=row.get("question", ""),
+                      line=row.get("line"))
+        out.append(result)
+    return out
+
+
+def warm(names: Iterable[str]) -> None:
+    """Build each problem's grader, points and feedback targets now (so forked workers share
+    them)."""
+    from .terms import MODES, equation_targets
+    for name in sorted(set(names)):
+        try:
+            g = Grader.of(name)
+            ctx = g.context
+            g.quantities()
+            if ctx.method == "exact":
+                ctx.points("exact")
+                for mode in MODES:
+                    equation_targets(ctx, mode)
+        except Exception:  # reported row by row when graded
+            continue
+
+
+def _chunks(rows: Sequence[dict], size: int) -> list[list[dict]]:
+    order = sorted(range(len(rows)), key=lambda i: (_question(rows[i]), i))
+    out, current, key = [], [], None
+    for i in order:
+        k = _question(rows[i])[0]
+        if current and (len(current) >= size or k != key):
+            out.append(current)
+            current = []
+        current.append(dict(rows[i], _index=i))
+        key = k
+    if current:
+        out.append(current)
+    return out
+
+
+def grade_batch(rows: Sequence[dict], workers: int | None = None,
+                scheduler: str | None = None, progress: bool = True,
+                chunk: int = _CHUNK, connect_timeout: float = 10.0) -> list[dict]:
+    """Grade every row, in input order.
+
+    ``workers``: processes (default: every core; 1 grades here).  ``scheduler``: the address
+    of a Dask scheduler (``tcp://host:8786``); the chunks then run on its workers.
+    ``progress`` shows a tqdm bar on stderr; ``connect_timeout`` (seconds) bounds the wait
+    for the scheduler.
+    """
+    if not rows:
+        return []
+    chunks = _chunks(rows, chunk)
+    results: list = [None] * len(rows)
+    from tqdm.auto import tqdm
+    bar = tqdm(total=len(rows), unit="answer", disable=not progress, desc="grading")
+    try:
+        for done in _run(chunks, workers, scheduler, connect_timeout):
+            for r in done:
+                results[r.pop("_index")] = r
+            bar.update(len(done))
+    finally:
+        bar.close()
+    return results
+
+
+def _run(chunks, workers, scheduler, connect_timeout):
+    """Yield each chunk's results as they complete."""
+    tagged = [[dict(r) for r in c] for c in chunks]
+    if scheduler:
+        yield from _run_dask(tagged, scheduler, connect_timeout)
+        return
+    workers = workers or os.cpu_count() or 1
+    if workers == 1 or len(tagged) == 1:
+        for c in tagged:
+            yield _grade_tagged(c)
+        return
+    warm(_question(r)[0] for c in tagged for r in c)   # forked workers inherit the points
+    with ProcessPoolExecutor(max_workers=workers) as pool:
+        futures = [pool.submit(_grade_tagged, c) for c in tagged]
+        for f in as_completed(futures):
+            yield f.result()
+
+
+def _grade_tagged(chunk: list[dict]) -> list[dict]:
+    results = grade_rows(chunk)
+    for row, r in zip(chunk, results):
+        r["_index"] = row["_index"]
+    return results
+
+
+def _run_dask(chunks, scheduler: str, connect_timeout: float):
+    try:
+        from distributed import Client, as_completed as dask_completed
+    except ImportError as exc:  # the optional extra is missing
+        raise BatchError("`--scheduler` needs dask.distributed: pip install "
+                         "'dualmech[dask]'.") from exc
+    try:
+        client = Client(scheduler, timeout=f"{connect_timeout}s")
+    except (OSError, TimeoutError) as exc:
+        raise BatchError(f"cannot reach the Dask scheduler at {scheduler}: {exc}") from None
+    try:
+        futures = client.map(_grade_tagged, chunks, pure=False)
+        for f in dask_completed(futures):
+            yield f.result()
+    finally:
+        client.close()

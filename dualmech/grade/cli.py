@@ -1,0 +1,151 @@
+"""The ``dualmech grade`` subcommand: one answer, a file of equations, or a class in a CSV.
+
+::
+
+    dualmech grade NAME --answer "R*theta'' + ... = 0"        one answer (or one equation)
+    dualmech grade NAME --answer-file answer.txt              several lines: a set
+    dualmech grade NAME --quantity F_r --answer "m*(...)"     a reaction, T, V, L, Q_q, q''
+    dualmech grade NAME --quantity linearised --about "theta=0" --answer "..."
+    dualmech grade NAME --list                                 what can be asked of NAME
+    dualmech grade --batch answers.csv --out report/           a class: id, question, answer
+                   [--workers N | --scheduler ADDRESS] [--no-progress]
+    ... --json                                                 JSON instead of text
+
+Exit status: 0 the answer is right (a batch: every row was graded), 1 it is wrong, 2 it could
+not be graded as typed, or a usage error (the message says what to fix).
+
+Wire it into an argparse command with :func:`register`.
+
+Example
+-------
+>>> import argparse
+>>> parser = argparse.ArgumentParser(prog="dualmech")
+>>> _ = register(parser.add_subparsers(dest="command"))
+>>> args = parser.parse_args(["grade", "simple_pendulum", "--answer", "a*theta'' + g*sin(theta)"])
+>>> args.func(args)  # doctest: +ELLIPSIS
+RIGHT: equivalent to the equations of motion...
+0
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+__all__ = ["register", "handle", "EXIT_RIGHT", "EXIT_WRONG", "EXIT_USAGE"]
+
+EXIT_RIGHT, EXIT_WRONG, EXIT_USAGE = 0, 1, 2
+
+
+def register(subparsers) -> argparse.ArgumentParser:
+    """Add the ``grade`` subcommand to an argparse ``subparsers`` object; return its parser."""
+    p = subparsers.add_parser(
+        "grade", help="grade typed answers against a problem's verified equations",
+        description="Grade an answer -- equations of motion, one equation, a reaction, T, V, "
+                    "L, a generalised force, an acceleration -- against the problem's verified "
+                    "equations, exactly, and say what is wrong: the smallest edit, named as "
+                    "terms.  A batch CSV (columns id, question, answer; question is NAME or "
+                    "NAME:QUANTITY) is graded on every core or on a Dask cluster.",
+        epilog="Exit status: 0 right (batch: all graded), 1 wrong, 2 not gradable or usage "
+               "error.")
+    p.add_argument("name", nargs="?", metavar="NAME", help="the problem (not with --batch)")
+    src = p.add_mutually_exclusive_group()
+    src.add_argument("--answer", metavar="TEXT", help="the answer; several equations may be "
+                     "separated by ';'")
+    src.add_argument("--answer-file", metavar="FILE", type=Path,
+                     help="a file with the answer, one equation per line")
+    src.add_argument("--batch", metavar="CSV", type=Path,
+                     help="grade every row of a CSV with columns id, question, answer")
+    src.add_argument("--list", action="store_true", help="list the quantities NAME offers")
+    p.add_argument("--quantity", metavar="Q",
+                   help="what the answer is: eom (default), equation, equation:q, a reaction "
+                        "name, KE/T, PE/V, L, Q_q, q'', linearised, or a printed label")
+    p.add_argument("--about", metavar="EQUILIBRIUM",
+                   help="for --quantity linearised: e.g. 'theta=0, phi=pi' (default: zero)")
+    p.add_argument("--out", metavar="DIR", type=Path, default=Path("grades"),
+                   help="with --batch: where results.json and report.md go "
+                        "(default: %(default)s)")
+    p.add_argument("--workers", metavar="N", type=int, default=None,
+                   help="with --batch: processes (default: every core)")
+    p.add_argument("--scheduler", metavar="ADDRESS",
+                   help="with --batch: run on the Dask cluster at ADDRESS "
+                        "(needs the 'dask' extra)")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    p.add_argument("--json", action="store_true", help="print JSON instead of text")
+    p.set_defaults(func=handle)
+    return p
+
+
+def handle(args: argparse.Namespace) -> int:
+    """Run ``dualmech grade`` for parsed ``args``; return the exit status."""
+    try:
+        if args.batch is not None:
+            return _batch(args)
+        if not args.name:
+            return _usage("name a problem (dualmech grade NAME --answer ...), or use --batch.")
+        if args.list:
+            return _list(args)
+        if args.answer_file is not None:
+            try:
+                answer = args.answer_file.read_text(encoding="utf-8")
+            except (OSError, UnicodeDecodeError) as exc:
+                return _usage(f"cannot read {args.answer_file}: {exc}")
+        elif args.answer is not None:
+            answer = args.answer
+        else:
+            return _usage("give the answer with --answer TEXT or --answer-file FILE.")
+        from .api import grade
+        result = grade(args.name, answer, args.quantity, about=args.about)
+        print(json.dumps(result.to_dict(), indent=2) if args.json else str(result))
+        return {"right": EXIT_RIGHT, "wrong": EXIT_WRONG}.get(result.status, EXIT_USAGE)
+    except BrokenPipeError:
+        return EXIT_RIGHT
+
+
+def _usage(message: str) -> int:
+    print(f"dualmech grade: error: {message}", file=sys.stderr)
+    return EXIT_USAGE
+
+
+def _list(args) -> int:
+    from .api import Grader
+    from .parser import AnswerError
+    try:
+        quantities = Grader.of(args.name).quantities()
+    except AnswerError as exc:
+        return _usage(str(exc))
+    if args.json:
+        print(json.dumps(quantities, indent=2))
+    else:
+        width = max(len(n) for n in quantities)
+        for n, d in quantities.items():
+            print(f"{n.ljust(width)}  {d}")
+    return EXIT_RIGHT
+
+
+def _batch(args) -> int:
+    from .batch import BatchError, grade_batch, read_csv
+    from .report import summarise, write_report
+    if args.name:
+        return _usage("--batch takes the problem from each row's question; drop NAME.")
+    if args.workers is not None and args.workers < 1:
+        return _usage("--workers must be at least 1.")
+    try:
+        rows = read_csv(args.batch)
+        results = grade_batch(rows, workers=args.workers, scheduler=args.scheduler,
+                              progress=not args.no_progress)
+    except BatchError as exc:
+        return _usage(str(exc))
+    paths = write_report(results, args.out, title=f"Grades: {args.batch.name}")
+    summary = summarise(results)
+    if args.json:
+        print(json.dumps({"files": {k: str(v) for k, v in paths.items()},
+                          "questions": {q: {k: v for k, v in s.items() if k != "mistakes"}
+                                        for q, s in summary.items()}}, indent=2))
+    else:
+        for q, s in summary.items():
+            print(f"{q}: {s['right']}/{s['answers']} right" +
+                  (f", {s['invalid']} not graded" if s["invalid"] else ""))
+        print(f"wrote {paths['json']} and {paths['markdown']}")
+    return EXIT_RIGHT
