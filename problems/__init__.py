@@ -128,7 +128,16 @@ def declarations() -> list[Declaration]:
 
 
 def module_of(name: str) -> Declaration:
-    """The declaration of problem ``name``; ``KeyError`` names the close matches."""
+    """The declaration of problem ``name``; ``KeyError`` names the close matches.
+
+    Only the module that declares ``name = "<name>"`` is parsed when one does."""
+    import re
+    pattern = re.compile(r'^\s+name\s*=\s*["\']' + re.escape(name) + r'["\']', re.M)
+    for path in sorted(_HERE.glob("*.py")):
+        if not path.name.startswith("_") and pattern.search(path.read_text(encoding="utf-8")):
+            for d in _read(path):
+                if d.name == name:
+                    return d
     decls = {d.name: d for d in declarations()}
     if name not in decls:
         import difflib

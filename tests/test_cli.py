@@ -78,13 +78,22 @@ def tiny_catalogue(monkeypatch):
     def all_problems():
         return [cls() for cls in catalogue.values()]
 
-    def get(name):
+    def module_of(name):
         if name not in catalogue:
             raise KeyError(f"no problem named {name!r}; known problems: {', '.join(catalogue)}.")
+        cls = catalogue[name]
+        return problems.Declaration("test", cls.__name__, name, cls.title, cls.source, "",
+                                    tuple(c.name for c in cls.coordinates), ())
+
+    def get(name, **options):
+        module_of(name)
         return catalogue[name]()
 
     monkeypatch.setattr(problems, "all_problems", all_problems)
     monkeypatch.setattr(problems, "get", get)
+    monkeypatch.setattr(problems, "module_of", module_of)
+    monkeypatch.setattr(problems, "declarations", lambda: [module_of(n) for n in catalogue])
+    monkeypatch.setattr(problems, "OUT_OF_SCOPE", ())
     return catalogue
 
 
@@ -134,11 +143,11 @@ def test_list_shows_name_title_source_and_degrees_of_freedom(capsys, tiny_catalo
     status, out, _ = run(capsys, "list")
     assert status == 0
     header, rule, *rows = out.strip().splitlines()
-    assert header.split() == ["name", "title", "source", "dof"]
+    assert header.split() == ["name", "title", "source", "dof", "reactions", "status"]
     assert len(rows) == 2
     assert rows[0].startswith("spring_on_floor")
     assert "Block on a spring, on a floor" in rows[0] and "test: by hand" in rows[0]
-    assert rows[0].split()[-1] == "1"
+    assert rows[0].split()[-3:] == ["1", "-", "modelled"]
 
 
 def test_list_shows_every_problem_of_the_real_catalogue(capsys):
