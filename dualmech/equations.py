@@ -370,7 +370,8 @@ class EquationSet:
     def pretty(self, latex: bool = False) -> str:
         lines = []
         for label, e in zip(self.labels, self.equations):
-            body = sp.latex(e) + " = 0" if latex else f"{sp.pretty(e, use_unicode=True, wrap_line=False)}  = 0"
+            body = sp.latex(e) + " = 0" if latex else \
+                sp.pretty(sp.Eq(e, 0, evaluate=False), use_unicode=True, wrap_line=False)
             lines.append(f"[{label}]\n{body}")
         return "\n\n".join(lines)
 
