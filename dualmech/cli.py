@@ -360,7 +360,7 @@ def _cmd_report(args) -> int:
     out: Path = args.out
     out.mkdir(parents=True, exist_ok=True)
     results, charts = [], {}
-    for problem in _catalogue().all_problems():
+    for problem in _progress(_catalogue().all_problems(), "report"):
         c = _compare(problem, args.points, args.seed)
         results.append((problem, c))
         (out / f"{problem.name}.json").write_text(_json(c.to_dict()) + "\n")
