@@ -330,3 +330,24 @@ def test_problem_names_are_checked():
     from dualmech.grade import grade
     r = grade("toy_cra", "x")
     assert r.status == "invalid" and "toy_car" in r.summary
+
+
+def test_non_rational_answers_go_to_the_comparator(toy):
+    # sqrt(4)/2 = 1: right; sqrt(1 - cos^2) is |sin(theta)|, not sin(theta), for theta < 0
+    r = toy.grade("R*theta'' + R*phi'^2*sin(theta)*cos(theta) + g*cos(phi)*sin(theta)*sqrt(4)/2")
+    assert r.right and "exact rational-point test (4 points" not in r.method
+    r = toy.grade("R*theta'' + R*phi'^2*sin(theta)*cos(theta) + g*cos(phi)*sqrt(1 - cos(theta)^2)")
+    assert r.status == "wrong"
+    r = toy.grade("2*R*theta'' + R*phi'^2*sin(2*theta) + 4*g*cos(phi)*sin(theta/2)*cos(theta/2)")
+    assert r.right
+
+
+def test_answers_in_another_models_coordinates():
+    # the source's second choice for the falling container: y1 = x1, y2 = x2 - x1 - l0
+    g = Grader("falling_container")
+    r = g.grade("(m1 + m2)*y1'' + m2*y2'' + (m1 + m2)*g = 0\n"
+                "m2*y1'' + m2*y2'' + c*y2' + k*y2 + m2*g = 0")
+    assert r.right
+    r = g.grade("(m1 + m2)*y1'' + m2*y2'' + (m1 + m2)*g = 0\n"
+                "m2*y1'' + m2*y2'' + k*y2 + m2*g = 0")
+    assert r.status == "wrong"

@@ -31,8 +31,9 @@ ROWS = [
     {"id": "cy", "question": "toy_car", "quantity": "F_r", "answer": TOY_F_WRONG},
     {"id": "dee", "question": "toy_car:F_r", "answer": "__import__('os').system('ls')"},
     {"id": "eve", "question": "no_such_problem", "answer": RIGHT},
+    {"id": "fay", "question": "simple_pendulum:eom", "answer": RIGHT},
 ]
-STATUSES = ["right", "wrong", "wrong", "right", "wrong", "wrong", "invalid", "invalid"]
+STATUSES = ["right", "wrong", "wrong", "right", "wrong", "wrong", "invalid", "invalid", "right"]
 
 
 def run(argv: list[str]) -> int:
@@ -93,10 +94,11 @@ def test_usage_errors(tmp_path, capsys):
 
 # -- batches ------------------------------------------------------------------------------------
 def test_batch_in_order_bad_rows_reported():
+    # (mixes questions with and without a quantity: they must sort together)
     results = grade_batch(ROWS, workers=1, progress=False)
     assert [r["status"] for r in results] == STATUSES
     assert [r["id"] for r in results] == [r["id"] for r in ROWS]
-    assert "no problem named 'no_such_problem'" in results[-1]["summary"]
+    assert "no problem named 'no_such_problem'" in results[-2]["summary"]
 
 
 def test_process_pool_gives_the_same_results(capsys):

@@ -116,7 +116,10 @@ def warm(names: Iterable[str]) -> None:
 
 
 def _chunks(rows: Sequence[dict], size: int) -> list[list[dict]]:
-    order = sorted(range(len(rows)), key=lambda i: (_question(rows[i]), i))
+    def key(i):
+        name, quantity = _question(rows[i])
+        return name, quantity or "", i
+    order = sorted(range(len(rows)), key=key)
     out, current, key = [], [], None
     for i in order:
         k = _question(rows[i])[0]

@@ -71,6 +71,7 @@ class Point:
     derived: dict = field(default_factory=dict)
     systems: dict = field(default_factory=dict)  # model name -> (A, b) values here
     draw: object = None
+    angles: dict = field(default_factory=dict)   # (cos, sin) of every angle met here
 
     def env(self, changes: dict | None = None, need=()) -> Env:
         """An :class:`Env` at this point (with ``changes`` applied, e.g. other accelerations);
@@ -78,7 +79,8 @@ class Point:
         values = dict(self.values)
         if changes:
             values.update(changes)
-        env = Env(values, self.exact, self.atoms, self.draw or seeded_draw(self.seed))
+        env = Env(values, self.exact, self.atoms, self.draw or seeded_draw(self.seed),
+                  self.angles if self.exact else None)
         if need:
             with mpmath.workdps(MP_DIGITS):
                 for sym in need:

@@ -67,18 +67,27 @@ class Env:
     __slots__ = ("values", "exact", "atoms", "draw", "_z")
 
     def __init__(self, values: dict, exact: bool = True, atoms: dict | None = None,
-                 draw: Callable | None = None):
+                 draw: Callable | None = None, cache: dict | None = None):
         self.values = values
         self.exact = exact
         self.atoms = atoms if atoms is not None else {}
         self.draw = draw
-        self._z: dict = {}
+        self._z = cache if cache is not None else {}   # angle -> (cos, sin): fixed per point
 
     def with_values(self, changes: dict) -> "Env":
         """The same point with some values replaced (shares the angles)."""
-        new = Env({**self.values, **changes}, self.exact, self.atoms, self.draw)
-        new._z = self._z
-        return new
+        return Env({**self.values, **changes}, self.exact, self.atoms, self.draw, self._z)
+
+    def angle(self, parts: tuple, quarter: int) -> tuple:
+        """``(cos, sin)`` of ``sum(k * monomial) + quarter * pi/2``, exactly (cached)."""
+        key = (parts, quarter)
+        z = self._z.get(key)
+        if z is None:
+            z = _QUARTER[quarter]
+            for mono, k in parts:
+                z = _cmul(z, _cpow(self.unit(mono), k))
+            self._z[key] = z
+        return z
 
     def unit(self, mono) -> tuple:
         """``(cos a, sin a)`` of the angle monomial ``mono``, exactly."""
@@ -351,16 +360,10 @@ class Formula:
         if ang is None:
             return lambda env: mpf(argf(env)) if not env.exact else _not_exact()
         parts, quarter = ang
-
-        def unit(env):
-            z = _QUARTER[quarter]
-            for mono, k in parts:
-                z = _cmul(z, _cpow(env.unit(mono), k))
-            return z
         pick = {"sin": lambda z: z[1], "cos": lambda z: z[0], "tan": lambda z: z[1] / z[0],
                 "cot": lambda z: z[0] / z[1], "sec": lambda z: 1 / z[0],
                 "csc": lambda z: 1 / z[1]}[name]
-        return lambda env: pick(unit(env)) if env.exact else mpf(argf(env))
+        return lambda env: pick(env.angle(parts, quarter)) if env.exact else mpf(argf(env))
 
     def term_values(self, env: Env) -> list:
         """Values of the top-level terms (the scale of a high-precision zero test)."""
