@@ -254,7 +254,9 @@ def _linearise(ctx: ProblemContext, point: dict) -> ProblemContext:
     eqs = M * qs.diff(t, 2) + C * qs.diff(t) + K * (qs - q0)
     lin = EquationSet("linearised", tuple(ref.coordinates), tuple(eqs),
                       labels=tuple(f"linearised, {q.func.__name__}" for q in ref.coordinates))
-    return ProblemContext(_Linearised(ctx.problem, lin, _show(point)), ctx.seed)
+    lctx = ProblemContext(_Linearised(ctx.problem, lin, _show(point)), ctx.seed)
+    lctx.subject = f"the equations of motion linearised about {_show(point)}"
+    return lctx
 
 
 def _show(point: dict) -> str:
@@ -277,4 +279,4 @@ def _equilibrium(ctx: ProblemContext, about: str) -> dict:
         value = Formula.from_node(eqs[0].rhs, ctx.vocabulary).sympy()
         q = next(q for q, s in zip(ctx.coordinates, ctx.states) if s.name == ref.base)
         out[q] = value
-    return out
+    return {q: out.get(q, sp.Integer(0)) for q in ctx.coordinates}

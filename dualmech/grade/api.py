@@ -18,7 +18,7 @@ import time
 import sympy as sp
 
 from .answers import Quantity, catalogue, find_quantity, linearised_context
-from .context import GradingUnavailable, ProblemContext
+from .context import GradingUnavailable, ProblemContext, build_seconds
 from .formula import Formula, difference
 from .judge import Deadline, judge_equations, judge_expression
 from .judge_energy import judge_force, judge_kinetic, judge_lagrangian, judge_potential
@@ -73,19 +73,19 @@ class Grader:
         """Grade ``answer`` (text) as ``quantity`` (default: equations of motion, or one
         equation when a single one is given for several coordinates); never raises for a bad
         answer -- the :class:`~.result.Grade` says what is wrong."""
-        t0 = time.perf_counter()
+        t0, built = time.perf_counter(), build_seconds()
         qname = quantity or "auto"
         shown = answer if isinstance(answer, str) else repr(answer)
         try:
             verdict, qname, kind, ctx = self._grade(answer, quantity, about)
         except (AnswerError, UnknownName, GradingUnavailable) as exc:
             return Grade(self.problem.name, qname, "", shown[:1000], "invalid", str(exc),
-                         seconds=time.perf_counter() - t0)
+                         seconds=_since(t0, built))
         except Exception as exc:  # a bug here must not stop a batch; it is reported as such
             return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
                          f"could not grade this answer: internal error "
                          f"({type(exc).__name__}: {exc}); please report it",
-                         seconds=time.perf_counter() - t0)
+                         seconds=_since(t0, built))
         bound = ctx.false_right_bound(verdict.degree, verdict.method) if verdict.status == \
             "right" else float("nan")
         method = verdict.method_text or _METHODS[verdict.method]
@@ -93,7 +93,7 @@ class Grader:
             method += f", {len(ctx.points('exact'))} points, P(wrong answer passes) <= {bound:.1e}"
         return Grade(self.problem.name, qname, kind, shown, verdict.status, verdict.summary,
                      verdict.details, verdict.edits, verdict.dimension_issues, verdict.matches,
-                     verdict.state, method, bound, time.perf_counter() - t0)
+                     verdict.state, method, bound, _since(t0, built))
 
     def _grade(self, answer, quantity, about):
         deadline = Deadline(self.limits.seconds)
@@ -104,6 +104,7 @@ class Grader:
             q = find_quantity(ctx, "eom" if len(eqs) > 1 or n == 1 else "equation")
         else:
             q = find_quantity(ctx, quantity)
+        asked = q.name
         if q.name == "linearised":
             ctx = linearised_context(ctx, about)
             q = find_quantity(ctx, "eom" if len(eqs) > 1 or n == 1 else "equation")
@@ -113,7 +114,7 @@ class Grader:
                                    Formula.from_node(e.rhs, voc, self.limits)
                                    if e.rhs is not None else None) for e in eqs]
             v = judge_equations(ctx, formulas, q, deadline, single=q.kind == "equation")
-            return v, q.name, q.kind, ctx
+            return v, asked, q.kind, ctx
         f = _expression(eqs, q, voc, self.limits)
         if q.kind == "expression":
             return judge_expression(ctx, f, q, deadline, _components(ctx, f, q)), q.name, \
@@ -135,6 +136,11 @@ class Grader:
             ctx.store[key] = Vocabulary.build(ctx.coordinates, ctx.parameters, ctx.reactions,
                                               q.basis, [q for q, _ in ctx._extra_coordinates()])
         return ctx.store[key]
+
+
+def _since(t0: float, built: float) -> float:
+    """Seconds on this answer, leaving out the problem's one-time loading meanwhile."""
+    return time.perf_counter() - t0 - (build_seconds() - built)
 
 
 def _expression(eqs, q: Quantity, voc, limits) -> Formula:

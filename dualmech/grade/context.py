@@ -134,6 +134,8 @@ class ProblemContext:
             self.names[s.qd] = s.name + "'"
             self.names[s.qdd] = s.name + "''"
         self._points: dict = {}
+        #: what the answer's equations must follow from, in words
+        self.subject = "the equations of motion"
         self.store: dict = {}  # lazily built helpers of other modules (feedback, Lagrange)
 
     def memo(self, key, build):

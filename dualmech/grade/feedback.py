@@ -45,7 +45,7 @@ from .context import ProblemContext, zero
 from .audit import display, reduced
 from .formula import Formula
 from .result import Edit
-from .terms import MODES, TermTable, coefficient_env, term_table
+from .terms import MODES, TermTable, coefficient_env, state_symbols, term_table
 
 __all__ = ["best_edit", "Diagnosis", "concrete_state", "category", "swap_pairs", "MAX_EDITS"]
 
@@ -114,12 +114,24 @@ def _scales(mine: TermTable, tab: TermTable) -> list:
 
 
 def _count(mine: TermTable, tab: TermTable, c) -> int:
+    """Edits needed: each differing term, a wrong term with the right coefficient once."""
     n = 0
+    extra, missing = [], []
     for k in set(mine.terms) | set(tab.terms):
-        a = mine.terms.get(k, (0, 0))[1]
-        b = tab.terms.get(k, (0, 0))[1] * c
+        a = mine.terms[k][1] if k in mine.terms else 0
+        b = tab.terms[k][1] * c if k in tab.terms else 0
         if not zero(a - b, [a, b]):
             n += 1
+            if k not in tab.terms:
+                extra.append(a)
+            elif k not in mine.terms:
+                missing.append(b)
+    for a in extra:
+        for i, b in enumerate(missing):
+            if zero(a - b, [a, b]):
+                n -= 1
+                del missing[i]
+                break
     return n
 
 
@@ -160,9 +172,26 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation) -> Diagnosis:
                 extra.remove(have)
                 missing.remove(right)
                 break
+    for have in list(extra):   # the right coefficient on the wrong state part
+        for right in list(missing):
+            if zero(_coefficient_value(have, ctx) - _coefficient_value(right, ctx), [1]):
+                edits.append(Edit("replace", equation, display(have, names),
+                                  display(right, names), category(right, ctx)))
+                extra.remove(have)
+                missing.remove(right)
+                break
     edits += [Edit("missing", equation, "", display(r, names), category(r, ctx)) for r in missing]
     edits += [Edit("extra", equation, display(h, names), "", category(h, ctx)) for h in extra]
     return Diagnosis(tab.label, c_sym, edits, len(edits))
+
+
+def _coefficient_value(term, ctx):
+    states = state_symbols(ctx)
+    coeff = sp.Mul(*[f for f in sp.Mul.make_args(term) if not f.free_symbols & states])
+    try:
+        return Formula.from_sympy(coeff).evaluate(coefficient_env(ctx))
+    except (TypeError, ZeroDivisionError, KeyError):
+        return float("nan")
 
 
 def _changed(a, right_c, bv, key, ctx, equation, swaps) -> list:

@@ -104,6 +104,9 @@ def values_at(ctx, formulas, method, deadline, need=()) -> list:
         except ZeroDivisionError:
             raise AnswerError("the answer divides by zero: a denominator vanishes "
                               "identically.") from None
+        except KeyError as exc:   # a reaction no model of the problem determines
+            raise AnswerError(f"`{exc.args[0]}` is not determined by the problem's models, "
+                              "so an answer cannot use it.") from None
     return out
 
 
@@ -147,7 +150,7 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
     if wrong:
         return _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline, need)
     if dims:
-        return Verdict("wrong", "the answer follows from the equations of motion but is "
+        return Verdict("wrong", f"the answer follows from {ctx.subject} but is "
                        "dimensionally inconsistent", dimension_issues=dims, method=method,
                        degree=degree)
     points = ctx.points(method)
@@ -157,13 +160,13 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
         qname = ctx.states[j].name
         if coords != [j]:
             what = f"it matches {match}" if match else "it is a combination of equations"
-            return Verdict("wrong", f"the equation follows from the equations of motion, but "
+            return Verdict("wrong", f"the equation follows from {ctx.subject}, but "
                            f"it is not the equation of {qname}: {what}", matches=match,
                            method=method, degree=degree)
         return Verdict("right", f"the equation of {qname}: {match}", matches=match,
                        method=method, degree=degree)
     if single:
-        return Verdict("right", f"the equation follows from the equations of motion; it "
+        return Verdict("right", f"the equation follows from {ctx.subject}; it "
                        f"matches {match}", matches=match, method=method, degree=degree)
     return _determines(ctx, formulas, points, need, method, degree, deadline)
 
@@ -193,7 +196,7 @@ def _determines(ctx, formulas, points, need, method, degree, deadline) -> Verdic
                        "the others)")
         return Verdict("wrong", summary, method=method, degree=degree)
     extra = f" and the reactions {', '.join(map(str, used))}" if used else ""
-    return Verdict("right", f"equivalent to the equations of motion: every equation follows "
+    return Verdict("right", f"equivalent to {ctx.subject}: every equation follows "
                    f"from them and together they determine the accelerations{extra}",
                    method=method, degree=degree)
 
@@ -279,18 +282,18 @@ def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline,
                            f"below, its two sides differ by {value:.6g} (they must be equal)")
     which = ", ".join(str(i + 1) for i in wrong)
     if k == 1:
-        summary = "the equation does not follow from the equations of motion"
+        summary = f"the equation does not follow from {ctx.subject}"
     else:
         summary = (f"equation{'s' if len(wrong) > 1 else ''} {which} "
-                   f"do{'es' if len(wrong) == 1 else ''} not follow from the equations of motion")
+                   f"do{'es' if len(wrong) == 1 else ''} not follow from {ctx.subject}")
     return Verdict("wrong", summary, details, edits, dims, state=state, method=method,
                    degree=degree)
 
 
 def _target_words(d, ctx) -> str:
-    scale = "" if d.scale == 1 else f"{display(d.scale, ctx.names)} x "
     model, _, label = d.label.partition(": ")
-    return f"{scale}{model} [{label}]"
+    scale = "" if d.scale == 1 else f", times {display(d.scale, ctx.names)}"
+    return f"{model} [{label}]{scale}"
 
 
 # -- expressions --------------------------------------------------------------------------------

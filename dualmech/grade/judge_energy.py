@@ -74,6 +74,23 @@ def _edits(ctx, f: Formula, target, deadline):
     return best_edit(expr, tables, ctx, scale=False) or factor_edit(expr, tables("trig"), ctx)
 
 
+def _edits_any(ctx, f: Formula, forms: list, deadline):
+    """The smallest edit to any of several correct forms."""
+    if f.expanded_size() > 400:
+        return None
+    deadline.check()
+
+    def tables(mode):
+        out = []
+        for form in forms:
+            tab = term_table(sp.expand(form), ctx, "the right answer", mode)
+            if tab is not None and tab.terms:
+                out.append(tab)
+        return out
+    expr = f.sympy()
+    return best_edit(expr, tables, ctx, scale=False) or factor_edit(expr, tables("trig"), ctx)
+
+
 def _drop_constants(expr, ctx):
     states = {s.q for s in ctx.states} | {s.qd for s in ctx.states} | {sp.Symbol("t", real=True)}
     return sp.Add(*[a for a in sp.Add.make_args(sp.expand(expr)) if a.free_symbols & states])
@@ -283,18 +300,18 @@ def judge_force(ctx: ProblemContext, comps: list, quantity: Quantity,
                                dimension_issues=dims, method=method, degree=comps[0].degree)
             return Verdict("right", f"{quantity.description}{note}", method=method,
                            degree=max(c.degree for c in comps))
-    target_keys = drives + parts.keys("velocity")
+    conventions = [drives, drives + parts.keys("velocity")]
     edits, details = [], []
     for a, (f, j) in enumerate(zip(comps, js)):
-        target = -sp.Add(*[parts.pieces[k][j] for k in target_keys])
-        d = _edits(ctx, f, target, deadline)
+        forms = [-sp.Add(*[parts.pieces[k][j] for k in keys]) for keys in conventions]
+        d = _edits_any(ctx, f, forms, deadline)
         if d is not None:
             edits += [e.__class__(e.kind, a if len(js) > 1 else None, e.term, e.correct,
-                                  e.category, e.detail) for e in d.edits]
+                                  e.category, e.detail, "component") for e in d.edits]
     if not edits:
-        details.append("compared with the generalised forces of the drives and dampers "
-                       f"({', '.join(target_keys) or 'none'}); conservative loads may be "
-                       "counted in V instead")
+        details.append("compared with the generalised forces of the drives "
+                       f"({', '.join(drives) or 'none'}), with and without the dampers; "
+                       "conservative loads may be counted in V instead")
     return Verdict("wrong", f"{quantity.description}: not the virtual work of the loads",
                    details, edits, dims, method=method, degree=max(c.degree for c in comps))
 

@@ -23,7 +23,9 @@ class Edit:
     """One step of the smallest edit that makes a wrong answer right.
 
     ``kind``: ``missing`` (``correct`` is the term to add), ``extra`` (``term`` must go),
-    ``sign``, ``coefficient`` (``term`` becomes ``correct``), ``swap`` (``detail`` names the
+    ``sign``, ``coefficient`` (``term`` becomes ``correct``), ``replace`` (the right
+    coefficient on the wrong function: ``g*sin(theta)`` where ``g*theta`` belongs in a
+    linearised equation), ``swap`` (``detail`` names the
     two symbols), ``factor`` (the whole answer is off by ``detail``).  ``equation`` is the
     0-based index of the equation (or, with ``part="component"``, of the vector component)
     in the answer; ``None`` for a single expression.
@@ -49,6 +51,8 @@ class Edit:
         if self.kind == "coefficient":
             return (f"{where}wrong coefficient: `{self.term}` where `{self.correct}` "
                     f"belongs{cat}")
+        if self.kind == "replace":
+            return f"{where}wrong term: `{self.term}` where `{self.correct}` belongs{cat}"
         if self.kind == "swap":
             return f"{where}{self.detail} are swapped in `{self.term}`: it is `{self.correct}`"
         if self.kind == "factor":
@@ -70,7 +74,8 @@ class Grade:
     sentences (which equation, what it matches); ``edits`` the smallest edit as terms;
     ``dimension_issues`` inconsistent terms (reported first); ``state`` a concrete state where
     answer and truth differ when no small edit explains it; ``method`` names how the verdict was
-    decided.
+    decided; ``seconds`` is the time spent on this answer (a problem's one-time loading -- its
+    models, sampled points and feedback targets -- is not counted).
     """
 
     problem: str

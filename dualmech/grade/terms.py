@@ -18,7 +18,7 @@ from .context import ProblemContext, zero
 from .formula import Formula
 
 __all__ = ["TermTable", "term_table", "equation_targets", "expression_tables",
-           "coefficient_env", "MODES"]
+           "coefficient_env", "state_symbols", "MODES"]
 
 _MAX_TERMS = 60
 
@@ -34,7 +34,8 @@ class TermTable:
     terms: dict
 
 
-def _state_symbols(ctx: ProblemContext) -> set:
+def state_symbols(ctx: ProblemContext) -> set:
+    """Symbols of the state: coordinates, rates, accelerations, reactions, time."""
     out = {t} | set(ctx.reactions)
     for s in ctx.states:
         out |= {s.q, s.qd, s.qdd}
@@ -87,7 +88,7 @@ def term_table(expr, ctx: ProblemContext, label: str = "", mode: str = "trig",
     of each written term])``.
     """
     pieces = parts if parts is not None else [expr]
-    states = _state_symbols(ctx)
+    states = state_symbols(ctx)
     env = coefficient_env(ctx)
     terms: dict = {}
     count = 0
