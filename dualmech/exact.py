@@ -94,7 +94,7 @@ from ._expr import as_expr
 from .verify import interval as _iv
 from .verify.branches import Case, find_cases
 from .verify.circle import world_values
-from .verify.surd import Surd, independent
+from .verify.surd import Surd, independent, is_square
 from .verify.world import (AtomKey, NotExact, Undecidable, World, analyse, degree_bound)
 
 __all__ = ["ExactForm", "Undecidable", "NotRational", "METHOD_NAMES", "CASE", "AtomKey",
@@ -210,6 +210,8 @@ class ExactForm:
             return cls._build_exact(exprs, base)
         except NotExact as exc:
             why = f"exact test not applicable: `{exc.expr}`: {exc.why}"
+        except (sp.PolynomialError, sp.polys.polyerrors.CoercionFailed, RecursionError) as exc:
+            why = f"exact test not applicable: {type(exc).__name__}: {exc}"
         try:
             program = _iv.IntervalProgram(exprs)
         except _iv.Unsupported as exc:
@@ -241,18 +243,24 @@ class ExactForm:
         return cls(method="mpmath", _fn=fn, **base)
 
     def _check_radicals(self) -> None:
-        """Radicands that are dependent at two random points are dependent identically."""
+        """Radicands dependent at every one of a few random points are dependent identically
+        (the exact method would skip every point): leave them to intervals."""
         rng = random.Random(7)
-        for _ in range(2):
-            point = self._sample_exact(rng)
-            self._counter = 0
-            args = self._args(point, radicals=False)
-            args += [0] * (len(self._world.radicals) + len(self._world.branches))
-            d = [x for x in self._radicand_list(args) if x != 0]
-            if independent([x for x in d if not _square(x)]):
-                return
-        raise NotExact(self._world.radicals[0][1], "square roots whose product is a perfect "
-                                                  "square (write them with one root)")
+        dependent = 0
+        for _ in range(4 * len(self.cases)):
+            try:
+                self._args(self._sample_exact(rng))
+                break
+            except ZeroDivisionError:
+                continue
+            except ValueError:
+                dependent += 1
+        else:
+            if dependent:
+                raise NotExact(self._world.radicals[0][1], "square roots whose product is a "
+                                                          "perfect square (write them with "
+                                                          "one root)")
+        self._counter = 0
 
     # -- points ------------------------------------------------------------------------------
     def sample(self, rng: random.Random, floats: dict | None = None) -> dict:
@@ -342,7 +350,7 @@ class ExactForm:
 
     def _roots(self, args) -> list:
         ds = self._radicand_list(args)
-        irr = [d for d in ds if d != 0 and not _square(d)]
+        irr = [d for d in ds if d != 0 and not is_square(d)]
         if not independent(irr):
             raise ValueError("square roots dependent at this point")
         return [Surd.root(d) for d in ds]
@@ -433,11 +441,6 @@ def as_float(value) -> float:
 
 
 # ---------------------------------------------------------------------------------------------
-def _square(d) -> bool:
-    from .verify.surd import is_square
-    return is_square(d)
-
-
 def _range(floats, keys) -> tuple:
     for k in keys:
         if floats and k in floats:
