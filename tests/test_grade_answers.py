@@ -321,7 +321,9 @@ def test_linearised_answers():
     assert g.grade("theta'' + g/a*theta", "linearised", about="theta=0").right
     assert g.grade("a*theta'' - g*(theta - pi) = 0", "linearised", about="theta=pi").right
     r = g.grade("a*theta'' + g*sin(theta) = 0", "linearised")
-    assert r.status == "wrong"
+    (e,) = edits(r)
+    assert e.kind == "replace" and e.term == "g*sin(theta)" and e.correct == "g*theta"
+    assert "linearised about theta=0" in r.summary and r.quantity == "linearised"
     r = g.grade("a*theta'' + g*theta = 0", "linearised", about="x=0")
     assert r.status == "invalid" and "not a coordinate" in r.summary
 
