@@ -2,7 +2,8 @@ r"""Helicopter rotor blade flapping about its hinge, with the aerodynamic genera
 
 Source: ``sources/002_df41972c66c4514e.txt``, Cambridge 3C5 notes, handwritten "Helicopter
 Rotor Blade Example" at the end ("length = L, Mass/unit length = M, Generalised Force (take
-beta small): Lift proportional to angle of attack x velocity^2").
+beta small): Lift proportional to angle of attack x velocity?" -- the square is lost in the
+extraction and restored from the expansion printed next, ``alpha0 x^2 Omega^2 - ...``).
 
 A uniform blade (length ``L``, mass ``M`` per unit length) is hinged at the rotor axis and
 turns with it at the constant rate ``Omega``; it flaps up by the angle ``beta`` about the

@@ -74,9 +74,10 @@ Errata and unreadable formulas:
 * The "Nutation" line reads "assume [M g h] is negligibly small = A cos(theta) [phi'] -
   C([psi'] + [phi'] cos(theta)) [= 0]" with the dots and the gravity term garbled; read so,
   it is right (the nonzero steady rate with ``g = 0``).
-* "Now suppose theta != 0 (top not vertical) and that psi' >> theta'": the extraction shows
-  ``Y >> theta`` with hats; the approximation needs ``psi' >> phi'`` (the spin much faster
-  than the precession), which is what the precession result uses.
+* "Now suppose theta != 0 (top not vertical) and that [psi'] >> [phi'] (high spin rate)": the
+  extraction shows ``Y >> theta`` with hats, read as ``psi' >> phi'`` (on a steady
+  precession ``theta' = 0``, so the condition can only compare the spin with the precession
+  rate); the fast-top limit needs exactly that.
 * Printed and right: T of section 5 with ``A = B``.
 """
 from __future__ import annotations
