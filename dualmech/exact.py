@@ -92,7 +92,7 @@ from sympy.printing.pycode import PythonCodePrinter
 
 from ._expr import as_expr
 from .verify import interval as _iv
-from .verify.branches import Case, find_cases
+from .verify.branches import Case, find_cases, regions
 from .verify.circle import world_values
 from .verify.surd import Surd, independent, is_square
 from .verify.world import (AtomKey, NotExact, Undecidable, World, analyse, degree_bound)
@@ -182,6 +182,7 @@ class ExactForm:
     _choices: list = field(default_factory=list, repr=False)
     _program: object = field(default=None, repr=False)
     _domains: dict = field(default_factory=dict, repr=False)
+    _regions: list = field(default_factory=list, repr=False)   # interval method: boxes
     _counter: int = field(default=0, repr=False)
 
     # -- building ----------------------------------------------------------------------------
@@ -216,7 +217,9 @@ class ExactForm:
             program = _iv.IntervalProgram(exprs)
         except _iv.Unsupported as exc:
             raise Undecidable(exc.expr, exc.why) from None
-        return cls(method="interval", _program=program, **{**base, "notes": notes + [why]})
+        boxes = regions(_conditions(exprs), doms)
+        return cls(method="interval", _program=program, _regions=boxes,
+                   **{**base, "notes": notes + [why]})
 
     @classmethod
     def _build_exact(cls, exprs, base) -> "ExactForm":
@@ -273,9 +276,17 @@ class ExactForm:
         if self.method == "exact":
             return self._sample_exact(rng)
         point = {}
+        box: dict = {}
+        if self.method == "interval":
+            # every other point inside a branch or domain region found at build time
+            turn = self._counter
+            self._counter += 1
+            if self._regions and turn % 2:
+                box = self._regions[(turn // 2) % len(self._regions)]
         for c, keys in self._read.items():
             if self.method == "interval":
-                v = _iv.real_sample(rng, *_iv.domain_of(c, self._domains))
+                lo, hi = box.get(c) or _iv.domain_of(c, self._domains)
+                v = Fraction(lo) if lo == hi else _iv.real_sample(rng, lo, hi)
             else:
                 lo, hi = _range(floats, keys)
                 v = mpmath.mpf(rng.uniform(lo, hi))
@@ -441,6 +452,37 @@ def as_float(value) -> float:
 
 
 # ---------------------------------------------------------------------------------------------
+def _conditions(exprs) -> list:
+    """Where the value of ``exprs`` changes form: branch conditions and domain boundaries."""
+    out: list = []
+
+    def add(g):
+        g = sp.sympify(g)
+        if g.free_symbols and g not in out and -g not in out:
+            out.append(g)
+
+    for e in exprs:
+        for node in sp.preorder_traversal(e):
+            if isinstance(node, (sp.Abs, sp.sign, sp.Heaviside)):
+                add(node.args[0])
+            elif isinstance(node, sp.Piecewise):
+                for _, cond in node.args:
+                    for rel in cond.atoms(sp.core.relational.Relational):
+                        add(rel.lhs - rel.rhs)
+            elif isinstance(node, (sp.Max, sp.Min)):
+                add(node.args[0] - node.args[1])
+            elif isinstance(node, sp.Pow) and not node.exp.is_Integer:
+                add(node.base)
+            elif isinstance(node, sp.log):
+                add(node.args[0])
+            elif isinstance(node, (sp.acos, sp.asin, sp.atanh)):
+                add(1 - node.args[0])
+                add(1 + node.args[0])
+            elif isinstance(node, sp.acosh):
+                add(node.args[0] - 1)
+    return out
+
+
 def _range(floats, keys) -> tuple:
     for k in keys:
         if floats and k in floats:

@@ -150,6 +150,13 @@ PAIRS = [
          "exact"),
     pair("step", sp.Piecewise((1, t < 5), (2, True)), 1, [t], "different", "exact"),
     pair("floor", sp.floor(t), t, [t], "different", "interval"),
+    # in the interval method too, far branch regions and narrow domains are visited
+    pair("interval-heaviside-very-late", F0 * sp.Heaviside(t - 10**9) * sp.atan(t), 0, [F0, t],
+         "different", "interval"),
+    pair("interval-piecewise-far", sp.Piecewise((sp.atan(t), t > 10**7), (0, True)), 0, [t],
+         "different", "interval"),
+    pair("interval-narrow-domain", sp.sqrt(x - 10**9) * sp.atan(x),
+         sp.sqrt(x - 10**9) * sp.atan(x) + sp.Rational(1, 10**20), [x], "different", "interval"),
     # -- tiny and huge coefficients ---------------------------------------------------------------
     pair("tiny-next-to-exp", sp.exp(t) + TINY, sp.exp(t), [t], "different", "exact"),
     pair("coefficients-1e-35-factor-2", sp.Float("1e-35") * x + sp.Float("2e-35") * y,

@@ -42,7 +42,7 @@ from mpmath import iv
 from .interval import Ambiguous, IntervalProgram, Unsupported, domain_of, real_sample
 from .world import NotExact, World
 
-__all__ = ["Case", "find_cases", "MAX_CONDITIONS", "MAX_CASES"]
+__all__ = ["Case", "find_cases", "regions", "MAX_CONDITIONS", "MAX_CASES"]
 
 #: At most this many distinct branch conditions, and this many cases, are split exactly.
 MAX_CONDITIONS = 10
@@ -104,8 +104,8 @@ def find_cases(world: World, domains: dict, seed: int = 0) -> list[Case]:
     wanted = {s for sigmas in groups.values() for s in sigmas}
     seen = _random_witnesses(prog, syms, boxes, natural, wanted, random.Random(seed))
     open_boxes: list = []
-    if wanted - seen:
-        seen |= _bisect(prog, boxes, wanted - seen, open_boxes)
+    if wanted - seen.keys():
+        seen.update(_bisect(prog, boxes, wanted - seen.keys(), open_boxes))
     out = []
     for choices, sigmas in groups.items():
         hit = [s for s in sigmas if s in seen]
@@ -120,6 +120,30 @@ def find_cases(world: World, domains: dict, seed: int = 0) -> list[Case]:
     if not out:
         raise NotExact(world.branches[0].node, "no branch case occurs in the declared domain")
     return out
+
+
+def regions(conditions, domains: dict, seed: int = 0) -> list[dict]:
+    """Boxes ``{symbol: (lo, hi)}`` of the domain, one per sign vector of ``conditions`` that
+    random points or interval bisection find (a point for a degenerate box).
+
+    The interval method samples them in turn with random points of the whole domain, so a
+    branch region far out (``Heaviside(t - 1e9)``) or a narrow domain (``sqrt(x - 1e9)``)
+    is visited.
+    """
+    conditions = list(conditions)[:MAX_CONDITIONS]
+    if not conditions:
+        return []
+    try:
+        prog = IntervalProgram(conditions)
+    except Unsupported:
+        return []
+    syms = sorted(set().union(*(e.free_symbols for e in conditions)), key=str)
+    natural = {s: domain_of(s, domains) for s in syms}
+    wanted = set(product((1, -1), repeat=len(conditions)))
+    seen = _random_witnesses(prog, syms, natural, natural, wanted, random.Random(seed))
+    if wanted - seen.keys():
+        seen.update(_bisect(prog, natural, wanted - seen.keys(), []))
+    return list(seen.values())
 
 
 def _box(sym, domains, periods) -> tuple[float, float]:
@@ -148,8 +172,9 @@ def _certain(vals) -> tuple | None:
     return tuple(out)
 
 
-def _random_witnesses(prog, syms, boxes, natural, wanted, rng) -> set:
-    seen: set = set()
+def _random_witnesses(prog, syms, boxes, natural, wanted, rng) -> dict:
+    """``{sign vector: witness}`` from random points (a witness is a degenerate box)."""
+    seen: dict = {}
     for _ in range(_RANDOM_POINTS):
         point = {}
         for s in syms:
@@ -159,20 +184,21 @@ def _random_witnesses(prog, syms, boxes, natural, wanted, rng) -> set:
             signs = _certain(prog.evaluate(point))
         except (Ambiguous, ZeroDivisionError, ValueError):
             continue
-        if signs is not None:
-            seen.add(signs)
-        if wanted <= seen:
+        if signs is not None and signs not in seen:
+            seen[signs] = {s: (point[s], point[s]) for s in syms}
+        if wanted <= seen.keys():
             break
     return seen
 
 
-def _bisect(prog, boxes, missing, open_boxes) -> set:
-    """Witness sign vectors by interval bisection; leave undecided boxes in ``open_boxes``."""
+def _bisect(prog, boxes, missing, open_boxes) -> dict:
+    """Witness sign vectors by interval bisection (``{sign vector: box where it holds}``);
+    leave the sign sets of undecided boxes in ``open_boxes``."""
     syms = list(boxes)
     queue = deque([dict(boxes)])
-    seen: set = set()
+    seen: dict = {}
     budget = _BOXES
-    while queue and budget and not missing <= seen:
+    while queue and budget and not missing <= seen.keys():
         box = queue.popleft()
         budget -= 1
         try:
@@ -184,7 +210,7 @@ def _bisect(prog, boxes, missing, open_boxes) -> set:
             continue
         signs = _certain(vals) if vals is not None else None
         if signs is not None:
-            seen.add(signs)
+            seen.setdefault(signs, box)
             continue
         halves = _split(box)
         if halves is None:

@@ -244,6 +244,11 @@ class IntervalProgram:
         seen.add(e)
         if isinstance(e, (sp.Symbol, sp.Rational, sp.Float)) or e in (sp.pi, sp.E):
             return
+        if isinstance(e, sp.Piecewise):
+            for value, cond in e.args:
+                self._check(value, seen)
+                self._check(cond, seen)
+            return
         if isinstance(e, (sp.Add, sp.Mul, sp.Pow, sp.Piecewise, sp.Max, sp.Min, sp.sign,
                           sp.Heaviside, sp.atan2, sp.logic.boolalg.Boolean)) or \
                 type(e) in _UNARY:
