@@ -61,7 +61,7 @@ def test_spring_between_points_with_free_length():
     lg.spring("spring", k, sp.sqrt(x**2 + y**2) - L0)
     lg.gravity(-g * O.y, [bob], O)
     r = compare_models(lg.equations(), ne.equations())
-    assert r.equivalent and r.method == "mpmath"     # the square root leaves the rational world
+    assert r.equivalent and r.method == "exact"      # the square root: an exact algebraic number
     wrong = NewtonEuler(coordinates=[x, y], ground=O)
     wrong.gravity(-g * O.y)
     wrong.spring_between("spring", k, 0, (bob, P), (None, Point.origin(O)))  # free length lost
