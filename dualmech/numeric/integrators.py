@@ -157,7 +157,8 @@ def _projected(fun, t_span, y0, method, t_eval, rtol, atol, events, projector) -
         if not run.success or run.t.size < 2:
             ts = t_eval[: len(ys)]
             return Run(method, ts, np.array(ys).T, False, run.message, 0.0, 0, 0, steps, jac,
-                       lu, run.t_end, run.events, run.event_states)
+                       lu, float(a) if not np.isfinite(run.t_end) else run.t_end, run.events,
+                       run.event_states)
         y = projector(b, run.y[:, -1])
         ys.append(y)
         if method not in ("BDF", "LSODA"):  # one-step methods resume with the last step size;

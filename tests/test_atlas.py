@@ -1,0 +1,156 @@
+"""The stability atlas (dualmech.numeric.singularities, .regimes, .atlas): the detections.
+
+Hand references: the toy car's mass matrix diag(m R^2, m R^2 cos^2 theta) (problems/toy_car.py),
+the two-rod linkage's x form M + m l^2 / D with D = 4 l^2 sin^2 theta, the falling container's
+relative mode lambda = -c/(2 mu) +- i sqrt(k/mu - (c/(2 mu))^2), mu = m1 m2/(m1 + m2), and the
+pendulum's exact motion in Jacobi elliptic functions.
+"""
+import numpy as np
+import pytest
+from scipy.special import ellipj, ellipk
+
+from dualmech.numeric.atlas import atlas
+from dualmech.numeric.regimes import (chaos, dae_drift, growth_exponent, linearisation,
+                                      stability_radius, stiffness)
+from dualmech.numeric.singularities import GARBAGE, probe, scan
+from problems import get
+
+EPS = np.finfo(float).eps
+
+
+def _points(s, form):
+    return sorted((p for p in s.points if p.formulation == form), key=lambda p: p.value)
+
+
+# -- coordinate singularities -------------------------------------------------------------------
+def test_toy_car_mass_matrix_vanishes_at_the_pivot_axis():
+    s = scan(get("toy_car"))
+    lag = _points(s, "lagrange")
+    # det M = m^2 R^4 cos^2(theta): zero at theta = +-pi/2, smallest singular value ~ d^2
+    assert [p.value for p in lag] == pytest.approx([-np.pi / 2, np.pi / 2], abs=1e-6)
+    assert all(p.kind == "det M = 0" and round(p.order) == 2 for p in lag)
+    assert all(p.declared == "cos(theta)" for p in lag)
+    # the direct form's j_B row holds m R cos(theta) phi'': one power of the distance
+    assert all(round(p.order) == 1 for p in _points(s, "newton_euler"))
+
+
+def test_two_rod_x_form_mass_is_unbounded_at_the_fold_and_bar_forces_undetermined_upright():
+    s = scan(get("two_rod_linkage"))
+    x_form = _points(s, "lagrange_x")
+    assert [p.value for p in x_form] == pytest.approx([-np.pi, 0.0, np.pi], abs=1e-6)
+    assert all(p.kind == "M unbounded" and round(p.order) == 2 and p.declared == "sin(theta)"
+               for p in x_form)
+    # theta = pi/2: the right bar is vertical, its force parallel to the shaft's -- the motion
+    # is regular (the Lagrangian in theta does not notice) but F_R and N are not separable
+    dae = _points(s, "multiplier (DAE, index 1)")
+    assert [p.value for p in dae] == pytest.approx([-np.pi / 2, np.pi / 2], abs=1e-6)
+    assert all(p.kind == "reactions undetermined" and not p.declared for p in dae)
+    assert not _points(s, "lagrange")
+
+
+def test_euler_angles_lock_where_the_nutation_is_zero_or_pi():
+    s = scan(get("rigid_body_euler_angles"))
+    lag = _points(s, "lagrange")
+    assert [p.value for p in lag] == pytest.approx([-np.pi, 0.0, np.pi], abs=1e-6)
+    assert all(p.declared == "sin(theta)" and p.coordinate == "theta" for p in lag)
+
+
+@pytest.fixture(scope="module")
+def fold():
+    return probe(get("two_rod_linkage"), methods=("RK45", "BDF"))
+
+
+def test_running_into_the_fold_in_x(fold):
+    runs = {(r.method, r.mode): r for r in fold.runs}
+    # RK45 evaluates past the fold and stops, naming the state (x = 2 l - l0 = 1.4)
+    assert not runs["RK45", "unguarded"].success
+    assert "x=1.4" in runs["RK45", "unguarded"].message
+    # BDF steps over it and reports success with wrong coordinates: detected as garbage
+    assert runs["BDF", "unguarded"].verdict.startswith("GARBAGE")
+    # guarded runs keep the last good state, and the theta form continues from it; the
+    # degeneracy at the switch is below GARBAGE, so the error is at most GARBAGE x rtol
+    for m in ("RK45", "BDF"):
+        assert not runs[m, "guarded"].success
+        assert runs[m, "switched"].success
+        assert runs[m, "switched"].error <= GARBAGE * fold.rtol
+
+
+# -- stiffness ----------------------------------------------------------------------------------
+@pytest.fixture(scope="module")
+def stiff():
+    return stiffness(get("falling_container"), values=(1e5, 1e6, 1e7),
+                     methods=("RK45", "DOP853", "Radau"))
+
+
+def test_fastest_eigenvalue_is_the_hand_relative_mode(stiff):
+    m1, m2, c = 3.0, 1.0, 4.0
+    mu = m1 * m2 / (m1 + m2)
+    for r in stiff.rows:
+        hand = complex(-c / (2 * mu), np.sqrt(r["value"] / mu - (c / (2 * mu))**2))
+        # central differences of a linear system are exact up to rounding: eps |f| / h
+        assert abs(complex(*r["lambda"]) - hand) <= 1e-8 * abs(hand)
+
+
+def test_explicit_steps_follow_the_stability_boundary_implicit_ones_do_not_grow(stiff):
+    for m in ("RK45", "DOP853"):
+        rows = [r for r in stiff.rows if r["method"] == m]
+        lam = [r["lambda_max"] for r in rows]
+        assert round(np.polyfit(np.log(lam), np.log([r["steps"] for r in rows]), 1)[0]) == 1
+        # same order of magnitude as T |lambda| / (the tableau's stability radius)
+        assert all(round(np.log10(r["steps"] / r["min_steps"])) == 0 for r in rows)
+    radau = [r["steps"] for r in stiff.rows if r["method"] == "Radau"]
+    assert max(radau) == min(radau)
+    assert stiff.crossover(implicit="Radau") == 1e5
+
+
+def test_stability_radius_of_dormand_prince_on_the_negative_axis():
+    # Hairer-Norsett-Wanner, Solving ODEs I, fig. IV.2.1: DOPRI5 reaches about -3.3
+    assert round(stability_radius("RK45", np.pi), 1) == 3.3
+
+
+# -- linearisation ------------------------------------------------------------------------------
+def test_small_angle_model_errs_by_1_and_10_percent_where_the_elliptic_solution_says():
+    lin = linearisation(get("simple_pendulum"), levels=(0.01, 0.1))
+    w0 = np.sqrt(9.81 / 0.8)
+    e_w = abs(lin.frequency - w0) / w0       # the finite-difference Jacobian's own error
+    assert e_w <= 1e-8
+    te = lin.times
+
+    def hand_error(a):
+        k = np.sin(a / 2)
+        sn = ellipj(ellipk(k**2) - w0 * te, k**2)[0]
+        return np.abs(2 * np.arcsin(k * sn) - a * np.cos(w0 * te)).max() / a
+    from scipy.optimize import brentq
+    for level, found in lin.thresholds.items():
+        hand = brentq(lambda a: hand_error(a) - level, 0.01, 2.0, xtol=1e-12)
+        # the two errors differ by at most 2 pi e_w (the linear phase over one period) plus
+        # the nonlinear run's (rtol 1e-11); the error grows like a^2, so a moves by half that
+        assert found == pytest.approx(hand, rel=(2 * np.pi * e_w + 1e-11) / (2 * level))
+
+
+# -- DAE drift and chaos ----------------------------------------------------------------------------
+def test_dae_drift_per_stabilisation():
+    d = dae_drift(get("pendulum_particle"), duration=10.0)
+    assert d.growth["none"] > 1 and d.growth["baumgarte"] < 1
+    assert np.abs(d.residual["projection"]).max() <= 1e-13
+    assert d.unit == "m" and not d.stopped
+
+
+def test_two_formulations_of_a_chaotic_pendulum_part_later_at_tighter_tolerance():
+    c = chaos(get("compound_double_pendulum"), y0=[2.0, 2.5, 0.0, 0.0], duration=9.0,
+              tolerances=(1e-4, 1e-6))
+    horizons = [r["horizon"] for r in c.rows]
+    assert all(r["diverged"] for r in c.rows) and horizons == sorted(horizons)
+    assert c.lyapunov > 0
+
+
+def test_growth_exponent_of_a_power_law():
+    t = np.linspace(0, 10, 101)
+    assert growth_exponent(t, 3 * t**2) == pytest.approx(2.0, abs=1e-12)
+
+
+def test_atlas_says_why_a_section_does_not_apply():
+    a = atlas(get("falling_container"), sections=("dae_drift", "chaos"), progress=False)
+    assert "no DAE formulation" in a.skipped["dae_drift"]
+    assert "does not conserve energy" in a.skipped["chaos"]
+    assert "[chaos] not applicable" in str(a)
