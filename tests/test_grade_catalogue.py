@@ -88,3 +88,48 @@ def test_wrong_answers_name_the_wrong_term(name):
             assert _names_the_term(ctx, s, r.edits), (s.variant, str(s.term), str(r))
         else:   # decided by the comparator; the feedback is a concrete state at least
             assert r.edits or r.state or r.summary
+
+
+def _printed_answers(g, ctx):
+    """``(published entry, [graded results])`` for each printed answer the syntax can write."""
+    from dualmech.grade.answers import catalogue
+    from dualmech.grade.generate import CannotWrite, write
+    cat = catalogue(ctx)
+    for pub in ctx.problem.published():
+        if pub.coordinates and pub.coordinates != ctx.problem.reference:
+            continue
+        try:
+            printed = [ctx.plain(e) for e in pub.printed]
+            if pub.kind == "expression":
+                name = next((n for n in (pub.label, pub.label + " (printed)")
+                             if n in cat and cat[n].description.startswith("printed")), None)
+                if name is None:
+                    continue
+                text = write(printed[0], ctx) if len(printed) == 1 else \
+                    "[" + ", ".join(write(e, ctx) for e in printed) + "]"
+                yield pub, [g.grade(text, name)]
+            elif pub.kind == "motion":
+                yield pub, [g.grade("\n".join(write(e, ctx) for e in printed), "eom")]
+            else:
+                yield pub, [g.grade(write(e, ctx), "equation") for e in printed]
+        except CannotWrite:
+            continue
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_printed_answers_agree_with_the_library(name):
+    """Each printed answer of the source, typed in, gets the verdict the library's own check
+    of printed answers gives (an independent implementation, dualmech.published); a wrong one
+    gets feedback.  This covers every row of README.md's errata table."""
+    from dualmech.published import check_published
+    g, ctx = context_or_refusal(name)
+    verdicts = {v.label: v.verdict for v in check_published(ctx.problem)}
+    for pub, results in _printed_answers(g, ctx):
+        if verdicts.get(pub.label) not in ("correct", "wrong"):
+            continue
+        mine = "correct" if all(r.right for r in results) else "wrong"
+        assert mine == verdicts[pub.label], (pub.label, [str(r) for r in results])
+        for r in results:
+            if not r.right:
+                assert r.status == "wrong" and (r.edits or r.dimension_issues or r.state), \
+                    (pub.label, str(r))

@@ -29,7 +29,7 @@ import sympy as sp
 from ..kinematics import t
 from ..verify import linalg as la
 from .answers import Quantity
-from .context import ProblemContext, build_seconds, zero
+from .context import GradingUnavailable, ProblemContext, build_seconds, zero
 from .feedback import Diagnosis, best_edit, concrete_state
 from .terms import equation_targets, expression_tables, term_table
 from .audit import dimension_issues, display, expected_dimension
@@ -141,7 +141,13 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
     method = method_for(ctx, formulas)
     if method == "slow":
         from .slow import slow_equations
-        return slow_equations(ctx, formulas, single or quantity.coordinate is not None, dims)
+        v = slow_equations(ctx, formulas, single or quantity.coordinate is not None, dims)
+        wrong = _off_at_real_points(ctx, formulas, [None] * k) if v.status == "wrong" else []
+        if wrong:
+            fb = _wrong_equations(ctx, formulas, wrong, dims, method, 1, name, deadline,
+                                  need_for(ctx, formulas))
+            v.edits, v.details, v.state = fb.edits, fb.details, fb.state
+        return v
     need = need_for(ctx, formulas)
     table = values_at(ctx, formulas, method, deadline, need)
     wrong = [i for i, f in enumerate(formulas)
@@ -277,9 +283,13 @@ def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline,
             edits += d.edits
             details.append(f"{name(i)} is closest to {_target_words(d, ctx)}")
         elif not state:
-            state, value, _ = concrete_state(ctx, formulas[i], None, need)
-            details.append(f"no small edit explains {name(i)}: on the motion, at the state "
-                           f"below, its two sides differ by {value:.6g} (they must be equal)")
+            try:
+                state, value, _ = concrete_state(ctx, formulas[i], None, need)
+                details.append(f"no small edit explains {name(i)}: on the motion, at the "
+                               f"state below, its two sides differ by {value:.6g} (they must "
+                               "be equal)")
+            except (GradingUnavailable, TypeError, ValueError, ZeroDivisionError):
+                details.append(f"no small edit explains {name(i)}")
     which = ", ".join(str(i + 1) for i in wrong)
     if k == 1:
         summary = f"the equation does not follow from {ctx.subject}"
@@ -320,7 +330,13 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
     method = method_for(ctx, comps + refs)
     if method == "slow":
         from .slow import slow_expression
-        return slow_expression(ctx, comps, refs, dims, quantity.description)
+        v = slow_expression(ctx, comps, refs, dims, quantity.description)
+        if v.status == "wrong":
+            bad = _off_at_real_points(ctx, comps, refs)
+            fb = _expression_feedback(ctx, comps, refs, quantity, bad, deadline,
+                                      need_for(ctx, comps + refs))
+            v.edits, v.details, v.state = fb
+        return v
     minus = ("c", Fraction(-1))
     diffs = [Formula(("add", (c.tree, ("mul", (minus, r.tree))))) for c, r in zip(comps, refs)]
     need = need_for(ctx, comps + refs)
@@ -345,6 +361,16 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
                            "inconsistent", dimension_issues=dims, method=method, degree=degree)
         note = " (up to a constant)" if quantity.up_to_constant else ""
         return Verdict("right", f"{quantity.description}{note}", method=method, degree=degree)
+    edits, details, state = _expression_feedback(ctx, comps, refs, quantity, bad_j, deadline,
+                                                 need)
+    which = ("components " + ", ".join(str(j + 1) for j in bad_j)) if len(refs) > 1 else "it"
+    return Verdict("wrong", f"{quantity.description}: {which} differ"
+                   f"{'s' if which == 'it' else ''} from the right value on the motion",
+                   details, edits, dims, state=state, method=method, degree=degree)
+
+
+def _expression_feedback(ctx, comps, refs, quantity, bad_j, deadline, need):
+    """``(edits, details, state)`` for the wrong components ``bad_j`` of an expression."""
     edits, details, state = [], [], {}
     for j in bad_j:
         deadline.check()
@@ -368,14 +394,40 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
         if d is not None:
             edits += [replace(e, part="component") if where is not None else e for e in d.edits]
         elif not state:
-            state, a, b = concrete_state(ctx, comps[j], refs[j], need)
-            details.append(f"no small edit explains {'component %d' % (j + 1) if len(refs) > 1 else 'it'}: "
-                           f"at the state below the answer is {a:.6g}, the right value "
-                           f"{b:.6g}")
-    which = ("components " + ", ".join(str(j + 1) for j in bad_j)) if len(refs) > 1 else "it"
-    return Verdict("wrong", f"{quantity.description}: {which} differ"
-                   f"{'s' if which == 'it' else ''} from the right value on the motion",
-                   details, edits, dims, state=state, method=method, degree=degree)
+            what = f"component {j + 1}" if len(refs) > 1 else "it"
+            try:
+                state, a, b = concrete_state(ctx, comps[j], refs[j], need)
+                details.append(f"no small edit explains {what}: at the state below the "
+                               f"answer is {a:.6g}, the right value {b:.6g}")
+            except (GradingUnavailable, TypeError, ValueError, ZeroDivisionError):
+                details.append(f"no small edit explains {what}")
+    return edits, details, state
+
+
+def _off_at_real_points(ctx, formulas, refs) -> list[int]:
+    """Indices whose value differs from its reference (None: from zero) at the real display
+    points -- only to choose what to explain after the comparator's verdict."""
+    import mpmath
+    from ..exact import MP_DIGITS
+    try:
+        points = ctx.points("mpmath")
+    except (GradingUnavailable, TypeError, ValueError, ZeroDivisionError):
+        return list(range(len(formulas)))
+    out = []
+    with mpmath.workdps(MP_DIGITS):
+        for i, (f, r) in enumerate(zip(formulas, refs)):
+            for p in points:
+                try:
+                    env = p.env(need=need_for(ctx, [f]))
+                    a = f.evaluate(env)
+                    b = r.evaluate(env) if r is not None else 0
+                    scale = max(abs(a), abs(b), 1)
+                except (TypeError, ValueError, ZeroDivisionError, KeyError):
+                    continue
+                if abs(a - b) > mpmath.mpf(10) ** -20 * scale:
+                    out.append(i)
+                    break
+    return out
 
 
 def factor_edit(expr, targets, ctx, equation=None):
@@ -401,7 +453,8 @@ def factor_edit(expr, targets, ctx, equation=None):
                                   text))
             if c != 1:
                 edits.append(Edit("factor", equation, "", "", "", display(c, ctx.names)))
-            return Diagnosis(tab.label, c, edits, len(edits))
+            if edits:
+                return Diagnosis(tab.label, c, edits, len(edits))
     return None
 
 
