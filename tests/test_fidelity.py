@@ -1,0 +1,78 @@
+"""Fidelity ladders (dualmech.numeric.fidelity): what each simplification costs, measured.
+
+Hand references: the mobile robot with f = T = 0 conserves the horizontal momentum
+(M + m) x' - m L cos(phi) phi' (problems/mobile_robot.py), so the detailed base moves by
+x - x0 = m L (sin(phi) - sin(phi0)) / (M + m) while the simplified base stays put; the base's
+balance M x'' = f - H gives the neglected reaction.  The pendulum's exact motion is in Jacobi
+elliptic functions.
+"""
+import numpy as np
+import pytest
+from scipy.special import ellipj, ellipk
+
+from dualmech.numeric import NumericModel, problem_parameters
+from dualmech.numeric.fidelity import has_ladder, ladder
+from dualmech.numeric.integrators import integrate
+from problems import get
+
+RTOL = 1e-10   # the ladder's default
+
+
+@pytest.fixture(scope="module")
+def robot():
+    return ladder(get("mobile_robot"))
+
+
+def _detailed_run(L):
+    p = get("mobile_robot")
+    nm = NumericModel(p.model("lagrange"), problem_parameters(p))
+    te = np.linspace(*L.span, 201)
+    y0 = [3.2, 0.6, 0.0, 0.0]           # 60 % into the declared ranges, at rest
+    scales = np.array([7.0, 6.0, 6.0, 6.0])
+    run = integrate(nm.rhs, L.span, y0, "DOP853", t_eval=te, rtol=RTOL, atol=RTOL * scales)
+    return nm, run
+
+
+def test_simplified_robot_misses_the_base_motion_the_momentum_balance_predicts(robot):
+    simplified, detailed = robot.rungs
+    assert detailed.error_path == 0 and simplified.neglects == "the pivot reaction H"
+    _, run = _detailed_run(robot)
+    m, M, L = 40.0, 100.0, 7 / 8       # m1 + m2, base, centre of arm + hand from the pivot
+    gap = m * L * np.abs(np.sin(run.y[1]) - np.sin(0.6)) / (M + m)
+    # both runs at rtol 1e-10, atol 1e-10 x the 7 m range: a few times that, accumulated
+    assert simplified.by_coordinate["x"] * 7.0 == pytest.approx(gap.max(), abs=10 * RTOL * 7.0)
+
+
+def test_neglected_pivot_reaction_is_what_the_base_balance_needs(robot):
+    nm, run = _detailed_run(robot)
+    xdd = nm.accelerations(run.t, run.y[:2], run.y[2:])[0]
+    H = -100.0 * xdd                   # M x'' = f - H with f = 0
+    # the same trajectory, H by two routes (the direct model's solve, the base balance)
+    assert robot.rungs[0].neglected["H"] == pytest.approx(np.abs(H).max(), rel=1e-12)
+
+
+def test_small_angle_rung_of_the_pendulum_against_the_elliptic_solution():
+    lad = ladder(get("simple_pendulum"))
+    linear = lad.rungs[0]
+    assert linear.label.startswith("linearised") and linear.model == "linearised"
+    a, w0 = 0.5, np.sqrt(9.81 / 0.8)   # released at rest 60 % into (-2.5, 2.5)
+    t = np.linspace(*lad.span, 201)
+    k = np.sin(a / 2)
+    exact = 2 * np.arcsin(k * ellipj(ellipk(k**2) - w0 * t, k**2)[0])
+    hand = np.abs(a * np.cos(w0 * t) - exact).max() / 5.0      # range of theta: 5 rad
+    # the runs' local tolerance (rtol 1e-10 of the range), a few times over
+    assert linear.by_coordinate["theta"] == pytest.approx(hand, abs=10 * RTOL)
+
+
+def test_point_masses_below_rigid_rods_and_every_rung_costs_something():
+    lad = ladder(get("n_link_pendulum"))
+    labels = [r.label for r in lad.rungs]
+    assert labels[1:] == ["point masses on massless rods", "uniform rigid rods"]
+    assert lad.rungs[-1].error_path == 0 < lad.rungs[0].error_path < lad.rungs[1].error_path
+    assert all(r.derivation_s > 0 and r.rhs_us > 0 for r in lad.rungs)
+    assert "point masses on massless rods" in str(lad)
+
+
+def test_which_problems_have_a_ladder():
+    assert has_ladder(get("simple_pendulum")) and has_ladder(get("mobile_robot"))
+    assert not has_ladder(get("falling_container"))   # falls: no equilibrium, no ladder
