@@ -154,3 +154,27 @@ def test_atlas_says_why_a_section_does_not_apply():
     assert "no DAE formulation" in a.skipped["dae_drift"]
     assert "does not conserve energy" in a.skipped["chaos"]
     assert "[chaos] not applicable" in str(a)
+
+
+# -- the `atlas` command (dualmech.numeric.commands) ------------------------------------------
+def _cli():
+    import argparse
+    from dualmech.numeric.commands import register
+    parser = argparse.ArgumentParser(prog="dualmech")
+    register(parser.add_subparsers(dest="command"))
+    return parser
+
+
+def test_atlas_command_prints_and_writes_a_section(tmp_path, capsys):
+    args = _cli().parse_args(["atlas", "pendulum_particle", "--section", "dae_drift",
+                              "--out", str(tmp_path)])
+    assert args.func(args) == 0
+    out = capsys.readouterr().out
+    assert "[dae_drift]" in out and "|g| ~ t^" in out
+    assert (tmp_path / "pendulum_particle_atlas_dae_drift.svg").stat().st_size > 0
+
+
+def test_atlas_command_refuses_an_unknown_section(capsys):
+    args = _cli().parse_args(["atlas", "toy_car", "--section", "gimbal"])
+    assert args.func(args) == 2
+    assert "unknown section(s) gimbal; choose from singularities" in capsys.readouterr().err

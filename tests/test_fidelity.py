@@ -76,3 +76,26 @@ def test_point_masses_below_rigid_rods_and_every_rung_costs_something():
 def test_which_problems_have_a_ladder():
     assert has_ladder(get("simple_pendulum")) and has_ladder(get("mobile_robot"))
     assert not has_ladder(get("falling_container"))   # falls: no equilibrium, no ladder
+
+
+# -- the `fidelity` command (dualmech.numeric.commands) ----------------------------------------
+def _cli():
+    import argparse
+    from dualmech.numeric.commands import register
+    parser = argparse.ArgumentParser(prog="dualmech")
+    register(parser.add_subparsers(dest="command"))
+    return parser
+
+
+def test_fidelity_command_without_a_ladder_says_where_to_look(capsys):
+    args = _cli().parse_args(["fidelity", "falling_container"])
+    assert args.func(args) == 2
+    assert "has no fidelity ladder" in capsys.readouterr().err
+
+
+def test_fidelity_command_prints_the_ladder(tmp_path, capsys):
+    args = _cli().parse_args(["fidelity", "simple_pendulum", "--out", str(tmp_path)])
+    assert args.func(args) == 0
+    out = capsys.readouterr().out
+    assert "linearised" in out and "RHS [us/call]" in out
+    assert (tmp_path / "simple_pendulum_fidelity.png").stat().st_size > 0

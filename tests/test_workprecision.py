@@ -95,3 +95,33 @@ def test_data_and_charts_are_written(wp, tmp_path):
     assert [float(r["path_error"]) for r in rows] == [r.path_error for r in wp.runs]
     data = json.loads((tmp_path / "pendulum_particle_workprecision.json").read_text())
     assert data["span"] == [0.0, 3.0] and len(data["runs"]) == len(wp.runs)
+
+
+# -- the `chart` command (dualmech.numeric.commands) ------------------------------------------
+def _cli():
+    import argparse
+    from dualmech.numeric.commands import register
+    parser = argparse.ArgumentParser(prog="dualmech")
+    register(parser.add_subparsers(dest="command"))
+    return parser
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["chart", "pendulum_partcle"], "no problem named 'pendulum_partcle'. Did you mean "
+                                    "'pendulum_particle'"),
+    (["chart"], "name at least one problem, or use --all"),
+    (["chart", "toy_car", "--all"], "give problem names or --all, not both"),
+], ids=["misspelt", "nothing", "both"])
+def test_chart_usage_errors_exit_2_with_one_line(argv, message, capsys):
+    args = _cli().parse_args(argv)
+    assert args.func(args) == 2
+    err = capsys.readouterr().err
+    assert message in err and "Traceback" not in err and err.count("\n") == 1
+
+
+def test_chart_into_an_unwritable_directory_exits_2(tmp_path, capsys):
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    args = _cli().parse_args(["chart", "toy_car", "--out", str(blocker / "sub")])
+    assert args.func(args) == 2
+    assert "cannot create the output directory" in capsys.readouterr().err
