@@ -6,6 +6,7 @@
     dualmech check NAME [NAME...] | --all          Newton-Euler vs Lagrange, exactly
     dualmech show NAME [--latex] [--model M]       equations of motion and reactions
     dualmech report [--out DIR]                    everything, written to DIR
+    dualmech grade NAME --answer TEXT              a typed answer, checked exactly
 
 Exit status: 0 when every checked pair agrees, 1 when one disagrees (or cannot be built),
 2 for a usage error such as an unknown problem name.
@@ -104,6 +105,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="simulated time for the charts, in seconds (default: %(default)s)")
     _points_seed(p)
     p.set_defaults(func=_cmd_report)
+
+    from .grade.cli import register as _register_grade
+    _register_grade(sub)
     return parser
 
 

@@ -13,13 +13,28 @@ Example
 >>> r.right, r.matches
 (True, 'the equation of theta (Lagrange)')
 """
-from .answers import Quantity, UnknownQuantity, catalogue
-from .api import Grader, grade
-from .context import GradingUnavailable
-from .parser import LIMITS, AnswerError, AnswerSyntaxError, AnswerTooLarge, Limits, parse
-from .result import STATUSES, Edit, Grade
-from .vocabulary import UnknownName
+from importlib import import_module
+
+_HOME = {
+    "answers": ("Quantity", "UnknownQuantity", "catalogue"),
+    "api": ("Grader", "grade"),
+    "context": ("GradingUnavailable",),
+    "parser": ("LIMITS", "AnswerError", "AnswerSyntaxError", "AnswerTooLarge", "Limits",
+               "parse"),
+    "result": ("STATUSES", "Edit", "Grade"),
+    "vocabulary": ("UnknownName",),
+}
+_WHERE = {name: module for module, names in _HOME.items() for name in names}
 
 __all__ = ["grade", "Grader", "Grade", "Edit", "STATUSES", "Quantity", "catalogue",
            "Limits", "LIMITS", "parse", "AnswerError", "AnswerSyntaxError", "AnswerTooLarge",
            "UnknownName", "UnknownQuantity", "GradingUnavailable"]
+
+
+def __getattr__(name):   # imported when first used: `dualmech list` never loads sympy
+    module = _WHERE.get(name)
+    if module is None:
+        raise AttributeError(f"module 'dualmech.grade' has no attribute {name!r}")
+    value = getattr(import_module(f".{module}", __name__), name)
+    globals()[name] = value
+    return value

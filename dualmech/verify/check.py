@@ -330,6 +330,10 @@ def _check_points(points) -> None:
 def _pairs(j: Judgement, reference: str, ctx: Context, seed: int) -> list[PairResult]:
     """Per-model pair lines (each model against the reference) and shared-reaction lines."""
     names = list(j.models)
+    if j.refusal:
+        return [PairResult(reference, nm, False, j.method, j.points, 0.0, j.seconds,
+                           [Mismatch(nm, "all", j.refusal)] if i == 0 else [])
+                for i, nm in enumerate(n for n in names if n != reference)]
     explained = {}
     for nm in j.odd:
         if j.fault_of(nm):

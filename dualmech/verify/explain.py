@@ -107,12 +107,12 @@ def explain_model(name: str, judgement, against: tuple, ctx: Context,
         wrong = [i for i, v in enumerate(res) if not is_zero(v, scale)]
     if not wrong:
         return [Mismatch(name, "all", f"its accelerations differ from those of `{ref}`")]
-    real = _real_state(judgement, name, ref, ctx, seed)
+    real = _real_states(judgement, name, ref, ctx, seed)
     reference_model = judgement.models[ref]
     out = []
     for i in wrong:
         label = model.labels[i]
-        value, terms, state = _terms(model, i, real, ctx)
+        value, terms, state = _terms(model, i, _best(real, i), ctx)
         out.append(Mismatch(
             name, label, f"does not hold with the accelerations of `{ref}`",
             residual=lambda i=i: _symbolic_residual(model, reference_model, i, limits),
@@ -120,9 +120,11 @@ def explain_model(name: str, judgement, against: tuple, ctx: Context,
     return out
 
 
-def _real_state(judgement, name, ref, ctx: Context, seed: int):
-    """A real state in the working ranges: values of the base symbols, ``q''`` of ``ref`` and
-    the best reactions of ``name``; ``None`` if none is found quickly."""
+def _real_states(judgement, name, ref, ctx: Context, seed: int, want: int = 8) -> list:
+    """Real states where ``ref`` is regular, with the residual of each equation of ``name``
+    there: ``[(values, residuals)]``.  Half inside the working ranges, half in wider ones
+    (angles over a full turn, the rest three times as wide, both signs of ``t``), so that an
+    equation wrong only outside the working range is still shown where it is wrong."""
     models = judgement.models
     coords = models[ref].coordinates
     systems = [System.of(models[ref], coords), System.of(models[name], coords)]
@@ -130,11 +132,23 @@ def _real_state(judgement, name, ref, ctx: Context, seed: int):
     fn = sp.lambdify(ctx.base, exprs, modules="mpmath")
     rng = random.Random(seed + 7)
     n = len(coords)
+    trig = set()
+    for e in exprs:
+        for f in e.atoms(sp.sin, sp.cos, sp.tan):
+            trig |= f.free_symbols
+    angles = {s.q for s in ctx.states if s.q in trig}   # coordinates inside sin/cos
+    out = []
     with mpmath.workdps(30):
-        for _ in range(40):
+        for attempt in range(6 * want):
+            wide = len(out) >= want // 2 or attempt >= 3 * want
             point = {}
             for s in ctx.base:
                 lo, hi = ctx.floats.get(s, (0.5, 2.0))
+                if wide:
+                    mid, half = (lo + hi) / 2, 1.5 * (hi - lo)
+                    lo, hi = (-3.14, 3.14) if s in angles else (mid - half, mid + half)
+                    if s in ctx.parameters and lo <= 0 < hi and ctx.floats.get(s, (1,))[0] > 0:
+                        lo = ctx.floats[s][0]
                 point[s] = mpmath.mpf(rng.uniform(lo, hi))
             try:
                 vals = fn(*[point[s] for s in ctx.base])
@@ -145,12 +159,22 @@ def _real_state(judgement, name, ref, ctx: Context, seed: int):
             if sol.status != "ok":
                 continue
             Ac, bc = systems[1].unflatten(vals[systems[0].size:])
-            _, lam = residuals_at(Ac, bc, sol.qdd, n)
+            res, lam = residuals_at(Ac, bc, sol.qdd, n)
+            scale = 1 + max((abs(v) for v in bc), default=0)
             values = dict(point)
             values.update({s: v for s, v in zip(ctx.qdd, sol.qdd)})
             values.update({u: v for u, v in zip(models[name].unknowns, lam)})
-            return values
-    return None
+            out.append((values, [abs(r) / scale for r in res]))
+            if len(out) == want:
+                break
+    return out
+
+
+def _best(states: list, i: int):
+    """The state where equation ``i`` is most visibly wrong (``None`` without states)."""
+    if not states:
+        return None
+    return max(states, key=lambda vr: vr[1][i])[0]
 
 
 def _terms(model, i, values, ctx):

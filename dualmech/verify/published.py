@@ -26,6 +26,7 @@ from ..dimensions import audit
 from ..equations import EquationSet, ModelError, to_plain
 from ..exact import MP_DIGITS, is_zero
 from ..kinematics import t
+from .errors import Undecidable
 from .display import Budget, OverBudget, dotted, solve_display, tidy
 from .sampling import MAX_ATTEMPTS, Context, Sampler, System, manifold, solve_model
 
@@ -112,6 +113,9 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
         elif pub.label not in bad:
             verdicts.append(PublishedVerdict(pub.label, pub.where, "correct",
                                              f"holds at {good} points", method))
+        elif all(isinstance(x, str) and x.startswith("undecid") for x in bad[pub.label]):
+            verdicts.append(PublishedVerdict(pub.label, pub.where, "unchecked",
+                                             "; ".join(sorted(bad[pub.label])), method))
         else:
             verdicts.append(PublishedVerdict(
                 pub.label, pub.where, "wrong",
@@ -129,7 +133,13 @@ def _evaluate(items, systems, solvers, mapped, ctx, symbols, dependents, claims,
         extra += es
         if isinstance(motion, System):
             extra += [x for row in motion.A for x in row]
-    sampler = Sampler(systems, ctx, extra=extra, extra_symbols=symbols, dependents=dependents)
+    try:
+        sampler = Sampler(systems, ctx, extra=extra, extra_symbols=symbols,
+                          dependents=dependents)
+    except Undecidable as exc:
+        for pub, _, _ in items:
+            bad.setdefault(pub.label, set()).add(f"undecidable: {exc.expr}: {exc.why}")
+        return 0, "refused"
     form = sampler.form
     rng = random.Random(seed + 1)
     zero = 0 if form.method == "exact" else mpmath.mpf(0)
@@ -154,7 +164,9 @@ def _evaluate(items, systems, solvers, mapped, ctx, symbols, dependents, claims,
         for pub, es, motion in items:
             for j, v in enumerate(vals[pos:pos + len(es)]):
                 if not is_zero(v, 1):
-                    bad.setdefault(pub.label, set()).add(j)
+                    certain = getattr(form, "certain", lambda _p: True)(point)
+                    bad.setdefault(pub.label, set()).add(
+                        j if certain else "undecided: differs only in an unconfirmed case")
             pos += len(es)
             if isinstance(motion, System):
                 cols = len(motion.A[0])

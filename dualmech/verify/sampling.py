@@ -157,7 +157,8 @@ class Solution:
     """What one model determines at one point.
 
     ``status``: ``"ok"`` (accelerations determined), ``"undetermined"`` (its equations do not
-    fix every acceleration) or ``"inconsistent"`` (they contradict each other).  ``lam`` maps
+    fix every acceleration), ``"inconsistent"`` (they contradict each other) or
+    ``"undecided"`` (interval values too wide to tell at this point).  ``lam`` maps
     each reaction to its value, ``None`` where the equations leave it undetermined.
     """
 
@@ -187,8 +188,10 @@ def solve_model(A: list, b: list, n: int, unknowns: Sequence,
     unclaimed = [j for j in range(n) if j not in claimed]
     order = list(range(n, m)) + unclaimed + claimed
     aug = [[row[j] for j in order] + [bi] for row, bi in zip(A, b)]
-    R, piv = la.rref(aug)
+    R, piv, ambiguous = la.rref_info(aug)
     rank = len([p for p in piv if p < m])
+    if ambiguous:   # interval values that cannot tell a pivot from zero: no claim here
+        return Solution("undecided", rank=rank)
     if m in piv:
         return Solution("inconsistent", rank=rank)
     row_of = {p: i for i, p in enumerate(piv)}

@@ -38,6 +38,7 @@ from typing import Mapping, Sequence
 import mpmath
 
 from ..exact import MP_DIGITS, is_zero
+from .errors import Undecidable
 from .sampling import (MAX_ATTEMPTS, Context, Sampler, Solution, System, manifold, same_values,
                        solve_model)
 
@@ -87,15 +88,19 @@ class Judgement:
     solutions: dict = field(default_factory=dict)
     parts: dict = field(default_factory=dict)
     bound: float = 0.0
+    how: str = ""            # how an "equal" was reached and how sure it is
+    refusal: str = ""        # why no verdict could be given (then neither equal nor different)
 
     @property
     def equivalent(self) -> bool:
-        return not self.faults and not self.reaction_faults
+        return not self.faults and not self.reaction_faults and not self.refusal
 
     def fault_of(self, model: str) -> list:
         return [f for f in self.faults if f.model == model]
 
     def summary(self) -> str:
+        if self.refusal:
+            return f"UNDECIDED: {self.refusal}"
         if self.equivalent:
             return f"all {len(self.models)} derivations agree"
         lines = []
@@ -151,24 +156,40 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
     with mpmath.workdps(MP_DIGITS):
         # the constraint manifold (static rows of massless bodies) is the reference's; other
         # models' static rows must hold on it
-        sampler = Sampler(systems, ctx, dependents=manifold(systems[:1], ctx))
+        try:
+            sampler = Sampler(systems, ctx, dependents=manifold(systems[:1], ctx))
+        except Undecidable as exc:
+            out = Judgement(dict(models), "refused", 0, 0, time.perf_counter() - t0)
+            out.refusal = f"the comparator cannot decide {exc.expr}: {exc.why}"
+            return out
+        form = sampler.form
+        wanted = _points_needed(form, points)
         rng = random.Random(seed)
-        good, verdict = 0, None
-        for point, _vals, parts, residues in sampler.points(rng, MAX_ATTEMPTS * points):
+        good, verdict, undecided = [], None, ""
+        for point, _vals, parts, residues in sampler.points(rng, MAX_ATTEMPTS * wanted):
             sols = {nm: solve_model(A, b, n, s.model.unknowns, claims.get(nm))
                     for nm, s, (A, b) in zip(names, systems, parts)}
+            if any(s.status == "undecided" for s in sols.values()):
+                continue   # interval values too wide here: no claim either way
             if all(s.status != "ok" for s in sols.values()):
                 continue   # a singular state of the motion itself: draw again
-            good += 1
             found = _faults_at(names, sols, dict(zip(names, zip(systems, residues))))
+            if found is not None and not _certain(form, point):
+                undecided = _where(form, point)
+                continue   # a difference only in a branch case nobody confirmed: no claim
+            good.append(point)
             if found is not None:
                 verdict = (point, dict(zip(names, parts)), sols, found)
                 break
-            if good == points:
+            if len(good) == wanted:
                 break
-    out = Judgement(dict(models), sampler.method, good, sampler.form.degree,
+    out = Judgement(dict(models), sampler.method, len(good), form.degree,
                     time.perf_counter() - t0)
-    if good == 0:
+    if not good:
+        if undecided:
+            out.refusal = ("the derivations differ only in a branch case that could not be "
+                           f"confirmed to occur ({undecided}); no verdict")
+            return out
         out.faults = [ModelFault(nm, "undetermined", (), "no derivation determines the "
                                  "accelerations at any sampled state: check that every "
                                  "coordinate has inertia and the reactions are independent")
@@ -176,8 +197,9 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
         out.odd = list(names)
         return out
     if verdict is None:
-        extra = 4 * sum(len(s.A) * s.size for s in systems) * max(sampler.form.degree, 1)
-        out.bound = sampler.form.false_equal_bound(good, extra)
+        extra = 4 * sum(len(s.A) * s.size for s in systems) * max(form.degree, 1)
+        out.bound = _bound(form, good, extra)
+        out.how = _describe(form, good, extra)
         out.groups = [tuple(names)]
         return out
     point, parts, sols, (groups, faults, rfaults, odd, majority) = verdict
@@ -185,6 +207,33 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
     out.groups, out.faults, out.reaction_faults = groups, faults, rfaults
     out.odd, out.majority = odd, majority
     return out
+
+
+def _points_needed(form, points: int) -> int:
+    need = getattr(form, "points_needed", None)
+    return max(points, need(points)) if need else points
+
+
+def _certain(form, point) -> bool:
+    check = getattr(form, "certain", None)
+    return True if check is None else check(point)
+
+
+def _where(form, point) -> str:
+    where = getattr(form, "where", None)
+    return (where(point) if where else "") or "a branch of the expressions"
+
+
+def _bound(form, good: list, extra: int) -> float:
+    try:
+        return form.false_equal_bound(good, extra)
+    except TypeError:
+        return form.false_equal_bound(len(good), extra)
+
+
+def _describe(form, good: list, extra: int) -> str:
+    describe = getattr(form, "describe", None)
+    return describe(good, extra) if describe else ""
 
 
 def _faults_at(names, sols: dict, statics: dict):
