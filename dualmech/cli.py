@@ -7,6 +7,7 @@
     dualmech show NAME [--latex] [--model M]       equations of motion and reactions
     dualmech report [--out DIR]                    everything, written to DIR
     dualmech grade NAME --answer TEXT              a typed answer, checked exactly
+    dualmech chart | atlas | fidelity NAME         work-precision, where methods fail, model ladder
 
 Exit status: 0 when every checked pair agrees, 1 when one disagrees (or cannot be built),
 2 for a usage error such as an unknown problem name.
@@ -107,7 +108,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=_cmd_report)
 
     from .grade.cli import register as _register_grade
+    from .numeric.commands import register as _register_numeric
     _register_grade(sub)
+    _register_numeric(sub)
     return parser
 
 
