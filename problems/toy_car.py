@@ -206,6 +206,20 @@ class ToyCar(Problem):
         lg.constraint("F_r", R - rho)
         return lg.equations()
 
+    # -- quantities a student may be asked for (dualmech grade) -----------------------------
+    def quantities(self) -> dict:
+        """Momenta of question (3)/(4) in the car frame B, for answers typed in ``i_B, j_B, k_B``."""
+        f = frames()
+        car = Particle("car", m, f.car)
+        inB = lambda vec: tuple(vec.express(f.B).components)  # noqa: E731
+        basis = ("i_B", "j_B", "k_B")
+        return {
+            "p": {"value": inB(car.linear_momentum(f.O)), "basis": basis,
+                  "description": "linear momentum of the car, in the car frame B"},
+            "h_O": {"value": inB(car.angular_momentum(f.o, f.O)), "basis": basis,
+                    "description": "angular momentum of the car about O, in the car frame B"},
+        }
+
     # -- the source's answers -------------------------------------------------------------
     def published(self) -> list[Published]:
         f = frames()
