@@ -1,0 +1,136 @@
+"""The report's per-problem chart: the simulated motion and the reactions, one panel per unit.
+
+:func:`trajectory_chart` simulates the problem's reference model over a span that fits its
+scene (:func:`~dualmech.numeric.contacts.scene_span`: it stops where a length coordinate
+leaves its declared range or a one-sided contact would have to pull) and draws
+
+* one panel per unit of the coordinates (lengths in m, angles in rad, ...), one per unit of
+  the reactions (forces in N, torques in N m), each axis labelled with its unit;
+* curves that coincide (to 1e-9 of the panel's scale) once, the legend naming all of them;
+* reactions that stay zero along the whole motion not drawn, but named under the chart.
+
+It returns a :class:`Chart` with the paths and the notes, or the reason it could not draw.
+
+Example
+-------
+>>> from problems import get                                        # doctest: +SKIP
+>>> trajectory_chart(get("block_on_wedge"), Path("out"), 5.0).notes   # doctest: +SKIP
+['simulated up to t = 0.49 s: q1 leaves its declared range [0, 2] ...']
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..dimensions import ANGLE
+from ..numeric.units import unit
+
+__all__ = ["Chart", "trajectory_chart", "group_curves"]
+
+#: Curves closer than this fraction of their panel's scale are the same curve; a reaction
+#: smaller than this fraction of the largest reaction (or of 1 N when all vanish) is zero.
+SAME = 1e-9
+
+_KIND = {"m": "position", "rad": "angle", "N": "force", "N m": "torque or moment"}
+
+
+@dataclass
+class Chart:
+    """What :func:`trajectory_chart` drew (``paths``, ``notes``) or why not (``error``)."""
+
+    paths: list = field(default_factory=list)
+    notes: list = field(default_factory=list)
+    error: str = ""
+    span: tuple = ()
+
+
+def group_curves(names, values, scale: float) -> list[list[str]]:
+    """Names grouped by identical curves (max difference <= SAME * scale), first-seen order."""
+    groups: list[list] = []
+    for name, v in zip(names, values):
+        for g in groups:
+            if np.abs(values[names.index(g[0])] - v).max() <= SAME * scale:
+                g.append(name)
+                break
+        else:
+            groups.append([name])
+    return groups
+
+
+def _panels(entries, kind_of):
+    """``{unit: [(name, values)]}`` in first-seen order."""
+    out: dict = {}
+    for name, values, dim in entries:
+        out.setdefault(kind_of(dim), []).append((name, values))
+    return out
+
+
+def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400) -> Chart:
+    """Simulate ``problem`` and draw its chart into ``out_dir/NAME_reactions.{png,svg}``."""
+    from ..numeric import simulate
+    from ..numeric.charts import pyplot, save
+    from ..numeric.contacts import scene_span
+    chart = Chart()
+    try:
+        span = scene_span(problem, duration)
+        traj = simulate(problem, t_span=(span.t0, span.t_end), samples=samples)
+    except Exception as exc:  # noqa: BLE001 - the verdicts do not depend on the chart
+        chart.error = f"simulation failed -- {type(exc).__name__}: {exc}"
+        return chart
+    chart.span = (span.t0, span.t_end)
+    chart.notes.append(f"simulated for t in [{span.t0:g}, {span.t_end:.3g}] s"
+                       + (f"; it stops there because {span.reason}" if span.reason else ""))
+    info = {c.name: c for c in problem.all_coordinates()}
+    coords = _panels([(n, q, info[n].dimension if n in info else None)
+                      for n, q in zip(traj.coordinate_names, traj.q)], _unit)
+    rinfo = problem.reaction_info()
+    reactions = dict(getattr(traj, "reactions", {}) or {})
+    biggest = max((float(np.abs(v).max()) for v in reactions.values()), default=0.0)
+    floor = SAME * max(biggest, 1.0)
+    zero = [k for k, v in reactions.items() if float(np.abs(v).max()) <= floor]
+    if zero:
+        chart.notes.append(f"{', '.join(zero)} = 0 along the whole motion (not drawn)")
+    forces = _panels([(k, v, rinfo[k].dimension if k in rinfo else None)
+                      for k, v in reactions.items() if k not in zero], _unit)
+    plt = pyplot()
+    count = len(coords) + len(forces)
+    fig, axes = plt.subplots(count, 1, figsize=(8, 2.4 * count + 0.8), sharex=True,
+                             squeeze=False)
+    axes = list(axes[:, 0])
+    title = f"{problem.name}: {problem.title}"
+    if not reactions:
+        title += " (no reaction unknowns)"
+    fig.suptitle(title, fontsize="medium")
+    for ax, (u, curves) in zip(axes, list(coords.items()) + list(forces.items())):
+        _draw(ax, u, curves, traj.t, chart)
+    axes[-1].set_xlabel("t [s]")
+    notes = [n[0].upper() + n[1:] + "." for n in chart.notes]
+    fig.text(0.01, 0.005, "\n".join(notes), fontsize="x-small", va="bottom", wrap=True)
+    fig.tight_layout(rect=(0, 0.025 + 0.028 * len(notes) * 3.2 / fig.get_figheight(), 1, 1))
+    chart.paths = save(fig, Path(out_dir) / f"{problem.name}_reactions", tight=False)
+    return chart
+
+
+def _unit(dimension) -> str:
+    if dimension is None:
+        return "?"
+    return "rad" if dimension == ANGLE else unit(dimension)
+
+
+def _draw(ax, u: str, curves, t, chart: Chart) -> None:
+    names = [n for n, _ in curves]
+    values = [np.asarray(v, dtype=float) for _, v in curves]
+    scale = max(float(np.abs(v).max()) for v in values) or 1.0
+    for group in group_curves(names, values, scale):
+        v = values[names.index(group[0])]
+        label = group[0] if len(group) == 1 else f"{' = '.join(group)} (identical)"
+        if len(group) > 1:
+            chart.notes.append(f"{' and '.join(group)} coincide along the whole motion "
+                               "(drawn once)")
+        ax.plot(t, v, label=label, linewidth=1.3)
+    kind = _KIND.get(u, "value")
+    ax.set_ylabel(f"{kind} [{u}]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize="small")
