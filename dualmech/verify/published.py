@@ -28,7 +28,7 @@ from ..exact import MP_DIGITS, is_zero
 from ..kinematics import t
 from .errors import Undecidable
 from .display import Budget, OverBudget, dotted, solve_display, tidy
-from .sampling import MAX_ATTEMPTS, Context, Sampler, System, manifold, solve_model
+from .sampling import MAX_ATTEMPTS, Context, Sampler, System, shared_manifold, solve_model
 
 __all__ = ["PublishedVerdict", "check_published", "closest_equation"]
 
@@ -89,7 +89,9 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
         items.append((pub, es, motion))
     symbols = tuple(ctx.unknown_symbols(unknowns))
     claims = claims or {}
-    deps = manifold(systems[:1], ctx)
+    every = [System.of(mapped[nm], coords) for nm in mapped if nm not in solvers]
+    deps = shared_manifold(systems + every, [nm in claims for nm in solvers] +
+                           [nm in claims for nm in mapped if nm not in solvers], ctx)
     # equations hold on the motion (its constraint manifold); expressions are identities of
     # the state, so with static rows they are also checked off the manifold
     groups = [(items, deps)]

@@ -221,6 +221,20 @@ def same_values(a: Sequence, b: Sequence) -> bool:
     return True
 
 
+def shared_manifold(systems: Sequence[System], partial: Sequence[bool], ctx: Context) -> list:
+    """The dependents of the reference's constraint manifold (``systems[0]``), when every
+    model that speaks for all coordinates has static rows too; else none.
+
+    A static row in one model where another has inertia is that model's fault, not a
+    constraint of the motion: without a shared manifold, points are drawn freely and such a
+    row is reported where it does not hold.
+    """
+    full = [s for s, p in zip(systems, partial) if not p]
+    if not systems[0].constraints or not all(s.constraints for s in full):
+        return []
+    return manifold(systems[:1], ctx)
+
+
 def manifold(systems: Sequence[System], ctx: Context) -> list:
     """Dependent variables ``[(symbol, expression)]`` that put a point on the motion's
     constraint manifold, from the static rows of the first system that has any.

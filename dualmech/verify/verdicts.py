@@ -39,8 +39,8 @@ import mpmath
 
 from ..exact import MP_DIGITS, is_zero
 from .errors import Undecidable
-from .sampling import (MAX_ATTEMPTS, Context, Sampler, Solution, System, manifold, same_values,
-                       solve_model)
+from .sampling import (MAX_ATTEMPTS, Context, Sampler, Solution, System, same_values,
+                       shared_manifold, solve_model)
 
 __all__ = ["Judgement", "ModelFault", "ReactionFault", "judge"]
 
@@ -157,7 +157,8 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
         # the constraint manifold (static rows of massless bodies) is the reference's; other
         # models' static rows must hold on it
         try:
-            sampler = Sampler(systems, ctx, dependents=manifold(systems[:1], ctx))
+            partial = [nm in claims for nm in names]
+            sampler = Sampler(systems, ctx, dependents=shared_manifold(systems, partial, ctx))
         except Undecidable as exc:
             out = Judgement(dict(models), "refused", 0, 0, time.perf_counter() - t0)
             out.refusal = f"the comparator cannot decide {exc.expr}: {exc.why}"
