@@ -95,6 +95,7 @@ from .verify import interval as _iv
 from .verify.branches import Case, find_cases, regions
 from .verify.circle import world_values
 from .verify.surd import Surd, independent, is_square
+from .verify.program import NotRationalProgram, compile_rational
 from .verify.world import (AtomKey, NotExact, Undecidable, World, analyse, degree_bound)
 
 __all__ = ["ExactForm", "Undecidable", "NotRational", "METHOD_NAMES", "CASE", "AtomKey",
@@ -155,9 +156,15 @@ class _FractionPrinter(PythonCodePrinter):
 
 
 def _compile(args, exprs):
-    printer = _FractionPrinter({"fully_qualified_modules": False, "inline": True})
-    return sp.lambdify(args, exprs, modules=[{"Fraction": Fraction}], printer=printer,
-                       cse=True, dummify=True)
+    """A function of ``args`` returning the values of ``exprs`` in exact arithmetic: a register
+    program after symengine's common-subexpression elimination (:mod:`.verify.program`), or
+    lambdify with Fraction constants for what that does not cover."""
+    try:
+        return compile_rational(args, exprs)
+    except NotRationalProgram:
+        printer = _FractionPrinter({"fully_qualified_modules": False, "inline": True})
+        return sp.lambdify(args, exprs, modules=[{"Fraction": Fraction}], printer=printer,
+                           cse=True, dummify=True)
 
 
 @dataclass
