@@ -39,6 +39,7 @@ from typing import Mapping, Sequence
 import numpy as np
 
 from .contacts import scene_span
+from .dae import STABILISATIONS
 from .formulations import Formulation, formulations
 from .integrators import METHODS, Run
 from .units import work_conjugate_unit
@@ -243,13 +244,16 @@ def _identical(runs: list[RunResult]) -> None:
 def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float] = TOLERANCES,
                    steps: Sequence[int] = STEPS, methods: Sequence[str] = METHODS,
                    models: Sequence[str] | None = None, samples: int = 101,
-                   params: Mapping | None = None, y0=None, progress: bool = True) -> WorkPrecision:
-    """The sweep of the module docstring over ``duration`` seconds (cut to fit the scene)."""
+                   params: Mapping | None = None, y0=None, progress: bool = True,
+                   stabilisations: Sequence[str] = STABILISATIONS) -> WorkPrecision:
+    """The sweep of the module docstring over ``duration`` seconds (cut to fit the scene);
+    ``models`` and ``stabilisations`` narrow the formulations."""
     from tqdm import tqdm
     scene = scene_span(problem, duration, y0, params)
     span = (scene.t0, scene.t_end)
     te = np.linspace(span[0], span[1], samples)
-    forms, skipped = formulations(problem, params, y0, models=models)
+    forms, skipped = formulations(problem, params, y0, models=models,
+                                  stabilisations=stabilisations)
     ref, ref_error = _reference(forms, span, te)
     units = {work_conjugate_unit(problem.reaction_info()[u.name].dimension)
              for f in forms if f.constrained for u in f.constrained.constraints.multipliers
