@@ -89,6 +89,7 @@ class ContactReport:
     t_end: float
     first: ContactBreak | None = None
     minimum: dict = field(default_factory=dict)
+    stopped: tuple | None = None
 
     def __str__(self) -> str:
         if not self.watched:
@@ -101,7 +102,7 @@ class ContactReport:
 
 
 def _reaction_functions(problem, values, names) -> dict:
-    """``{name: f(t, y) -> float}`` from the direct models in the reference coordinates."""
+    """``{name: (numeric model, row)}`` from the direct models in the reference coordinates."""
     out = {}
     for m in problem.models().values():
         if not m.unknowns:
@@ -112,14 +113,25 @@ def _reaction_functions(problem, values, names) -> dict:
         nm = NumericModel(m, values)
         for i, u in enumerate(m.unknowns):
             if u.name in names and u.name not in out:
-                out[u.name] = (lambda t, y, nm=nm, k=m.n + i, n=m.n:
-                               float(nm.solve(t, y[:n], y[n:])[k]))
+                out[u.name] = (nm, m.n + i)
     return out
 
 
+def _value(force, t, y) -> np.ndarray:
+    """A reaction at one state (a float) or at states in the columns of ``y``."""
+    nm, row = force
+    n = nm.n
+    return nm.solve(t, y[:n], y[n:])[row]
+
+
 def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = None,
-          rtol: float = 1e-9, atol: float = 1e-11, method: str = "DOP853") -> ContactReport:
-    """Integrate the reference model until a one-sided reaction changes sign (or the end)."""
+          rtol: float = 1e-9, atol: float = 1e-11, method: str = "DOP853",
+          extra_events: Sequence = ()) -> ContactReport:
+    """Integrate the reference model until a one-sided reaction changes sign (or the end).
+
+    ``extra_events`` are more terminal events (each with a ``what`` attribute); the first to
+    fire is reported in ``ContactReport.stopped`` as ``(what, time)``.
+    """
     values = problem_parameters(problem, params)
     watched = unilateral_of(problem)
     ref = problem.model(problem.reference)
@@ -133,36 +145,39 @@ def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = No
     report = ContactReport({k: watched[k] for k in names}, float(t_span[1]))
     coords = [q.func.__name__ for q in ref.coordinates]
     for k in names:
-        value = forces[k](t_span[0], y0)
+        value = float(_value(forces[k], t_span[0], y0))
         report.minimum[k] = (value, float(t_span[0]))
         if value < 0:
             report.first = ContactBreak(k, float(t_span[0]), dict(zip(coords, y0[:n])),
                                         watched[k], at_start=True)
             report.t_end = float(t_span[0])
             return report
-    if not names:
+    if not names and not extra_events:
         return report
     events = []
     for k in names:
-        ev = (lambda t, y, f=forces[k]: f(t, y))
+        ev = (lambda t, y, f=forces[k]: float(_value(f, t, y)))
         ev.terminal, ev.direction = True, -1
         events.append(ev)
     model = NumericModel(ref, values)
     sol = solve_ivp(model.rhs, tuple(t_span), y0, method=method, rtol=rtol, atol=atol,
-                    events=events, dense_output=True)
+                    events=events + list(extra_events), dense_output=True)
     if sol.status < 0:
         raise SingularityError(f"integration of `{problem.name}` failed: {sol.message}")
     report.t_end = float(sol.t[-1])
     grid = np.linspace(t_span[0], report.t_end, 400)
     states = sol.sol(grid)
     for k in names:
-        vals = np.array([forces[k](s, states[:, j]) for j, s in enumerate(grid)])
+        vals = np.asarray(_value(forces[k], grid, states), dtype=float)
         j = int(np.argmin(vals))
         report.minimum[k] = (float(vals[j]), float(grid[j]))
     for k, times, ys in zip(names, sol.t_events, sol.y_events):
         if len(times):
             report.first = ContactBreak(k, float(times[0]), dict(zip(coords, ys[0][:n])),
                                         watched[k])
+    for ev, times in zip(extra_events, sol.t_events[len(names):]):
+        if len(times) and (report.stopped is None or times[0] < report.stopped[1]):
+            report.stopped = (ev.what, float(times[0]))
     return report
 
 
@@ -201,21 +216,14 @@ def scene_span(problem, duration: float, y0=None, params: Mapping | None = None,
     """
     values = problem_parameters(problem, params)
     ref = problem.model(problem.reference)
-    if y0 is None:
-        q0, qd0 = default_initial_state(problem)
-        y0 = q0 + qd0
-    y0 = np.asarray(y0, dtype=float)
-    end, reason = t0 + float(duration), ""
-    events = _range_events(problem, ref, values)
-    if events:
-        sol = solve_ivp(NumericModel(ref, values).rhs, (t0, end), y0, method="DOP853",
-                        rtol=1e-9, atol=1e-11, events=events)
-        for ev, times in zip(events, sol.t_events or []):
-            if len(times) and times[0] < end:
-                end, reason = float(times[0]), f"{ev.what} at t = {times[0]:.3g} s"
-    contact = watch(problem, (t0, end), y0, params)
-    if contact.first is not None and contact.first.time < end:
-        end = contact.first.time
-        reason = f"{contact.first.reaction} would have to change sign at t = {end:.3g} s: " \
-                 f"{contact.first.meaning}"
-    return SceneSpan(t0, end, reason)
+    end = t0 + float(duration)
+    report = watch(problem, (t0, end), y0, params,
+                   extra_events=_range_events(problem, ref, values))
+    if report.first is not None:
+        return SceneSpan(t0, report.first.time,
+                         f"{report.first.reaction} would have to change sign at t = "
+                         f"{report.first.time:.3g} s: {report.first.meaning}")
+    if report.stopped is not None:
+        what, when = report.stopped
+        return SceneSpan(t0, when, f"{what} at t = {when:.3g} s")
+    return SceneSpan(t0, end, "")
