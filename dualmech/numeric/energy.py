@@ -44,7 +44,7 @@ from ..equations import EquationSet, ModelError, from_plain, state_symbols
 from ..exact import ExactForm, is_zero
 from ..kinematics import t
 from ..verify.world import Undecidable
-from .model import NumericModel, StateFunction
+from .model import StateFunction
 
 __all__ = ["EnergyFunction", "conservative_reason", "dynamic_rows", "identically_zero"]
 
