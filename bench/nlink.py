@@ -3,7 +3,7 @@ derivations alone, with fitted growth exponents.
 
 For each ``n`` (default 2, 5, 10, 15, 20), time in the same run, every measurement in a fresh
 Python process (so sympy's and symengine's caches start empty each repeat) killed at a hard
-limit (printed ``> limit``):
+wall-clock limit (then printed ``> s``, the wall and CPU seconds it had spent: lower bounds):
 
 * **ours**: ``NLinkPendulum(n, cartesian=False)`` from ``problems/n_link_pendulum.py`` -- its
   ``newton_euler()`` (free-body diagrams, the n rod tensions as reactions) and ``lagrange()``
@@ -38,10 +38,12 @@ import json
 import math
 import os
 import random
+import resource
 import statistics
 import subprocess
 import sys
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -159,7 +161,8 @@ def check(n: int) -> str:
 
 
 def child(which: str, n: int) -> None:
-    """Run one pipeline once and print ``{"wall": s, "cpu": s}`` (or the check's message)."""
+    """Run one pipeline once: print ``{"start": ...}`` when the timing starts, then
+    ``{"wall": s, "cpu": s}`` (or the check's message)."""
     sys.path.insert(0, str(ROOT))
     sys.setrecursionlimit(max(sys.getrecursionlimit(), 10_000))
     import sympy  # noqa: F401  (imports outside the timing)
@@ -172,27 +175,62 @@ def child(which: str, n: int) -> None:
         return
     fn = {"ours": ours, "kane": kane, "lagrange": lagrange}[which]
     clear_cache()
+    print(json.dumps({"start": time.time(), "cpu0": time.process_time()}), flush=True)
     w0, c0 = time.perf_counter(), time.process_time()
     fn(n)
     print(json.dumps({"wall": time.perf_counter() - w0, "cpu": time.process_time() - c0}))
 
 
 # -- the parent: processes, medians, table ---------------------------------------------------
-def measure(which: str, n: int, limit: float) -> dict | None:
-    """One fresh process; ``None`` when it passes ``limit`` seconds (it is killed)."""
+@dataclass(frozen=True)
+class Figure:
+    """Seconds; ``exact=False``: the run was killed, ``value`` is a lower bound."""
+
+    value: float
+    exact: bool = True
+
+    def __str__(self) -> str:
+        return f"{self.value:.3f}" if self.exact else f"> {self.value:.1f}"
+
+
+def _children_cpu() -> float:
+    ru = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return ru.ru_utime + ru.ru_stime
+
+
+def measure(which: str, n: int, limit: float) -> dict:
+    """One fresh process: ``{"wall": Figure, "cpu": Figure}``, or ``{"message": ...}``.
+
+    Past ``limit`` seconds the process is killed and the figures are lower bounds: the wall
+    clock and the CPU time it had spent since its timing started (its imports excluded).
+    """
+    cpu_before = _children_cpu()
+    proc = subprocess.Popen([sys.executable, __file__, "--child", which, str(n)], cwd=ROOT,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
-        done = subprocess.run([sys.executable, __file__, "--child", which, str(n)],
-                              capture_output=True, text=True, timeout=limit, cwd=ROOT)
+        out, err = proc.communicate(timeout=limit)
     except subprocess.TimeoutExpired:
-        return None
-    if done.returncode != 0:
-        raise RuntimeError(f"{which} at n = {n} failed:\n{done.stderr[-3000:]}")
-    return json.loads(done.stdout.strip().splitlines()[-1])
+        proc.kill()
+        killed = time.time()
+        out, err = proc.communicate()
+        lines = [json.loads(x) for x in out.split("\n") if x.startswith("{")]
+        if not lines:
+            raise RuntimeError(f"{which} at n = {n} did not start within {limit:g} s") from None
+        start = lines[0]
+        spent = _children_cpu() - cpu_before - start["cpu0"]
+        return {"wall": Figure(killed - start["start"], False), "cpu": Figure(spent, False)}
+    if proc.returncode != 0:
+        raise RuntimeError(f"{which} at n = {n} failed:\n{err[-3000:]}")
+    last = json.loads(out.strip().splitlines()[-1])
+    if "message" in last:
+        return last
+    return {"wall": Figure(last["wall"]), "cpu": Figure(last["cpu"])}
 
 
 def exponent(ns: list, times: list) -> float | None:
-    """Least-squares slope of ``log time`` against ``log n``; ``None`` below two points."""
-    pts = [(math.log(n), math.log(t)) for n, t in zip(ns, times) if t is not None]
+    """Least-squares slope of ``log time`` against ``log n`` over the exact figures."""
+    pts = [(math.log(n), math.log(t.value)) for n, t in zip(ns, times)
+           if t is not None and t.exact]
     if len(pts) < 2:
         return None
     mx = statistics.fmean(x for x, _ in pts)
@@ -201,26 +239,29 @@ def exponent(ns: list, times: list) -> float | None:
     return sum((x - mx) * (y - my) for x, y in pts) / sxx
 
 
-def _fmt(v: float | None, limit: float) -> str:
-    return f"> {limit:g}" if v is None else f"{v:.3f}"
-
-
-def _ratio(a: float | None, b: float | None, limit: float) -> str:
-    """ours / peer; a bound when one side ran out of time."""
-    if a is None and b is None:
+def _ratio(a: Figure | None, b: Figure | None) -> str:
+    """ours / peer; a bound when one side was killed."""
+    if a is None or b is None or (not a.exact and not b.exact):
         return "?"
-    if a is None:
-        return f"> {limit / b:.3g}"
-    if b is None:
-        return f"< {a / limit:.3g}"
-    return f"{a / b:.3f}"
+    if not a.exact:
+        return f"> {a.value / b.value:.3g}"
+    if not b.exact:
+        return f"< {a.value / b.value:.3g}"
+    return f"{a.value / b.value:.3f}"
+
+
+def _median(runs: list, key: str) -> Figure:
+    if any(not r[key].exact for r in runs):
+        return next(r[key] for r in runs if not r[key].exact)
+    return Figure(statistics.median(r[key].value for r in runs))
 
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--ns", type=int, nargs="+", default=[2, 5, 10, 15, 20])
     ap.add_argument("--repeat", type=int, default=3, help="processes per figure (median)")
-    ap.add_argument("--limit", type=float, default=120.0, help="seconds before a run is killed")
+    ap.add_argument("--limit", type=float, default=120.0,
+                    help="wall-clock seconds before a run is killed")
     ap.add_argument("--no-check", action="store_true", help="skip the peers' correctness check")
     ap.add_argument("--child", nargs=2, metavar=("WHICH", "N"), help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
@@ -228,46 +269,43 @@ def main(argv=None) -> int:
         child(args.child[0], int(args.child[1]))
         return 0
     if not args.no_check:
-        res = measure("check", min(args.ns), max(args.limit, 300.0))
-        print(res["message"] if res else f"check at n = {min(args.ns)}: > limit")
-    print(f"medians over {args.repeat} fresh processes; limit {args.limit:g} s per run; "
-          f"load = 1-minute load average before the row ({os.cpu_count()} CPUs)")
+        print(measure("check", min(args.ns), max(args.limit, 300.0))["message"])
+    print(f"medians over {args.repeat} fresh processes; a run is killed after {args.limit:g} s "
+          f"(then '> s': what it had spent); load = 1-minute load average before the row "
+          f"({os.cpu_count()} CPUs)")
     ns = sorted(args.ns)
     wall = {p: {} for p in PIPELINES}
     cpu = {p: {} for p in PIPELINES}
     gave_up = set()
     head = (f"{'n':>3s} {'load':>5s} | {'ours':>9s} {'Kane':>9s} {'Lagrange':>9s} | "
-            f"{'ours/Kane':>9s} {'ours/Lagr':>9s} | wall clock (s)")
-    print(head)
+            f"{'ours/Kane':>9s} {'ours/Lagr':>9s} |")
+    print(head + " wall clock (s)")
     rows = []
     for n in ns:
         load = os.getloadavg()[0]
         for p in PIPELINES:
+            wall[p][n] = cpu[p][n] = None
             if p in gave_up:
-                wall[p][n] = cpu[p][n] = None
-                continue
+                continue                 # killed at a smaller n: larger n only run longer
             runs = []
             for _ in range(args.repeat):
-                r = measure(p, n, args.limit)
-                if r is None:
-                    runs = None
-                    gave_up.add(p)    # larger n would only run longer
+                runs.append(measure(p, n, args.limit))
+                if not runs[-1]["wall"].exact:
+                    gave_up.add(p)
                     break
-                runs.append(r)
-            wall[p][n] = None if runs is None else statistics.median(r["wall"] for r in runs)
-            cpu[p][n] = None if runs is None else statistics.median(r["cpu"] for r in runs)
+            wall[p][n], cpu[p][n] = _median(runs, "wall"), _median(runs, "cpu")
         rows.append((n, load))
-        print(_row(n, load, wall, args.limit), flush=True)
+        print(_row(n, load, wall), flush=True)
     print("\nsame runs, CPU time of the process (s):")
-    print(head.replace("wall clock (s)", "CPU (s)"))
+    print(head + " CPU (s)")
     for n, load in rows:
-        print(_row(n, load, cpu, args.limit))
+        print(_row(n, load, cpu))
     print("\ngrowth exponent p (time ~ n^p, least squares over the n that finished):")
     for label, table in (("wall", wall), ("CPU", cpu)):
         parts = []
         for p in PIPELINES:
             e = exponent(ns, [table[p][n] for n in ns])
-            done = [n for n in ns if table[p][n] is not None]
+            done = [n for n in ns if table[p][n] is not None and table[p][n].exact]
             parts.append(f"{p} {'-' if e is None else f'{e:.2f}'} (n = "
                          f"{', '.join(map(str, done))})")
         print(f"  {label:4s}: " + "; ".join(parts))
@@ -278,44 +316,51 @@ def main(argv=None) -> int:
     return 0
 
 
+def _le(a: Figure | None, b: Figure | None, factor: float = 1.0) -> bool | None:
+    """Is ``a <= factor * b``?  ``None`` when a killed run leaves it open."""
+    if a is None or b is None:
+        return None
+    if a.exact and b.exact:
+        return a.value <= factor * b.value
+    if a.exact:                            # b is at least b.value
+        return True if a.value <= factor * b.value else None
+    if b.exact:                            # a is at least a.value
+        return False if a.value > factor * b.value else None
+    return None
+
+
 def targets(ns: list, wall: dict, cpu: dict) -> list[str]:
-    """Each target of issue 5 judged on both clocks: ``met``, ``NOT met`` or ``not run``."""
-    def verdict(ok) -> str:
-        return "not run" if ok is None else ("met" if ok else "NOT met")
-
+    """Each target of issue 5 judged on both clocks: ``met``, ``NOT met`` or ``open``."""
     def both(test) -> str:
-        return " | ".join(verdict(test(t)) for t in (wall, cpu))
-
-    def le(a, b, factor=1.0):
-        if a is None:
-            return None if b is None else False
-        return True if b is None else a <= factor * b
+        return " | ".join({True: "met", False: "NOT met", None: "open"}[test(t)]
+                          for t in (wall, cpu))
 
     out = []
     for n in (10, 20):
         if n not in ns:
             continue
         out.append(f"n = {n}: ours <= Kane's derivation: "
-                   + both(lambda t: le(t["ours"][n], t["kane"][n])))
+                   + both(lambda t: _le(t["ours"][n], t["kane"][n])))
         out.append(f"n = {n}: ours <= 1/10 of LagrangesMethod's: "
-                   + both(lambda t: le(t["ours"][n], t["lagrange"][n], 0.1)))
+                   + both(lambda t: _le(t["ours"][n], t["lagrange"][n], 0.1)))
     if 20 in ns:
-        out.append("n = 20 under a minute: " + both(
-            lambda t: None if t["ours"][20] is None else t["ours"][20] < 60))
+        out.append("n = 20 under a minute: "
+                   + both(lambda t: _le(t["ours"][20], Figure(60.0))))
 
-    def slower(t):
-        e = [exponent([n for n in ns if t[p][n] is not None and t["kane"][n] is not None],
-                      [t[p][n] for n in ns if t[p][n] is not None and t["kane"][n] is not None])
-             for p in ("ours", "kane")]
+    def flatter(t) -> bool | None:
+        both_done = [n for n in ns if all(t[p][n] is not None and t[p][n].exact
+                                          for p in ("ours", "kane"))]
+        e = [exponent(both_done, [t[p][n] for n in both_done]) for p in ("ours", "kane")]
         return None if None in e else e[0] <= e[1]
-    out.append("growth exponent <= Kane's (over the n both finished): " + both(slower))
+    out.append("growth exponent <= Kane's (over the n both finished): " + both(flatter))
     return out
 
 
-def _row(n: int, load: float, table: dict, limit: float) -> str:
+def _row(n: int, load: float, table: dict) -> str:
     o, k, lg = (table[p][n] for p in PIPELINES)
-    return (f"{n:3d} {load:5.2f} | {_fmt(o, limit):>9s} {_fmt(k, limit):>9s} "
-            f"{_fmt(lg, limit):>9s} | {_ratio(o, k, limit):>9s} {_ratio(o, lg, limit):>9s} |")
+    cell = lambda f: "not run" if f is None else str(f)  # noqa: E731
+    return (f"{n:3d} {load:5.2f} | {cell(o):>9s} {cell(k):>9s} {cell(lg):>9s} | "
+            f"{_ratio(o, k):>9s} {_ratio(o, lg):>9s} |")
 
 
 if __name__ == "__main__":
