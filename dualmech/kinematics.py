@@ -166,10 +166,11 @@ class Frame:
         return self.chain()[0]
 
     def rotation_to_root(self) -> sp.Matrix:
-        """``R`` with ``v_root = R v_self``."""
-        R = sp.eye(3)
-        for f in self.chain()[1:]:
-            R = R * f.rotation
+        """``R`` with ``v_root = R v_self`` (computed once: a frame's rotation never changes)."""
+        R = self.__dict__.get("_to_root")
+        if R is None:
+            R = self.parent.rotation_to_root() * self.rotation if self.parent else sp.eye(3)
+            self._to_root = R
         return R
 
     def dcm(self, other: "Frame") -> sp.Matrix:
@@ -181,7 +182,11 @@ class Frame:
             return self.rotation
         if self is other.parent:
             return other.rotation.T
-        return other.rotation_to_root().T * self.rotation_to_root()
+        cache = self.__dict__.setdefault("_dcm", {})
+        hit = cache.get(id(other))
+        if hit is None or hit[0] is not other:
+            hit = cache[id(other)] = (other, other.rotation_to_root().T * self.rotation_to_root())
+        return hit[1]
 
     def ang_vel_in(self, other: "Frame") -> "Vector":
         """Angular velocity of this frame relative to ``other``, from the rotation matrices."""
