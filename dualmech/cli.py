@@ -364,90 +364,20 @@ def _verdict_counts(verdicts) -> str:
 
 
 def _cmd_report(args) -> int:
+    from .report import write_report
     out: Path = args.out
     out.mkdir(parents=True, exist_ok=True)
-    results, charts = [], {}
-    for problem in _progress(_catalogue().all_problems(), "report"):
+    results = []
+    for problem in _progress(_catalogue().all_problems(), "checking"):
         c = _compare(problem, args.points, args.seed)
         results.append((problem, c))
         (out / f"{problem.name}.json").write_text(_json(c.to_dict()) + "\n")
-        charts[problem.name] = _chart(problem, out / f"{problem.name}_reactions.png",
-                                      args.duration)
     print(_summary(results))
-    (out / "report.md").write_text(_markdown(results, charts, args))
-    drawn = sum(1 for v in charts.values() if v is None)
-    print(f"\nwrote {out / 'report.md'}, {len(results)} JSON files and {drawn} charts "
-          f"to {out}/")
-    for name, failed in charts.items():
-        if failed is not None:
-            print(f"no chart for {name}: {failed}")
+    w = write_report([c for _, c in results], out, args.duration)
+    print(f"\nwrote {w.markdown}, {w.html}, {len(results)} JSON files and "
+          f"{len(w.charts) - len(w.failed)} charts to {out}/")
+    for name, why in w.failed.items():
+        print(f"no chart for {name}: {why}")
     return EXIT_OK if all(c.equivalent for _, c in results) else EXIT_DISAGREE
 
 
-def _markdown(results, charts, args) -> str:
-    ok = sum(1 for _, c in results if c.equivalent)
-    lines = ["# dualmech report", "",
-             f"{ok} of {len(results)} problems: every model agrees with the reference model "
-             f"({args.points} random exact points per comparison, seed {args.seed}).", "",
-             _summary(results, markdown=True), ""]
-    for problem, c in results:
-        name = problem.name
-        lines += [f"## {name}", "", "```", str(c), "```", ""]
-        failed = charts.get(name)
-        if failed is None:
-            lines += [f"![{name}: simulated trajectory and reactions]({name}_reactions.png)", ""]
-        else:
-            lines += [f"No chart: {failed}", ""]
-    return "\n".join(lines)
-
-
-def _label(name, dimension) -> str:
-    """``name [unit]`` for a chart legend (SI names for the common dimensions)."""
-    if dimension is None:
-        return str(name)
-    from .dimensions import ANGLE, FORCE, LENGTH, TORQUE, format_dimension, reduce
-    if dimension == ANGLE:
-        return f"{name} [rad]"
-    units = {reduce(LENGTH): "m", reduce(FORCE): "N", reduce(TORQUE): "N m"}
-    try:
-        unit = units.get(reduce(dimension)) or format_dimension(dimension)
-    except TypeError:
-        return str(name)
-    return f"{name} [{unit}]"
-
-
-def _chart(problem, path: Path, duration: float) -> str | None:
-    """Simulate ``problem`` and plot its coordinates and reactions; the error text if it fails."""
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        from .numeric import simulate
-        traj = simulate(problem, t_span=(0.0, duration))
-    except Exception as exc:  # reported in report.md; the verdicts do not depend on it
-        return f"simulation failed -- {type(exc).__name__}: {exc}"
-    reactions = dict(getattr(traj, "reactions", {}) or {})
-    panels = 2 if reactions else 1
-    fig, axes = plt.subplots(panels, 1, figsize=(8, 3.2 * panels), sharex=True, squeeze=False)
-    coordinates = {c.name: c for c in problem.all_coordinates()}
-    reaction_info = problem.reaction_info()
-    ax = axes[0, 0]
-    for name, q in zip(traj.coordinate_names, traj.q):
-        info = coordinates.get(str(name))
-        ax.plot(traj.t, q, label=_label(name, info.dimension if info else None))
-    ax.set_ylabel("coordinates")
-    ax.legend(loc="best", fontsize="small")
-    ax.set_title(f"{problem.name}: {problem.title}"
-                 + ("" if reactions else " (no reaction unknowns)"), fontsize="medium")
-    if reactions:
-        ax = axes[1, 0]
-        for name, values in reactions.items():
-            info = reaction_info.get(str(name))
-            ax.plot(traj.t, values, label=_label(name, info.dimension if info else None))
-        ax.set_ylabel("reactions")
-        ax.legend(loc="best", fontsize="small")
-    axes[-1, 0].set_xlabel("t [s]")
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return None

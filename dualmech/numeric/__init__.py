@@ -24,7 +24,7 @@ from importlib import import_module
 _HOME = {
     "_cache": ("cache_dir",),
     "model": ("NumericModel", "SingularityError", "StateFunction"),
-    "simulate": ("Trajectory", "check_t_span", "default_initial_state", "problem_parameters",
+    "simulation": ("Trajectory", "check_t_span", "default_initial_state", "problem_parameters",
                  "reactions_along", "reactions_at", "right_hand_side", "simulate"),
 }
 _WHERE = {name: module for module, names in _HOME.items() for name in names}

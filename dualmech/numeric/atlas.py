@@ -163,7 +163,7 @@ def _chaos(problem):
     if ref.n < 2:
         raise _NotApplicable("one degree of freedom: no chaos")
     from .energy import conservative_reason
-    from .simulate import problem_parameters
+    from .simulation import problem_parameters
     why = conservative_reason(ref, problem_parameters(problem))
     if why is not None:
         raise _NotApplicable(f"the reference model does not conserve energy ({why}); the "

@@ -32,7 +32,7 @@ from scipy.integrate import solve_ivp
 
 from ..dimensions import ANGLE, reduce
 from .model import NumericModel, SingularityError
-from .simulate import default_initial_state, problem_parameters
+from .simulation import default_initial_state, problem_parameters
 
 __all__ = ["UNILATERAL", "ContactBreak", "ContactReport", "unilateral_of", "watch",
            "scene_span", "SceneSpan"]

@@ -37,7 +37,7 @@ from .formulations import formulations
 from .integrators import integrate
 from .model import NumericModel
 from .regimes import _stable_equilibrium, jacobian
-from .simulate import default_initial_state, problem_parameters
+from .simulation import default_initial_state, problem_parameters
 
 __all__ = ["Rung", "Ladder", "ladder", "LADDERS", "has_ladder"]
 

@@ -36,7 +36,7 @@ from .dae import STABILISATIONS, ConstrainedModel, constraints_of
 from .energy import EnergyFunction, conservative_reason, dynamic_rows
 from .integrators import Run, integrate
 from .model import NumericModel, StateFunction
-from .simulate import default_initial_state, problem_parameters
+from .simulation import default_initial_state, problem_parameters
 
 __all__ = ["Formulation", "formulations", "state_scales", "outside_parameters"]
 
@@ -185,7 +185,7 @@ def formulations(problem, params: Mapping | None = None, y0=None,
     """The problem's formulations and ``{model: why it is not one}`` for the rest.
 
     ``y0`` is the initial state in the reference coordinates (default
-    :func:`~dualmech.numeric.simulate.default_initial_state`); ``models`` limits the models.
+    :func:`~dualmech.numeric.simulation.default_initial_state`); ``models`` limits the models.
     The reference model comes first.  ``strict=False`` lets ``params`` leave the declared
     ranges (:func:`outside_parameters`).
     """

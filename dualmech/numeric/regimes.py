@@ -33,7 +33,7 @@ from scipy.optimize import brentq, root
 from ..dimensions import STIFFNESS, reduce
 from .formulations import formulations
 from .integrators import EXPLICIT
-from .simulate import problem_parameters
+from .simulation import problem_parameters
 
 __all__ = ["stability_radius", "jacobian", "Stiffness", "stiffness", "STIFF_SCENES",
            "Linearisation", "linearisation", "Chaos", "chaos", "Drift", "dae_drift"]

@@ -44,7 +44,7 @@ from ..dimensions import ANGLE
 from .formulations import Formulation, formulations
 from .integrators import Run
 from .model import NumericModel, SingularityError, StateFunction
-from .simulate import problem_parameters
+from .simulation import problem_parameters
 from .units import unit
 
 __all__ = ["KAPPA_LIMIT", "GARBAGE", "Scan", "SingularPoint", "ProbeRun", "Probe", "scan", "probe", "PROBES",

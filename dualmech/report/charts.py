@@ -69,7 +69,7 @@ def _panels(entries, kind_of):
 
 def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400) -> Chart:
     """Simulate ``problem`` and draw its chart into ``out_dir/NAME_reactions.{png,svg}``."""
-    from ..numeric.simulate import simulate
+    from ..numeric.simulation import simulate
     from ..numeric.charts import pyplot, save
     from ..numeric.contacts import scene_span
     chart = Chart()
