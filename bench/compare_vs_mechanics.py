@@ -1,0 +1,85 @@
+"""``compare(problem)`` against the sympy.physics.mechanics route, problem by problem.
+
+For every peer pipeline in ``bench/peers/`` (``PROBLEM`` and ``run()``: LagrangesMethod, and
+KanesMethod with auxiliary speeds for the reactions, equivalence by LUsolve + simplify), time in
+the same run, medians over repeats, sympy's cache cleared before each repeat:
+
+* ours, verdicts: ``compare(problem)`` -- every derivation, the exact verdict, the reactions
+  shared by two models compared, every printed answer judged;
+* ours, with display: the same plus the symbolic accelerations and reaction formulas a report
+  shows (``c.accelerations``, ``c.reactions``);
+* the peer's ``run()``.
+
+Prints the ratios ours / peer.  Usage: ``python bench/compare_vs_mechanics.py [--repeat N]
+[NAME ...]`` (needs ``pip install -e '.[bench]'`` for nothing beyond sympy; run from the
+repository root).
+"""
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import statistics
+import sys
+import time
+from pathlib import Path
+
+from sympy.core.cache import clear_cache
+
+ROOT = Path(__file__).resolve().parent
+sys.path.insert(0, str(ROOT.parent))
+
+from dualmech.compare import compare  # noqa: E402
+from problems import get  # noqa: E402
+
+
+def _peer(path: Path):
+    spec = importlib.util.spec_from_file_location(f"peer_{path.stem}", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def _median(fn, repeat: int) -> float:
+    times = []
+    for _ in range(repeat):
+        clear_cache()
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("names", nargs="*", help="problems (default: every peer in bench/peers)")
+    ap.add_argument("--repeat", type=int, default=3, help="repeats per timing (median)")
+    args = ap.parse_args(argv)
+    peers = sorted((ROOT / "peers").glob("*.py"))
+    if args.names:
+        peers = [p for p in peers if p.stem in args.names]
+    rows = []
+    print(f"{'problem':26s} {'ours (s)':>9s} {'+display':>9s} {'peer (s)':>9s} "
+          f"{'ratio':>7s} {'ratio+display':>13s}")
+    for path in peers:
+        mod = _peer(path)
+        verdict = _median(lambda: compare(get(mod.PROBLEM)), args.repeat)
+
+        def full():
+            c = compare(get(mod.PROBLEM))
+            c.accelerations, c.reactions  # noqa: B018 - the display a report shows
+
+        shown = _median(full, args.repeat)
+        peer = _median(mod.run, args.repeat)
+        rows.append((mod.PROBLEM, verdict, shown, peer))
+        print(f"{mod.PROBLEM:26s} {verdict:9.3f} {shown:9.3f} {peer:9.3f} "
+              f"{verdict / peer:7.2f} {shown / peer:13.2f}", flush=True)
+    if rows:
+        ratios = [v / p for _, v, _, p in rows]
+        print(f"\nmedian ratio ours / peer: {statistics.median(ratios):.2f} "
+              f"(with display {statistics.median([s / p for _, _, s, p in rows]):.2f}); "
+              f"total ours {sum(r[1] for r in rows):.1f} s, peers {sum(r[3] for r in rows):.1f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
