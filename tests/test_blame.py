@@ -284,8 +284,6 @@ def test_cart_pendulum_dashpot_on_the_wrong_coordinate():
         assert mm.residual.strip() != "0"
 
 
-@pytest.mark.xfail(strict=True, reason="residuals shown unsimplified: sin(theta)**6 and "
-                   "(sin^2 + cos^2) powers over a page instead of c_t*x'")
 def test_cart_pendulum_dashpot_residuals_are_simplified():
     from dualmech.verify.display import dotted
     wrong = mismatches_of(compared(CartPendulumDashpotOnX), "lagrange")
