@@ -38,7 +38,7 @@ Example
 >>> cat = catalogue(ProblemContext.of(get("toy_car")))
 >>> [n for n in cat if not n.startswith("(")]  # doctest: +NORMALIZE_WHITESPACE
 ['eom', 'equation', 'equation:theta', 'equation:phi', "theta''", "phi''", 'F_r', 'KE', 'T',
- 'PE', 'V', 'L', 'Q_theta', 'Q_phi', 'Q', 'linearised']
+ 'PE', 'V', 'L', 'Q_theta', 'Q_phi', 'Q', 'linearised', 'p', 'h_O']
 """
 from __future__ import annotations
 
