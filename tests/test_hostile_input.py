@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import math
 import tempfile
-import uuid
 import warnings
 from pathlib import Path
 
@@ -36,7 +35,8 @@ from dualmech import (EquationSet, Frame, Lagrangian, MassProperties, NewtonEule
 from dualmech.dimensions import ACCELERATION, FORCE, LENGTH, MASS, STIFFNESS
 from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
 
-MARKER = Path(tempfile.gettempdir()) / f"PWNED_{uuid.uuid4().hex}"
+# the same name in every xdist worker (parametrize ids must agree); removed before each check
+MARKER = Path(tempfile.gettempdir()) / "PWNED_dualmech_hostile_input"
 
 #: hostile values given to every expression-taking argument
 HOSTILE = {
