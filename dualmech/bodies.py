@@ -28,7 +28,7 @@ from typing import Iterable
 
 import sympy as sp
 
-from ._expr import as_expr, as_matrix
+from ._expr import as_expr, as_matrix, refuse_text, refuse_text_in
 from .kinematics import Frame, Point, Vector
 
 __all__ = [
@@ -52,36 +52,43 @@ def _diag_about(axis: int, along, across) -> sp.Matrix:
     return sp.diag(*d)
 
 
+@refuse_text
 def point_mass(m) -> sp.Matrix:
     """Inertia of a point mass about itself: zero."""
     return sp.zeros(3, 3)
 
 
+@refuse_text
 def thin_rod(m, length, axis: str = "z") -> sp.Matrix:
     """Thin rod of mass ``m`` along ``axis``, about its centre: ``m L^2/12`` across, 0 along."""
     return _diag_about(_axis(axis), 0, m * length**2 / 12)
 
 
+@refuse_text
 def thin_disk(m, radius, normal: str = "z") -> sp.Matrix:
     """Thin disk with its face normal along ``normal``: ``m r^2/2`` about the normal, ``m r^2/4`` across."""
     return _diag_about(_axis(normal), m * radius**2 / 2, m * radius**2 / 4)
 
 
+@refuse_text
 def solid_cylinder(m, radius, length, axis: str = "z") -> sp.Matrix:
     """Solid cylinder: ``m r^2/2`` about its axis, ``m(3r^2 + L^2)/12`` across."""
     return _diag_about(_axis(axis), m * radius**2 / 2, m * (3 * radius**2 + length**2) / 12)
 
 
+@refuse_text
 def solid_sphere(m, radius) -> sp.Matrix:
     """Solid sphere: ``2 m r^2 / 5`` about every axis."""
     return sp.eye(3) * sp.Rational(2, 5) * m * radius**2
 
 
+@refuse_text
 def cuboid(m, a, b, c) -> sp.Matrix:
     """Solid box with edges ``a, b, c`` along x, y, z."""
     return sp.diag(m * (b**2 + c**2), m * (a**2 + c**2), m * (a**2 + b**2)) / 12
 
 
+@refuse_text
 def parallel_axis(inertia_c: sp.Matrix, mass, d: sp.Matrix) -> sp.Matrix:
     """Inertia about a point B from the inertia about the mass centre C; ``d`` is ``C - B``.
 
@@ -91,6 +98,7 @@ def parallel_axis(inertia_c: sp.Matrix, mass, d: sp.Matrix) -> sp.Matrix:
     return sp.Matrix(inertia_c) + mass * ((d.T * d)[0, 0] * sp.eye(3) - d * d.T)
 
 
+@refuse_text_in
 @dataclass(frozen=True)
 class MassProperties:
     """Mass, mass centre and inertia about the mass centre of a (composite) body."""
@@ -104,6 +112,7 @@ class MassProperties:
         return parallel_axis(self.inertia, self.mass, self.center - sp.Matrix(point))
 
 
+@refuse_text
 def composite(parts: Iterable[tuple]) -> MassProperties:
     """Combine parts ``(mass, inertia about own centre, centre position)`` into one body.
 
@@ -119,6 +128,7 @@ def composite(parts: Iterable[tuple]) -> MassProperties:
     return MassProperties(mass, center, inertia.applyfunc(sp.simplify))
 
 
+@refuse_text_in
 @dataclass(frozen=True, eq=False)
 class Particle:
     """A point mass at ``point``."""
@@ -143,6 +153,7 @@ class Particle:
         return self.mass * v.dot(v) / 2
 
 
+@refuse_text_in
 @dataclass(frozen=True, eq=False)
 class RigidBody:
     """A rigid body fixed in ``frame``, mass centre ``masscenter``, ``inertia`` about it in ``frame`` axes."""

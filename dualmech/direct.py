@@ -36,6 +36,8 @@ from typing import Sequence
 
 import sympy as sp
 
+from ._expr import refuse_text_in
+
 from .bodies import Particle, RigidBody
 from .equations import EquationSet, ModelError
 from .kinematics import Frame, Point, Vector
@@ -55,6 +57,7 @@ class Load:
     torque: Vector | None = None
 
 
+@refuse_text_in
 class NewtonEuler:
     """Builder of the direct form; see the module docstring."""
 

@@ -27,7 +27,7 @@ from typing import Mapping, Sequence
 
 import sympy as sp
 
-from ._expr import as_expr
+from ._expr import as_expr, refuse_text_in
 from ._algebra import linear_coefficients
 from .kinematics import t
 
@@ -68,6 +68,7 @@ def state_symbols(q: sp.Expr) -> StateSymbols:
     return _STATE_CACHE[q]
 
 
+@refuse_text_in
 @dataclass(frozen=True, eq=False)
 class EquationSet:
     """Equations of motion ``equations[i] = 0``, linear in ``(q'', unknowns)``.

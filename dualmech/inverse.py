@@ -26,7 +26,7 @@ from typing import Mapping, Sequence
 import numpy as np
 import sympy as sp
 
-from ._expr import as_expr
+from ._expr import as_expr, refuse_text
 from .equations import EquationSet, ModelError
 from .kinematics import t
 
@@ -51,6 +51,7 @@ def _along(eqs: EquationSet, motion: Mapping) -> list:
     return [e.xreplace(second).xreplace(first).xreplace(path) for e in eqs.equations]
 
 
+@refuse_text
 def required_inputs(eqs: EquationSet, inputs: Sequence[sp.Symbol], motion: Mapping) -> dict:
     """Inputs and reactions that make ``eqs`` hold along ``motion`` (exact, in ``t``).
 
@@ -101,6 +102,7 @@ def required_inputs(eqs: EquationSet, inputs: Sequence[sp.Symbol], motion: Mappi
     return dict(zip(unknowns, solution))
 
 
+@refuse_text
 def peak(expr, t_span: tuple[float, float], params: Mapping | None = None,
          samples: int = 4001) -> tuple[float, float]:
     """``(time, value)`` where ``|expr(t)|`` is largest on ``t_span`` (a sampled search).

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 from typing import Iterable
 
 import sympy as sp
-from ._expr import as_expr, as_matrix
+from ._expr import as_expr, as_matrix, refuse_text, refuse_text_in
 
 __all__ = [
     "t", "coordinate", "rot_x", "rot_y", "rot_z", "rot_axis", "skew", "unskew",
@@ -68,12 +68,16 @@ def rot_z(angle) -> sp.Matrix:
     return sp.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])
 
 
+@refuse_text
 def rot_axis(axis, angle) -> sp.Matrix:
     """Rotation by ``angle`` about the unit vector ``axis`` (Rodrigues' formula).
 
     ``axis`` is a 3-sequence of components; it must have unit length (checked when the
     components are numbers).
     """
+    if isinstance(axis, (str, bytes, bytearray)):
+        raise TypeError(f"`axis` of rot_axis() got the text {axis!r:.60}; give its three "
+                        "components as numbers or sympy expressions.")
     n = sp.Matrix([as_expr(c) for c in axis])
     angle = as_expr(angle)
     if n.shape != (3, 1):
@@ -85,6 +89,7 @@ def rot_axis(axis, angle) -> sp.Matrix:
     return c * sp.eye(3) + s * skew(n) + (1 - c) * (n * n.T)
 
 
+@refuse_text
 def skew(w) -> sp.Matrix:
     """The matrix ``W`` with ``W v = w x v``."""
     w = list(w)
@@ -96,6 +101,7 @@ def unskew(W: sp.Matrix) -> sp.Matrix:
     return sp.Matrix([W[2, 1], W[0, 2], W[1, 0]])
 
 
+@refuse_text_in
 class Frame:
     """A reference frame: a rotation matrix and an origin relative to a parent frame.
 
@@ -240,6 +246,7 @@ def _same_tree(a: Frame, b: Frame) -> None:
                          "build every frame from one ground frame.")
 
 
+@refuse_text_in
 @dataclass(frozen=True)
 class Vector:
     """A vector as its components in one frame.  Arithmetic converts to the left operand's frame."""
@@ -321,6 +328,7 @@ class Vector:
         return all(sp.simplify(c) == 0 for c in self.components)
 
 
+@refuse_text_in
 class Point:
     """A point placed relative to another point (or to a frame's origin).
 
@@ -366,6 +374,7 @@ class Point:
         return self._position.dt(frame).dt(frame)
 
 
+@refuse_text_in
 @dataclass(frozen=True)
 class RelativeMotion:
     """Acceleration of a point P moving in a frame B, split into the textbook terms.
@@ -399,5 +408,6 @@ class RelativeMotion:
                 "relative": self.relative}
 
 
+@refuse_text
 def components_in(vectors: Iterable[Vector], frame: Frame) -> list[sp.Matrix]:
     return [v.express(frame).components for v in vectors]

@@ -28,7 +28,7 @@ from typing import Sequence
 
 import sympy as sp
 
-from ._expr import as_expr
+from ._expr import as_expr, refuse_text_in
 from .bodies import Particle, RigidBody
 from ._algebra import Bridge, total_derivative
 from .equations import EquationSet, ModelError, from_plain, state_symbols, to_plain
@@ -37,6 +37,7 @@ from .kinematics import Frame, Point, Vector, t
 __all__ = ["Lagrangian"]
 
 
+@refuse_text_in
 class Lagrangian:
     """Builder of the indirect form; see the module docstring."""
 

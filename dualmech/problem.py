@@ -61,6 +61,10 @@ class Parameter:
         if not isinstance(self.symbol, sp.Symbol):
             raise TypeError(f"`Parameter` needs a sympy Symbol, got {self.symbol!r} "
                             f"({type(self.symbol).__name__}).")
+        if isinstance(self.default, (str, bytes, bool)) or not isinstance(
+                self.default, (int, float, sp.Number)):
+            raise TypeError(f"parameter `{self.symbol}`: the default must be a number, got "
+                            f"{self.default!r}.")
         _check_range(f"parameter `{self.symbol}`", self.range)
 
 
@@ -85,6 +89,9 @@ class Coordinate:
                             f"`dualmech.coordinate(name)`, got {self.function!r}.")
         _check_range(f"coordinate `{self.function.func.__name__}`", self.range)
         _check_range(f"coordinate `{self.function.func.__name__}` rate", self.rate_range)
+        if self.domain is not None:
+            _check_range(f"coordinate `{self.function.func.__name__}` domain", self.domain,
+                         finite=False)
 
     @property
     def name(self) -> str:
@@ -136,15 +143,20 @@ class Published:
                              f"but {len(self.reference)} reference expressions.")
 
 
-def _check_range(what: str, rng) -> None:
+def _check_range(what: str, rng, finite: bool = True) -> None:
+    import math
+    if isinstance(rng, (str, bytes)) or any(isinstance(x, (str, bytes, bool)) for x in rng):
+        raise TypeError(f"{what}: range must be two numbers (low, high), got the text "
+                        f"{rng!r:.60}.")
     try:
         lo, hi = (float(x) for x in rng)
     except (TypeError, ValueError):
         raise TypeError(f"{what}: range must be two numbers (low, high), got {rng!r}.") \
             from None
-    import math
-    if not (math.isfinite(lo) and math.isfinite(hi)):
+    if finite and not (math.isfinite(lo) and math.isfinite(hi)):
         raise ValueError(f"{what}: range {rng!r} must be finite.")
+    if math.isnan(lo) or math.isnan(hi):
+        raise ValueError(f"{what}: range {rng!r} must be numbers, not NaN.")
 
 
 def _tuple(x) -> tuple:

@@ -29,6 +29,8 @@ from typing import Mapping, Sequence
 
 import sympy as sp
 
+from ._expr import refuse_text
+
 from .equations import EquationSet, ModelError, from_plain, state_symbols, to_plain
 
 __all__ = ["steady_conditions", "steady_rates"]
@@ -44,6 +46,7 @@ def _check(eqs: EquationSet, fixed: Sequence) -> None:
                          f"`{eqs.name}` {list(eqs.coordinates)}.")
 
 
+@refuse_text
 def steady_conditions(eqs: EquationSet, fixed: Sequence,
                       values: Mapping | None = None) -> list[sp.Expr]:
     """The equations of ``eqs`` on a steady motion, left sides ``= 0``.
@@ -69,6 +72,7 @@ def steady_conditions(eqs: EquationSet, fixed: Sequence,
     return out
 
 
+@refuse_text
 def steady_rates(eqs: EquationSet, fixed: Sequence, solve_for,
                  values: Mapping | None = None) -> list[sp.Expr]:
     """The values of the rate ``solve_for`` (a ``q'(t)``) on the steady motions of ``eqs``.

@@ -62,9 +62,14 @@ def problem_parameters(problem, params: Mapping | None = None, *,
     declared = {p.symbol: p for p in problem.parameters}
     by_name = {s.name: s for s in declared}
     values = problem.defaults()
+    if params is not None and not isinstance(params, Mapping):
+        raise TypeError(f"`params` must be a mapping {{parameter: value}}, got {params!r:.60} "
+                        f"({type(params).__name__}).")
     for key, value in (params or {}).items():
         symbol = _parameter(key, declared, by_name, problem.name)
         decl = declared[symbol]
+        if isinstance(value, (bool, str, bytes)):
+            raise ValueError(f"`params`: {symbol.name} = {value!r} is not a number.")
         try:
             v = float(value)
         except (TypeError, ValueError):
@@ -174,7 +179,11 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
     if y0 is None:
         q0, qd0 = default_initial_state(problem)
         y0 = q0 + qd0
-    y0 = np.asarray(y0, dtype=float)
+    try:
+        y0 = np.asarray(y0, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"`y0` must hold {2 * n} numbers (q then q'), got {y0!r:.80}.") \
+            from None
     if y0.shape != (2 * n,):
         raise ValueError(f"`y0` must hold {2 * n} numbers (q then q'), got shape {y0.shape}.")
     if not np.isfinite(y0).all():

@@ -321,10 +321,17 @@ def _reaction_dimension_issues(problem) -> list[str]:
     return out
 
 
+#: more random points than any verdict needs (the false-equal bound is already < 1e-100 at 8)
+MAX_POINTS = 1000
+
+
 def _check_points(points) -> None:
     if isinstance(points, bool) or not isinstance(points, int) or points < 1:
         raise ValueError(f"`points` must be a positive integer (random points per verdict), "
                          f"got {points!r}.")
+    if points > MAX_POINTS:
+        raise ValueError(f"`points` = {points} is more than a verdict needs; use at most "
+                         f"{MAX_POINTS} (8 already bound a false 'equal' below 1e-100).")
 
 
 def _pairs(j: Judgement, reference: str, ctx: Context, seed: int) -> list[PairResult]:

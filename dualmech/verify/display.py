@@ -12,6 +12,8 @@ import threading
 
 import sympy as sp
 
+from .._expr import as_expr
+
 __all__ = ["Budget", "OverBudget", "budget", "tidy", "solve_display", "dotted"]
 
 #: Default budget for one displayed expression: operations in, seconds spent.
@@ -67,7 +69,7 @@ def tidy(expr, limits: Budget | None = None):
     budget lasts.  Returns the best form reached; raises :class:`OverBudget` only when the
     input itself is past the size budget."""
     limits = limits or Budget()
-    expr = sp.sympify(expr)
+    expr = as_expr(expr)
     ops = sp.count_ops(expr)
     if ops > 4 * limits.max_ops:
         raise OverBudget(f"expression of {ops} operations")
@@ -125,7 +127,7 @@ def solve_display(eqs, limits: Budget | None = None) -> dict:
 def dotted(expr, coordinates=None) -> str:
     """``expr`` as text with ``theta'`` and ``theta''`` for the coordinates' derivatives."""
     from ..kinematics import t
-    expr = sp.sympify(expr)
+    expr = as_expr(expr)
     rules = {}
     for d in expr.atoms(sp.Derivative):
         f = d.expr
