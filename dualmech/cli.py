@@ -40,14 +40,25 @@ class UsageError(Exception):
 
 
 # -- the parser ------------------------------------------------------------------------
-def _positive_int(text: str) -> int:
+def _positive_int(text: str, most: int | None = None) -> int:
     try:
         value = int(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}") from None
     if value < 1:
         raise argparse.ArgumentTypeError(f"expected a positive integer, got {value}")
+    if most is not None and value > most:
+        raise argparse.ArgumentTypeError(f"expected at most {most}, got {value}")
     return value
+
+
+def _points(text: str) -> int:
+    """Random points per verdict: 1 to 1000 (8 already bound a false 'equal' below 1e-100)."""
+    return _positive_int(text, 1000)
+
+
+#: longest simulated span a report chart takes, in seconds
+MAX_DURATION = 600.0
 
 
 def _positive_float(text: str) -> float:
@@ -57,6 +68,14 @@ def _positive_float(text: str) -> float:
         raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}") from None
     if not (value > 0 and value < float("inf")):
         raise argparse.ArgumentTypeError(f"expected a positive finite number, got {text!r}")
+    return value
+
+
+def _duration(text: str) -> float:
+    value = _positive_float(text)
+    if value > MAX_DURATION:
+        raise argparse.ArgumentTypeError(f"expected at most {MAX_DURATION:g} s of simulated "
+                                         f"time, got {text!r}")
     return value
 
 
@@ -102,7 +121,7 @@ def build_parser() -> argparse.ArgumentParser:
                                    "DIR/<name>_reactions.png.")
     p.add_argument("--out", metavar="DIR", default="out", type=Path,
                    help="output directory (default: %(default)s)")
-    p.add_argument("--duration", metavar="T", default=5.0, type=_positive_float,
+    p.add_argument("--duration", metavar="T", default=5.0, type=_duration,
                    help="simulated time for the charts, in seconds (default: %(default)s)")
     _points_seed(p)
     p.set_defaults(func=_cmd_report)
@@ -115,8 +134,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _points_seed(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--points", metavar="N", type=_positive_int, default=8,
-                   help="random exact points per comparison (default: %(default)s)")
+    p.add_argument("--points", metavar="N", type=_points, default=8,
+                   help="random exact points per comparison, 1 to 1000 "
+                        "(default: %(default)s)")
     p.add_argument("--seed", metavar="S", type=int, default=0,
                    help="seed of the random points (default: %(default)s)")
 
@@ -137,9 +157,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         import os
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return EXIT_OK
-    except OSError as exc:   # e.g. an unwritable --out: one line, no traceback
-        where = f" {exc.filename}" if getattr(exc, "filename", None) else ""
-        print(f"dualmech {args.command}: error: cannot write{where}: {exc.strerror or exc}",
+    except OSError as exc:   # e.g. an unwritable --out, an unreadable input: one line
+        where = f"{exc.filename}: " if getattr(exc, "filename", None) else ""
+        print(f"dualmech {args.command}: error: {where}{exc.strerror or exc}",
               file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:
@@ -366,6 +386,8 @@ def _verdict_counts(verdicts) -> str:
 def _cmd_report(args) -> int:
     from .report import write_report
     out: Path = args.out
+    if "\x00" in str(out):
+        raise UsageError("`--out` contains a NUL byte; give a directory path.")
     out.mkdir(parents=True, exist_ok=True)
     results = []
     for problem in _progress(_catalogue().all_problems(), "checking"):

@@ -28,7 +28,7 @@ from sympy.physics.units import Dimension
 from sympy.physics.units.definitions import dimension_definitions as _dd
 from sympy.physics.units.systems.si import dimsys_SI
 
-from ._expr import as_expr
+from ._expr import as_expr, dotted
 from .kinematics import t
 
 __all__ = ["Dimension", "MASS", "LENGTH", "TIME", "ANGLE", "FORCE", "TORQUE", "ENERGY",
@@ -131,7 +131,8 @@ class _Walker:
         if e in self.dims:
             return self.dims[e]
         if e.is_Symbol or isinstance(e, sp.core.function.AppliedUndef):
-            self.issues.append(DimensionIssue(str(e), "?", "?", f"`{e}` has no declared dimension"))
+            self.issues.append(DimensionIssue(dotted(e), "?", "?",
+                                              f"`{dotted(e)}` has no declared dimension"))
             return ()
         if isinstance(e, sp.Derivative):
             d = self(e.expr)
@@ -150,7 +151,7 @@ class _Walker:
             if e.exp.is_Number:
                 return _pow(base, Fraction(str(sp.Rational(e.exp))))
             if base or self(e.exp):
-                self.issues.append(DimensionIssue(str(e), "?", "1", f"`{e}`: a symbolic power "
+                self.issues.append(DimensionIssue(dotted(e), "?", "1", f"`{dotted(e)}`: a symbolic power "
                                                   "needs a dimensionless base and exponent"))
             return ()
         if isinstance(e, sp.Function):
@@ -158,8 +159,8 @@ class _Walker:
                 d = self(a)
                 if d:
                     self.issues.append(DimensionIssue(
-                        str(a), format_dimension(d), "1",
-                        f"argument `{a}` of {e.func.__name__} has dimension "
+                        dotted(a), format_dimension(d), "1",
+                        f"argument `{dotted(a)}` of {e.func.__name__} has dimension "
                         f"{format_dimension(d)}; it must be dimensionless"))
             return ()
         raise TypeError(f"cannot find the dimension of {e!r}")
@@ -173,14 +174,15 @@ class _Walker:
         if expected is None:
             ranked = counts.most_common()
             if len(ranked) > 1 and ranked[0][1] == ranked[1][1]:
-                listing = "; ".join(f"`{a}` has {format_dimension(d)}" for a, d in terms)
-                self.issues.append(DimensionIssue(str(e), "mixed", "one dimension",
+                listing = "; ".join(f"`{dotted(a)}` has {format_dimension(d)}"
+                                    for a, d in terms)
+                self.issues.append(DimensionIssue(dotted(e), "mixed", "one dimension",
                                                   f"terms disagree: {listing}"))
                 return ranked[0][0]
             expected = ranked[0][0]
         for a, d in terms:
             if d != expected:
-                self.issues.append(DimensionIssue(str(a), format_dimension(d),
+                self.issues.append(DimensionIssue(dotted(a), format_dimension(d),
                                                   format_dimension(expected)))
         return expected
 

@@ -87,8 +87,10 @@ def handle(args: argparse.Namespace) -> int:
         if args.list:
             return _list(args)
         if args.answer_file is not None:
-            try:
-                answer = args.answer_file.read_text(encoding="utf-8")
+            from .parser import LIMITS
+            try:   # read no more than the parser accepts (+1 to see it is too long)
+                with open(args.answer_file, encoding="utf-8") as fh:
+                    answer = fh.read(LIMITS.chars + 1)
             except (OSError, UnicodeDecodeError) as exc:
                 return _usage(f"cannot read {args.answer_file}: {exc}")
         elif args.answer is not None:

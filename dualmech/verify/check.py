@@ -16,7 +16,6 @@ from typing import Sequence
 
 import sympy as sp
 
-from ..dimensions import audit
 from ..equations import EquationSet, ModelError
 from .display import Budget, OverBudget, dotted, solve_display
 from .explain import Mismatch, explain_model
@@ -41,12 +40,6 @@ def method_name(method: str) -> str:
     return names.get(method, method)
 
 
-def _bound(bound: float) -> str:
-    if bound == 0:
-        return "< 1e-300"
-    return f"{bound:.1e}"
-
-
 @dataclass
 class PairResult:
     """Verdict on one model against another (``kind="motion"``), or on shared reactions."""
@@ -61,10 +54,13 @@ class PairResult:
     mismatches: list = field(default_factory=list)
     kind: str = "motion"
     reactions: tuple = ()
+    decided: bool = True
 
     def __str__(self) -> str:
         if self.kind == "reactions":
             verdict = "the same" if self.equivalent else "DIFFERENT"
+            if not self.decided:
+                verdict = "not compared (the motion disagrees; fix it first)"
             head = (f"reactions {', '.join(self.reactions)} of {self.candidate} vs "
                     f"{self.reference}: {verdict}")
         else:
@@ -72,8 +68,9 @@ class PairResult:
             head = f"{self.candidate} vs {self.reference}: {verdict}"
         pts = f"{self.points} point" + ("" if self.points == 1 else "s")
         s = f"{head} ({method_name(self.method)}, {pts}"
-        if self.method == "exact" and self.equivalent:
-            s += f", P(false equal) <= {_bound(self.bound)}"
+        if self.method == "exact" and self.equivalent and not math.isnan(self.bound):
+            s += (", P(false equal) < 1e-300" if self.bound == 0
+                  else f", P(false equal) <= {self.bound:.1e}")
         s += f", {self.seconds:.2f} s)"
         return "\n".join([s] + [str(m) for m in self.mismatches])
 
@@ -329,7 +326,7 @@ def _check_points(points) -> None:
     if isinstance(points, bool) or not isinstance(points, int) or points < 1:
         raise ValueError(f"`points` must be a positive integer (random points per verdict), "
                          f"got {points!r}.")
-    if points > MAX_POINTS:
+    if points > MAX_POINTS:  # (the CLI caps --points the same way)
         raise ValueError(f"`points` = {points} is more than a verdict needs; use at most "
                          f"{MAX_POINTS} (8 already bound a false 'equal' below 1e-100).")
 
@@ -347,42 +344,46 @@ def _pairs(j: Judgement, reference: str, ctx: Context, seed: int) -> list[PairRe
             against = tuple(a for a in (j.majority or names) if a != nm)
             explained[nm] = explain_model(nm, j, against, ctx, seed)
     out, ref_shown = [], False
+    bound = j.bound
     for nm in names:
         if nm == reference:
             continue
-        both_ok = not j.fault_of(nm) and not j.fault_of(reference)
-        same = j.equivalent or any(nm in g and reference in g for g in j.groups)
+        motion_faults = lambda x: [f for f in j.fault_of(x) if f.kind != "reactions"]  # noqa
+        both_ok = not motion_faults(nm) and not motion_faults(reference)
+        same = j.equivalent or frozenset((nm, reference)) in j.agreeing
         ok = both_ok and same
         mism = list(explained.get(nm, []))
         if reference in explained and not ref_shown:
             mism += explained[reference]
             ref_shown = True
-        out.append(PairResult(reference, nm, ok, j.method, j.points, j.bound if ok else 0.0,
+        out.append(PairResult(reference, nm, ok, j.method, j.points, bound if ok else 0.0,
                               j.seconds, mism))
-    by_reaction: dict = {}
+    # one line per group of models sharing reactions
+    groups: dict = {}
     for nm, m in j.models.items():
         for u in m.unknowns:
-            by_reaction.setdefault(str(u), []).append(nm)
-    seen = set()
-    for u, holders in by_reaction.items():
-        if len(holders) < 2:
-            continue
-        key = tuple(holders)
-        faults = [r for r in j.reaction_faults if tuple(sorted(r.suspects + r.agreeing))
-                  == tuple(sorted(holders))]
-        if key in seen and not faults:
-            continue
-        seen.add(key)
-        shared = [x for x, hs in by_reaction.items() if tuple(hs) == key]
+            groups.setdefault(str(u), []).append(nm)
+    lines: dict = {}
+    for u, holders in groups.items():
+        if len(holders) >= 2:
+            lines.setdefault(tuple(holders), []).append(u)
+    motion_ok = not [f for f in j.faults if f.kind != "reactions"]
+    for holders, shared in lines.items():
         bad = [r for r in j.reaction_faults if r.name in shared]
-        mism = [Mismatch(", ".join(r.suspects), f"reaction {r.name}",
-                         f"{r.name} differs between {', '.join(r.suspects + r.agreeing)}"
-                         + (f"; {', '.join(r.agreeing)} agree" if r.agreeing else ""))
-                for r in bad]
-        motion_ok = not j.faults
-        out.append(PairResult(holders[0], ", ".join(holders[1:]), motion_ok and not bad,
-                              j.method, j.points, j.bound if motion_ok and not bad else 0.0,
-                              j.seconds, mism, "reactions", tuple(shared)))
+        mism = []
+        for r in bad:
+            others = ", ".join(r.agreeing) if r.agreeing else None
+            for suspect in r.suspects:
+                rest = [x for x in r.suspects + r.agreeing if x != suspect]
+                mism.append(Mismatch(suspect, f"reaction {r.name}",
+                                     f"{r.name} differs from the value "
+                                     f"{', '.join(f'`{x}`' for x in rest)} give"
+                                     + ("" if len(rest) > 1 else "s")
+                                     + (f" ({others} agree)" if others else "")))
+        ok = motion_ok and not bad
+        out.append(PairResult(holders[0], ", ".join(holders[1:]), ok, j.method, j.points,
+                              bound if ok else 0.0, j.seconds, mism, "reactions",
+                              tuple(shared), decided=motion_ok))
     return out
 
 

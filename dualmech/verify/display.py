@@ -126,15 +126,5 @@ def solve_display(eqs, limits: Budget | None = None) -> dict:
 
 def dotted(expr, coordinates=None) -> str:
     """``expr`` as text with ``theta'`` and ``theta''`` for the coordinates' derivatives."""
-    from ..kinematics import t
-    expr = as_expr(expr)
-    rules = {}
-    for d in expr.atoms(sp.Derivative):
-        f = d.expr
-        if isinstance(f, sp.core.function.AppliedUndef) and d.variables and \
-                all(v == t for v in d.variables):
-            rules[d] = sp.Symbol(f.func.__name__ + "'" * d.derivative_count)
-    for f in expr.atoms(sp.core.function.AppliedUndef):
-        if f.args == (t,):
-            rules.setdefault(f, sp.Symbol(f.func.__name__))
-    return str(expr.xreplace(rules))
+    from .._expr import dotted as _dotted
+    return _dotted(as_expr(expr))

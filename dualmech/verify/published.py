@@ -114,7 +114,8 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
             verdicts.append(PublishedVerdict(pub.label, pub.where, "wrong", motion, method))
         elif pub.label not in bad:
             verdicts.append(PublishedVerdict(pub.label, pub.where, "correct",
-                                             f"holds at {good} points", method))
+                                             f"holds at {good} point"
+                                             + ("" if good == 1 else "s"), method))
         elif all(isinstance(x, str) and x.startswith("undecid") for x in bad[pub.label]):
             verdicts.append(PublishedVerdict(pub.label, pub.where, "unchecked",
                                              "; ".join(sorted(bad[pub.label])), method))
@@ -218,9 +219,15 @@ def _detail(problem, pub, which, limits: Budget) -> str:
     dims = problem.dimensions()
     lines = []
     if "determines" in which:
-        lines.append(f"the printed set does not determine every acceleration: its "
-                     f"{len(pub.printed)} equation(s) are dependent or too few for the "
-                     f"{len(problem.model(problem.reference).coordinates)} coordinates")
+        k, n = len(pub.printed), len(problem.model(problem.reference).coordinates)
+        if k == 1 and n == 1:
+            why = "its one equation does not involve the acceleration"
+        elif k == 1:
+            why = f"one equation is too few for the {n} coordinates"
+        else:
+            why = (f"its {k} equations are dependent or too few for the "
+                   + (f"{n} coordinates" if n != 1 else "coordinate"))
+        lines.append(f"the printed set does not determine every acceleration: {why}")
     exprs = _published_exprs(problem, pub)
     for j in sorted(x for x in which if isinstance(x, int)):
         what = f"equation {j + 1}" if pub.kind != "expression" else f"component {j + 1}"

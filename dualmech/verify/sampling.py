@@ -183,7 +183,6 @@ def solve_model(A: list, b: list, n: int, unknowns: Sequence,
     that the equations do not fix are ``None`` in ``qdd``.
     """
     m = len(A[0]) if A else n
-    k = m - n
     claimed = list(range(n)) if claimed is None else list(claimed)
     unclaimed = [j for j in range(n) if j not in claimed]
     order = list(range(n, m)) + unclaimed + claimed

@@ -39,7 +39,7 @@ import mpmath
 
 from ..exact import MP_DIGITS, is_zero
 from .errors import Undecidable
-from .sampling import (MAX_ATTEMPTS, Context, Sampler, Solution, System, same_values,
+from .sampling import (MAX_ATTEMPTS, Context, Sampler, System, same_values,
                        shared_manifold, solve_model)
 
 __all__ = ["Judgement", "ModelFault", "ReactionFault", "judge"]
@@ -89,6 +89,7 @@ class Judgement:
     parts: dict = field(default_factory=dict)
     bound: float = 0.0
     how: str = ""            # how an "equal" was reached and how sure it is
+    agreeing: set = field(default_factory=set)   # frozensets of model pairs equal everywhere
     refusal: str = ""        # why no verdict could be given (then neither equal nor different)
 
     @property
@@ -167,6 +168,7 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
         wanted = _points_needed(form, points)
         rng = random.Random(seed)
         good, verdict, undecided = [], None, ""
+        agreeing = None      # pairs of models that agree at every point used
         for point, _vals, parts, residues in sampler.points(rng, MAX_ATTEMPTS * wanted):
             sols = {nm: solve_model(A, b, n, s.model.unknowns, claims.get(nm))
                     for nm, s, (A, b) in zip(names, systems, parts)}
@@ -179,9 +181,12 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
                 undecided = _where(form, point)
                 continue   # a difference only in a branch case nobody confirmed: no claim
             good.append(point)
-            if found is not None:
+            here = _agreeing_pairs(names, sols)
+            agreeing = here if agreeing is None else agreeing & here
+            if found is not None and verdict is None:
+                # the counter-example is kept; the other pairs go on being checked so that
+                # what agrees is decided on as many points as a full verdict
                 verdict = (point, dict(zip(names, parts)), sols, found)
-                break
             if len(good) == wanted:
                 break
     out = Judgement(dict(models), sampler.method, len(good), form.degree,
@@ -197,9 +202,10 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
                       for nm in names]
         out.odd = list(names)
         return out
+    extra = 4 * sum(len(s.A) * s.size for s in systems) * max(form.degree, 1)
+    out.bound = _bound(form, good, extra)
+    out.agreeing = agreeing or set()
     if verdict is None:
-        extra = 4 * sum(len(s.A) * s.size for s in systems) * max(form.degree, 1)
-        out.bound = _bound(form, good, extra)
         out.how = _describe(form, good, extra)
         out.groups = [tuple(names)]
         return out
@@ -207,6 +213,17 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
     out.point, out.parts, out.solutions = point, parts, sols
     out.groups, out.faults, out.reaction_faults = groups, faults, rfaults
     out.odd, out.majority = odd, majority
+    return out
+
+
+def _agreeing_pairs(names, sols) -> set:
+    """Pairs of models (frozensets) that both determine the same accelerations here."""
+    ok = [nm for nm in names if sols[nm].status == "ok"]
+    out = set()
+    for i, a in enumerate(ok):
+        for b in ok[i + 1:]:
+            if same_values(sols[a].qdd, sols[b].qdd):
+                out.add(frozenset((a, b)))
     return out
 
 
