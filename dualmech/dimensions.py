@@ -14,7 +14,7 @@ Example
 []
 >>> eq = m*l*th.diff(t, 2) + m*g*l*sp.sin(th)
 >>> [str(issue) for issue in audit(eq, dims, expected=MASS*LENGTH**2/TIME**2)]
-['term `l*m*Derivative(theta(t), (t, 2))` has dimension M L T^-2 where the rest has M L^2 T^-2']
+["term `l*m*theta''` has dimension M L T^-2 where the rest has M L^2 T^-2"]
 """
 from __future__ import annotations
 

@@ -94,4 +94,4 @@ def test_published_verdicts(comparison):
     # the slip shows in the dimensions: theta'' beside beta' (c - l cos(theta))
     v = next(p for p in problem.published() if p.label == "(a) v")
     issues = audit(v.printed[0] - v.reference[0], problem.dimensions())
-    assert issues and str(DD(theta)) in str(issues[0])
+    assert issues and "theta''" in str(issues[0])
