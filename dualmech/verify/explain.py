@@ -121,9 +121,10 @@ def explain_model(name: str, judgement, against: tuple, ctx: Context,
 
 def _real_states(judgement, name, ref, ctx: Context, seed: int, want: int = 8) -> list:
     """Real states where ``ref`` is regular, with the residual of each equation of ``name``
-    there: ``[(values, residuals)]``.  Half inside the working ranges, half in wider ones
-    (angles over a full turn, the rest three times as wide, both signs of ``t``), so that an
-    equation wrong only outside the working range is still shown where it is wrong."""
+    there: ``[(values, residuals)]``.  Half inside the working ranges, half with the state in
+    wider ones (angles over a full turn, the rest three times as wide), so that an
+    equation wrong only outside the working range is still shown where it is wrong.
+    Parameters always stay inside their declared ranges."""
     models = judgement.models
     coords = models[ref].coordinates
     systems = [System.of(models[ref], coords), System.of(models[name], coords)]
@@ -143,11 +144,9 @@ def _real_states(judgement, name, ref, ctx: Context, seed: int, want: int = 8) -
             point = {}
             for s in ctx.base:
                 lo, hi = ctx.floats.get(s, (0.5, 2.0))
-                if wide:
+                if wide and s not in ctx.parameters:   # parameters stay physical
                     mid, half = (lo + hi) / 2, 1.5 * (hi - lo)
                     lo, hi = (-3.14, 3.14) if s in angles else (mid - half, mid + half)
-                    if s in ctx.parameters and lo <= 0 < hi and ctx.floats.get(s, (1,))[0] > 0:
-                        lo = ctx.floats[s][0]
                 point[s] = mpmath.mpf(rng.uniform(lo, hi))
             try:
                 vals = fn(*[point[s] for s in ctx.base])
