@@ -25,7 +25,7 @@ class Bridge:
         for s in symbols:
             self._add(s)
         for e in exprs:
-            for s in sp.sympify(e).free_symbols:
+            for s in sp.sympify(e, strict=True).free_symbols:
                 self._add(s)
 
     def _add(self, s) -> None:
@@ -38,12 +38,12 @@ class Bridge:
         self.by_name[s.name] = s
 
     def se(self, expr):
-        for s in sp.sympify(expr).free_symbols:
+        for s in sp.sympify(expr, strict=True).free_symbols:
             self._add(s)
         return se.sympify(expr)
 
     def sp(self, expr) -> sp.Expr:
-        out = sp.sympify(expr)
+        out = sp.sympify(expr, strict=True)
         rules = {}
         for s in out.free_symbols:
             mine = self.by_name.get(s.name)

@@ -464,7 +464,7 @@ def _conditions(exprs) -> list:
     out: list = []
 
     def add(g):
-        g = sp.sympify(g)
+        g = sp.sympify(g, strict=True)
         if g.free_symbols and g not in out and -g not in out:
             out.append(g)
 

@@ -361,7 +361,7 @@ class Printer:
 
     def _sympy(self, e) -> str:
         """Node types we do not print ourselves: sympy's code printers."""
-        expr = sp.sympify(e)  # a symengine object, converted through its own _sympy_
+        expr = sp.sympify(e, strict=True)  # a symengine object, converted through its own _sympy_
         text = self.sympy_printer().doprint(expr)
         if "Not supported" in text:
             raise NotImplementedError(f"cannot generate code for {expr}")

@@ -42,7 +42,7 @@ def _name(base: str, order: int = 0) -> str:
 
 def display_symbols(expr) -> sp.Expr:
     """``expr`` with ``q(t)`` and its derivatives replaced by dotted display symbols."""
-    expr = sp.sympify(expr)
+    expr = sp.sympify(expr, strict=True)
     rules = {}
     for d in expr.atoms(sp.Derivative):
         f = d.expr

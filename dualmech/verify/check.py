@@ -266,7 +266,7 @@ def claims_of(problem) -> dict:
             continue
         used = set()
         for v in maps[name].values():
-            used |= sp.sympify(v).atoms(sp.core.function.AppliedUndef)
+            used |= sp.sympify(v, strict=True).atoms(sp.core.function.AppliedUndef)
         idx = [i for i, q in enumerate(ref) if q in used]
         if len(idx) < len(ref):
             out[name] = idx

@@ -233,7 +233,7 @@ class IntervalProgram:
     """
 
     def __init__(self, exprs: Sequence[sp.Expr]):
-        self.exprs = [sp.sympify(e) for e in exprs]
+        self.exprs = [sp.sympify(e, strict=True) for e in exprs]
         seen: set = set()
         for e in self.exprs:
             self._check(e, seen)
