@@ -31,7 +31,7 @@ from ._expr import as_expr, refuse_text_in
 from ._algebra import linear_coefficients
 from .kinematics import t
 
-__all__ = ["EquationSet", "ModelError", "StateSymbols", "state_symbols"]
+__all__ = ["EquationSet", "ModelError", "StateSymbols", "is_zero_expression", "state_symbols"]
 
 
 class ModelError(ValueError):
@@ -203,7 +203,9 @@ class EquationSet:
             raise ModelError(f"model `{self.name}` has {len(self.equations)} equations for "
                              f"{self.n} accelerations and {len(self.unknowns)} reactions.")
         A, b = self._matrix
-        sol = A.LUsolve(b)
+        # unsimplified entries (sin^2 + cos^2 - 1) must not be taken as pivots: a structural
+        # zero used as a pivot gives nan
+        sol = A.LUsolve(b, iszerofunc=is_zero_expression)
         return {u: _tidy(s) for u, s in zip(self._unknown_vector, sol)}
 
     def solve(self) -> dict:
@@ -408,6 +410,20 @@ def from_plain(expr, coordinates):
 
 def _name(q) -> str:
     return q.func.__name__
+
+
+def is_zero_expression(expr) -> bool:
+    """Exactly zero?  Cancel, then reduce ``sin(a)^2`` to ``1 - cos(a)^2`` in the numerator:
+    a canonical form for polynomials in sines and cosines (display solves only)."""
+    if expr == 0:
+        return True
+    if not expr.has(sp.sin, sp.cos):
+        return sp.cancel(expr) == 0
+    num = sp.fraction(sp.cancel(sp.together(expr)))[0]
+    num = sp.expand(num).replace(
+        lambda x: x.is_Pow and isinstance(x.base, sp.sin) and x.exp.is_Integer and x.exp >= 2,
+        lambda x: (1 - sp.cos(x.base.args[0])**2)**(int(x.exp) // 2) * x.base**(int(x.exp) % 2))
+    return sp.expand(num) == 0
 
 
 def _tidy(expr):

@@ -177,7 +177,7 @@ class BallInSphere(Problem):
         ne.reaction("N", sc.ball, -sc.B.z)
         for axis in (sc.B.x, sc.B.y, sc.B.z):
             ne.linear_momentum(sc.ball, axis)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def angular_momentum(self) -> EquationSet:
         """Moments about the centre along ``Z`` and ``e_phi``; ``N`` passes through the centre."""
@@ -187,7 +187,7 @@ class BallInSphere(Problem):
         ne.gravity(-g * sc.O.z)
         ne.angular_momentum(sc.ball, sc.O.z, about=sc.o)
         ne.angular_momentum(sc.ball, sc.B.y, about=sc.o)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """``T = m a^2 (theta'^2 + sin^2 theta phi'^2)/2``, ``V = m g a cos theta`` by hand."""

@@ -154,7 +154,7 @@ class BeadOnHoop(Problem):
         ne.reaction("N_b", sc.bead, sc.H.y)
         for axis in (sc.B.x, sc.B.y, sc.B.z):
             ne.linear_momentum(sc.bead, axis)
-        return ne.equations().simplified()
+        return ne.equations()
 
     # -- indirect form --------------------------------------------------------------------
     def lagrange(self) -> EquationSet:
@@ -177,7 +177,7 @@ class BeadOnHoop(Problem):
         lg.constraint("N", R - r)
         lg.constraint("N_b", w)
         lg.prescribe(psi, omega * t)
-        return lg.equations().simplified()
+        return lg.equations()
 
     # -- the source's answers -------------------------------------------------------------
     def published(self) -> list[Published]:

@@ -150,7 +150,7 @@ class BlockInPipe(Problem):
         ne.linear_momentum(f.block, f.e_r)
         ne.linear_momentum(f.block, f.e_th)
         ne.angular_momentum(f.pipe, f.O.z, about=f.o)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """The source's Lagrangian and the damper's generalised force ``(0, -d y')``."""

@@ -165,7 +165,7 @@ class CompoundDoublePendulum(Problem):
         ne.linear_momentum(sc.body, sc.O.y)
         ne.angular_momentum(sc.body, sc.O.z)
         ne.angular_momentum(sc.link, sc.O.z, about=sc.o)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def moments(self) -> EquationSet:
         """No reactions: link + body about the pivot O, the body about the moving hinge A."""
@@ -175,7 +175,7 @@ class CompoundDoublePendulum(Problem):
         ne.gravity(-g * sc.O.y)
         ne.angular_momentum([sc.link, sc.body], sc.O.z, about=sc.o)
         ne.angular_momentum(sc.body, sc.O.z, about=sc.A)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """The source's second form of ``T`` and its ``V``."""

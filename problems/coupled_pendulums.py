@@ -147,7 +147,7 @@ class CoupledPendulums(Problem):
         stretch = (s.S2.pos_from(s.o1) - s.S1.pos_from(s.o1)).dot(s.O.x) - d
         ne.linear_spring("spring", s.pend2, k, stretch, s.O.x, at=s.S2, against=s.pend1,
                          against_at=s.S1)
-        return _euler_about_pivots(ne, s).equations().simplified()
+        return _euler_about_pivots(ne, s).equations()
 
     def lagrange(self) -> EquationSet:
         """``T`` and ``V`` by hand."""

@@ -172,7 +172,7 @@ class InertiaWheelPendulum(Problem):
             ne.linear_momentum(body, O.y)
         ne.angular_momentum(f.rod, O.z, about=f.o)
         ne.angular_momentum(f.disc, O.z)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """The source's ``T``, ``U`` and generalised forces ``(0, tau)``."""

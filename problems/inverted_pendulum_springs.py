@@ -133,7 +133,7 @@ class InvertedPendulumSprings(Problem):
         ne.linear_momentum(f.body, O.x)
         ne.linear_momentum(f.body, O.y)
         ne.angular_momentum(f.body, O.z, about=f.o)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """The source's ``T`` and ``V``."""

@@ -255,7 +255,7 @@ class MobileRobotSimplified(Problem):
         ne.torque("motor torque", sc.arm, T * O.z)
         ne.linear_momentum(lumped, O.x)
         ne.angular_momentum(sc.arm, O.z, about=sc.P)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """One Lagrangian per subsystem: the lumped base gives ``x``, the arm gives ``phi``."""
@@ -266,7 +266,7 @@ class MobileRobotSimplified(Problem):
         _arm_energies(arm)
         arm.generalized_force("motor torque", [0, T])
         return _rows("lagrange", (x, phi),
-                     [(base.equations(), 0), (arm.equations().simplified(), 1)],
+                     [(base.equations(), 0), (arm.equations(), 1)],
                      "x row of the lumped base's Lagrangian, phi row of the arm's")
 
     def published(self) -> list[Published]:
@@ -321,7 +321,7 @@ class MobileRobot(Problem):
         ne.linear_momentum(sc.arm, O.x)
         ne.angular_momentum(sc.arm, O.z, about=sc.P)
         ne.linear_momentum(base, O.x)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """``T``, ``V`` and ``Q`` of base and arm written by hand."""
@@ -331,7 +331,7 @@ class MobileRobot(Problem):
         _arm_energies(lg)
         lg.generalized_force("motor force", [f, 0])
         lg.generalized_force("motor torque", [0, T])
-        return lg.equations().simplified()
+        return lg.equations()
 
     def multiplier(self) -> EquationSet:
         """The pivot free to slide on the base by ``u``; ``u = 0`` held by ``H``."""
@@ -342,7 +342,7 @@ class MobileRobot(Problem):
         lg.generalized_force("motor force", [f, 0, 0])
         lg.generalized_force("motor torque", [0, T, 0])
         lg.constraint("H", u)
-        return lg.equations().simplified()
+        return lg.equations()
 
     def published(self) -> list[Published]:
         sc = _scene()

@@ -194,7 +194,7 @@ class PendulumOnRotatingPlane(Problem):
         ne.reaction("S", f.particle, -f.R.x)
         for axis in (f.R.x, f.R.y, f.P.z):
             ne.linear_momentum(f.particle, axis)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """The source's ``T`` and ``V``, ``beta`` prescribed."""

@@ -158,7 +158,7 @@ class PendulumParticle(Problem):
         ne.reaction("S", f.particle, f.B.y)
         ne.linear_momentum(f.particle, f.B.x)
         ne.linear_momentum(f.particle, f.B.y)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def newton_euler_inertial(self) -> EquationSet:
         """Inertial axes, equations (1), (2): bob at ``x i1 - y i2``, ``b2 = (-x i1 + y i2)/l``."""

@@ -179,7 +179,7 @@ class PulleyBentTrack(Problem):
         ne.linear_momentum(s.mass2, S.x)
         ne.linear_momentum(s.mass2, S.y)
         ne.angular_momentum(s.pulley, O.z, about=s.centre)
-        return ne.equations().simplified()
+        return ne.equations()
 
     # -- indirect forms --------------------------------------------------------------------
     def lagrange(self) -> EquationSet:

@@ -179,7 +179,7 @@ class RestrainedPendulum(Problem):
         ne.linear_momentum(system, O.x)
         ne.linear_momentum(system, O.y)
         ne.angular_momentum(system, O.z, about=sc.pivot)
-        return ne.equations().simplified()
+        return ne.equations()
 
     # -- indirect form --------------------------------------------------------------------
     def lagrange(self) -> EquationSet:
@@ -203,7 +203,7 @@ class RestrainedPendulum(Problem):
         lg.damper("dashpot", c, D(u) + a * D(theta) * sp.cos(theta))
         lg.constraint("H", u)
         lg.constraint("V", v)
-        return lg.equations().simplified()
+        return lg.equations()
 
     # -- the source's answers -------------------------------------------------------------
     def published(self) -> list[Published]:

@@ -137,7 +137,7 @@ class RigidRodPendulum(Problem):
         ne.linear_momentum(f.rod, f.O.x)
         ne.linear_momentum(f.rod, f.O.y)
         ne.angular_momentum(f.rod, f.B.z)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """The source's ``T`` and ``U``, by hand."""

@@ -161,7 +161,7 @@ class RollingCylinder(Problem):
         ne.linear_momentum(system, O.x)
         ne.linear_momentum(system, O.y)
         ne.angular_momentum(system, O.z, about=s.C)
-        return ne.equations().simplified()
+        return ne.equations()
 
     # -- indirect forms --------------------------------------------------------------------
     def lagrange(self) -> EquationSet:

@@ -126,7 +126,7 @@ class SimplePendulum(Problem):
         ne.reaction("T", sc.bob, sc.arm.y)
         ne.linear_momentum(sc.bob, sc.arm.x)
         ne.linear_momentum(sc.bob, sc.arm.y)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def angular_momentum(self) -> EquationSet:
         """``sum tau_O = d/dt h_O`` about the pivot, along ``k``; the pull passes through O."""
@@ -135,7 +135,7 @@ class SimplePendulum(Problem):
                          description="moments about the pivot O, along k")
         ne.gravity(-g * sc.O.y)
         ne.angular_momentum(sc.bob, sc.O.z, about=sc.o)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """``T = M (a theta')^2/2``, ``V = M g a (1 - cos theta)``, as the source writes them."""

@@ -174,7 +174,7 @@ class TrolleyPendulum(Problem):
         ne.linear_momentum(sc.trolley, sc.O.x)
         ne.linear_momentum(sc.bob, sc.arm.x)
         ne.linear_momentum(sc.bob, sc.arm.y)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """``(x, theta)``: T and V by hand, generalised forces by virtual work (by hand)."""
@@ -212,7 +212,7 @@ class TrolleyPendulum(Problem):
         lg.generalized_force("F on trolley", [F, 0, 0])
         lg.generalized_force("P on bob", [P * bob[0].diff(q) for q in (x, theta, r)])
         lg.constraint("T", a - r)
-        return lg.equations().simplified()
+        return lg.equations()
 
     def published(self) -> list[Published]:
         sc = _Scene()

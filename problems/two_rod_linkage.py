@@ -197,7 +197,7 @@ class TwoRodLinkage(Problem):
         for body in (s.bob, s.slider):
             ne.linear_momentum(body, O.x)
             ne.linear_momentum(body, O.y)
-        return ne.equations().simplified()
+        return ne.equations()
 
     # -- indirect forms --------------------------------------------------------------------
     def lagrange(self) -> EquationSet:

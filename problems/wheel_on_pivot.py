@@ -186,14 +186,14 @@ class WheelOnPivot(Problem):
             ne.linear_momentum(f.wheel, axis)
         for axis in (f.A.x, f.A.y, f.A.z):
             ne.angular_momentum(f.wheel, axis)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def angular_momentum(self) -> EquationSet:
         """The source's route: ``dH_O/dt = sum M_O`` on ``i, j, k``; closure ``F_x = 0``."""
         ne, f = direct_form("angular_momentum")
         for axis in (f.A.x, f.A.y, f.A.z):
             ne.angular_momentum(f.wheel, axis, about=f.o)
-        return ne.equations().simplified()
+        return ne.equations()
 
     def lagrange(self) -> EquationSet:
         """``T`` by hand; the height of G is constant (``V`` drops out)."""

@@ -13,6 +13,7 @@ import threading
 import sympy as sp
 
 from .._expr import as_expr
+from ..equations import is_zero_expression
 
 __all__ = ["Budget", "OverBudget", "budget", "tidy", "solve_display", "dotted"]
 
@@ -117,7 +118,7 @@ def solve_display(eqs, limits: Budget | None = None) -> dict:
     if A.cols > 8 or ops > 4 * limits.max_ops:
         raise OverBudget(f"{A.cols} unknowns, {ops} operations")
     with budget(limits.remaining()):
-        sol = A.LUsolve(b)
+        sol = A.LUsolve(b, iszerofunc=is_zero_expression)
     unknowns = list(eqs.accelerations) + list(eqs.unknowns)
     out = {u: tidy(s, limits) for u, s in zip(unknowns, sol)}
     limits.cache[key] = (eqs, out)
