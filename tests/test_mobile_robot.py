@@ -40,7 +40,7 @@ def test_the_sources_numbers_from_the_arm_properties():
     # (2.6-3): 47.5 phi'' - 35 x'' cos(phi) = T + 343.4 sin(phi), read off the model
     (_, arm), = [simplified.model("lagrange").equations]
     arm = arm.subs(DEFAULTS)
-    assert arm.coeff(phi.diff(t, 2)) == sp.Rational(95, 2)
+    assert sp.simplify(arm.coeff(phi.diff(t, 2)) - sp.Rational(95, 2)) == 0
     assert sp.simplify(arm.coeff(x.diff(t, 2)) + 35 * sp.cos(phi)) == 0
     mgl = -arm.xreplace({phi.diff(t, 2): 0, x.diff(t, 2): 0, T: 0}) / sp.sin(phi)
     assert round(float(sp.simplify(mgl)), 1) == 343.4
