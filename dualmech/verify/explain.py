@@ -4,7 +4,9 @@ The verdict (:mod:`dualmech.verify.verdicts`) gives a certain counter-example po
 faulty model's equations are evaluated there with the accelerations of the models it is checked
 against (and its own best-fitting reactions): an equation that does not hold is wrong.  For a
 person, each wrong equation is then shown term by term at a real state inside the working
-ranges, and -- lazily, within a display budget -- as a symbolic residual.
+ranges, and -- lazily, within a display budget -- as a symbolic residual.  A derivation
+written in other coordinates than the reference is shown in its own (state, terms, residual),
+through the problem's coordinate map (:mod:`dualmech.verify.coordinates`).
 """
 from __future__ import annotations
 
@@ -16,7 +18,9 @@ import sympy as sp
 
 from ..equations import from_plain
 from ..exact import is_zero
+from ..kinematics import t
 from . import linalg as la
+from .coordinates import OwnCoordinates
 from .display import Budget, OverBudget, dotted, solve_display, tidy
 from .sampling import Context, System, solve_model
 
@@ -88,8 +92,14 @@ def residuals_at(A: list, b: list, qdd: list, n: int) -> tuple[list, list]:
 
 
 def explain_model(name: str, judgement, against: tuple, ctx: Context,
-                  seed: int = 0, limits: Budget | None = None) -> list[Mismatch]:
-    """Mismatches of model ``name``: its equations that fail with the others' accelerations."""
+                  seed: int = 0, limits: Budget | None = None,
+                  problem=None) -> list[Mismatch]:
+    """Mismatches of model ``name``: its equations that fail with the others' accelerations.
+
+    A model that ``problem`` (default: ``ctx.problem``, when the context keeps one) declares
+    in other coordinates than the reference is explained in its own: state, terms and
+    residual through the declared coordinate map (:mod:`dualmech.verify.coordinates`).
+    """
     model = judgement.models[name]
     sols = judgement.solutions
     fault = [f for f in judgement.faults if f.model == name]
@@ -108,15 +118,55 @@ def explain_model(name: str, judgement, against: tuple, ctx: Context,
         return [Mismatch(name, "all", f"its accelerations differ from those of `{ref}`")]
     real = _real_states(judgement, name, ref, ctx, seed)
     reference_model = judgement.models[ref]
+    problem = problem if problem is not None else getattr(ctx, "problem", None)
+    own = OwnCoordinates.of(problem, name, model)
+    reason = f"does not hold with the accelerations of `{ref}`"
     out = []
     for i in wrong:
-        label = model.labels[i]
-        value, terms, state = _terms(model, i, _best(real, i), ctx)
+        values = _best(real, i)
+        mm = _in_own_coordinates(name, own, model, i, values, reference_model, ctx, limits)
+        if isinstance(mm, Mismatch):
+            mm.reason = reason
+            out.append(mm)
+            continue
+        note = f" (shown in the reference coordinates, not in {own.names}: {mm})" if mm else ""
+        value, terms, state = _terms(model, i, values, _shown(ctx.base, ctx))
         out.append(Mismatch(
-            name, label, f"does not hold with the accelerations of `{ref}`",
+            name, model.labels[i], reason + note,
             residual=lambda i=i: _symbolic_residual(model, reference_model, i, limits),
             value=value, state=state, terms=terms))
     return out
+
+
+def _in_own_coordinates(name, own, model, i, values, reference, ctx, limits):
+    """Row ``i`` of ``model`` (in the reference coordinates) explained in the own coordinates
+    of ``own``: a :class:`Mismatch`, or why not (a short text), or ``None`` for a model
+    written in the reference coordinates."""
+    if own is None:
+        return None
+    row = own.row(model, i)
+    if row is None:
+        return "its rows could not be matched to the rows as written"
+    try:
+        at = own.state(values) if values is not None else None
+    except (TypeError, ValueError, ZeroDivisionError, KeyError):
+        return "the coordinate map could not be evaluated at the state"
+    shown = [k for k in ctx.base if k in ctx.parameters or k == t]
+    shown += [s.q for s in own.own_states] + [s.qd for s in own.own_states]
+    shown += [sym for s in own.uncovered for sym in (s.q, s.qd)]
+    value, terms, state = _terms(own.model, row, at, _shown(shown, ctx, own))
+    return Mismatch(name, own.model.labels[row], "",
+                    residual=lambda: _own_residual(own, row, reference, values, limits),
+                    value=value, state=state, terms=terms)
+
+
+def _shown(symbols, ctx, own=None) -> list:
+    """``(name, symbol)`` of the state symbols to show (own coordinates' names first)."""
+    names = {}
+    if own is not None:
+        for s in own.own_states:
+            names.update({s.q: s.name, s.qd: s.name + "'", s.qdd: s.name + "''"})
+    return [(names.get(k) or ctx.name_of(k), k) for k in symbols]
 
 
 def _real_states(judgement, name, ref, ctx: Context, seed: int, want: int = 8) -> list:
@@ -175,12 +225,14 @@ def _best(states: list, i: int):
     return max(states, key=lambda vr: vr[1][i])[0]
 
 
-def _terms(model, i, values, ctx):
+def _terms(model, i, values, shown):
+    """Equation ``i`` of ``model`` at ``values``, term by term; ``shown`` the
+    ``(name, symbol)`` of the state to print."""
     if values is None:
         return math.nan, [], {}
     coords = model.coordinates
     eq = model.to_plain(model.equations[i])
-    state = {ctx.name_of(k): float(values[k]) for k in ctx.base if k in values}
+    state = {name: float(values[k]) for name, k in shown if k in values}
     subs = {k: sp.Float(str(v), 30) for k, v in values.items()}
     terms = []
     try:
@@ -205,3 +257,18 @@ def _symbolic_residual(candidate, reference, i, limits):
     rules = {}
     rules.update({a: sol[a] for a in reference.accelerations})
     return dotted(tidy(eq.xreplace(rules), limits))
+
+
+def _own_residual(own, row, reference, values, limits):
+    """Own equation ``row`` on the motion of ``reference``, in the own coordinates
+    (display only); says so when the coordinate map is not inverted within the budget."""
+    eq = own.model.equations[row]
+    if any(eq.has(u) for u in own.model.unknowns):
+        return ""   # its reactions are fitted numerically; the values below show the residual
+    inverse = own.inverse(values, limits) if values is not None else None
+    if inverse is None:
+        return (f"(not written in {own.names}: the coordinate map was not inverted within "
+                "the display budget; see the values below)")
+    sol = solve_display(reference, limits)
+    accelerations = {a: sol[a] for a in reference.accelerations}
+    return dotted(tidy(own.residual(row, accelerations, inverse), limits))
