@@ -95,3 +95,58 @@ def total_derivative(expr, states: Sequence, time, bridge: Bridge):
         q, qd, qdd = bridge.se(s.q), bridge.se(s.qd), bridge.se(s.qdd)
         out = out + expr.diff(q) * qd + expr.diff(qd) * qdd
     return out
+
+
+# -- expressions kept in symengine between the edges ------------------------------------------
+#: symengine's time symbol (sympy's ``t`` converts to it)
+T_SE = se.Symbol("t")
+
+
+def names_of(expr) -> dict:
+    """``{name: sympy symbol or undefined function}`` of ``expr``'s atoms, to convert back."""
+    expr = sp.sympify(expr, strict=True)
+    out = {s.name: s for s in expr.free_symbols}
+    for f in expr.atoms(sp.core.function.AppliedUndef):
+        out[f.func.__name__] = f.func
+    return out
+
+
+def merge_names(a: dict, b: dict) -> dict:
+    """Union of two name tables; the same name for two different atoms is refused."""
+    if not b or a is b:
+        return a
+    if not a:
+        return b
+    for k, v in b.items():
+        old = a.get(k)
+        if old is not None and old != v:
+            raise ValueError(_clash(k, old, v))
+    return {**a, **b}
+
+
+def _clash(name, a, b) -> str:
+    what = lambda s: _assumptions(s) if isinstance(s, sp.Symbol) else "a function"  # noqa: E731
+    return (f"two different symbols are both called `{name}` (one with assumptions {what(a)}, "
+            f"one with {what(b)}); give them different names or the same assumptions.")
+
+
+def to_se(expr):
+    """symengine form of a sympy expression (functions of ``t`` stay functions)."""
+    return se.sympify(expr)
+
+
+def to_sp(expr, names: dict):
+    """sympy form of a symengine expression, every atom mapped back to the caller's own."""
+    out = sp.sympify(expr)
+    if not names or out.is_Number:
+        return out
+    rules = {}
+    for s in out.free_symbols:
+        mine = names.get(s.name)
+        if isinstance(mine, sp.Symbol) and mine is not s:
+            rules[s] = mine
+    for f in out.atoms(sp.core.function.AppliedUndef):
+        mine = names.get(f.func.__name__)
+        if mine is not None and mine is not f.func and not isinstance(mine, sp.Symbol):
+            rules[f] = mine(*[a.xreplace(rules) for a in f.args])
+    return out.xreplace(rules) if rules else out

@@ -27,10 +27,13 @@ Matrix([[cos(theta(t))*Derivative(phi(t), t), Derivative(theta(t), t), sin(theta
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Iterable
 
+import symengine as se
 import sympy as sp
+
+from ._algebra import T_SE, merge_names, names_of, to_se, to_sp
 from ._expr import as_expr, as_matrix, refuse_text, refuse_text_in
 
 __all__ = [
@@ -106,7 +109,8 @@ class Frame:
     """A reference frame: a rotation matrix and an origin relative to a parent frame.
 
     Build frames with :meth:`Frame.ground` and :meth:`Frame.child`; do not call the
-    constructor directly.
+    constructor directly.  The products of rotation matrices down a chain are formed in
+    symengine (:mod:`dualmech._algebra`) and converted to sympy only when asked for.
     """
 
     def __init__(self, name: str, parent: Frame | None, rotation: sp.Matrix,
@@ -118,6 +122,9 @@ class Frame:
             raise ValueError(f"the rotation of frame `{name}` must be 3x3, "
                              f"got {self.rotation.shape}.")
         self._origin = origin
+        self._rot = None          # (symengine matrix, names), built on first use
+        self._root = None
+        self._dcm: dict = {}
 
     def __repr__(self) -> str:
         return f"Frame({self.name!r})"
@@ -140,15 +147,15 @@ class Frame:
     # -- unit vectors ------------------------------------------------------------------
     @property
     def x(self) -> "Vector":
-        return Vector(self, sp.Matrix([1, 0, 0]))
+        return Vector._of(self, _UNIT[0], {})
 
     @property
     def y(self) -> "Vector":
-        return Vector(self, sp.Matrix([0, 1, 0]))
+        return Vector._of(self, _UNIT[1], {})
 
     @property
     def z(self) -> "Vector":
-        return Vector(self, sp.Matrix([0, 0, 1]))
+        return Vector._of(self, _UNIT[2], {})
 
     def vector(self, *components) -> "Vector":
         """The vector with ``components`` along this frame's x, y, z axes."""
@@ -169,15 +176,49 @@ class Frame:
 
     @property
     def root(self) -> "Frame":
-        return self.chain()[0]
+        f = self
+        while f.parent is not None:
+            f = f.parent
+        return f
+
+    def _rotation_se(self) -> tuple:
+        if self._rot is None:
+            names = {}
+            for c in self.rotation:
+                names = merge_names(names, names_of(c))
+            self._rot = (se.DenseMatrix(3, 3, [to_se(c) for c in self.rotation]), names)
+        return self._rot
+
+    def _root_se(self) -> tuple:
+        """``(R, names)`` with ``v_root = R v_self``, in symengine (built once)."""
+        if self._root is None:
+            if self.parent is None:
+                self._root = (se.eye(3), {})
+            else:
+                (P, pn), (R, rn) = self.parent._root_se(), self._rotation_se()
+                self._root = (R if self.parent.parent is None else P * R, merge_names(pn, rn))
+        return self._root
+
+    def _dcm_se(self, other: "Frame") -> tuple:
+        """``(R, names)`` with ``v_other = R v_self``, in symengine."""
+        if other is self:
+            return se.eye(3), {}
+        if other is self.parent:
+            return self._rotation_se()
+        if self is other.parent:
+            R, names = other._rotation_se()
+            return R.T, names
+        hit = self._dcm.get(id(other))
+        if hit is None or hit[0] is not other:
+            _same_tree(self, other)
+            (Ro, no), (Rs, ns) = other._root_se(), self._root_se()
+            hit = self._dcm[id(other)] = (other, Ro.T * Rs, merge_names(no, ns))
+        return hit[1], hit[2]
 
     def rotation_to_root(self) -> sp.Matrix:
-        """``R`` with ``v_root = R v_self`` (computed once: a frame's rotation never changes)."""
-        R = self.__dict__.get("_to_root")
-        if R is None:
-            R = self.parent.rotation_to_root() * self.rotation if self.parent else sp.eye(3)
-            self._to_root = R
-        return R
+        """``R`` with ``v_root = R v_self``."""
+        R, names = self._root_se()
+        return _sp_matrix(R, names)
 
     def dcm(self, other: "Frame") -> sp.Matrix:
         """``R`` with ``v_other = R v_self``: components in ``self`` to components in ``other``."""
@@ -188,16 +229,17 @@ class Frame:
             return self.rotation
         if self is other.parent:
             return other.rotation.T
-        cache = self.__dict__.setdefault("_dcm", {})
-        hit = cache.get(id(other))
-        if hit is None or hit[0] is not other:
-            hit = cache[id(other)] = (other, other.rotation_to_root().T * self.rotation_to_root())
-        return hit[1]
+        return _sp_matrix(*self._dcm_se(other))
 
     def ang_vel_in(self, other: "Frame") -> "Vector":
         """Angular velocity of this frame relative to ``other``, from the rotation matrices."""
         _same_tree(self, other)
-        return self._ang_vel_root() - other._ang_vel_root()
+        return self._ang_vel(other)
+
+    def _ang_vel(self, other: "Frame") -> "Vector":
+        if other is self.root:
+            return self._ang_vel_root()
+        return self._ang_vel_root()._sub(other._ang_vel_root())
 
     def ang_acc_in(self, other: "Frame") -> "Vector":
         """Angular acceleration of this frame relative to ``other`` (derivative seen in ``other``)."""
@@ -210,19 +252,29 @@ class Frame:
         so a deep chain (z-y-z Euler angles) gives the short textbook components instead of
         the root components multiplied through every rotation matrix.
         """
-        if self.__dict__.get("_w_root") is None:
-            w = sp.zeros(3, 1)
-            for f in self.chain()[1:]:
-                w = f.rotation.T * w + _relative_rate(f.rotation)
-            self._w_root = Vector(self, w)  # a frame's rotation never changes: built once
-        return self._w_root
+        w = self.__dict__.get("_w_root")
+        if w is None:
+            if self.parent is None:
+                w = Vector._of(self, (_ZERO, _ZERO, _ZERO), {})
+            else:
+                up = self.parent._ang_vel_root()
+                R, names = self._rotation_se()
+                rate = _relative_rate(self.rotation)
+                rn = {}
+                for c in rate:
+                    rn = merge_names(rn, names_of(c))
+                comps = R.T * se.DenseMatrix(3, 1, list(up._comps))
+                w = Vector._of(self, tuple(comps[i] + to_se(rate[i]) for i in range(3)),
+                               merge_names(merge_names(up._names, names), rn))
+            self._w_root = w   # a frame's rotation never changes: built once
+        return w
 
     def origin_from_root(self) -> "Vector":
         """Position of this frame's origin relative to the root origin."""
-        total = Vector(self.root, sp.zeros(3, 1))
+        total = Vector._of(self.root, (_ZERO, _ZERO, _ZERO), {})
         for f in self.chain()[1:]:
             if f._origin is not None:
-                total = total + f._origin
+                total = total._add(f._origin)
         return total
 
 
@@ -237,6 +289,8 @@ def _relative_rate(R: sp.Matrix) -> sp.Matrix:
                 w = [0, 0, 0]
                 w[i] = a.diff(t)
                 return sp.Matrix(w)
+    if all(x.is_number for x in R):
+        return sp.zeros(3, 1)
     return unskew(R.T * R.diff(t)).applyfunc(sp.trigsimp)
 
 
@@ -246,59 +300,149 @@ def _same_tree(a: Frame, b: Frame) -> None:
                          "build every frame from one ground frame.")
 
 
+def _sp_matrix(M, names) -> sp.Matrix:
+    return sp.Matrix(M.rows, M.cols, [to_sp(x, names) for x in M])
+
+
+_ZERO, _ONE = se.Integer(0), se.Integer(1)
+_UNIT = ((_ONE, _ZERO, _ZERO), (_ZERO, _ONE, _ZERO), (_ZERO, _ZERO, _ONE))
+
+
 @refuse_text_in
-@dataclass(frozen=True)
 class Vector:
-    """A vector as its components in one frame.  Arithmetic converts to the left operand's frame."""
+    """A vector as its components in one frame.  Arithmetic converts to the left operand's frame.
 
-    frame: Frame
-    components: sp.Matrix = field(compare=False)
+    ``components`` is a sympy column; the arithmetic runs on a symengine copy of it
+    (:mod:`dualmech._algebra`), so a chain of products and time derivatives builds no sympy
+    expression until someone reads the result.
+    """
 
-    def __post_init__(self):
-        comps = as_matrix(self.components)
+    def __init__(self, frame: Frame, components):
+        comps = as_matrix(components)
         if comps.shape != (3, 1):
             raise ValueError(f"a vector needs 3x1 components, got {comps.shape}.")
-        object.__setattr__(self, "components", comps)
+        self.frame = frame
+        self._sp = comps
+        self._se = None
+        self._nm = None
+
+    @classmethod
+    def _of(cls, frame: Frame, comps: tuple, names: dict) -> "Vector":
+        v = cls.__new__(cls)
+        v.frame, v._sp, v._se, v._nm = frame, None, tuple(comps), names
+        return v
+
+    # -- the two forms -----------------------------------------------------------------
+    @property
+    def components(self) -> sp.Matrix:
+        """Components in :attr:`frame` (a sympy 3x1 matrix)."""
+        if self._sp is None:
+            self._sp = sp.Matrix(3, 1, [to_sp(c, self._nm) for c in self._se])
+        return self._sp
+
+    @property
+    def _comps(self) -> tuple:
+        if self._se is None:
+            names = {}
+            for c in self._sp:
+                names = merge_names(names, names_of(c))
+            self._se, self._nm = tuple(to_se(c) for c in self._sp), names
+        return self._se
+
+    @property
+    def _names(self) -> dict:
+        if self._nm is None:
+            self._comps  # noqa: B018
+        return self._nm
 
     def __repr__(self) -> str:
         return f"Vector({self.frame.name}, {list(self.components)})"
 
-    def express(self, frame: Frame) -> "Vector":
-        """The same vector with components in ``frame``."""
+    # -- arithmetic (symengine) ----------------------------------------------------------
+    def _in(self, frame: Frame) -> "Vector":
         if frame is self.frame:
             return self
-        return Vector(frame, self.frame.dcm(frame) * self.components)
+        R, names = self.frame._dcm_se(frame)
+        c = self._comps
+        comps = tuple(R[i, 0] * c[0] + R[i, 1] * c[1] + R[i, 2] * c[2] for i in range(3))
+        return Vector._of(frame, comps, merge_names(self._names, names))
+
+    def _add(self, other: "Vector") -> "Vector":
+        o = other._in(self.frame)
+        return Vector._of(self.frame, tuple(a + b for a, b in zip(self._comps, o._comps)),
+                          merge_names(self._names, o._names))
+
+    def _sub(self, other: "Vector") -> "Vector":
+        o = other._in(self.frame)
+        return Vector._of(self.frame, tuple(a - b for a, b in zip(self._comps, o._comps)),
+                          merge_names(self._names, o._names))
+
+    def _scaled(self, k, names: dict) -> "Vector":
+        return Vector._of(self.frame, tuple(k * c for c in self._comps),
+                          merge_names(self._names, names))
+
+    def _dot(self, other: "Vector") -> tuple:
+        """``(value, names)`` of the dot product, in symengine."""
+        o = other._in(self.frame)
+        a, b = self._comps, o._comps
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2], merge_names(self._names, o._names)
+
+    def _cross(self, other: "Vector") -> "Vector":
+        o = other._in(self.frame)
+        a, b = self._comps, o._comps
+        comps = (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+        return Vector._of(self.frame, comps, merge_names(self._names, o._names))
+
+    def _dt(self, frame: Frame) -> "Vector":
+        local = Vector._of(self.frame, tuple(c.diff(T_SE) for c in self._comps), self._names)
+        if frame is self.frame:
+            return local
+        return local._add(self.frame._ang_vel(frame)._cross(self))
+
+    def _is_zero(self) -> bool:
+        return all(c == 0 for c in self._comps)
+
+    # -- public ------------------------------------------------------------------------
+    def express(self, frame: Frame) -> "Vector":
+        """The same vector with components in ``frame``."""
+        if frame is not self.frame:
+            _same_tree(self.frame, frame)
+        return self._in(frame)
 
     def __add__(self, other: "Vector") -> "Vector":
         if isinstance(other, int) and other == 0:
             return self
         if not isinstance(other, Vector):
             return NotImplemented
-        return Vector(self.frame, self.components + other.express(self.frame).components)
+        return self._add(other)
 
     __radd__ = __add__
 
     def __neg__(self) -> "Vector":
-        return Vector(self.frame, -self.components)
+        return Vector._of(self.frame, tuple(-c for c in self._comps), self._names)
 
     def __sub__(self, other: "Vector") -> "Vector":
-        return self + (-other)
+        if not isinstance(other, Vector):
+            return NotImplemented
+        return self._sub(other)
 
     def __mul__(self, scalar) -> "Vector":
         if isinstance(scalar, Vector):
             raise TypeError("use `dot` or `cross` to multiply two vectors.")
-        return Vector(self.frame, self.components * as_expr(scalar))
+        k = as_expr(scalar)
+        return self._scaled(to_se(k), names_of(k))
 
     __rmul__ = __mul__
 
     def __truediv__(self, scalar) -> "Vector":
-        return Vector(self.frame, self.components / as_expr(scalar))
+        k = as_expr(scalar)
+        return self._scaled(1 / to_se(k), names_of(k))
 
     def dot(self, other: "Vector") -> sp.Expr:
-        return (self.components.T * other.express(self.frame).components)[0, 0]
+        return to_sp(*self._dot(other))
 
     def cross(self, other: "Vector") -> "Vector":
-        return Vector(self.frame, skew(self.components) * other.express(self.frame).components)
+        return self._cross(other)
 
     def outer(self, other: "Vector") -> sp.Matrix:
         """Components of the dyad ``self (x) other`` in ``self.frame``."""
@@ -306,10 +450,7 @@ class Vector:
 
     def dt(self, frame: Frame) -> "Vector":
         """Time derivative as seen from ``frame`` (transport theorem)."""
-        local = Vector(self.frame, self.components.diff(t))
-        if frame is self.frame:
-            return local
-        return local + self.frame.ang_vel_in(frame).cross(self)
+        return self._dt(frame)
 
     def diff(self, var, frame: Frame) -> "Vector":
         """Partial derivative with respect to ``var`` (a symbol, coordinate or its rate) in ``frame``."""
@@ -355,23 +496,23 @@ class Point:
         axes), so its derivatives stay short instead of passing through every rotation matrix
         up to the root.
         """
-        if self._position.components.is_zero_matrix:
+        if self._position._is_zero():
             return Point(name, r)
-        return Point(name, self._position + r)
+        return Point(name, self._position._add(r))
 
     def pos_from(self, other: "Point | None" = None) -> Vector:
         """Position relative to ``other`` (the root origin by default)."""
         if other is None:
             return self._position
-        return self._position - other._position
+        return self._position._sub(other._position)
 
     def vel(self, frame: Frame) -> Vector:
         """Velocity seen from ``frame``."""
-        return self._position.dt(frame)
+        return self._position._dt(frame)
 
     def acc(self, frame: Frame) -> Vector:
         """Acceleration seen from ``frame``."""
-        return self._position.dt(frame).dt(frame)
+        return self._position._dt(frame)._dt(frame)
 
 
 @refuse_text_in

@@ -312,9 +312,6 @@ def test_falling_container_direct_model_in_other_coordinates_is_the_odd_one():
     assert_readable(c)
 
 
-@pytest.mark.xfail(strict=True, reason="explain_model writes a model in its own coordinates "
-                   "when it has the problem (tests/test_explain_coordinates.py), but compare() "
-                   "does not hand it over yet: sampling.Context must keep `problem`")
 def test_falling_container_odd_model_is_explained_in_its_own_coordinates():
     wrong = mismatches_of(compared(FallingContainerDashpotFlipped), "newton_euler_y")
     for mm in wrong.values():

@@ -37,6 +37,7 @@ class Context:
     """
 
     def __init__(self, coordinates, parameters=(), problem=None):
+        self.problem = problem
         self.coordinates = tuple(coordinates)
         self.states = [state_symbols(q) for q in self.coordinates]
         self.parameters = tuple(parameters)
