@@ -103,11 +103,14 @@ T_SE = se.Symbol("t")
 
 
 def names_of(expr) -> dict:
-    """``{name: sympy symbol or undefined function}`` of ``expr``'s atoms, to convert back."""
+    """``{name: symbol}`` and ``{name + "()": undefined function}`` of ``expr``'s atoms, to
+    convert back (see :func:`to_sp`)."""
     expr = sp.sympify(expr, strict=True)
+    if expr.is_Number:
+        return {}
     out = {s.name: s for s in expr.free_symbols}
     for f in expr.atoms(sp.core.function.AppliedUndef):
-        out[f.func.__name__] = f.func
+        out[f.func.__name__ + "()"] = f.func
     return out
 
 
@@ -125,7 +128,7 @@ def merge_names(a: dict, b: dict) -> dict:
 
 
 def _clash(name, a, b) -> str:
-    what = lambda s: _assumptions(s) if isinstance(s, sp.Symbol) else "a function"  # noqa: E731
+    what = lambda s: _assumptions(s) if isinstance(s, sp.Symbol) else str(s)  # noqa: E731
     return (f"two different symbols are both called `{name}` (one with assumptions {what(a)}, "
             f"one with {what(b)}); give them different names or the same assumptions.")
 
@@ -135,18 +138,73 @@ def to_se(expr):
     return se.sympify(expr)
 
 
-def to_sp(expr, names: dict):
-    """sympy form of a symengine expression, every atom mapped back to the caller's own."""
-    out = sp.sympify(expr)
+def to_sp(expr, names: dict, memo: dict | None = None):
+    """sympy form of a symengine expression, every atom mapped back to the caller's own.
+
+    ``names`` maps a symbol's name to the caller's symbol and ``name + "()"`` to the caller's
+    undefined function (see :func:`names_of`).  The tree is rebuilt node by node with the
+    caller's atoms in place (shared subtrees once, through ``memo``), instead of converting
+    and then substituting, which walks the result a second time.
+    """
+    return _Back(names, memo if memo is not None else {}).node(expr)
+
+
+class _Back:
+    def __init__(self, names: dict, memo: dict):
+        self.names, self.memo = names, memo
+
+    def node(self, e):
+        hit = self.memo.get(e)
+        if hit is not None:
+            return hit
+        if e.is_Symbol:
+            out = self.names.get(e.name) or sp.Symbol(e.name)
+        elif e.is_Integer:
+            out = sp.Integer(int(e))
+        elif e.is_Rational:
+            p, q = e.get_num_den()
+            out = sp.Rational(int(p), int(q))
+        elif e.is_Add:
+            out = sp.Add(*[self.node(a) for a in e.args])
+        elif e.is_Mul:
+            out = sp.Mul(*[self.node(a) for a in e.args])
+        elif e.is_Pow:
+            b, x = e.args
+            out = sp.Pow(self.node(b), self.node(x))
+        elif isinstance(e, se.FunctionSymbol):
+            name = e.get_name()
+            f = self.names.get(name + "()") or sp.Function(name)
+            out = f(*[self.node(a) for a in e.args])
+        elif e.is_Derivative:
+            out = sp.Derivative(*[self.node(a) for a in e.args])
+        else:
+            f = _FUNCTIONS.get(type(e).__name__)
+            if f is not None:
+                out = f(*[self.node(a) for a in e.args])
+            else:   # constants and anything rarer: symengine's own conversion, then fixed up
+                out = _fix(sp.sympify(e), self.names)
+        self.memo[e] = out
+        return out
+
+
+#: symengine's class name -> sympy's function, for the common ones (the rest convert by
+#: symengine's own route)
+_FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec,
+              "csc": sp.csc, "asin": sp.asin, "acos": sp.acos, "atan": sp.atan,
+              "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh, "log": sp.log,
+              "Abs": sp.Abs, "sign": sp.sign}
+
+
+def _fix(out, names: dict):
     if not names or out.is_Number:
         return out
     rules = {}
     for s in out.free_symbols:
         mine = names.get(s.name)
-        if isinstance(mine, sp.Symbol) and mine is not s:
+        if mine is not None and mine is not s:
             rules[s] = mine
     for f in out.atoms(sp.core.function.AppliedUndef):
-        mine = names.get(f.func.__name__)
-        if mine is not None and mine is not f.func and not isinstance(mine, sp.Symbol):
+        mine = names.get(f.func.__name__ + "()")
+        if mine is not None and mine is not f.func:
             rules[f] = mine(*[a.xreplace(rules) for a in f.args])
     return out.xreplace(rules) if rules else out

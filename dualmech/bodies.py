@@ -28,6 +28,7 @@ from typing import Iterable
 
 import sympy as sp
 
+from ._algebra import merge_names, names_of, to_se
 from ._expr import as_expr, as_matrix, refuse_text, refuse_text_in
 from .kinematics import Frame, Point, Vector
 
@@ -190,11 +191,23 @@ class RigidBody:
         ``I_B w + m r_BC x v_B``; for a point that is not (a pivot of another body, a point of
         a system), only the centre form is the angular momentum.
         """
-        w = self.angular_velocity(frame).express(self.frame)
-        spin = Vector(self.frame, self.inertia * w.components)
-        return spin + self.masscenter.pos_from(about).cross(self.linear_momentum(frame))
+        w = self.angular_velocity(frame)._in(self.frame)
+        spin = _times(self.inertia, w)
+        return spin._add(self.masscenter.pos_from(about)._cross(self.linear_momentum(frame)))
 
     def kinetic_energy(self, frame: Frame) -> sp.Expr:
         v = self.masscenter.vel(frame)
         w = self.angular_velocity(frame).express(self.frame).components
         return self.mass * v.dot(v) / 2 + (w.T * self.inertia * w)[0, 0] / 2
+
+
+def _times(inertia: sp.Matrix, w: Vector) -> Vector:
+    """``I w`` in ``w``'s frame, on symengine (``I`` given in that frame's axes)."""
+    names, I = w._names, []
+    for x in inertia:
+        I.append(to_se(x))
+        names = merge_names(names, names_of(x))
+    c = w._comps
+    return Vector._of(w.frame, tuple(I[3 * i] * c[0] + I[3 * i + 1] * c[1] + I[3 * i + 2] * c[2]
+                                     for i in range(3)), names)
+

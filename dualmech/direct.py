@@ -36,10 +36,11 @@ from typing import Sequence
 
 import sympy as sp
 
-from ._expr import refuse_text_in
+from ._algebra import merge_names, names_of, to_se
+from ._expr import as_expr, refuse_text_in
 
 from .bodies import Particle, RigidBody
-from .equations import EquationSet, ModelError
+from .equations import EquationSet, ModelError, Rows
 from .kinematics import Frame, Point, Vector
 
 __all__ = ["NewtonEuler", "Load"]
@@ -70,7 +71,8 @@ class NewtonEuler:
         self._loads: dict[int, list[Load]] = {}
         self._bodies: dict[int, Body] = {}
         self._unknowns: list[sp.Symbol] = []
-        self._equations: list[tuple[str, dict]] = []
+        self._equations: list[tuple[str, dict]] = []   # parts held in symengine
+        self._names: dict = {}
 
     # -- free-body diagrams ------------------------------------------------------------
     def _add(self, body: Body, load: Load) -> None:
@@ -202,9 +204,9 @@ class NewtonEuler:
             self._bodies[id(b)] = b
             for ld in self._all_loads(b):
                 if ld.force is not None:
-                    _acc(parts, ld.key, ld.force.dot(direction))
+                    self._acc(parts, ld.key, ld.force._dot(direction))
             a = b.masscenter.acc(self.ground)
-            _acc(parts, f"inertia of {b.name}", -b.mass * a.dot(direction))
+            self._acc(parts, f"inertia of {b.name}", a._dot(direction), -b.mass)
         self._equations.append((label or f"sum F . {_dir_name(direction)} ({_names(bodies)})", parts))
 
     def angular_momentum(self, body: Body | Sequence[Body], direction: Vector,
@@ -223,22 +225,27 @@ class NewtonEuler:
         for b in bodies:
             self._bodies[id(b)] = b
             for ld in self._all_loads(b):
-                moment = 0
+                moment, names = to_se(0), {}
                 if ld.force is not None:
-                    moment = ld.point.pos_from(about).cross(ld.force).dot(direction)
+                    moment, names = ld.point.pos_from(about)._cross(ld.force)._dot(direction)
                 if ld.torque is not None:
-                    moment = moment + ld.torque.dot(direction)
+                    m2, n2 = ld.torque._dot(direction)
+                    moment, names = moment + m2, merge_names(names, n2)
                 if moment != 0:
-                    _acc(parts, ld.key, moment)
+                    self._acc(parts, ld.key, (moment, names))
             H = b.angular_momentum(about, self.ground)
-            rate = H.dt(self.ground) + b.mass * vB.cross(b.masscenter.vel(self.ground))
-            _acc(parts, f"inertia of {b.name}", -rate.dot(direction))
+            rate = H._dt(self.ground)._add(b.mass * vB._cross(b.masscenter.vel(self.ground)))
+            self._acc(parts, f"inertia of {b.name}", rate._dot(direction), -1)
         self._equations.append(
             (label or f"sum tau_{about.name} . {_dir_name(direction)} ({_names(bodies)})", parts))
 
     def equation(self, label: str, parts: dict) -> None:
         """Add an equation given directly as ``{ingredient: expression}`` (sum = 0)."""
-        self._equations.append((label, dict(parts)))
+        mine: dict = {}
+        for key, value in parts.items():
+            value = as_expr(value)
+            self._acc(mine, key, (to_se(value), names_of(value)))
+        self._equations.append((label, mine))
 
     def equations(self) -> EquationSet:
         """The :class:`EquationSet` (see :meth:`EquationSet.simplified` for a tidier form)."""
@@ -246,14 +253,26 @@ class NewtonEuler:
             raise ModelError(f"`{self.name}` has no equations: call linear_momentum or "
                              "angular_momentum for each body.")
         contributions = [dict(parts) for _, parts in self._equations]
-        eqs = tuple(sp.Add(*c.values()) for c in contributions)
-        return EquationSet(self.name, self.coordinates, eqs, tuple(self._unknowns),
+        eqs = [sum(c.values(), to_se(0)) for c in contributions]
+        names = self._names
+        for u in self._unknowns:
+            names = merge_names(names, {u.name: u})
+        return EquationSet(self.name, self.coordinates,
+                           Rows(eqs, names, self.coordinates, plain=False),
+                           tuple(self._unknowns),
                            tuple(label for label, _ in self._equations),
-                           tuple(contributions), self.description)
+                           Rows(contributions, names, self.coordinates, plain=False),
+                           self.description)
 
-
-def _acc(parts: dict, key: str, value) -> None:
-    parts[key] = parts.get(key, 0) + value
+    def _acc(self, parts: dict, key: str, value_names: tuple, factor=None) -> None:
+        """Add a symengine term (``(value, names)``, times the sympy ``factor``) to ``parts``."""
+        value, names = value_names
+        if factor is not None:
+            factor = as_expr(factor)
+            value = to_se(factor) * value
+            names = merge_names(names, names_of(factor))
+        self._names = merge_names(self._names, names)
+        parts[key] = parts.get(key, 0) + value
 
 
 def _as_list(body) -> list:

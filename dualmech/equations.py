@@ -25,13 +25,15 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Mapping, Sequence
 
+import symengine as se
 import sympy as sp
 
 from ._expr import as_expr, refuse_text_in
-from ._algebra import linear_coefficients
+from ._algebra import T_SE, linear_coefficients, names_of, to_se, to_sp
 from .kinematics import t
 
-__all__ = ["EquationSet", "ModelError", "StateSymbols", "is_zero_expression", "state_symbols"]
+__all__ = ["EquationSet", "ModelError", "Rows", "StateSymbols", "is_zero_expression",
+           "state_symbols"]
 
 
 class ModelError(ValueError):
@@ -68,6 +70,67 @@ def state_symbols(q: sp.Expr) -> StateSymbols:
     return _STATE_CACHE[q]
 
 
+class Rows(Sequence):
+    """Equations (or per-equation ``{ingredient: term}`` dicts) held in symengine by a
+    derivation and converted to sympy when first read.
+
+    A derivation builds its equations on symengine (:mod:`dualmech._algebra`); the verdict
+    needs only their linear structure (:meth:`EquationSet.plain_matrix`), so the sympy form,
+    which costs more to build than the derivation itself, is made only for a reader.
+    ``plain`` says whether the rows are written in plain state symbols (see
+    :func:`state_symbols`) or in the coordinates as functions of time.
+    """
+
+    __slots__ = ("se", "names", "coordinates", "plain", "_sp")
+
+    def __init__(self, exprs, names: dict, coordinates, plain: bool):
+        self.se = tuple(exprs)
+        self.names = names
+        self.coordinates = tuple(coordinates)
+        self.plain = plain
+        self._sp = None
+
+    def materialise(self) -> tuple:
+        """The sympy form (built once)."""
+        if self._sp is None:
+            names, memo = self.names, {}
+            if self.plain:   # plain state symbols straight to q(t), q', q''
+                names = dict(names)
+                for q in self.coordinates:
+                    s = state_symbols(q)
+                    names.update({s.q.name: q, s.qd.name: q.diff(t), s.qdd.name: q.diff(t, 2)})
+            conv = lambda e: to_sp(e, names, memo)  # noqa: E731
+            self._sp = tuple({k: conv(v) for k, v in x.items()} if isinstance(x, dict)
+                             else conv(x) for x in self.se)
+        return self._sp
+
+    def __len__(self) -> int:
+        return len(self.se)
+
+    def __getitem__(self, i):
+        return self.materialise()[i]
+
+    def __iter__(self):
+        return iter(self.materialise())
+
+    def __eq__(self, other) -> bool:
+        return tuple(self) == (tuple(other) if isinstance(other, Sequence) else other)
+
+    __hash__ = None
+
+    def __add__(self, other):
+        return tuple(self) + tuple(other)
+
+    def __radd__(self, other):
+        return tuple(other) + tuple(self)
+
+    def __repr__(self) -> str:
+        return repr(self.materialise())
+
+    def __reduce__(self):   # symengine objects do not pickle: the sympy form does
+        return (tuple, (self.materialise(),))
+
+
 @refuse_text_in
 @dataclass(frozen=True, eq=False)
 class EquationSet:
@@ -100,7 +163,10 @@ class EquationSet:
 
     def __post_init__(self):
         object.__setattr__(self, "coordinates", tuple(self.coordinates))
-        object.__setattr__(self, "equations", tuple(as_expr(e) for e in self.equations))
+        if not isinstance(self.equations, Rows):
+            object.__setattr__(self, "equations", tuple(as_expr(e) for e in self.equations))
+        if not isinstance(self.contributions, Rows):
+            object.__setattr__(self, "contributions", tuple(self.contributions))
         object.__setattr__(self, "unknowns", tuple(self.unknowns))
         if not self.equations:
             raise ModelError(f"model `{self.name}` has no equations.")
@@ -114,6 +180,11 @@ class EquationSet:
                              f"{len(self.equations)} equations.")
         object.__setattr__(self, "labels", labels)
         self._check_linear()
+
+    def __getstate__(self) -> dict:
+        state = dict(self.__dict__)
+        state.pop("_plain_se", None)   # symengine matrices do not pickle (rebuilt on demand)
+        return state
 
     # -- symbols -----------------------------------------------------------------------
     @property
@@ -144,17 +215,66 @@ class EquationSet:
     @cached_property
     def _plain(self) -> tuple[sp.Matrix, sp.Matrix]:
         """``(A, b)`` in plain symbols (``q``, ``q_dot``; see :func:`state_symbols`)."""
+        if isinstance(self.equations, Rows):
+            A, b, names = self._plain_se
+            memo: dict = {}   # shared subexpressions converted once
+            return (sp.Matrix(A.rows, A.cols, [to_sp(x, names, memo) for x in A]),
+                    sp.Matrix(b.rows, 1, [to_sp(x, names, memo) for x in b]))
         plain = [self.to_plain(e) for e in self.equations]
         unknown = [s.qdd for s in self.states] + list(self.unknowns)
         try:
             A, b, bad = linear_coefficients(plain, unknown)
         except ValueError as exc:
             raise ModelError(f"model `{self.name}`: {exc}") from None
+        self._refuse_nonlinear(bad)
+        return A, b
+
+    def _refuse_nonlinear(self, bad) -> None:
         if bad:
             names = [from_plain(u, self.coordinates) for u in bad]
             raise ModelError(f"model `{self.name}` is not linear in {names}; the equations must "
                              "be linear in the accelerations and the reactions.")
-        return A, b
+
+    @cached_property
+    def _plain_se(self) -> tuple:
+        """``(A, b, names)`` of equations held in symengine (:class:`Rows`), in plain
+        symbols, without building a sympy expression."""
+        rows = self.equations
+        names = dict(rows.names)
+        rules = {}
+        for s in self.states:
+            for sym in (s.q, s.qd, s.qdd):
+                names[sym.name] = sym
+            if not rows.plain:
+                f = to_se(s.function)
+                rules[f.diff(T_SE, 2)] = se.Symbol(s.qdd.name)
+                rules[f.diff(T_SE)] = se.Symbol(s.qd.name)
+                rules[f] = se.Symbol(s.q.name)
+        exprs = [e.xreplace(rules) for e in rows.se] if rules else list(rows.se)
+        for e in exprs:
+            left = e.atoms(se.Derivative) | e.atoms(se.FunctionSymbol)
+            if left:
+                what = to_sp(next(iter(left)), names)
+                raise ModelError(f"model `{self.name}` contains {what}: only the coordinates "
+                                 f"{list(self.coordinates)}, their rates and accelerations "
+                                 "may appear.")
+        unknown = [se.Symbol(s.qdd.name) for s in self.states] + \
+            [se.Symbol(u.name) for u in self.unknowns]
+        for u in self.unknowns:
+            names[u.name] = u
+        us = set(unknown)
+        zero = {u: 0 for u in unknown}
+        A, b, bad = [], [], []
+        for e in exprs:
+            for u in unknown:
+                a = e.diff(u)
+                if a != 0 and a.free_symbols & us:
+                    bad.append(u)
+                A.append(a)
+            b.append(-e.xreplace(zero))
+        self._refuse_nonlinear([to_sp(u, names) for u in dict.fromkeys(bad)])
+        return (se.DenseMatrix(len(exprs), len(unknown), A), se.DenseMatrix(len(exprs), 1, b),
+                names)
 
     @cached_property
     def _matrix(self) -> tuple[sp.Matrix, sp.Matrix]:
@@ -163,6 +283,9 @@ class EquationSet:
         return A.applyfunc(back), b.applyfunc(back)
 
     def _check_linear(self) -> None:
+        if isinstance(self.equations, Rows):
+            self._plain_se  # noqa: B018  (raises ModelError when not linear)
+            return
         allowed = set(self.coordinates)
         for e in self.equations:
             for d in e.atoms(sp.Derivative):
@@ -174,6 +297,21 @@ class EquationSet:
                     raise ModelError(f"model `{self.name}` uses {f}, which is not one of its "
                                      f"coordinates {list(self.coordinates)}.")
         self._plain  # noqa: B018  (raises ModelError when not linear)
+
+    def free_symbols(self) -> set:
+        """Symbols of the equations other than time-dependent coordinates (parameters,
+        reactions, ``t``), read without converting equations held in symengine."""
+        if isinstance(self.equations, Rows):
+            names = self.equations.names
+            out = set()
+            for e in self.equations.se:
+                for s in e.free_symbols:
+                    mine = names.get(s.name)
+                    out.add(mine if isinstance(mine, sp.Symbol) else sp.Symbol(s.name))
+            if self.equations.plain:
+                out -= {x for st in self.states for x in (st.q, st.qd, st.qdd)}
+            return out
+        return set().union(*(e.free_symbols for e in self.equations))
 
     def plain_matrix(self) -> tuple[sp.Matrix, sp.Matrix]:
         """``(A, b)`` with ``A [q''; unknowns] = b``, in plain state symbols."""

@@ -26,12 +26,13 @@ from __future__ import annotations
 
 from typing import Sequence
 
+import symengine as se
 import sympy as sp
 
 from ._expr import as_expr, refuse_text_in
 from .bodies import Particle, RigidBody
 from ._algebra import Bridge, total_derivative
-from .equations import EquationSet, ModelError, from_plain, state_symbols, to_plain
+from .equations import EquationSet, ModelError, Rows, state_symbols, to_plain
 from .kinematics import Frame, Point, Vector, t
 
 __all__ = ["Lagrangian"]
@@ -185,11 +186,10 @@ class Lagrangian:
         for lam, level, _ in cons:
             contributions.append((f"constraint {lam.name} (acceleration level)",
                                   {f"constraint {lam.name}": br.se(level)}))
-        back = lambda e: from_plain(br.sp(e), free)  # noqa: E731
-        contributions = [(label, {k: back(v) for k, v in p.items()})
-                         for label, p in contributions]
-        eqs = tuple(sp.Add(*p.values()) for _, p in contributions)
-        return EquationSet(self.name, tuple(free), eqs,
+        names = dict(br.by_name)
+        eqs = [sum(p.values(), se.Integer(0)) for _, p in contributions]
+        return EquationSet(self.name, tuple(free), Rows(eqs, names, free, plain=True),
                            tuple(lam for lam, _, _ in self._constraints),
                            tuple(label for label, _ in contributions),
-                           tuple(p for _, p in contributions), self.description)
+                           Rows([p for _, p in contributions], names, free, plain=True),
+                           self.description)

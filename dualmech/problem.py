@@ -307,9 +307,8 @@ class Problem:
                 if u.name not in reaction_names:
                     errors.append(f"model `{mname}`: reaction `{u}` is not declared in "
                                   "`reactions`")
-            for e in eqs.equations:
-                for s in e.free_symbols - declared - set(eqs.unknowns):
-                    errors.append(f"model `{mname}`: symbol `{s}` is not a declared parameter")
+            for s in sorted(eqs.free_symbols() - declared - set(eqs.unknowns), key=str):
+                errors.append(f"model `{mname}`: symbol `{s}` is not a declared parameter")
             for q in eqs.coordinates:
                 if q not in dims:
                     errors.append(f"model `{mname}`: coordinate {q} is not declared")

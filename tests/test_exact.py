@@ -3,6 +3,8 @@ import random
 from fractions import Fraction
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 import sympy as sp
 
 from dualmech.exact import ExactForm, SAMPLE_BITS
@@ -169,3 +171,22 @@ def test_display_method_keeps_the_working_ranges():
     rng = random.Random(0)
     assert form.method == "mpmath" and not form.certain({})
     assert all(-1.2 <= form.sample(rng, {th: (-1.2, 1.2)})[th] <= 1.2 for _ in range(50))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(1, 6), st.integers(1, 7), st.integers(0, 3), st.integers(0, 2**32 - 1))
+def test_fraction_free_rref_is_the_reduced_echelon_form(m, n, deficiency, seed):
+    """Exact rows go through integer (fraction-free) Gauss--Jordan; the reduced echelon form
+    is unique, so it must equal sympy's ``Matrix.rref`` (an independent implementation),
+    also for rank-deficient matrices (rows built as combinations of others)."""
+    from dualmech.verify.linalg import rref_info
+    rng = random.Random(seed)
+    rows = [[Fraction(rng.randint(-9, 9), rng.randint(1, 5)) for _ in range(n)] for _ in range(m)]
+    for i in range(min(deficiency, m - 1)):   # dependent rows
+        a, b = Fraction(rng.randint(-3, 3)), Fraction(rng.randint(-3, 3), 2)
+        rows[m - 1 - i] = [a * x + b * y for x, y in zip(rows[0], rows[min(1, m - 1)])]
+    R, pivots, ambiguous = rref_info([list(r) for r in rows])
+    want, want_pivots = sp.Matrix(rows).applyfunc(sp.Rational).rref()
+    assert list(pivots) == list(want_pivots) and ambiguous == []
+    assert [[sp.Rational(v.numerator, v.denominator) for v in r] for r in R] == \
+        want.tolist()

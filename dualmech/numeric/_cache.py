@@ -20,7 +20,7 @@ import os
 import sys
 import tempfile
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Sequence
 
 import sympy as sp
 
@@ -63,7 +63,7 @@ def _node(e, memo: dict) -> str:
         return hit[1]
     if isinstance(e, str):
         text = "s:" + e
-    elif isinstance(e, (list, tuple)):
+    elif isinstance(e, (list, tuple, Sequence)):   # also equations held in symengine
         text = "l:" + ",".join(_node(a, memo) for a in e)
     elif isinstance(e, sp.Basic) and not e.args:
         text = "a:" + sp.srepr(e)

@@ -22,6 +22,7 @@ Example
 """
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 
 import mpmath
@@ -96,6 +97,9 @@ def _pivot(A, r, c, kind, tol):
 def rref_info(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
     """Reduced row echelon form, pivot columns, and ambiguous columns (interval kind only)."""
     kind = kind_of(rows)
+    if kind == "exact" and rows and rows[0] and \
+            all(type(v) is Fraction or type(v) is int for r in rows for v in r):
+        return _rref_integer(rows)
     A = _prepare(rows, kind)
     tol = 0
     if kind == "float":
@@ -122,6 +126,40 @@ def rref_info(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
         pivots.append(c)
         r += 1
     return A, pivots, ambiguous
+
+
+def _rref_integer(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
+    """:func:`rref_info` of a rational matrix, fraction-free: each row is scaled to integers,
+    eliminated with integer arithmetic (each new row divided by the gcd of its entries), and
+    divided by its pivot at the end.  The reduced echelon form is unique, so this is the
+    same result as Gauss--Jordan on fractions, without a gcd per operation."""
+    A = []
+    for row in rows:
+        den = math.lcm(*[v.denominator for v in row])
+        A.append([v.numerator * (den // v.denominator) for v in row])
+    m, ncols = len(A), len(A[0])
+    pivots, r = [], 0
+    for c in range(ncols):
+        if r == m:
+            break
+        nonzero = [i for i in range(r, m) if A[i][c]]
+        if not nonzero:
+            continue
+        best = min(nonzero, key=lambda i: abs(A[i][c]))
+        A[r], A[best] = A[best], A[r]
+        pr = A[r]
+        p = pr[c]
+        for i in range(m):
+            f = A[i][c]
+            if i != r and f:
+                new = [p * a - f * b for a, b in zip(A[i], pr)]
+                g = math.gcd(*new)
+                A[i] = [x // g for x in new] if g > 1 else new
+        pivots.append(c)
+        r += 1
+    out = [[Fraction(x, row[c]) for x in row] for row, c in zip(A, pivots)]
+    out += [[Fraction(0)] * ncols for _ in range(m - r)]
+    return out, pivots, []
 
 
 def rref(rows: list[list]) -> tuple[list[list], list[int]]:
