@@ -22,6 +22,7 @@ class Bridge:
 
     def __init__(self, exprs: Sequence = (), symbols: Sequence = ()):
         self.by_name: dict = {}
+        self._symbols: dict = {}
         for s in symbols:
             self._add(s)
         for e in exprs:
@@ -38,6 +39,11 @@ class Bridge:
         self.by_name[s.name] = s
 
     def se(self, expr):
+        if isinstance(expr, sp.Symbol) and self.by_name.get(expr.name) is expr:
+            hit = self._symbols.get(expr)
+            if hit is None:
+                hit = self._symbols[expr] = se.Symbol(expr.name)
+            return hit
         for s in sp.sympify(expr, strict=True).free_symbols:
             self._add(s)
         return se.sympify(expr)
@@ -91,9 +97,13 @@ def total_derivative(expr, states: Sequence, time, bridge: Bridge):
     ``expr`` (the result is linear in the ``q''``).
     """
     out = expr.diff(bridge.se(time))
+    present = expr.free_symbols
     for s in states:
         q, qd, qdd = bridge.se(s.q), bridge.se(s.qd), bridge.se(s.qdd)
-        out = out + expr.diff(q) * qd + expr.diff(qd) * qdd
+        if q in present:
+            out = out + expr.diff(q) * qd
+        if qd in present:
+            out = out + expr.diff(qd) * qdd
     return out
 
 

@@ -251,8 +251,8 @@ class EquationSet:
                 rules[f.diff(T_SE)] = se.Symbol(s.qd.name)
                 rules[f] = se.Symbol(s.q.name)
         exprs = [e.xreplace(rules) for e in rows.se] if rules else list(rows.se)
-        for e in exprs:
-            left = e.atoms(se.Derivative) | e.atoms(se.FunctionSymbol)
+        for e in (exprs if not rows.plain else ()):   # plain rows have no functions of t
+            left = e.atoms(se.Derivative, se.FunctionSymbol)
             if left:
                 what = to_sp(next(iter(left)), names)
                 raise ModelError(f"model `{self.name}` contains {what}: only the coordinates "
@@ -263,15 +263,26 @@ class EquationSet:
         for u in self.unknowns:
             names[u.name] = u
         us = set(unknown)
-        zero = {u: 0 for u in unknown}
         A, b, bad = [], [], []
         for e in exprs:
+            # expanded, each term holds at most one unknown (else it is not linear): the
+            # terms of an unknown, differentiated, are its coefficient; the others are -b
+            e = e.expand()
+            buckets: dict = {}
+            rest = []
+            for term in (e.args if e.is_Add else (e,)):
+                hit = term.free_symbols & us
+                if not hit:
+                    rest.append(term)
+                for u in hit:
+                    buckets.setdefault(u, []).append(term)
             for u in unknown:
-                a = e.diff(u)
-                if a != 0 and a.free_symbols & us:
+                terms = buckets.get(u)
+                a = se.Add(*terms).diff(u) if terms else _ZERO
+                if terms and a.free_symbols & us:
                     bad.append(u)
                 A.append(a)
-            b.append(-e.xreplace(zero))
+            b.append(-se.Add(*rest))
         self._refuse_nonlinear([to_sp(u, names) for u in dict.fromkeys(bad)])
         return (se.DenseMatrix(len(exprs), len(unknown), A), se.DenseMatrix(len(exprs), 1, b),
                 names)
@@ -312,6 +323,12 @@ class EquationSet:
                 out -= {x for st in self.states for x in (st.q, st.qd, st.qdd)}
             return out
         return set().union(*(e.free_symbols for e in self.equations))
+
+    def plain_matrix_se(self) -> tuple | None:
+        """``(A, b, names)`` in symengine and plain symbols for equations a derivation holds
+        in symengine (``names`` maps symbol names back to sympy); ``None`` for equations
+        given in sympy."""
+        return self._plain_se if isinstance(self.equations, Rows) else None
 
     def plain_matrix(self) -> tuple[sp.Matrix, sp.Matrix]:
         """``(A, b)`` with ``A [q''; unknowns] = b``, in plain state symbols."""
@@ -517,6 +534,7 @@ class EquationSet:
         return "\n\n".join(lines)
 
 
+_ZERO = se.Integer(0)
 _RULES: dict = {}
 
 

@@ -87,9 +87,11 @@ from fractions import Fraction
 from typing import Callable, Sequence
 
 import mpmath
+import symengine as se
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
+from ._algebra import to_sp
 from ._expr import as_expr
 from .verify import interval as _iv
 from .verify.branches import Case, find_cases, regions
@@ -97,6 +99,7 @@ from .verify.circle import world_values
 from .verify.surd import Surd, independent, is_square
 from .verify.program import NotRationalProgram, compile_rational
 from .verify.world import (AtomKey, NotExact, Undecidable, World, analyse, degree_bound)
+from .verify.world_se import analyse_se
 
 __all__ = ["ExactForm", "Undecidable", "NotRational", "METHOD_NAMES", "CASE", "AtomKey",
            "SAMPLE_BITS", "MP_DIGITS", "is_zero"]
@@ -201,8 +204,16 @@ class ExactForm:
         Raises ``ValueError`` for undeclared symbols and :class:`Undecidable` for what cannot
         be decided soundly.
         """
-        exprs = [as_expr(e) for e in exprs]
         symbols = tuple(symbols)
+        if exprs and not force_mp and all(isinstance(e, se.Basic) for e in exprs):
+            world = analyse_se(exprs, symbols)
+            if world is not None:   # the common case, built in symengine
+                doms = {s: (float(r[0]), float(r[1])) for s, r in (domains or {}).items()}
+                return cls._from_world(world, dict(symbols=symbols,
+                                                   _read={s: [s] for s in symbols},
+                                                   notes=[], _domains=doms))
+        names = {s.name: s for s in symbols}
+        exprs = [to_sp(e, names) if isinstance(e, se.Basic) else as_expr(e) for e in exprs]
         exprs, canon, read, notes = _unify(exprs, symbols)
         floats = set().union(*(e.atoms(sp.Float) for e in exprs)) if exprs else set()
         if floats:
@@ -230,7 +241,10 @@ class ExactForm:
 
     @classmethod
     def _build_exact(cls, exprs, base) -> "ExactForm":
-        world = analyse(exprs, list(base["_read"]))
+        return cls._from_world(analyse(exprs, list(base["_read"])), base)
+
+    @classmethod
+    def _from_world(cls, world, base) -> "ExactForm":
         cases = find_cases(world, base["_domains"])
         args = _world_args(world)
         fn = _compile(args, world.exprs)

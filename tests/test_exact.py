@@ -190,3 +190,64 @@ def test_fraction_free_rref_is_the_reduced_echelon_form(m, n, deficiency, seed):
     assert list(pivots) == list(want_pivots) and ambiguous == []
     assert [[sp.Rational(v.numerator, v.denominator) for v in r] for r in R] == \
         want.tolist()
+
+
+# -- the same world built from symengine (the form derivations hand to the verdict) ----------
+_SE_CASES = [
+    sp.sin(2 * th) - 2 * sp.sin(th) * sp.cos(th),                       # identity
+    sp.cos(th + ph) - (sp.cos(th) * sp.cos(ph) - sp.sin(th) * sp.sin(ph)),
+    sp.tan(th) * sp.cos(th) - sp.sin(th),
+    sp.sin(th / 2) ** 2 - (1 - sp.cos(th)) / 2,                        # half angle
+    sp.cos(3 * th) - 4 * sp.cos(th) ** 3 + 3 * sp.cos(th),
+    sp.sin(2 * th) - sp.sin(th) * sp.cos(th),                          # not identities
+    sp.sin(th) ** 2 - sp.cos(th) ** 2 - 1,
+    3 * th + sp.sin(th),
+    (sp.cos(th) * a + 1) / (a ** 2 + sp.sin(ph) ** 2 + 1) - a,
+]
+
+
+@pytest.mark.parametrize("expr", _SE_CASES, ids=[f"case{i}" for i in range(len(_SE_CASES))])
+def test_symengine_world_decides_as_the_sympy_world(expr):
+    """Built from symengine the world has the same atoms and arguments, the same degree bound
+    and the same verdict at every point as the one built from sympy."""
+    import symengine as se
+    from dualmech.verify.world_se import analyse_se
+    syms = [th, ph, a]
+    assert analyse_se([se.sympify(expr)], syms) is not None      # it takes the fast route
+    via_se = ExactForm.build([se.sympify(expr)], syms)
+    via_sp = ExactForm.build([expr], syms)
+    assert via_se.method == via_sp.method == "exact"
+    assert via_se.degree == via_sp.degree
+    rng_a, rng_b = random.Random(5), random.Random(5)
+    zero = []
+    for _ in range(4):
+        va = via_se.evaluate(via_se.sample(rng_a))
+        vb = via_sp.evaluate(via_sp.sample(rng_b))
+        zero.append(va[0] == 0)
+        assert (va[0] == 0) == (vb[0] == 0)
+    assert all(zero) == (sp.simplify(expr) == 0)
+
+
+@pytest.mark.parametrize("expr", [
+    sp.sqrt(a ** 2 + 1) - a,                   # a square root
+    sp.pi * sp.sin(th) - 3 * sp.sin(th),       # pi
+    sp.exp(a) - a - 1,                         # an exponential
+    sp.Abs(sp.cos(th)) - sp.cos(th),           # a branch function (not an identity)
+    sp.sin(th ** 2),                           # not a linear argument
+], ids=["sqrt", "pi", "exp", "abs", "square-argument"])
+def test_symengine_input_outside_the_common_case_takes_the_general_route(expr):
+    import symengine as se
+    from dualmech.verify.world_se import analyse_se
+    assert analyse_se([se.sympify(expr)], [th, a]) is None
+    via_se = ExactForm.build([se.sympify(expr)], [th, a])
+    via_sp = ExactForm.build([expr], [th, a])
+    assert via_se.method == via_sp.method
+    assert via_se.degree == via_sp.degree
+
+
+def test_symengine_world_refuses_an_integer_symbol_inside_a_sine():
+    import symengine as se
+    from dualmech.exact import Undecidable
+    n = sp.Symbol("n", integer=True)
+    with pytest.raises(Undecidable):
+        ExactForm.build([se.sympify(sp.sin(n * th))], [n, th])

@@ -130,9 +130,11 @@ def rref_info(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
 
 def _rref_integer(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
     """:func:`rref_info` of a rational matrix, fraction-free: each row is scaled to integers,
-    eliminated with integer arithmetic (each new row divided by the gcd of its entries), and
-    divided by its pivot at the end.  The reduced echelon form is unique, so this is the
-    same result as Gauss--Jordan on fractions, without a gcd per operation."""
+    eliminated with integer arithmetic (each updated row divided by the gcd of its entries,
+    which keeps the numbers short: Bareiss' exact division by the previous pivot lets them
+    grow to full minors, far slower here), and divided by its pivot at the end.  The reduced
+    echelon form is unique, so this is Gauss--Jordan on fractions without a gcd per
+    operation."""
     A = []
     for row in rows:
         den = math.lcm(*[v.denominator for v in row])

@@ -19,6 +19,7 @@ Example
 """
 from __future__ import annotations
 
+import re
 from fractions import Fraction
 from typing import Callable, Sequence
 
@@ -27,6 +28,7 @@ import symengine as se
 __all__ = ["compile_rational", "NotRationalProgram"]
 
 _ADD, _MUL, _POW, _INV_POW = range(4)
+_CSE_NAME = re.compile(r"x\d+$")
 
 
 class NotRationalProgram(ValueError):
@@ -34,22 +36,24 @@ class NotRationalProgram(ValueError):
 
 
 def compile_rational(args: Sequence, exprs: Sequence) -> Callable:
-    """A function ``f(*values) -> list`` evaluating ``exprs`` (sympy) at ``args = values``.
+    """A function ``f(*values) -> list`` evaluating ``exprs`` (sympy or symengine) at
+    ``args = values``.
 
     Raises :class:`NotRationalProgram` for anything but sums, products, integer powers,
     rational constants and the argument symbols.
     """
-    names = {}
-    se_args = []
-    for i, a in enumerate(args):
-        s = se.Symbol(f"_a{i}")
-        se_args.append(s)
-        names[a] = s
     try:
-        converted = [se.sympify(e).xreplace({se.sympify(a): s for a, s in names.items()})
-                     if names else se.sympify(e) for e in exprs]
+        se_args = [se.sympify(a) for a in args]
+        converted = [se.sympify(e) for e in exprs]   # symengine input passes through as is
     except Exception as exc:  # noqa: BLE001 - conversion refusals are reported as such
         raise NotRationalProgram(f"cannot convert for compilation: {exc}") from None
+    if len(set(se_args)) != len(se_args):   # two arguments symengine cannot tell apart
+        raise NotRationalProgram("arguments that symengine does not distinguish")
+    if any(_CSE_NAME.match(str(a)) for a in se_args):   # cse names its temporaries x0, x1...
+        fresh = [se.Symbol(f"_a{i}") for i in range(len(se_args))]
+        rename = dict(zip(se_args, fresh))
+        converted = [e.xreplace(rename) for e in converted]
+        se_args = fresh
     replacements, reduced = se.cse(converted) if converted else ([], [])
     builder = _Builder(len(args))
     for i, s in enumerate(se_args):

@@ -15,7 +15,8 @@ from typing import Iterator, Sequence
 
 import sympy as sp
 
-from .._algebra import Bridge, linear_coefficients, total_derivative
+from .._algebra import Bridge, linear_coefficients, to_se, total_derivative
+from .._expr import as_expr
 from ..equations import EquationSet, ModelError, state_symbols
 from ..exact import ExactForm, is_zero
 from ..kinematics import t
@@ -87,7 +88,6 @@ class Context:
         return str(sym)
 
 
-@dataclass
 class System:
     """One model in the reference coordinates: plain ``A`` (rows of lists) and ``b``.
 
@@ -95,17 +95,40 @@ class System:
     their time derivative at the acceleration level; the rows themselves (and, for a
     position-level row, its first derivative) are kept in ``constraints``: they must vanish
     on the motion, and the sampler draws points on the manifold they define.
+
+    A model derived in symengine keeps its matrices there (:meth:`flat_se`), and its sympy
+    ``A``, ``b`` are built only when read.
     """
 
-    model: EquationSet
-    A: list
-    b: list
-    static: list = field(default_factory=list)        # indices of the static rows
-    constraints: list = field(default_factory=list)   # per static row: [g, g'] or [g]
+    def __init__(self, model: EquationSet, A: list | None, b: list | None,
+                 static: list | None = None, constraints: list | None = None,
+                 se_form: tuple | None = None):
+        self.model = model
+        self._A, self._b = A, b
+        self.static = list(static or [])             # indices of the static rows
+        self.constraints = list(constraints or [])   # per static row: [g, g'] or [g]
+        self._se = se_form                           # (A, b, names) in symengine
+
+    @property
+    def A(self) -> list:
+        if self._A is None:
+            A, b = self.model.plain_matrix()
+            self._A, self._b = [list(A.row(i)) for i in range(A.rows)], list(b)
+        return self._A
+
+    @property
+    def b(self) -> list:
+        self.A  # noqa: B018
+        return self._b
 
     @classmethod
     def of(cls, eqs: EquationSet, coords: Sequence) -> "System":
         eqs = reorder(eqs, coords)
+        fast = eqs.plain_matrix_se()
+        if fast is not None:
+            A, b, _ = fast
+            if all(any(A[i, j] != 0 for j in range(A.cols)) for i in range(A.rows)):
+                return cls(eqs, None, None, se_form=fast)   # no static rows
         A, b = eqs.plain_matrix()
         rows = [list(A.row(i)) for i in range(A.rows)]
         rhs = list(b)
@@ -129,15 +152,37 @@ class System:
                 constraints.append(levels)
         return cls(eqs, rows, rhs, static, constraints)
 
+    def flat_se(self) -> list | None:
+        """``flat()`` in symengine, for a model derived there (else ``None``)."""
+        if self._se is None:
+            return None
+        A, b, _ = self._se
+        return list(A) + list(b)
+
+    @property
+    def names(self) -> dict:
+        return self._se[2] if self._se is not None else {}
+
     @property
     def size(self) -> int:
+        if self._se is not None:
+            A = self._se[0]
+            return A.rows * (A.cols + 1)
         return len(self.A) * (len(self.A[0]) + 1) if self.A else 0
+
+    @property
+    def rows(self) -> int:
+        return self._se[0].rows if self._se is not None else len(self.A)
+
+    @property
+    def cols(self) -> int:
+        return self._se[0].cols if self._se is not None else len(self.A[0])
 
     def flat(self) -> list:
         return [x for row in self.A for x in row] + list(self.b)
 
     def unflatten(self, vals) -> tuple[list, list]:
-        rows, cols = len(self.A), len(self.A[0])
+        rows, cols = self.rows, self.cols
         A = [list(vals[i * cols:(i + 1) * cols]) for i in range(rows)]
         return A, list(vals[rows * cols: rows * cols + rows])
 
@@ -304,8 +349,16 @@ class Sampler:
         self.dependents = list(dependents)
         exprs = [e for _, e in self.dependents]
         self.offset = len(exprs)
-        for s in self.systems:
-            exprs += s.flat()
+        fast = [s.flat_se() for s in self.systems]
+        extra_se = _in_symengine(extra) if all(f is not None for f in fast) else None
+        if not self.dependents and extra_se is not None:
+            # every model derived in symengine: the extras join them there (see world_se)
+            for f in fast:
+                exprs += f
+            extra = extra_se
+        else:
+            for s in self.systems:
+                exprs += s.flat()
         self.offset_constraints = len(exprs)
         for s in self.systems:
             exprs += s.constraint_exprs()
@@ -342,6 +395,14 @@ class Sampler:
                 residues.append(list(vals[coff:coff + k]))
                 coff += k
             yield point, vals, parts, residues
+
+
+def _in_symengine(exprs) -> list | None:
+    """``exprs`` converted to symengine, or ``None`` if one does not convert."""
+    try:
+        return [to_se(as_expr(e)) for e in exprs]
+    except Exception:  # noqa: BLE001 - then everything stays in sympy
+        return None
 
 
 def _domains(ctx: Context) -> dict:

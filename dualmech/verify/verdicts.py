@@ -202,7 +202,7 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
                       for nm in names]
         out.odd = list(names)
         return out
-    extra = 4 * sum(len(s.A) * s.size for s in systems) * max(form.degree, 1)
+    extra = 4 * sum(s.rows * s.size for s in systems) * max(form.degree, 1)
     out.bound = _bound(form, good, extra)
     out.agreeing = agreeing or set()
     if verdict is None:
