@@ -173,13 +173,25 @@ def test_display_method_keeps_the_working_ranges():
     assert all(-1.2 <= form.sample(rng, {th: (-1.2, 1.2)})[th] <= 1.2 for _ in range(50))
 
 
-@settings(max_examples=60, deadline=None)
+@pytest.mark.parametrize("engine", ["flint", "integers"])
+@settings(max_examples=40, deadline=None)
 @given(st.integers(1, 6), st.integers(1, 7), st.integers(0, 3), st.integers(0, 2**32 - 1))
-def test_fraction_free_rref_is_the_reduced_echelon_form(m, n, deficiency, seed):
-    """Exact rows go through integer (fraction-free) Gauss--Jordan; the reduced echelon form
-    is unique, so it must equal sympy's ``Matrix.rref`` (an independent implementation),
-    also for rank-deficient matrices (rows built as combinations of others)."""
-    from dualmech.verify.linalg import rref_info
+def test_fraction_free_rref_is_the_reduced_echelon_form(engine, m, n, deficiency, seed):
+    """Exact rows go through FLINT's rational reduction, or without it through integer
+    (fraction-free) Gauss--Jordan; the reduced echelon form is unique, so either must equal
+    sympy's ``Matrix.rref`` (an independent implementation), also for rank-deficient
+    matrices (rows built as combinations of others)."""
+    from unittest import mock
+    from dualmech.verify import linalg
+    if engine == "integers":
+        with mock.patch.object(linalg, "flint", None):
+            _check_rref(linalg.rref_info, m, n, deficiency, seed)
+    else:
+        assert linalg.flint is not None
+        _check_rref(linalg.rref_info, m, n, deficiency, seed)
+
+
+def _check_rref(rref_info, m, n, deficiency, seed):
     rng = random.Random(seed)
     rows = [[Fraction(rng.randint(-9, 9), rng.randint(1, 5)) for _ in range(n)] for _ in range(m)]
     for i in range(min(deficiency, m - 1)):   # dependent rows
@@ -251,3 +263,32 @@ def test_symengine_world_refuses_an_integer_symbol_inside_a_sine():
     n = sp.Symbol("n", integer=True)
     with pytest.raises(Undecidable):
         ExactForm.build([se.sympify(sp.sin(n * th))], [n, th])
+
+
+@pytest.mark.parametrize("engine", ["flint", "fractions"])
+def test_exact_values_and_solutions_do_not_depend_on_the_engine(engine):
+    """The register program and the square solve give the same exact values with FLINT's
+    rationals as with Python's Fractions (checked against sympy's own evaluation)."""
+    from unittest import mock
+    from dualmech.verify import linalg, program
+    x, y = sp.symbols("x y")
+    exprs = [x**2 + x * y / 3 - 1 / (x + y) ** 2, (x - y) ** 3 / 7]
+    point = {x: Fraction(3, 5), y: Fraction(-7, 2)}
+    A = [[Fraction(2), Fraction(1, 3)], [Fraction(-1, 4), Fraction(5)]]
+    b = [Fraction(1), Fraction(-2, 9)]
+    patch = mock.patch.object if engine == "fractions" else (lambda *a: mock.MagicMock())
+    with patch(program, "flint", None), patch(linalg, "flint", None):
+        run = program.compile_rational([x, y], exprs)
+        values = run(point[x], point[y])
+        solved = linalg.solve_regular(A, b)
+    want = [e.subs(point) for e in exprs]
+    assert [sp.Rational(v.numerator, v.denominator) for v in values] == want
+    assert all(type(v) is Fraction for v in values)
+    if engine == "flint":
+        X = sp.Matrix(A).LUsolve(sp.Matrix(b))
+        assert solved == [Fraction(int(v.p), int(v.q)) for v in X]
+        assert linalg.solve_regular([[Fraction(1), Fraction(2)], [Fraction(2), Fraction(4)]],
+                                    b) is None    # singular: the caller reduces instead
+    else:
+        assert solved is None                     # without FLINT the caller reduces
+

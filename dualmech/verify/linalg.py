@@ -28,6 +28,11 @@ from fractions import Fraction
 import mpmath
 from mpmath import iv
 
+try:   # FLINT's exact linear algebra, when installed (a dependency; the fallback is ours)
+    import flint
+except ImportError:  # pragma: no cover - platforms without python-flint wheels
+    flint = None
+
 from .interval import to_interval
 from .surd import Surd
 
@@ -135,6 +140,8 @@ def _rref_integer(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
     grow to full minors, far slower here), and divided by its pivot at the end.  The reduced
     echelon form is unique, so this is Gauss--Jordan on fractions without a gcd per
     operation."""
+    if flint is not None:
+        return _rref_flint(rows)
     A = []
     for row in rows:
         den = math.lcm(*[v.denominator for v in row])
@@ -162,6 +169,39 @@ def _rref_integer(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
     out = [[Fraction(x, row[c]) for x in row] for row, c in zip(A, pivots)]
     out += [[Fraction(0)] * ncols for _ in range(m - r)]
     return out, pivots, []
+
+
+def _rref_flint(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
+    """:func:`_rref_integer` by FLINT's exact rational reduction (``fmpq_mat.rref``)."""
+    m, ncols = len(rows), len(rows[0])
+    M = flint.fmpq_mat(m, ncols, [flint.fmpq(v.numerator, v.denominator)
+                                  for row in rows for v in row])
+    R, rank = M.rref()
+    out, pivots = [], []
+    for i in range(m):
+        row = [R[i, j] for j in range(ncols)]
+        if i < rank:
+            pivots.append(next(j for j, x in enumerate(row) if x != 0))
+        out.append([Fraction(int(x.p), int(x.q)) for x in row])
+    return out, pivots, []
+
+
+def solve_regular(A: list[list], b: list) -> list | None:
+    """The solution of the square rational system ``A x = b`` by FLINT (``fmpq_mat.solve``),
+    or ``None`` when ``A`` is singular, FLINT is missing or the entries are not rational
+    (callers then reduce with :func:`rref_info`, which also says how it is singular)."""
+    n = len(A)
+    if flint is None or not n or len(A[0]) != n or kind_of(A) != "exact" or \
+            not all(type(v) is Fraction or type(v) is int for row in A for v in row) or \
+            not all(type(v) is Fraction or type(v) is int for v in b):
+        return None
+    q = lambda v: flint.fmpq(v.numerator, v.denominator)  # noqa: E731
+    M = flint.fmpq_mat(n, n, [q(v) for row in A for v in row])
+    try:
+        X = M.solve(flint.fmpq_mat(n, 1, [q(v) for v in b]))
+    except ZeroDivisionError:
+        return None
+    return [Fraction(int(X[i, 0].p), int(X[i, 0].q)) for i in range(n)]
 
 
 def rref(rows: list[list]) -> tuple[list[list], list[int]]:

@@ -25,6 +25,11 @@ from typing import Callable, Sequence
 
 import symengine as se
 
+try:   # FLINT's exact rationals, when installed (a dependency; Fraction is the fallback)
+    import flint
+except ImportError:  # pragma: no cover - platforms without python-flint wheels
+    flint = None
+
 __all__ = ["compile_rational", "NotRationalProgram"]
 
 _ADD, _MUL, _POW, _INV_POW = range(4)
@@ -64,11 +69,20 @@ def compile_rational(args: Sequence, exprs: Sequence) -> Callable:
     code, consts, nregs = builder.code, builder.consts, builder.count
     nargs = len(args)
 
+    flint_consts = [(at, _fmpq(v)) for at, v in consts] if flint is not None else None
+
     def run(*values):
         if len(values) != nargs:
             raise TypeError(f"expected {nargs} values, got {len(values)}")
-        r = list(values) + [None] * (nregs - nargs)
-        for at, v in consts:
+        rational = flint is not None and all(type(v) is Fraction or type(v) is int
+                                             for v in values)
+        if rational:   # FLINT's rationals: the same exact arithmetic, in C
+            r = [_fmpq(v) for v in values] + [None] * (nregs - nargs)
+            one, cs = flint.fmpq(1), flint_consts
+        else:
+            r = list(values) + [None] * (nregs - nargs)
+            one, cs = Fraction(1), consts
+        for at, v in cs:
             r[at] = v
         for op, at, a, b in code:
             if op == _ADD:
@@ -84,10 +98,18 @@ def compile_rational(args: Sequence, exprs: Sequence) -> Callable:
             elif op == _POW:
                 r[at] = r[a] ** b
             else:
-                r[at] = Fraction(1) / (r[a] ** b)
+                r[at] = one / (r[a] ** b)
+        if rational:
+            return [Fraction(int(r[i].p), int(r[i].q)) for i in outputs]
         return [r[i] for i in outputs]
 
     return run
+
+
+def _fmpq(v):
+    if type(v) is int:
+        return flint.fmpq(v)
+    return flint.fmpq(v.numerator, v.denominator)
 
 
 class _Builder:

@@ -229,6 +229,10 @@ def solve_model(A: list, b: list, n: int, unknowns: Sequence,
     that the equations do not fix are ``None`` in ``qdd``.
     """
     m = len(A[0]) if A else n
+    if len(A) == m and (claimed is None or sorted(claimed) == list(range(n))):
+        x = la.solve_regular(A, b)   # the common case: square and regular
+        if x is not None:
+            return Solution("ok", x[:n], dict(zip(unknowns, x[n:])), m)
     claimed = list(range(n)) if claimed is None else list(claimed)
     unclaimed = [j for j in range(n) if j not in claimed]
     order = list(range(n, m)) + unclaimed + claimed
