@@ -23,12 +23,15 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Mapping
 
+import symengine as se
 import sympy as sp
 from sympy.physics.units import Dimension
 from sympy.physics.units.definitions import dimension_definitions as _dd
 from sympy.physics.units.systems.si import dimsys_SI
 
+from ._algebra import to_se, to_sp
 from ._expr import as_expr, dotted
+from .equations import state_symbols
 from .kinematics import t
 
 __all__ = ["Dimension", "MASS", "LENGTH", "TIME", "ANGLE", "FORCE", "TORQUE", "ENERGY",
@@ -131,9 +134,7 @@ class _Walker:
         if e in self.dims:
             return self.dims[e]
         if e.is_Symbol or isinstance(e, sp.core.function.AppliedUndef):
-            self.issues.append(DimensionIssue(dotted(e), "?", "?",
-                                              f"`{dotted(e)}` has no declared dimension"))
-            return ()
+            return self._undeclared(e)
         if isinstance(e, sp.Derivative):
             d = self(e.expr)
             for var, n in e.variable_count:
@@ -165,41 +166,134 @@ class _Walker:
             return ()
         raise TypeError(f"cannot find the dimension of {e!r}")
 
+    def _undeclared(self, e) -> Dims:
+        self.issues.append(DimensionIssue(self._show(e), "?", "?",
+                                          f"`{self._show(e)}` has no declared dimension"))
+        return ()
+
+    def _show(self, e) -> str:
+        return dotted(e)
+
+    def _terms(self, e):
+        return sp.Add.make_args(e)
+
     def _add(self, e, expected) -> Dims:
         # zero has every dimension: it never conflicts (a reaction that vanishes, say)
-        terms = [(a, self(a)) for a in sp.Add.make_args(e) if a != 0]
+        terms = [(a, self(a)) for a in self._terms(e) if a != 0]
         if not terms:
             return expected if expected is not None else ()
         counts = Counter(d for _, d in terms)
         if expected is None:
             ranked = counts.most_common()
             if len(ranked) > 1 and ranked[0][1] == ranked[1][1]:
-                listing = "; ".join(f"`{dotted(a)}` has {format_dimension(d)}"
+                listing = "; ".join(f"`{self._show(a)}` has {format_dimension(d)}"
                                     for a, d in terms)
-                self.issues.append(DimensionIssue(dotted(e), "mixed", "one dimension",
+                self.issues.append(DimensionIssue(self._show(e), "mixed", "one dimension",
                                                   f"terms disagree: {listing}"))
                 return ranked[0][0]
             expected = ranked[0][0]
         for a, d in terms:
             if d != expected:
-                self.issues.append(DimensionIssue(dotted(a), format_dimension(d),
+                self.issues.append(DimensionIssue(self._show(a), format_dimension(d),
                                                   format_dimension(expected)))
         return expected
 
 
-def audit(expr, dims: Mapping, expected=None) -> list[DimensionIssue]:
+class _SeWalker(_Walker):
+    """:class:`_Walker` on symengine expressions (equations a derivation holds there).
+
+    ``names`` maps symbol names back to sympy (see :func:`dualmech._algebra.to_sp`): a
+    symbol's dimension is its sympy twin's; a plain state symbol (``theta_dot``) has its
+    coordinate's dimension over time to the order of the derivative."""
+
+    def __init__(self, dims: Mapping, names: Mapping):
+        super().__init__(dims)
+        self.names = names
+        self.se_dims: dict = {}
+        for name, obj in names.items():
+            if not name.endswith("()") and obj in self.dims:
+                self.se_dims[se.Symbol(name)] = self.dims[obj]
+        for q, d in list(self.dims.items()):
+            if not isinstance(q, sp.core.function.AppliedUndef):
+                continue
+            self.se_dims[to_se(q)] = d
+            if q.args != (t,):
+                continue
+            st = state_symbols(q)
+            for order, sym in enumerate((st.q, st.qd, st.qdd)):
+                if names.get(sym.name) is sym:   # plain rows: q, q_dot, q_ddot
+                    self.se_dims[se.Symbol(sym.name)] = _mul(d, self.dims[t], -order)
+        self.se_dims[se.Symbol(t.name)] = self.dims[t]
+
+    def _show(self, e) -> str:
+        return dotted(to_sp(e, self.names))
+
+    def _terms(self, e):
+        return e.args if e.is_Add else (e,)
+
+    def __call__(self, e) -> Dims:
+        if e.is_Number or e == se.pi or e == se.E:
+            return ()
+        d = self.se_dims.get(e)
+        if d is not None:
+            return d
+        if e.is_Symbol or isinstance(e, se.FunctionSymbol):
+            return self._undeclared(e)
+        if e.is_Derivative:
+            d = self(e.args[0])
+            for var in e.args[1:]:
+                d = _mul(d, self(var), -1)
+            return d
+        if e.is_Add:
+            return self._add(e, None)
+        if e.is_Mul:
+            d = ()
+            for a in e.args:
+                d = _mul(d, self(a))
+            return d
+        if e.is_Pow:
+            base = self(e.base)
+            if isinstance(e.exp, (se.Integer, se.Rational)):
+                p, q = e.exp.get_num_den()
+                return _pow(base, Fraction(int(p), int(q)))
+            if base or self(e.exp):
+                self.issues.append(DimensionIssue(self._show(e), "?", "1", f"`{self._show(e)}`: "
+                                                  "a symbolic power needs a dimensionless base "
+                                                  "and exponent"))
+            return ()
+        for a in e.args:   # a function: every argument dimensionless
+            d = self(a)
+            if d:
+                self.issues.append(DimensionIssue(
+                    self._show(a), format_dimension(d), "1",
+                    f"argument `{self._show(a)}` of {type(e).__name__} has dimension "
+                    f"{format_dimension(d)}; it must be dimensionless"))
+        return ()
+
+
+def audit(expr, dims: Mapping, expected=None, names: Mapping | None = None
+          ) -> list[DimensionIssue]:
     """Every dimensional inconsistency in ``expr`` (an empty list when it is consistent).
 
     ``expected`` (a Dimension), when given, is the dimension every top-level term must have;
-    otherwise the majority of the terms decides, and a tie is reported as such.
+    otherwise the majority of the terms decides, and a tie is reported as such.  ``expr``
+    may be a symengine expression held by a derivation, with its ``names`` (see
+    :class:`dualmech.equations.Rows`).
     """
-    w = _Walker(dims)
-    w._add(as_expr(expr), None if expected is None else reduce(expected))
+    w = _SeWalker(dims, names or {}) if isinstance(expr, se.Basic) else _Walker(dims)
+    w._add(expr if isinstance(expr, se.Basic) else as_expr(expr),
+           None if expected is None else reduce(expected))
     return w.issues
 
 
-def dimension_of(expr, dims: Mapping) -> Dims:
+def dimension_of(expr, dims: Mapping, names: Mapping | None = None) -> Dims:
     """Dimension of ``expr``; raises ``ValueError`` listing the issues when inconsistent."""
+    if isinstance(expr, se.Basic):
+        w = _SeWalker(dims, names or {})
+        d = w(expr)
+        if w.issues:
+            raise ValueError("; ".join(map(str, w.issues)))
+        return d
     w = _Walker(dims)
     d = w(as_expr(expr))
     if w.issues:

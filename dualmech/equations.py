@@ -127,6 +127,35 @@ class Rows(Sequence):
     def __repr__(self) -> str:
         return repr(self.materialise())
 
+    def substituted(self, mapping: Mapping, labels: Sequence) -> tuple:
+        """``((rows, names), labels)``: the rows with each old coordinate replaced by its
+        expression in ``mapping`` (functions of ``t``), in symengine, without the rows that
+        vanish identically (a constraint the new coordinates satisfy by construction)."""
+        names = dict(self.names)
+        rules = {}
+        for q, expr in mapping.items():
+            expr = as_expr(expr)
+            for k, v in names_of(expr).items():
+                names.setdefault(k, v)
+            e0 = to_se(expr)
+            e1 = e0.diff(T_SE)
+            e2 = e1.diff(T_SE)
+            if self.plain:
+                st = state_symbols(q)
+                rules.update({se.Symbol(st.q.name): e0, se.Symbol(st.qd.name): e1,
+                              se.Symbol(st.qdd.name): e2})
+            else:
+                f = to_se(q)
+                rules.update({f.diff(T_SE, 2): e2, f.diff(T_SE): e1, f: e0})
+        out, kept = [], []
+        for e, label in zip(self.se, labels):
+            e = e.xreplace(rules)
+            if e.expand() == 0:
+                continue
+            out.append(e)
+            kept.append(label)
+        return (out, names), kept
+
     def __reduce__(self):   # symengine objects do not pickle: the sympy form does
         return (tuple, (self.materialise(),))
 
@@ -392,6 +421,11 @@ class EquationSet:
         missing = [q for q in self.coordinates if q not in mapping]
         if missing:
             raise ModelError(f"`mapping` must give every old coordinate; missing {missing}.")
+        title = name or f"{self.name} in {', '.join(_name(q) for q in coordinates)}"
+        if isinstance(self.equations, Rows):
+            eqs, labels = self.equations.substituted(mapping, self.labels)
+            return EquationSet(title, tuple(coordinates), Rows(*eqs, coordinates, plain=False),
+                               self.unknowns, tuple(labels), (), self.description)
         rules = {}
         for q, expr in mapping.items():
             expr = as_expr(expr)
@@ -404,9 +438,8 @@ class EquationSet:
                 continue  # a constraint the new coordinates satisfy by construction
             eqs.append(e)
             labels.append(label)
-        return EquationSet(name or f"{self.name} in {', '.join(_name(q) for q in coordinates)}",
-                           tuple(coordinates), tuple(eqs), self.unknowns, tuple(labels),
-                           (), self.description)
+        return EquationSet(title, tuple(coordinates), tuple(eqs), self.unknowns,
+                           tuple(labels), (), self.description)
 
     def without(self, key: str) -> "EquationSet":
         """The model with ingredient ``key`` removed from every equation (for mutation tests)."""

@@ -285,10 +285,11 @@ def _relative_rate(R: sp.Matrix) -> sp.Matrix:
         j = (i + 1) % 3
         if R[i, i] == 1 and isinstance(R[j, j], sp.cos):
             a = R[j, j].args[0]
-            if R == rot(a):
-                w = [0, 0, 0]
-                w[i] = a.diff(t)
-                return sp.Matrix(w)
+            for angle in (a, -a):   # cos(-a) is printed cos(a): rot_y(-theta) is by -theta
+                if R == rot(angle):
+                    w = [0, 0, 0]
+                    w[i] = angle.diff(t)
+                    return sp.Matrix(w)
     if all(x.is_number for x in R):
         return sp.zeros(3, 1)
     return unskew(R.T * R.diff(t)).applyfunc(sp.trigsimp)

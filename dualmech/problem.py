@@ -33,7 +33,7 @@ import sympy as sp
 
 from ._expr import as_expr
 from .dimensions import ENERGY, Dimension, audit, reduce
-from .equations import EquationSet, ModelError
+from .equations import EquationSet, ModelError, Rows
 from .kinematics import t
 
 __all__ = ["Parameter", "Coordinate", "Reaction", "Published", "Problem", "ProblemError"]
@@ -330,12 +330,15 @@ class Problem:
         dims = self.dimensions()
         out = []
         for mname, eqs in self.models().items():
-            for label, e in zip(eqs.labels, eqs.equations):
+            rows = eqs.equations
+            held = isinstance(rows, Rows)   # audited in symengine, as the derivation left them
+            names = rows.names if held else None
+            for label, e in zip(eqs.labels, rows.se if held else rows):
                 expected = None
                 if label.startswith("Lagrange, "):
                     q = next(q for q in eqs.coordinates if q.func.__name__ == label[10:])
                     expected = ENERGY / dims[q]
-                for issue in audit(e, dims, expected):
+                for issue in audit(e, dims, expected, names=names):
                     out.append(f"{mname} [{label}]: {issue}")
         return out
 

@@ -151,3 +151,33 @@ def test_reaction_with_the_wrong_dimension_is_reported():
     c_ = compare(Mislabelled())
     assert any(issue.startswith("reaction S:") for issue in c_.dimension_issues)
     assert c_.equivalent  # the motion is still right; the audit is what flags it
+
+
+def test_dimension_audit_of_a_derivation_held_in_symengine():
+    """A Lagrangian with the track radius dropped from the potential (``-m g cos(theta)
+    cos(phi)``, a force where an energy belongs) is flagged in the equations as derived
+    (held in symengine), with the same findings as the audit of their sympy form."""
+    from dualmech import Lagrangian
+    from dualmech.dimensions import audit
+    from dualmech.equations import Rows
+    from problems import toy_car as tc
+
+    class NoRadius(tc.ToyCar):
+        def lagrange(self):
+            lg = Lagrangian(coordinates=[tc.theta, tc.phi])
+            lg.kinetic("T of car", tc.m * tc.R**2 * (tc.theta.diff(tc.t)**2
+                                                    + tc.phi.diff(tc.t)**2
+                                                    * sp.cos(tc.theta)**2) / 2)
+            lg.potential("gravity", -tc.m * tc.g * sp.cos(tc.theta) * sp.cos(tc.phi))
+            return lg.equations()
+
+    p = NoRadius()
+    issues = [i for i in p.dimension_issues() if i.startswith("lagrange")]
+    assert len(issues) == 2 and all("g*m*" in i for i in issues), issues
+    model = p.model("lagrange")
+    assert isinstance(model.equations, Rows)
+    dims = p.dimensions()
+    held = [str(x) for e in model.equations.se
+            for x in audit(e, dims, names=model.equations.names)]
+    shown = [str(x) for e in model.equations.materialise() for x in audit(e, dims)]
+    assert held == shown and len(held) == 2

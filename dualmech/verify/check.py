@@ -14,6 +14,7 @@ import time
 from dataclasses import dataclass, field
 from typing import Sequence
 
+import symengine as se
 import sympy as sp
 
 from ..equations import EquationSet, ModelError
@@ -284,20 +285,35 @@ def _reaction_dimension_issues(problem) -> list[str]:
     declared = problem.reaction_info()
     out, seen = [], set()
     for mname, m in problem.models().items():
-        A, _ = m.matrix()
+        if not m.unknowns:
+            continue
+        held = m.plain_matrix_se()   # in symengine, as the derivation left it
+        if held is not None:
+            A, b, names = held
+            us = [se.Symbol(st.qdd.name) for st in m.states] + \
+                [se.Symbol(u.name) for u in m.unknowns]
+            rows = [sum((A[i, k] * us[k] for k in range(A.cols)), se.Integer(0)) - b[i]
+                    for i in range(A.rows)]
+        else:
+            A, _ = m.matrix()
+            us, rows, names = list(m.unknowns), list(m.equations), None
         for j, u in enumerate(m.unknowns):
             info = declared.get(u.name)
             if info is None or u.name in seen:
                 continue
-            for i, e in enumerate(m.equations):
+            for i, e in enumerate(rows):
                 coeff = A[i, m.n + j]
                 if coeff == 0:
                     continue
-                rest = sp.expand(e - coeff * u)
+                if held is not None:
+                    rest = (e - coeff * us[m.n + j]).expand()
+                else:
+                    rest = sp.expand(e - coeff * u)
                 if rest == 0:
                     continue
                 try:
-                    dc, dr = dimension_of(coeff, dims), dimension_of(rest, dims)
+                    dc = dimension_of(coeff, dims, names)
+                    dr = dimension_of(rest, dims, names)
                 except (ValueError, KeyError, TypeError):
                     continue
                 need = tuple(sorted(dict(dr).items()))

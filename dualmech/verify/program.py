@@ -3,9 +3,11 @@
 The exact verdict evaluates the same list of rational expressions (sums, products and integer
 powers of symbols and rational constants) at a handful of points in exact arithmetic.
 Compiling with ``sympy.lambdify(cse=True)`` cost most of a verdict on large models (an 8-link
-chain: 20 of 25 s).  Here symengine eliminates the common subexpressions (C++), and the
-result becomes a flat list of instructions run by a small loop -- no source text is generated
-or executed.  Values may be ``Fraction``, ``int`` or any number type with ``+ * / **`` (the
+chain: 20 of 25 s).  Here the symengine trees become a flat list of instructions, one per
+distinct subtree (equal subtrees share a register), run by a small loop -- no source text is
+generated or executed.  (symengine's ``cse`` found little more to share in derivations'
+matrices and cost a second on a 20-link chain; exact values with rational inputs are
+computed with FLINT's ``fmpq`` when python-flint is installed.)  Values may be ``Fraction``, ``int`` or any number type with ``+ * / **`` (the
 exact square-root numbers of :mod:`dualmech.verify.surd`, intervals).
 
 Example
@@ -19,7 +21,6 @@ Example
 """
 from __future__ import annotations
 
-import re
 from fractions import Fraction
 from typing import Callable, Sequence
 
@@ -33,7 +34,6 @@ except ImportError:  # pragma: no cover - platforms without python-flint wheels
 __all__ = ["compile_rational", "NotRationalProgram"]
 
 _ADD, _MUL, _POW, _INV_POW = range(4)
-_CSE_NAME = re.compile(r"x\d+$")
 
 
 class NotRationalProgram(ValueError):
@@ -54,18 +54,10 @@ def compile_rational(args: Sequence, exprs: Sequence) -> Callable:
         raise NotRationalProgram(f"cannot convert for compilation: {exc}") from None
     if len(set(se_args)) != len(se_args):   # two arguments symengine cannot tell apart
         raise NotRationalProgram("arguments that symengine does not distinguish")
-    if any(_CSE_NAME.match(str(a)) for a in se_args):   # cse names its temporaries x0, x1...
-        fresh = [se.Symbol(f"_a{i}") for i in range(len(se_args))]
-        rename = dict(zip(se_args, fresh))
-        converted = [e.xreplace(rename) for e in converted]
-        se_args = fresh
-    replacements, reduced = se.cse(converted) if converted else ([], [])
     builder = _Builder(len(args))
     for i, s in enumerate(se_args):
         builder.regs[s] = i
-    for sym, expr in replacements:
-        builder.regs[sym] = builder.node(expr)
-    outputs = [builder.node(e) for e in reduced]
+    outputs = [builder.node(e) for e in converted]
     code, consts, nregs = builder.code, builder.consts, builder.count
     nargs = len(args)
 
