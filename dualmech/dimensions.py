@@ -69,6 +69,16 @@ def reduce(dim) -> Dims:
         return dim
     if not isinstance(dim, Dimension):
         raise TypeError(f"a dimension must be a sympy Dimension, got {dim!r}.")
+    hit = _REDUCED.get(dim)
+    if hit is None:
+        hit = _REDUCED[dim] = _reduce(dim)
+    return hit
+
+
+_REDUCED: dict = {}   # Dimension -> its base exponents (Dimensions are immutable)
+
+
+def _reduce(dim) -> Dims:
     deps = dimsys_SI.get_dimensional_dependencies(dim)
     out = {}
     for base, e in deps.items():

@@ -592,6 +592,27 @@ def to_plain(expr, coordinates):
     return as_expr(expr).xreplace(d).xreplace(q0)
 
 
+_SE_RULES: dict = {}
+
+
+def to_plain_se(expr, coordinates):
+    """:func:`to_plain` in symengine: ``expr`` (sympy or symengine) with ``q''``, ``q'``,
+    ``q`` of ``coordinates`` replaced by the plain state symbols' symengine twins."""
+    key = tuple(coordinates)
+    rules = _SE_RULES.get(key)
+    if rules is None:
+        rules = {}
+        for q in key:
+            s = state_symbols(q)
+            f = to_se(q)
+            rules[f.diff(T_SE, 2)] = se.Symbol(s.qdd.name)
+            rules[f.diff(T_SE)] = se.Symbol(s.qd.name)
+            rules[f] = se.Symbol(s.q.name)
+        _SE_RULES[key] = rules
+    e = expr if isinstance(expr, se.Basic) else to_se(as_expr(expr))
+    return e.xreplace(rules)
+
+
 def from_plain(expr, coordinates):
     """Inverse of :func:`to_plain`."""
     return as_expr(expr).xreplace(_rules(coordinates)[2])

@@ -23,7 +23,7 @@ import sympy as sp
 
 from .._expr import as_expr
 from ..dimensions import audit
-from ..equations import EquationSet, ModelError, to_plain
+from ..equations import EquationSet, ModelError, to_plain, to_plain_se
 from ..exact import MP_DIGITS, is_zero
 from ..kinematics import t
 from .errors import Undecidable
@@ -83,7 +83,7 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
     n = len(coords)
     items = []
     for pub in pubs:
-        es = [to_plain(e, coords) for e in _published_exprs(problem, pub)]
+        es = [_plain(e, coords) for e in _published_exprs(problem, pub)]
         motion = _motion_system(problem, pub, coords, unknowns) if pub.kind == "motion" \
             else None
         items.append((pub, es, motion))
@@ -181,6 +181,15 @@ def _evaluate(items, systems, solvers, mapped, ctx, symbols, dependents, claims,
         if good == points:
             break
     return good, form.method
+
+
+def _plain(expr, coords):
+    """A printed expression in plain state symbols: in symengine when it converts (the
+    sampler takes it there), else in sympy."""
+    try:
+        return to_plain_se(expr, coords)
+    except Exception:  # noqa: BLE001 - what symengine does not take stays in sympy
+        return to_plain(expr, coords)
 
 
 def _motion_system(problem, pub, coords, unknowns):

@@ -13,6 +13,7 @@ import random
 from dataclasses import dataclass, field
 from typing import Iterator, Sequence
 
+import symengine as se
 import sympy as sp
 
 from .._algebra import Bridge, linear_coefficients, to_se, total_derivative
@@ -404,7 +405,7 @@ class Sampler:
 def _in_symengine(exprs) -> list | None:
     """``exprs`` converted to symengine, or ``None`` if one does not convert."""
     try:
-        return [to_se(as_expr(e)) for e in exprs]
+        return [e if isinstance(e, se.Basic) else to_se(as_expr(e)) for e in exprs]
     except Exception:  # noqa: BLE001 - then everything stays in sympy
         return None
 
