@@ -191,9 +191,9 @@ class RigidBody:
         ``I_B w + m r_BC x v_B``; for a point that is not (a pivot of another body, a point of
         a system), only the centre form is the angular momentum.
         """
-        w = self.angular_velocity(frame)._in(self.frame)
+        w = self.angular_velocity(frame).express(self.frame)
         spin = _times(self.inertia, w)
-        return spin._add(self.masscenter.pos_from(about)._cross(self.linear_momentum(frame)))
+        return spin + self.masscenter.pos_from(about).cross(self.linear_momentum(frame))
 
     def kinetic_energy(self, frame: Frame) -> sp.Expr:
         v = self.masscenter.vel(frame)
@@ -203,11 +203,11 @@ class RigidBody:
 
 def _times(inertia: sp.Matrix, w: Vector) -> Vector:
     """``I w`` in ``w``'s frame, on symengine (``I`` given in that frame's axes)."""
-    names, I = w._names, []
+    names, I = w.se_names, []
     for x in inertia:
         I.append(to_se(x))
         names = merge_names(names, names_of(x))
-    c = w._comps
-    return Vector._of(w.frame, tuple(I[3 * i] * c[0] + I[3 * i + 1] * c[1] + I[3 * i + 2] * c[2]
-                                     for i in range(3)), names)
+    c = w.se_components
+    return Vector.from_se(w.frame, (I[3 * i] * c[0] + I[3 * i + 1] * c[1] + I[3 * i + 2] * c[2]
+                                    for i in range(3)), names)
 

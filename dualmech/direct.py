@@ -204,9 +204,9 @@ class NewtonEuler:
             self._bodies[id(b)] = b
             for ld in self._all_loads(b):
                 if ld.force is not None:
-                    self._acc(parts, ld.key, ld.force._dot(direction))
+                    self._acc(parts, ld.key, ld.force.dot_se(direction))
             a = b.masscenter.acc(self.ground)
-            self._acc(parts, f"inertia of {b.name}", a._dot(direction), -b.mass)
+            self._acc(parts, f"inertia of {b.name}", a.dot_se(direction), -b.mass)
         self._equations.append((label or f"sum F . {_dir_name(direction)} ({_names(bodies)})", parts))
 
     def angular_momentum(self, body: Body | Sequence[Body], direction: Vector,
@@ -227,15 +227,15 @@ class NewtonEuler:
             for ld in self._all_loads(b):
                 moment, names = to_se(0), {}
                 if ld.force is not None:
-                    moment, names = ld.point.pos_from(about)._cross(ld.force)._dot(direction)
+                    moment, names = ld.point.pos_from(about).cross(ld.force).dot_se(direction)
                 if ld.torque is not None:
-                    m2, n2 = ld.torque._dot(direction)
+                    m2, n2 = ld.torque.dot_se(direction)
                     moment, names = moment + m2, merge_names(names, n2)
                 if moment != 0:
                     self._acc(parts, ld.key, (moment, names))
             H = b.angular_momentum(about, self.ground)
-            rate = H._dt(self.ground)._add(b.mass * vB._cross(b.masscenter.vel(self.ground)))
-            self._acc(parts, f"inertia of {b.name}", rate._dot(direction), -1)
+            rate = H.dt(self.ground) + b.mass * vB.cross(b.masscenter.vel(self.ground))
+            self._acc(parts, f"inertia of {b.name}", rate.dot_se(direction), -1)
         self._equations.append(
             (label or f"sum tau_{about.name} . {_dir_name(direction)} ({_names(bodies)})", parts))
 

@@ -403,6 +403,27 @@ class Vector:
     def _is_zero(self) -> bool:
         return all(c == 0 for c in self._comps)
 
+    # -- the symengine form (for builders of equations: dualmech.direct, dualmech.bodies) --
+    @classmethod
+    def from_se(cls, frame: Frame, components, names: dict) -> "Vector":
+        """The vector with symengine ``components`` in ``frame``; ``names`` maps their symbol
+        names back to sympy (see :func:`dualmech._algebra.to_sp`)."""
+        return cls._of(frame, tuple(components), names)
+
+    @property
+    def se_components(self) -> tuple:
+        """The components in symengine."""
+        return self._comps
+
+    @property
+    def se_names(self) -> dict:
+        """Symbol names of :attr:`se_components` -> the caller's sympy symbols."""
+        return self._names
+
+    def dot_se(self, other: "Vector") -> tuple:
+        """``(value, names)``: the dot product in symengine, not converted to sympy."""
+        return self._dot(other)
+
     # -- public ------------------------------------------------------------------------
     def express(self, frame: Frame) -> "Vector":
         """The same vector with components in ``frame``."""

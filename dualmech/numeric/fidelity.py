@@ -36,7 +36,7 @@ from .contacts import scene_span
 from .formulations import formulations
 from .integrators import integrate
 from .model import NumericModel
-from .regimes import _stable_equilibrium, jacobian
+from .regimes import stable_equilibrium, jacobian
 from .simulation import default_initial_state, problem_parameters
 
 __all__ = ["Rung", "Ladder", "ladder", "LADDERS", "has_ladder"]
@@ -138,7 +138,7 @@ def has_ladder(problem) -> bool:
         return True
     try:
         f = formulations(problem, models=[problem.reference], stabilisations=())[0][0]
-        _stable_equilibrium(problem, f)
+        stable_equilibrium(problem, f)
         return True
     except (ValueError, IndexError):
         return False
@@ -182,7 +182,7 @@ def ladder(problem, duration: float = 5.0, rtol: float = 1e-10, samples: int = 2
     rungs = []
     entries = list(spec[:-1])
     try:
-        q_eq, J = _stable_equilibrium(top, ref)
+        q_eq, J = stable_equilibrium(top, ref)
         entries.insert(0, ("linearised (small oscillations about "
                            f"{[round(float(x), 4) for x in q_eq]})", ("linear", q_eq, J),
                            "every term of higher order in the motion", ()))

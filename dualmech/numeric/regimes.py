@@ -186,7 +186,7 @@ class Linearisation:
                 f"{self.coordinate}): error over one period passes {marks}")
 
 
-def _stable_equilibrium(problem, f) -> tuple[np.ndarray, np.ndarray]:
+def stable_equilibrium(problem, f) -> tuple[np.ndarray, np.ndarray]:
     """The first stable equilibrium found from ``q = 0``, the initial state and the middle
     of the declared ranges; with the Jacobian there."""
     n = f.n
@@ -230,7 +230,7 @@ def linearisation(problem, levels: Sequence[float] = (0.01, 0.1), params: Mappin
     """The amplitude sweep of the module docstring, about the equilibrium nearest ``q = 0``."""
     f = formulations(problem, params, models=[problem.reference])[0][0]
     n = f.n
-    q_eq, J = _stable_equilibrium(problem, f)
+    q_eq, J = stable_equilibrium(problem, f)
     y_eq = np.concatenate([q_eq, np.zeros(n)])
     lam, vec = np.linalg.eig(J)
     osc = [k for k in range(lam.size) if lam[k].imag > 1e-9 * np.abs(lam).max()]
