@@ -35,7 +35,8 @@ from .formulations import formulations
 from .integrators import EXPLICIT
 from .simulation import problem_parameters
 
-__all__ = ["stability_radius", "jacobian", "Stiffness", "stiffness", "STIFF_SCENES",
+__all__ = ["stability_radius", "stable_equilibrium", "jacobian", "Stiffness", "stiffness",
+           "STIFF_SCENES",
            "Linearisation", "linearisation", "Chaos", "chaos", "Drift", "dae_drift"]
 
 #: Scenes for :func:`stiffness`: ``problem: (parameter, initial state, span, why smooth)``.
