@@ -39,14 +39,21 @@ def _peer(path: Path):
     return mod
 
 
-def _median(fn, repeat: int) -> float:
-    times = []
+def _timed(fn) -> float:
+    clear_cache()
+    t0 = time.perf_counter()
+    fn()
+    return time.perf_counter() - t0
+
+
+def _medians(fns, repeat: int) -> list[float]:
+    """Median time of each of ``fns``, the repeats interleaved (ours, ours with display,
+    peer, ours, ...) so that a slow spell of the machine falls on every side alike."""
+    times = [[] for _ in fns]
     for _ in range(repeat):
-        clear_cache()
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
+        for i, fn in enumerate(fns):
+            times[i].append(_timed(fn))
+    return [statistics.median(ts) for ts in times]
 
 
 def main(argv=None) -> int:
@@ -64,14 +71,12 @@ def main(argv=None) -> int:
         mod = _peer(path)
         compare(get(mod.PROBLEM))   # untimed warm-up: imports and one-time set-up of both
         mod.run()
-        verdict = _median(lambda: compare(get(mod.PROBLEM)), args.repeat)
-
         def full():
             c = compare(get(mod.PROBLEM))
             c.accelerations, c.reactions  # noqa: B018 - the display a report shows
 
-        shown = _median(full, args.repeat)
-        peer = _median(mod.run, args.repeat)
+        verdict, shown, peer = _medians([lambda: compare(get(mod.PROBLEM)), full, mod.run],
+                                        args.repeat)
         rows.append((mod.PROBLEM, verdict, shown, peer))
         print(f"{mod.PROBLEM:26s} {verdict:9.3f} {shown:9.3f} {peer:9.3f} "
               f"{verdict / peer:7.2f} {shown / peer:13.2f}", flush=True)
