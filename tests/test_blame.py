@@ -464,3 +464,22 @@ def test_check_exit_statuses_of_broken_models(broken_catalogue, capsys):
     captured = capsys.readouterr()
     assert status == 1   # nothing was compared: not a success
     assert "NOT CHECKED" in captured.out and "Traceback" not in captured.err
+
+
+def test_a_residual_that_cannot_be_solved_symbolically_says_so():
+    """copying_machine's reference has a massless link (a static row): its accelerations have
+    no symbolic solution, so the residual of a broken model says why it is not shown and
+    the values at a state stand in for it (the drive's sign flipped in `reduced`)."""
+    from problems.copying_machine import CopyingMachine
+
+    class DriveFlipped(CopyingMachine):
+        def reduced(self):
+            return dataclasses.replace(super().reduced().flipped("drive"), name="reduced")
+
+    c = compare(DriveFlipped())
+    assert c.judgement.odd == ["reduced"]
+    (mm,) = c.mismatches
+    assert mm.residual.startswith("(not solved symbolically:")
+    assert "see the values below" in str(mm) and mm.terms
+    F = next(v for term, v in mm.terms if term == "F")
+    assert mm.state["F"] == pytest.approx(F)     # the drive term is the applied force itself

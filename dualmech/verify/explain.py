@@ -52,8 +52,9 @@ class Mismatch:
                 self._residual = self._residual()
             except OverBudget as exc:
                 self._residual = f"(not simplified: {exc}; see the values below)"
-            except Exception:  # noqa: BLE001 - display must never break a verdict
-                self._residual = ""
+            except Exception as exc:  # noqa: BLE001 - display must never break a verdict
+                self._residual = (f"(not solved symbolically: {type(exc).__name__}; see the "
+                                  "values below)")
         return self._residual or ""
 
     def __str__(self) -> str:
