@@ -422,7 +422,7 @@ class Vector:
 
     def dot_se(self, other: "Vector") -> tuple:
         """``(value, names)``: the dot product in symengine, not converted to sympy."""
-        return self._dot(other)
+        return self._dot(_vector(other, "dot_se"))
 
     # -- public ------------------------------------------------------------------------
     def express(self, frame: Frame) -> "Vector":
@@ -461,14 +461,14 @@ class Vector:
         return self._scaled(1 / to_se(k), names_of(k))
 
     def dot(self, other: "Vector") -> sp.Expr:
-        return to_sp(*self._dot(other))
+        return to_sp(*self._dot(_vector(other, "dot")))
 
     def cross(self, other: "Vector") -> "Vector":
-        return self._cross(other)
+        return self._cross(_vector(other, "cross"))
 
     def outer(self, other: "Vector") -> sp.Matrix:
         """Components of the dyad ``self (x) other`` in ``self.frame``."""
-        return self.components * other.express(self.frame).components.T
+        return self.components * _vector(other, "outer").express(self.frame).components.T
 
     def dt(self, frame: Frame) -> "Vector":
         """Time derivative as seen from ``frame`` (transport theorem)."""
@@ -489,6 +489,13 @@ class Vector:
 
     def is_zero(self) -> bool:
         return all(sp.simplify(c) == 0 for c in self.components)
+
+
+def _vector(other, method: str) -> Vector:
+    if not isinstance(other, Vector):
+        raise TypeError(f"Vector.{method}() needs another Vector, got {type(other).__name__} "
+                        f"{other!r:.60}; multiply by a scalar with `*` instead.")
+    return other
 
 
 @refuse_text_in

@@ -340,3 +340,10 @@ def test_exact_check_catches_a_missing_transport_term():
     assert not vanishes_at_rational_points(list(wrong - direct), (phi, theta))
     assert vanishes_at_rational_points(list(v.dt(O).express(O).components - direct),
                                        (phi, theta))
+
+
+@pytest.mark.parametrize("method", ["dot", "cross", "outer", "dot_se"])
+def test_vector_products_need_a_vector(method):
+    O = Frame.ground("O")
+    with pytest.raises(TypeError, match=f"Vector.{method}\\(\\) needs another Vector"):
+        getattr(O.x, method)(3)
