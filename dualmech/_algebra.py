@@ -144,7 +144,11 @@ def _clash(name, a, b) -> str:
 
 
 def to_se(expr):
-    """symengine form of a sympy expression (functions of ``t`` stay functions)."""
+    """symengine form of a sympy expression (functions of ``t`` stay functions); text is
+    refused (symengine would parse it)."""
+    if isinstance(expr, (str, bytes, bytearray)):
+        raise TypeError(f"expected a sympy expression, got the text {expr!r:.60}; text is "
+                        "never parsed.")
     return se.sympify(expr)
 
 

@@ -43,7 +43,7 @@ TEXT_PARAMETERS = frozenset({
 
 
 #: dict-valued parameters whose keys are names (ingredient labels), not expressions
-NAMED_KEYS = frozenset({"parts", "contributions"})
+NAMED_KEYS = frozenset({"parts", "contributions", "names"})
 
 
 def _find_text(value, depth: int = 0, named_keys: bool = False):
@@ -105,7 +105,8 @@ def refuse_text(fn):
 def refuse_text_in(cls):
     """Class decorator: :func:`refuse_text` on every public method and ``__init__``."""
     for attr, value in list(vars(cls).items()):
-        if attr == "__init__" or (not attr.startswith("_") and callable(value)):
+        wrapped_kind = isinstance(value, (staticmethod, classmethod))   # not callable() in 3.10
+        if attr == "__init__" or (not attr.startswith("_") and (callable(value) or wrapped_kind)):
             if isinstance(value, (staticmethod, classmethod)):
                 wrapped = type(value)(refuse_text(value.__func__))
             elif isinstance(value, property):

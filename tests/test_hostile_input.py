@@ -210,6 +210,8 @@ CASES = {
     "Frame.vector([components])": lambda h: O.vector([h, 0, 0]),
     "Vector(components)": lambda h: Vector(O, h),
     "Vector(component)": lambda h: Vector(O, [h, 0, 0]),
+    "Vector.from_se(component)": lambda h: Vector.from_se(O, [h, 0, 0], {}),
+    "Vector.dot_se(other)": lambda h: O.x.dot_se(h),
     "Vector * scalar": lambda h: O.x * h,
     "scalar * Vector": lambda h: h * O.x,
     "Vector / scalar": lambda h: O.x / h,
