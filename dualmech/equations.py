@@ -270,16 +270,11 @@ class EquationSet:
         symbols, without building a sympy expression."""
         rows = self.equations
         names = dict(rows.names)
-        rules = {}
         for s in self.states:
             for sym in (s.q, s.qd, s.qdd):
                 names[sym.name] = sym
-            if not rows.plain:
-                f = to_se(s.function)
-                rules[f.diff(T_SE, 2)] = se.Symbol(s.qdd.name)
-                rules[f.diff(T_SE)] = se.Symbol(s.qd.name)
-                rules[f] = se.Symbol(s.q.name)
-        exprs = [e.xreplace(rules) for e in rows.se] if rules else list(rows.se)
+        exprs = list(rows.se) if rows.plain else \
+            [to_plain_se(e, self.coordinates) for e in rows.se]
         for e in (exprs if not rows.plain else ()):   # plain rows have no functions of t
             left = e.atoms(se.Derivative, se.FunctionSymbol)
             if left:
