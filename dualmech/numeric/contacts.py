@@ -32,7 +32,7 @@ from scipy.integrate import solve_ivp
 
 from ..dimensions import ANGLE, reduce
 from .model import NumericModel, SingularityError
-from .simulation import default_initial_state, problem_parameters
+from .simulation import default_initial_state, direct_models, problem_parameters
 
 __all__ = ["UNILATERAL", "ContactBreak", "ContactReport", "unilateral_of", "watch",
            "scene_span", "SceneSpan"]
@@ -104,12 +104,7 @@ class ContactReport:
 def _reaction_functions(problem, values, names) -> dict:
     """``{name: (numeric model, row)}`` from the direct models in the reference coordinates."""
     out = {}
-    for m in problem.models().values():
-        if not m.unknowns:
-            continue
-        m = problem.in_reference_coordinates(m)
-        if not m.is_square:
-            continue
+    for m in direct_models(problem, square=True):
         nm = NumericModel(m, values)
         for i, u in enumerate(m.unknowns):
             if u.name in names and u.name not in out:

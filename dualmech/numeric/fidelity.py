@@ -37,7 +37,7 @@ from .formulations import formulations
 from .integrators import integrate
 from .model import NumericModel
 from .regimes import stable_equilibrium, jacobian
-from .simulation import default_initial_state, problem_parameters
+from .simulation import default_initial_state, direct_models, problem_parameters
 
 __all__ = ["Rung", "Ladder", "ladder", "LADDERS", "has_ladder"]
 
@@ -225,12 +225,7 @@ def _reactions(problem, Y: np.ndarray) -> dict:
     """The problem's direct-model reactions along states ``Y`` (reference coordinates)."""
     values = problem_parameters(problem)
     out = {}
-    for m in problem.models().values():
-        if not m.unknowns:
-            continue
-        m = problem.in_reference_coordinates(m)
-        if not m.is_square:
-            continue
+    for m in direct_models(problem, square=True):
         n = m.n
         sol = NumericModel(m, values).solve(0.0, Y[:n], Y[n:])
         for u, row in zip(m.unknowns, sol[n:]):

@@ -28,8 +28,8 @@ from scipy.integrate import solve_ivp
 from ..kinematics import t
 from .model import NumericModel, SingularityError
 
-__all__ = ["Trajectory", "simulate", "reactions_at", "reactions_along", "default_initial_state",
-           "problem_parameters", "right_hand_side", "check_t_span"]
+__all__ = ["Trajectory", "simulate", "reactions_at", "reactions_along", "direct_models",
+           "default_initial_state", "problem_parameters", "right_hand_side", "check_t_span"]
 
 
 @dataclass
@@ -199,10 +199,14 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
     return traj
 
 
-def _direct_models(problem):
+def direct_models(problem, square: bool = False):
+    """The problem's models with reactions, in the reference coordinates (only those with
+    as many equations as accelerations and reactions when ``square``)."""
     for m in problem.models().values():
         if m.unknowns:
-            yield problem.in_reference_coordinates(m)
+            m = problem.in_reference_coordinates(m)
+            if not square or m.is_square:
+                yield m
 
 
 def reactions_at(problem, q: Sequence[float], qd: Sequence[float], time: float = 0.0,
@@ -216,7 +220,7 @@ def reactions_at(problem, q: Sequence[float], qd: Sequence[float], time: float =
     ref = problem.model(problem.reference)
     qdd = NumericModel(ref, values).accelerations(time, q, qd)
     out: dict = {}
-    for m in _direct_models(problem):
+    for m in direct_models(problem):
         A, b = NumericModel(m, values).system(time, q, qd)
         lam = np.linalg.lstsq(A[:, m.n:], b - A[:, : m.n] @ qdd, rcond=None)[0]
         for u, v in zip(m.unknowns, lam):
@@ -230,7 +234,7 @@ def reactions_along(problem, traj: Trajectory, values: Mapping) -> dict:
     Each direct model is solved at all samples at once (one batched solve).
     """
     out: dict = {}
-    for m in _direct_models(problem):  # one batched solve: nothing to compile for it
+    for m in direct_models(problem):  # one batched solve: nothing to compile for it
         rows = NumericModel(m, values, backend="python").solve(traj.t, traj.q, traj.qd)[m.n:]
         for name, row in zip((u.name for u in m.unknowns), rows):
             out.setdefault(name, row)
