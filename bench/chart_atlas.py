@@ -35,7 +35,7 @@ def _cpu(fn):
 def main(argv=None) -> int:
     import numpy as np
 
-    import problems
+    from dualmech import problems
     from dualmech.numeric.atlas import atlas
     from dualmech.numeric.contacts import scene_span
     from dualmech.numeric.formulations import formulations

@@ -29,7 +29,7 @@ ROOT = Path(__file__).resolve().parent
 sys.path.insert(0, str(ROOT.parent))
 
 from dualmech.compare import compare  # noqa: E402
-from problems import get  # noqa: E402
+from dualmech.problems import get  # noqa: E402
 
 
 def _peer(path: Path):

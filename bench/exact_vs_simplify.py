@@ -14,7 +14,7 @@ import time
 import sympy as sp
 
 from dualmech.compare import compare_models
-from problems import all_problems
+from dualmech.problems import all_problems
 
 
 def _simplify_route(ref, cand, limit: float) -> tuple[float, bool]:

@@ -56,7 +56,7 @@ def ours(n: int):
     from dualmech.verify.check import claims_of
     from dualmech.verify.sampling import Context
     from dualmech.verify.verdicts import judge
-    from problems.n_link_pendulum import NLinkPendulum
+    from dualmech.problems.n_link_pendulum import NLinkPendulum
 
     p = NLinkPendulum(n, cartesian=False)
     models = p.models()                      # newton_euler() and lagrange()
@@ -121,7 +121,7 @@ def check(n: int) -> str:
     """The peers' accelerations equal ours (the ``lagrange`` model) at a random state."""
     import sympy as sp
     from dualmech import t
-    from problems.n_link_pendulum import NLinkPendulum
+    from dualmech.problems.n_link_pendulum import NLinkPendulum
 
     p = NLinkPendulum(n, cartesian=False)
     mine = p.model("lagrange")
@@ -168,7 +168,7 @@ def child(which: str, n: int) -> None:
     import sympy  # noqa: F401  (imports outside the timing)
     import sympy.physics.mechanics  # noqa: F401
     import dualmech.verify.verdicts  # noqa: F401
-    import problems.n_link_pendulum  # noqa: F401
+    import dualmech.problems.n_link_pendulum  # noqa: F401
     from sympy.core.cache import clear_cache
     if which == "check":
         print(json.dumps({"message": check(n)}))

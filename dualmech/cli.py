@@ -172,7 +172,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 # -- helpers ---------------------------------------------------------------------------
 def _catalogue():
-    import problems
+    from dualmech import problems
     return problems
 
 

@@ -18,7 +18,7 @@ checked against the published answers instead).
 
 Example
 -------
->>> from problems import get                      # doctest: +SKIP
+>>> from dualmech.problems import get                      # doctest: +SKIP
 >>> report = mutation_report(get("block_on_wedge"))   # doctest: +SKIP
 >>> report.kill_rate                              # doctest: +SKIP
 1.0

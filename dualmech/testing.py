@@ -11,7 +11,7 @@ A property test of a problem in four lines::
 
     from hypothesis import given
     from dualmech.testing import points, assert_same_motion
-    from problems import get
+    from dualmech.problems import get
 
     toy_car = get("toy_car")
 

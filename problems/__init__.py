@@ -149,7 +149,7 @@ def module_of(name: str) -> Declaration:
 
 
 def _class(decl: Declaration):
-    module = importlib.import_module(f"problems.{decl.module}")
+    module = importlib.import_module(f"dualmech.problems.{decl.module}")
     return getattr(module, decl.cls)
 
 

@@ -76,7 +76,7 @@ Errata (see :meth:`PendulumParticle.published`)
 Garbled beyond reading: the intermediate line of "Differential index II",
 ``0 = x'^2 + x(-(S/m)(x'/l)) + ...``, has doubled dots and ``x'/l`` where (1) gives ``x/l``;
 only the result on the next line (``S = m l (...)``) is transcribed.  The label of the first
-formula of the rigid-rod slide belongs to :mod:`problems.rigid_rod_pendulum`.
+formula of the rigid-rod slide belongs to :mod:`dualmech.problems.rigid_rod_pendulum`.
 
 Example
 -------

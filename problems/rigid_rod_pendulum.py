@@ -4,7 +4,7 @@ Source: ``sources/003_d6818267b4d96a20.txt``, lecture 18, "Rigid-body pendulum w
 I/II".  A uniform rod of mass ``m`` and length ``l`` turns about a fixed horizontal axis
 through its end O.
 
-Sign convention (as :mod:`problems.pendulum_particle`)::
+Sign convention (as :mod:`dualmech.problems.pendulum_particle`)::
 
         i2 (up)
         ^        R_x i1 + R_y i2  (pivot on the rod)

@@ -13,7 +13,7 @@ from dualmech.numeric.atlas import atlas
 from dualmech.numeric.regimes import (chaos, dae_drift, growth_exponent, linearisation,
                                       stability_radius, stiffness)
 from dualmech.numeric.singularities import GARBAGE, probe, scan
-from problems import get
+from dualmech.problems import get
 
 EPS = np.finfo(float).eps
 

@@ -10,7 +10,7 @@ from dualmech.compare import compare
 from dualmech.equations import to_plain
 from dualmech.numeric import NumericModel, simulate
 from dualmech.published import check_published
-from problems.ball_in_sphere import (BallInSphere, a, g, hand_normal_force, m, phi,
+from dualmech.problems.ball_in_sphere import (BallInSphere, a, g, hand_normal_force, m, phi,
                                      printed_energy, printed_momentum, theta, theta0, v)
 
 problem = BallInSphere()

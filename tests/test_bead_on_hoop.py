@@ -4,7 +4,7 @@ import sympy as sp
 
 from dualmech import EquationSet, ModelError, t
 from dualmech.compare import compare, compare_models
-from problems.bead_on_hoop import BeadOnHoop, R, g, hand_reactions, m, omega, theta
+from dualmech.problems.bead_on_hoop import BeadOnHoop, R, g, hand_reactions, m, omega, theta
 
 problem = BeadOnHoop()
 D = lambda q: q.diff(t)  # noqa: E731

@@ -23,20 +23,20 @@ import math
 import pytest
 import sympy as sp
 
-import problems
+from dualmech import problems
 from dualmech import Lagrangian, NewtonEuler, Particle, t
 from dualmech.cli import main
 from dualmech.compare import compare
 from dualmech.dimensions import FORCE
 from dualmech.problem import Published, Reaction
-from problems import block_on_wedge as bw
-from problems import cart_pendulum as cp
-from problems import pendulum_on_mass as pm
-from problems import toy_car as tc
-from problems.falling_container import FallingContainer
-from problems.mass_spring_gravity import MassSpringGravity
-from problems.satellite_polar import SatellitePolar
-from problems.simple_pendulum import SimplePendulum
+from dualmech.problems import block_on_wedge as bw
+from dualmech.problems import cart_pendulum as cp
+from dualmech.problems import pendulum_on_mass as pm
+from dualmech.problems import toy_car as tc
+from dualmech.problems.falling_container import FallingContainer
+from dualmech.problems.mass_spring_gravity import MassSpringGravity
+from dualmech.problems.satellite_polar import SatellitePolar
+from dualmech.problems.simple_pendulum import SimplePendulum
 
 D = lambda q, n=1: q.diff(t, n)  # noqa: E731
 TOY_CAR_OTHERS = {"newton_euler", "angular_momentum", "multiplier"}
@@ -470,7 +470,7 @@ def test_a_residual_that_cannot_be_solved_symbolically_says_so():
     """copying_machine's reference has a massless link (a static row): its accelerations have
     no symbolic solution, so the residual of a broken model says why it is not shown and
     the values at a state stand in for it (the drive's sign flipped in `reduced`)."""
-    from problems.copying_machine import CopyingMachine
+    from dualmech.problems.copying_machine import CopyingMachine
 
     class DriveFlipped(CopyingMachine):
         def reduced(self):

@@ -3,7 +3,7 @@ import pytest
 import sympy as sp
 
 from dualmech.compare import compare, compare_models
-from problems.block_in_pipe import BlockInPipe, g, k, m, multiplier_model, theta, y, y0
+from dualmech.problems.block_in_pipe import BlockInPipe, g, k, m, multiplier_model, theta, y, y0
 
 problem = BlockInPipe()
 N = sp.Symbol("N", real=True)

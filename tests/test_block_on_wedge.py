@@ -8,7 +8,7 @@ from dualmech import t
 from dualmech.compare import compare
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
-from problems.block_on_wedge import (BlockOnWedge, M, alpha, g, hand_accelerations,
+from dualmech.problems.block_on_wedge import (BlockOnWedge, M, alpha, g, hand_accelerations,
                                      hand_reactions, m, q1, q2)
 
 _EPS = np.finfo(float).eps

@@ -10,7 +10,7 @@ from dualmech.dimensions import audit
 from dualmech.equations import state_symbols, to_plain
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
-from problems.cart_pendulum import (CartPendulum, F0, c, c_t, direct_form, g, hand_reactions, k,
+from dualmech.problems.cart_pendulum import (CartPendulum, F0, c, c_t, direct_form, g, hand_reactions, k,
                                     k_t, l, m, m0, omega, theta, x)
 
 _EPS = np.finfo(float).eps

@@ -6,7 +6,7 @@ from dualmech.compare import compare
 from dualmech.mutation import mutation_report
 from dualmech.testing import (assert_reactions_consistent, assert_same_motion, has_static_rows,
                               points)
-from problems import all_problems, get
+from dualmech.problems import all_problems, get
 
 PROBLEMS = all_problems()
 NAMES = [p.name for p in PROBLEMS]

@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-import problems
+from dualmech import problems
 from dualmech import coordinate, t
 from dualmech.cli import main
 from dualmech.dimensions import ACCELERATION, FORCE, LENGTH, MASS, STIFFNESS

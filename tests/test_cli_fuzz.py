@@ -26,7 +26,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-import problems
+from dualmech import problems
 from dualmech.cli import main
 
 CHEAP = ("mass_spring_gravity", "satellite_polar", "spring_mass_damper")

@@ -160,7 +160,7 @@ def test_dimension_audit_of_a_derivation_held_in_symengine():
     from dualmech import Lagrangian
     from dualmech.dimensions import audit
     from dualmech.equations import Rows
-    from problems import toy_car as tc
+    from dualmech.problems import toy_car as tc
 
     class NoRadius(tc.ToyCar):
         def lagrange(self):

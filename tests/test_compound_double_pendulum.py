@@ -4,7 +4,7 @@ import sympy as sp
 
 from dualmech import t
 from dualmech.compare import compare
-from problems.compound_double_pendulum import (CompoundDoublePendulum, I0, a, b, g, m,
+from dualmech.problems.compound_double_pendulum import (CompoundDoublePendulum, I0, a, b, g, m,
                                                printed_reduced, scene, theta1, theta2)
 
 problem = CompoundDoublePendulum()

@@ -6,7 +6,7 @@ import sympy as sp
 from dualmech import t
 from dualmech.compare import compare
 from dualmech.numeric import NumericModel
-from problems.coupled_pendulums import (CoupledPendulums, d, g, geometric_spring_model, k, l, m,
+from dualmech.problems.coupled_pendulums import (CoupledPendulums, d, g, geometric_spring_model, k, l, m,
                                         theta1, theta2)
 
 _EPS = np.finfo(float).eps

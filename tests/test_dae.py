@@ -15,8 +15,8 @@ from dualmech.numeric.dae import constraints_of
 from dualmech.numeric.energy import EnergyFunction, conservative_reason
 from dualmech.numeric.formulations import formulations
 from dualmech.numeric.integrators import METHODS, integrate
-from problems import get
-from problems.pendulum_particle import l, x, y
+from dualmech.problems import get
+from dualmech.problems.pendulum_particle import l, x, y
 
 EPS = np.finfo(float).eps
 M_, L_, G_ = 1.0, 1.0, 9.81          # the problem's default m, l, g

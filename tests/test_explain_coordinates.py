@@ -27,9 +27,9 @@ from dualmech.verify.coordinates import OwnCoordinates
 from dualmech.verify.display import dotted
 from dualmech.verify.explain import explain_model
 from dualmech.verify.sampling import Context
-from problems import falling_container as fc
-from problems import trolley_pendulum as tp
-from problems.simple_pendulum import SimplePendulum
+from dualmech.problems import falling_container as fc
+from dualmech.problems import trolley_pendulum as tp
+from dualmech.problems.simple_pendulum import SimplePendulum
 
 D = lambda q, n=1: q.diff(t, n)  # noqa: E731
 REFERENCE_NAMES = re.compile(r"\bx[12]\b")

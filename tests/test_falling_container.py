@@ -8,7 +8,7 @@ from dualmech import t
 from dualmech.compare import compare
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
-from problems.falling_container import (FallingContainer, c, g, k, l0, m1, m2, x1, x2, y1, y2)
+from dualmech.problems.falling_container import (FallingContainer, c, g, k, l0, m1, m2, x1, x2, y1, y2)
 
 _EPS = np.finfo(float).eps
 problem = FallingContainer()

@@ -13,7 +13,7 @@ from scipy.special import ellipj, ellipk
 from dualmech.numeric import NumericModel, problem_parameters
 from dualmech.numeric.fidelity import has_ladder, ladder
 from dualmech.numeric.integrators import integrate
-from problems import get
+from dualmech.problems import get
 
 RTOL = 1e-10   # the ladder's default
 

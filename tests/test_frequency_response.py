@@ -7,7 +7,7 @@ from scipy.integrate import solve_ivp
 from dualmech import t
 from dualmech.compare import compare
 from dualmech.numeric import NumericModel
-from problems.frequency_response import FrequencyResponse, F0, amplitude, c, k, m, omega, x
+from dualmech.problems.frequency_response import FrequencyResponse, F0, amplitude, c, k, m, omega, x
 
 problem = FrequencyResponse()
 D = lambda q, n=1: q.diff(t, n)  # noqa: E731

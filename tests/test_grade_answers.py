@@ -199,7 +199,7 @@ def test_result_json(toy):
 
 def test_vector_in_a_named_basis():
     """A problem may declare quantities; h_O in i_B, j_B, k_B (quiz 1 (4), by hand)."""
-    from problems.toy_car import ToyCar, frames, m
+    from dualmech.problems.toy_car import ToyCar, frames, m
     from dualmech import Particle
 
     class ToyCarWithMomentum(ToyCar):

@@ -12,7 +12,7 @@ from __future__ import annotations
 import pytest
 import sympy as sp
 
-import problems
+from dualmech import problems
 from dualmech.grade import Grader
 from dualmech.grade.context import GradingUnavailable
 from dualmech.grade.formula import Formula

@@ -4,7 +4,7 @@ import sympy as sp
 
 from dualmech import t
 from dualmech.compare import compare
-from problems.helicopter_blade import (A, L, M, HelicopterBlade, Omega, alpha0, beta, first_order,
+from dualmech.problems.helicopter_blade import (A, L, M, HelicopterBlade, Omega, alpha0, beta, first_order,
                                        frames, g, lift_per_length, x)
 
 problem = HelicopterBlade()

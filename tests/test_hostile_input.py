@@ -437,7 +437,7 @@ def test_unused_declarations_are_mistakes_named_in_one_error():
 # -- simulate, problem_parameters, compare: their own arguments ----------------------------------
 @pytest.fixture(scope="module")
 def pendulum():
-    from problems import get
+    from dualmech.problems import get
     return get("simple_pendulum")   # parameters M, a, g
 
 

@@ -9,7 +9,7 @@ from dualmech.compare import compare
 from dualmech.dimensions import audit
 from dualmech.equations import to_plain
 from dualmech.exact import ExactForm
-from problems.inertia_wheel_pendulum import (I1, I2, InertiaWheelPendulum, g, hand_reactions, l1,
+from dualmech.problems.inertia_wheel_pendulum import (I1, I2, InertiaWheelPendulum, g, hand_reactions, l1,
                                              l_c1, m1, m2, q1, q2, tau)
 
 problem = InertiaWheelPendulum()

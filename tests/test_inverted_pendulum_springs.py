@@ -4,7 +4,7 @@ import sympy as sp
 
 from dualmech import t
 from dualmech.compare import compare
-from problems.inverted_pendulum_springs import InvertedPendulumSprings, a, g, k, l, m, theta
+from dualmech.problems.inverted_pendulum_springs import InvertedPendulumSprings, a, g, k, l, m, theta
 
 problem = InvertedPendulumSprings()
 D = lambda q: q.diff(t)  # noqa: E731

@@ -4,7 +4,7 @@ import sympy as sp
 
 from dualmech.compare import compare
 from dualmech.equations import ModelError
-from problems.mass_spring_gravity import F, M, MassSpringGravity, g, k, static_equilibrium, x
+from dualmech.problems.mass_spring_gravity import F, M, MassSpringGravity, g, k, static_equilibrium, x
 
 problem = MassSpringGravity()
 

@@ -51,7 +51,7 @@ def three_link():
 
 @pytest.fixture(scope="module")
 def models():
-    from problems.toy_car import ToyCar
+    from dualmech.problems.toy_car import ToyCar
     car = ToyCar()
     pend = Pendulum()
     eqs3, values3 = three_link()

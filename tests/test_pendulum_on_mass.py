@@ -8,7 +8,7 @@ from dualmech import t
 from dualmech.compare import compare, compare_models
 from dualmech.numeric import NumericModel
 from dualmech.testing import Point, assert_same_motion, points
-from problems.pendulum_on_mass import (M, PendulumOnMass, frames, g, k, m,
+from dualmech.problems.pendulum_on_mass import (M, PendulumOnMass, frames, g, k, m,
                                        pendulum_mass_properties, r, theta, y)
 
 _EPS = np.finfo(float).eps

@@ -9,7 +9,7 @@ from dualmech.compare import compare
 from dualmech.dimensions import audit
 from dualmech.equations import to_plain
 from dualmech.exact import ExactForm
-from problems.pendulum_on_rotating_plane import (N, Omega, PendulumOnRotatingPlane, alpha, beta0,
+from dualmech.problems.pendulum_on_rotating_plane import (N, Omega, PendulumOnRotatingPlane, alpha, beta0,
                                                  c, g, hand_rod_force, l, m, plane_angle, theta)
 
 problem = PendulumOnRotatingPlane()

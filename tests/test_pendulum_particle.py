@@ -6,7 +6,7 @@ import sympy as sp
 from dualmech import t
 from dualmech.compare import compare
 from dualmech.numeric import reactions_at
-from problems.pendulum_particle import PendulumParticle, S, g, hand_rod_force, l, m, theta, x, y
+from dualmech.problems.pendulum_particle import PendulumParticle, S, g, hand_rod_force, l, m, theta, x, y
 
 problem = PendulumParticle()
 D = lambda q: q.diff(t)  # noqa: E731

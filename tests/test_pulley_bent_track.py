@@ -8,7 +8,7 @@ from dualmech import t
 from dualmech.compare import compare
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
-from problems.pulley_bent_track import (M1, M2, PulleyBentTrack, c, drive, g, hand_reactions, k,
+from dualmech.problems.pulley_bent_track import (M1, M2, PulleyBentTrack, c, drive, g, hand_reactions, k,
                                         m, scene, theta0, x)
 
 _EPS = np.finfo(float).eps

@@ -17,7 +17,7 @@ from dualmech.compare import compare
 from dualmech.report import write_report
 from dualmech.report.charts import SAME, group_curves, trajectory_chart
 from dualmech.report.mathml import equation
-from problems import get
+from dualmech.problems import get
 
 
 @pytest.fixture(scope="module")

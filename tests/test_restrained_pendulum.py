@@ -8,7 +8,7 @@ from dualmech import EquationSet, Lagrangian, t
 from dualmech.compare import compare, compare_models, reaction_pairs
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
-from problems.restrained_pendulum import (RestrainedPendulum, a, b, c, g, hand_reactions, k, l,
+from dualmech.problems.restrained_pendulum import (RestrainedPendulum, a, b, c, g, hand_reactions, k, l,
                                           m, theta)
 
 _EPS = np.finfo(float).eps

@@ -6,7 +6,7 @@ import sympy as sp
 from dualmech import t
 from dualmech.compare import compare
 from dualmech.numeric import NumericModel, SingularityError
-from problems.rigid_body_euler_angles import (A, B, C, Q1, Q2, Q3, RigidBodyEulerAngles,
+from dualmech.problems.rigid_body_euler_angles import (A, B, C, Q1, Q2, Q3, RigidBodyEulerAngles,
                                               body_rates, frames, phi, psi, theta)
 
 problem = RigidBodyEulerAngles()

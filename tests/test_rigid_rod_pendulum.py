@@ -7,7 +7,7 @@ import sympy as sp
 from dualmech import t
 from dualmech.compare import compare
 from dualmech.exact import ExactForm
-from problems.rigid_rod_pendulum import RigidRodPendulum, g, hand_reactions, l, m, theta
+from dualmech.problems.rigid_rod_pendulum import RigidRodPendulum, g, hand_reactions, l, m, theta
 
 problem = RigidRodPendulum()
 D = lambda q: q.diff(t)  # noqa: E731

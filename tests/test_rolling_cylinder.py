@@ -8,7 +8,7 @@ from dualmech import t
 from dualmech.compare import compare
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
-from problems.rolling_cylinder import (M, R, RollingCylinder, g, hand_reactions, m, r, scene,
+from dualmech.problems.rolling_cylinder import (M, R, RollingCylinder, g, hand_reactions, m, r, scene,
                                        theta)
 
 _EPS = np.finfo(float).eps

@@ -7,7 +7,7 @@ from dualmech import t
 from dualmech.compare import compare
 from dualmech.numeric import simulate
 from dualmech.steady import steady_rates
-from problems.satellite_polar import SatellitePolar, angular_momentum, frames, m, mu, r, theta
+from dualmech.problems.satellite_polar import SatellitePolar, angular_momentum, frames, m, mu, r, theta
 
 problem = SatellitePolar()
 D = lambda q, n=1: q.diff(t, n)  # noqa: E731

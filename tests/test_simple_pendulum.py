@@ -4,7 +4,7 @@ import sympy as sp
 
 from dualmech import t
 from dualmech.compare import compare, compare_models, reaction_pairs
-from problems.simple_pendulum import M, SimplePendulum, a, g, hand_tension, theta
+from dualmech.problems.simple_pendulum import M, SimplePendulum, a, g, hand_tension, theta
 
 problem = SimplePendulum()
 D = lambda q: q.diff(t)  # noqa: E731

@@ -4,7 +4,7 @@ import sympy as sp
 
 from dualmech import t
 from dualmech.compare import compare, compare_models
-from problems.spring_mass_damper import (F0, Omega, SpringMassDamper, b, forcing, k, m,
+from dualmech.problems.spring_mass_damper import (F0, Omega, SpringMassDamper, b, forcing, k, m,
                                          steady_state, x)
 
 problem = SpringMassDamper()

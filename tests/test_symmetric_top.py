@@ -7,7 +7,7 @@ from dualmech import t
 from dualmech.compare import compare
 from dualmech.equations import state_symbols
 from dualmech.numeric import NumericModel, simulate
-from problems.symmetric_top import (A, C, M, SymmetricTop, frames, g, h, momenta, phi, psi,
+from dualmech.problems.symmetric_top import (A, C, M, SymmetricTop, frames, g, h, momenta, phi, psi,
                                     steady_precession_rates, theta)
 
 problem = SymmetricTop()

@@ -5,7 +5,7 @@ import sympy as sp
 
 from dualmech import t
 from dualmech.compare import compare
-from problems.taut_string_masses import (P, TautStringMasses, a, exact_geometry, m,
+from dualmech.problems.taut_string_masses import (P, TautStringMasses, a, exact_geometry, m,
                                          string_pulls, x1, x2)
 
 problem = TautStringMasses()

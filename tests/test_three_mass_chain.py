@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 from dualmech.compare import compare
-from problems.three_mass_chain import (ThreeMassChain, g, k1, k2, k3, m1, m2, m3,
+from dualmech.problems.three_mass_chain import (ThreeMassChain, g, k1, k2, k3, m1, m2, m3,
                                        printed_matrices)
 
 problem = ThreeMassChain()

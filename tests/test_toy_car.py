@@ -10,7 +10,7 @@ from dualmech import t
 from dualmech.compare import compare, compare_models, reaction_pairs
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
-from problems.toy_car import R, ToyCar, coriolis_term, frames, g, m, phi, theta
+from dualmech.problems.toy_car import R, ToyCar, coriolis_term, frames, g, m, phi, theta
 
 _EPS = np.finfo(float).eps
 problem = ToyCar()

@@ -4,7 +4,7 @@ import sympy as sp
 
 from dualmech import Frame, Point, rot_z, t
 from dualmech.compare import compare
-from problems.trolley_pendulum import (F, M, P, TrolleyPendulum, X, a, energies, g,
+from dualmech.problems.trolley_pendulum import (F, M, P, TrolleyPendulum, X, a, energies, g,
                                        hand_generalised_forces, hand_tension, m, theta, x)
 
 problem = TrolleyPendulum()

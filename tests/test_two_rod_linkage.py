@@ -9,7 +9,7 @@ from dualmech.compare import compare, compare_models
 from dualmech.equations import to_plain
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
-from problems.two_rod_linkage import (M, TwoRodLinkage, c, g, k, l, l0, m, scene, theta, x)
+from dualmech.problems.two_rod_linkage import (M, TwoRodLinkage, c, g, k, l, l0, m, scene, theta, x)
 
 _EPS = np.finfo(float).eps
 problem = TwoRodLinkage()

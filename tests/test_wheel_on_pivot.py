@@ -4,7 +4,7 @@ import sympy as sp
 
 from dualmech import t
 from dualmech.compare import compare
-from problems.wheel_on_pivot import WheelOnPivot, a, direct_form, frames, g, l, m, phi, tau
+from dualmech.problems.wheel_on_pivot import WheelOnPivot, a, direct_form, frames, g, l, m, phi, tau
 
 problem = WheelOnPivot()
 D = lambda q: q.diff(t)  # noqa: E731

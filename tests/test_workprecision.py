@@ -13,7 +13,7 @@ import pytest
 
 from dualmech.numeric.formulations import formulations
 from dualmech.numeric.workprecision import work_precision
-from problems import get
+from dualmech.problems import get
 
 TOLS = (1e-4, 1e-6, 1e-8)
 STEPS = (32, 64, 128)

@@ -33,7 +33,7 @@ derivatives and the reactions, and a vector answer is then typed in its basis
 
 Example
 -------
->>> from problems import get
+>>> from dualmech.problems import get
 >>> from dualmech.grade.context import ProblemContext
 >>> cat = catalogue(ProblemContext.of(get("toy_car")))
 >>> [n for n in cat if not n.startswith("(")]  # doctest: +NORMALIZE_WHITESPACE

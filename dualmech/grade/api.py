@@ -41,7 +41,7 @@ class Grader:
 
     def __init__(self, problem, seed: int = 0, limits: Limits = LIMITS):
         if isinstance(problem, str):
-            import problems as catalogue_
+            from dualmech import problems as catalogue_
             try:
                 problem = catalogue_.get(problem)
             except KeyError as exc:

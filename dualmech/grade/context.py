@@ -21,7 +21,7 @@ A problem whose models leave that world (``sqrt``, ``Abs``, ...) has no exact po
 
 Example
 -------
->>> from problems import get
+>>> from dualmech.problems import get
 >>> ctx = ProblemContext.of(get("simple_pendulum"))
 >>> ctx.method, len(ctx.points("exact")) >= 4
 ('exact', True)

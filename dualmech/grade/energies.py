@@ -23,7 +23,7 @@ generalised forces ``Q``.
 
 Example
 -------
->>> from problems import get
+>>> from dualmech.problems import get
 >>> from dualmech.grade.context import ProblemContext
 >>> parts = LagrangeParts.of(ProblemContext.of(get("simple_pendulum")))
 >>> sorted(parts.kinds.values())

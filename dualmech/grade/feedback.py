@@ -18,7 +18,7 @@ exactly at a random point of the parameters.
 
 Example
 -------
->>> from problems import get
+>>> from dualmech.problems import get
 >>> from dualmech.grade.context import ProblemContext
 >>> ctx = ProblemContext.of(get("simple_pendulum"))
 >>> import sympy as sp

@@ -8,7 +8,7 @@ quantity there.  Feedback (:mod:`.feedback`) only explains a verdict already rea
 
 Example
 -------
->>> from problems import get
+>>> from dualmech.problems import get
 >>> from dualmech.grade.context import ProblemContext
 >>> from dualmech.grade.answers import find_quantity
 >>> from dualmech.grade.formula import Formula

@@ -14,7 +14,7 @@
 
 Example
 -------
->>> from problems import get                                    # doctest: +SKIP
+>>> from dualmech.problems import get                                    # doctest: +SKIP
 >>> traj = simulate(get("toy_car"), t_span=(0, 2))              # doctest: +SKIP
 >>> traj.reactions["F_r"].shape                                 # doctest: +SKIP
 (200,)

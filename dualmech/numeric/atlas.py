@@ -17,7 +17,7 @@ A section that does not apply says why (no DAE form, no stable equilibrium, ...)
 
 Example
 -------
->>> from problems import get                                         # doctest: +SKIP
+>>> from dualmech.problems import get                                         # doctest: +SKIP
 >>> print(atlas(get("two_rod_linkage")))                              # doctest: +SKIP
 """
 from __future__ import annotations

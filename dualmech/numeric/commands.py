@@ -114,7 +114,7 @@ def _guard(handler):
 
 
 def _problem(name: str):
-    import problems
+    from dualmech import problems
     try:
         problems.module_of(name)
     except KeyError as exc:
@@ -139,7 +139,7 @@ def _chart(args) -> int:
         raise _Usage("give problem names or --all, not both.")
     if not args.all and not args.names:
         raise _Usage("name at least one problem, or use --all.")
-    import problems
+    from dualmech import problems
     names = [d.name for d in problems.declarations()] if args.all else list(args.names)
     chosen = [_problem(n) for n in names]
     out = _writable(args.out)

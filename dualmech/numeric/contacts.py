@@ -18,7 +18,7 @@ its working range), so a chart never shows a block sliding 85 m down a 2 m wedge
 
 Example
 -------
->>> from problems import get                                         # doctest: +SKIP
+>>> from dualmech.problems import get                                         # doctest: +SKIP
 >>> print(watch(get("toy_car"), (0, 3), y0=[0.3, 2.4, 0.0, 0.0]))     # doctest: +SKIP
 F_r changes sign (+ to -) at t = 0 s ...: the car leaves the track ...
 """

@@ -18,12 +18,12 @@ The position-level constraints ``g`` are not stored in the equations; :func:`con
 recovers them from the acceleration rows (the coefficients of ``q''`` are ``G = dg/dq``; the
 rest must be ``q'^T (dG/dq) q'``, checked exactly) by integrating ``G`` coordinate by
 coordinate, and checks ``dg/dq = G`` exactly.  A direct model in the same maximal
-coordinates (the inertial Newton--Euler form of :mod:`problems.pendulum_particle`, which
+coordinates (the inertial Newton--Euler form of :mod:`dualmech.problems.pendulum_particle`, which
 imposes the rod length only through its coordinate map) is made square by the same rows.
 
 Example
 -------
->>> from problems import get                                          # doctest: +SKIP
+>>> from dualmech.problems import get                                          # doctest: +SKIP
 >>> p = get("pendulum_particle"); eqs = p.model("cartesian")          # doctest: +SKIP
 >>> constraints_of(eqs).expressions                                   # doctest: +SKIP
 ((-x(t)**2 - y(t)**2)/(2*l),)

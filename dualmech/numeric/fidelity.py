@@ -5,8 +5,8 @@ sources offer one:
 
 * linear against nonlinear -- the small-oscillation model about a stable equilibrium (the
   Jacobian of the richest model there) below the nonlinear model;
-* point mass against rigid body -- :class:`problems.n_link_pendulum.NLinkPendulum` (masses
-  on massless rods) below :class:`~problems.n_link_pendulum.NLinkRigidPendulum` (uniform rods);
+* point mass against rigid body -- :class:`dualmech.problems.n_link_pendulum.NLinkPendulum` (masses
+  on massless rods) below :class:`~dualmech.problems.n_link_pendulum.NLinkRigidPendulum` (uniform rods);
 * the mobile robot's simplified model, which neglects the pivot reaction ``H`` in the base's
   balance, below the detailed one (a neglected reaction).
 
@@ -19,7 +19,7 @@ a rung neglects, with their size along that trajectory.
 
 Example
 -------
->>> from problems import get                                         # doctest: +SKIP
+>>> from dualmech.problems import get                                         # doctest: +SKIP
 >>> print(ladder(get("mobile_robot")))                                # doctest: +SKIP
 """
 from __future__ import annotations
@@ -60,7 +60,7 @@ LADDERS["n_link_rigid_pendulum"] = LADDERS["n_link_pendulum"]
 
 
 def _problem(name: str, **options):
-    import problems
+    from dualmech import problems
     return problems.get(name, **options)
 
 

@@ -18,7 +18,7 @@ against one reference motion.  Reactions come from the formulation itself when i
 
 Example
 -------
->>> from problems import get                                     # doctest: +SKIP
+>>> from dualmech.problems import get                                     # doctest: +SKIP
 >>> [f.name for f in formulations(get("pendulum_particle"))[0]]   # doctest: +SKIP
 ['lagrange', 'newton_euler', 'newton_euler_inertial (DAE, index 1)', ...]
 """

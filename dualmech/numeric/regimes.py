@@ -17,7 +17,7 @@
 
 Example
 -------
->>> from problems import get                                         # doctest: +SKIP
+>>> from dualmech.problems import get                                         # doctest: +SKIP
 >>> s = stiffness(get("falling_container"))                           # doctest: +SKIP
 >>> print(s)                                                          # doctest: +SKIP
 """

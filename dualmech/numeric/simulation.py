@@ -9,7 +9,7 @@ that names the argument, what was given and what is allowed.
 
 Example
 -------
->>> from problems import get                                    # doctest: +SKIP
+>>> from dualmech.problems import get                                    # doctest: +SKIP
 >>> traj = simulate(get("toy_car"), t_span=(0, 2))              # doctest: +SKIP
 >>> traj.reactions["F_r"].shape                                 # doctest: +SKIP
 (200,)
@@ -54,7 +54,7 @@ def problem_parameters(problem, params: Mapping | None = None, *,
 
     Example
     -------
-    >>> from problems import get                                     # doctest: +SKIP
+    >>> from dualmech.problems import get                                     # doctest: +SKIP
     >>> problem_parameters(get("toy_car"), {"L": 2})                 # doctest: +SKIP
     Traceback (most recent call last):
     ValueError: `params`: unknown parameter 'L'; did you mean 'R'? ...

@@ -25,7 +25,7 @@ continuation along the run).
 
 Example
 -------
->>> from problems import get                                       # doctest: +SKIP
+>>> from dualmech.problems import get                                       # doctest: +SKIP
 >>> [str(s) for s in scan(get("toy_car"))][0]                       # doctest: +SKIP
 'lagrange: det M = 0 at theta = -1.5708 (kappa ~ d^-2; declared: cos(theta) = 0)'
 """

@@ -22,7 +22,7 @@ and named in the legend.
 
 Example
 -------
->>> from problems import get                                          # doctest: +SKIP
+>>> from dualmech.problems import get                                          # doctest: +SKIP
 >>> wp = work_precision(get("pendulum_particle"), tolerances=(1e-4, 1e-8))  # doctest: +SKIP
 >>> wp.write(Path("out"))                                             # doctest: +SKIP
 """

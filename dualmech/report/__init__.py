@@ -10,7 +10,7 @@ to fit the scene) and writes both pages (:mod:`.pages`).
 Example
 -------
 >>> from dualmech.compare import compare                              # doctest: +SKIP
->>> from problems import all_problems                                  # doctest: +SKIP
+>>> from dualmech.problems import all_problems                                  # doctest: +SKIP
 >>> write_report([compare(p) for p in all_problems()], Path("out"), 5.0)  # doctest: +SKIP
 Written(markdown=PosixPath('out/report.md'), html=PosixPath('out/report.html'), ...)
 """

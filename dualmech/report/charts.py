@@ -13,7 +13,7 @@ It returns a :class:`Chart` with the paths and the notes, or the reason it could
 
 Example
 -------
->>> from problems import get                                        # doctest: +SKIP
+>>> from dualmech.problems import get                                        # doctest: +SKIP
 >>> trajectory_chart(get("block_on_wedge"), Path("out"), 5.0).notes   # doctest: +SKIP
 ['simulated up to t = 0.49 s: q1 leaves its declared range [0, 2] ...']
 """
