@@ -184,6 +184,24 @@ class NumericModel:
         self._code = _generated(self.eqs)
         self._setup(state["p"], state["backend"])
 
+    def with_backend(self, backend: str) -> "NumericModel":
+        """The same equations and parameter values evaluated by another ``backend``.
+
+        Example
+        -------
+        >>> import sympy as sp
+        >>> from dualmech import EquationSet, coordinate, t
+        >>> x = coordinate("x"); m, k = sp.symbols("m k", positive=True)
+        >>> nm = NumericModel(EquationSet("spring", (x,), (m*x.diff(t, 2) + k*x,)), {m: 2.0, k: 8.0})
+        >>> nm.with_backend("python").rhs(0.0, np.array([0.5, 0.0]))
+        array([ 0., -2.])
+        """
+        if backend not in ("auto", "python", "c"):
+            raise ValueError(f"`backend` must be 'auto', 'python' or 'c', got {backend!r}.")
+        other = object.__new__(NumericModel)
+        other.__setstate__({**self.__getstate__(), "backend": backend})
+        return other
+
     def _setup(self, p: tuple, backend: str) -> None:
         code = self._code
         k = code.module.static(p)
@@ -229,7 +247,8 @@ class NumericModel:
             return work[n2: n2 + (n2 if rhs else self.shape[1])].copy()
 
     def _c_many(self, time, Y: np.ndarray, out: np.ndarray, offset: int, nrows: int):
-        """Solve at the states in the columns of ``Y`` into rows ``offset...`` of ``out``
+        """Solve at the states in the columns of ``Y`` (any layout) into rows ``offset...``
+        of ``out`` (a C-ordered float array: the compiled code writes it row by row)
         with the compiled code; ``None`` when done, else the mask of states that tripped the
         cheap estimate."""
         _, many, pp, kp, *_ = self._c_solver()
@@ -304,7 +323,7 @@ class NumericModel:
                 return out
             yl = y.tolist()
             return np.array(yl[n:] + self._solve_one(time, yl)[:n])
-        out = np.empty_like(y)
+        out = np.empty(y.shape)  # C order: the compiled code writes it row by row
         out[:n] = y[n:]
         if self._c_solver() is None:
             out[n:] = self._solve_many(time, y)[:n]
