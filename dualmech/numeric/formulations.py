@@ -71,6 +71,16 @@ class Formulation:
     _solve: Callable | None = field(default=None, repr=False)
     _outside: Callable | None = field(default=None, repr=False)
     dae_solver: IDASolver | None = field(default=None, repr=False)
+    numeric: NumericModel | None = field(default=None, repr=False)
+
+    @property
+    def backend(self) -> str:
+        """Where its generated code runs: ``"C"`` or ``"NumPy"`` (IDA's residual: Python)."""
+        if self.dae_solver is not None:
+            return "Python"
+        if self.numeric is None:
+            return ""
+        return "C" if self.numeric.compiled else "NumPy"
 
     @property
     def coordinates(self) -> tuple:
@@ -258,7 +268,7 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations, gains) -> list[Form
                             tuple(u.name for u in eqs.unknowns), None, energy, note,
                             nm.solve if own else None,
                             _outside_reactions(problem, values) if in_ref and not own
-                            else None)]
+                            else None, None, nm)]
     if square:
         constraints = constraints_of(eqs)
     elif len(eqs.equations) < eqs.n + len(eqs.unknowns):
@@ -275,7 +285,8 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations, gains) -> list[Form
             out.append(Formulation(f"{eqs.name} ({label})", "dae", eqs, cm.rhs, y_own,
                                    scales, mapping, cm.reaction_names, cm, energy, note,
                                    cm.numeric.solve, None,
-                                   IDASolver(cm, stab) if stab in DAE_FORMS else None))
+                                   IDASolver(cm, stab) if stab in DAE_FORMS else None,
+                                   cm.numeric))
     return out
 
 

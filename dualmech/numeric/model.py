@@ -216,6 +216,11 @@ class NumericModel:
             backend == "auto" and N >= _C_MIN and cbackend.compiler() is not None))
         self._c = False if usable else None  # False: not loaded yet
 
+    @property
+    def compiled(self) -> bool:
+        """Whether :meth:`solve` and :meth:`rhs` run compiled C code (else NumPy/Python)."""
+        return self._c is not None and self._c_solver() is not None
+
     def _c_solver(self):
         """The compiled solver (loaded, or compiled, on first use), or ``None``."""
         if self._c is False:
