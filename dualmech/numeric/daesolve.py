@@ -10,9 +10,10 @@ through the ``scikit-sundae`` bindings, in two forms:
 
       q' - v = 0,   M v' + W lambda - b = 0,   g(q) - g0 = 0;
 
-  the velocities and multipliers (index-2 and index-3 variables) are left out of the error
-  test (``atol`` set far above their size), the practice for index-3 systems in BDF codes,
-  whose error estimate is not valid for them (Brenan et al., section 5.4);
+  the multipliers (index 3) and the velocities of the coordinates that enter a constraint
+  (index 2) are left out of the error test (``atol`` set far above their size), whose
+  estimate is not valid for them (Brenan et al., section 5.4); the velocities of coordinates
+  no constraint holds are index-1 variables and stay in it;
 * ``ggl`` -- Gear, Gupta & Leimkuhler's stabilised index-2 form in ``y = [q, v, lambda, mu]``
   (*J. Comput. Appl. Math.* 12, 1985)::
 
@@ -69,6 +70,9 @@ class IDASolver:
         self.cm, self.form = constrained, form
         self.n, self.k = constrained.n, constrained.k
         self.size = 2 * self.n + self.k * (2 if form == "ggl" else 1)
+        #: coordinates that enter a constraint (their velocities are index-2 variables)
+        self.constrained = np.array([any(row[j] != 0 for row in constrained.constraints.gradients)
+                                     for j in range(self.n)])
         self.calls = 0
 
     def residual(self, t: float, y: np.ndarray, yp: np.ndarray, res: np.ndarray) -> None:
@@ -105,9 +109,9 @@ class IDASolver:
         self.calls = 0
         tol = np.full(self.size, _EXCLUDED)
         atol = np.broadcast_to(np.asarray(atol, dtype=float), (2 * n,))
-        tol[:n] = atol[:n]
-        if self.form == "ggl":
-            tol[n:2 * n] = atol[n:]
+        tol[:2 * n] = atol
+        if self.form == "index3":  # index-2 velocities: those of coordinates the loop holds
+            tol[n:2 * n][self.constrained] = _EXCLUDED
         t0, t1 = float(t_span[0]), float(t_span[1])
         solver = sun.ida.IDA(self.residual, rtol=rtol, atol=tol, max_num_steps=max_steps,
                              algebraic_idx=list(range(2 * n, self.size)))
