@@ -22,7 +22,7 @@ STEPS = (32, 64, 128)
 @pytest.fixture(scope="module")
 def wp():
     return work_precision(get("pendulum_particle"), duration=3.0, tolerances=TOLS,
-                          steps=STEPS, methods=("RK45", "DOP853", "midpoint"),
+                          steps=STEPS, methods=("RK45", "DOP853", "midpoint", "IDA"),
                           models=("lagrange", "newton_euler", "cartesian"), samples=51,
                           y0=[1.0, 0.0], progress=False, baumgarte_gains=(10.0,),
                           stabilisations=("none", "baumgarte", "projection", "ggl"),

@@ -44,6 +44,7 @@ from typing import Sequence
 
 import numpy as np
 
+from ..equations import ModelError
 from .integrators import Run
 
 __all__ = ["DAE_FORMS", "DAE_METHODS", "IDASolver"]
@@ -115,12 +116,12 @@ class IDASolver:
         t0, t1 = float(t_span[0]), float(t_span[1])
         solver = sun.ida.IDA(self.residual, rtol=rtol, atol=tol, max_num_steps=max_steps,
                              algebraic_idx=list(range(2 * n, self.size)))
-        y, yp = self.initial(t0, y0)
         ys, k, steps, ok, message, njev = [], 0, 0, True, "IDA", 0
-        while k < t_eval.size and t_eval[k] <= t0:
-            ys.append(y[:2 * n].copy())
-            k += 1
         try:
+            y, yp = self.initial(t0, y0)
+            while k < t_eval.size and t_eval[k] <= t0:
+                ys.append(y[:2 * n].copy())
+                k += 1
             solver.init_step(t0, y, yp)
             now = t0
             while k < t_eval.size:
@@ -137,7 +138,7 @@ class IDASolver:
                 if steps >= max_steps:
                     ok, message = False, f"more than {max_steps} steps"
                     break
-        except (RuntimeError, ValueError, ZeroDivisionError, FloatingPointError,
+        except (ModelError, RuntimeError, ValueError, ZeroDivisionError, FloatingPointError,
                 np.linalg.LinAlgError) as exc:
             ok, message = False, f"IDA failed: {exc}"
         y_out = np.array(ys).T if ys else np.empty((2 * n, 0))

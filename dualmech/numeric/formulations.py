@@ -125,7 +125,7 @@ class Formulation:
         DAE-solved forms, the projectable scipy steppers for projection)."""
         from .stepping import PROJECTABLE
         if self.dae_solver is not None:
-            return ["IDA"]
+            return [m for m in candidates if m == "IDA"]
         if self.stabilisation == "projection":
             return [m for m in candidates if m in PROJECTABLE]
         return [m for m in candidates if m != "IDA"]

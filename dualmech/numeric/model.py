@@ -192,7 +192,8 @@ class NumericModel:
         >>> import sympy as sp
         >>> from dualmech import EquationSet, coordinate, t
         >>> x = coordinate("x"); m, k = sp.symbols("m k", positive=True)
-        >>> nm = NumericModel(EquationSet("spring", (x,), (m*x.diff(t, 2) + k*x,)), {m: 2.0, k: 8.0})
+        >>> eqs = EquationSet("spring", (x,), (m*x.diff(t, 2) + k*x,))
+        >>> nm = NumericModel(eqs, {m: 2.0, k: 8.0})
         >>> nm.with_backend("python").rhs(0.0, np.array([0.5, 0.0]))
         array([ 0., -2.])
         """

@@ -34,7 +34,7 @@ import numpy as np
 from scipy.integrate import BDF, DOP853, RK45, Radau
 
 from .integrators import Run
-from .model import SingularityError
+from ..equations import ModelError
 
 __all__ = ["projected_run", "PROJECTABLE"]
 
@@ -68,8 +68,8 @@ def projected_run(fun: Callable, t_span: Sequence[float], y0, method: str, t_eva
 
     Returns a :class:`~dualmech.numeric.integrators.Run` whose work counts include the
     derivative re-evaluated at every projected state.  A singular system, a state outside the
-    model's domain or a projection that does not converge ends the run with ``success =
-    False`` and that message.
+    model's domain or a projection that does not converge (a ModelError) ends the run with
+    ``success = False`` and that message.
     """
     if method not in _STEPPERS:
         raise ValueError(f"projection after every step drives {', '.join(PROJECTABLE)}; "
@@ -103,7 +103,8 @@ def projected_run(fun: Callable, t_span: Sequence[float], y0, method: str, t_eva
                 k += 1
             y = projector(t, solver.y)
             _restart_from(solver, y)
-    except (SingularityError, ValueError, ZeroDivisionError, FloatingPointError) as exc:
+    except (ModelError, ValueError, ZeroDivisionError, FloatingPointError,
+            np.linalg.LinAlgError) as exc:
         ok, message = False, str(exc)
     y_out = np.array(ys).T if ys else np.empty((np.size(y0), 0))
     run = Run(method, t_eval[: len(ys)].copy(), y_out, ok and len(ys) == t_eval.size, message,

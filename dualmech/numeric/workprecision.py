@@ -275,7 +275,8 @@ def _identical(runs: list[RunResult]) -> None:
 
 
 def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float] = TOLERANCES,
-                   steps: Sequence[int] = STEPS, methods: Sequence[str] = METHODS,
+                   steps: Sequence[int] = STEPS,
+                   methods: Sequence[str] = METHODS + DAE_METHODS,
                    models: Sequence[str] | None = None, samples: int = 101,
                    params: Mapping | None = None, y0=None, progress: bool = True,
                    stabilisations: Sequence[str] = STABILISATIONS + DAE_SOLVED,
@@ -301,7 +302,7 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
                        ", ".join(sorted(units)) or "-", skipped=skipped)
     jobs = []
     for f in forms:
-        for m in f.methods(list(methods) + list(DAE_METHODS)):
+        for m in f.methods(methods):
             if m == "midpoint":
                 if f.kind == "ode" and f.energy is not None:
                     jobs += [(f, m, (span[1] - span[0]) / s) for s in steps]
