@@ -108,8 +108,9 @@ def test_dae_forms_stay_on_the_loop_and_carry_the_hand_forces(forms, name, metho
     g, gd = f.drift(run.y)
     if "projection" in name:   # Gauss-Newton to 1e-13 of the configuration's size
         assert np.abs(g).max() <= 1e-12 and np.abs(gd).max() <= 1e-12
-    else:                      # IDA holds g = 0 at its steps; samples are interpolated
-        assert np.abs(g).max() <= 1e-5
+    else:   # IDA holds g = 0 at its steps; a sample comes from its interpolant, off by about
+        # the positions' error weight rtol * scale (|grad g| = 1): 10 of those at most
+        assert np.abs(g).max() <= 10 * 1e-8 * f.scales[:4].max()
     # the bar forces along the run are the hand forces at the run's own crank angle: the
     # index-1 system at a state off the loop by |g| moves them by O(|g|) times the forces'
     # gradients (k r, m g: below 1e3 here)
