@@ -37,7 +37,7 @@ from .kinematics import t
 __all__ = ["Dimension", "MASS", "LENGTH", "TIME", "ANGLE", "FORCE", "TORQUE", "ENERGY",
            "DIMENSIONLESS", "VELOCITY", "ACCELERATION", "STIFFNESS", "DAMPING",
            "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA", "FREQUENCY",
-           "DimensionIssue", "audit", "audit_rows", "dimension_of", "format_dimension"]
+           "DimensionIssue", "audit", "audit_rows", "dimension_of", "dimension_reader", "format_dimension"]
 
 MASS = _dd.mass
 LENGTH = _dd.length
@@ -189,6 +189,11 @@ class _Walker:
         self.dims.setdefault(t, _vec(reduce(TIME)))
         self.issues: list[DimensionIssue] = []
         self._memo: dict = {}
+        self._seeded: set = set()
+
+    def forget(self) -> None:
+        """Drop the memo of visited subexpressions (declared symbols stay)."""
+        self._memo = {k: v for k, v in self._memo.items() if k in self._seeded}
 
     def __call__(self, e) -> tuple:
         d = self._memo.get(e)
@@ -298,6 +303,7 @@ class _SeWalker(_Walker):
                     se_dims[se.Symbol(sym.name)] = _vadd(d, self.dims[t], -order)
         se_dims[se.Symbol(t.name)] = self.dims[t]
         self._memo.update(se_dims)   # declared symbols are their own memo entries
+        self._seeded = set(se_dims)
 
     def _show(self, e) -> str:
         return dotted(to_sp(e, self.names))
@@ -379,6 +385,33 @@ def audit_rows(rows, dims: Mapping, expected=None, names: Mapping | None = None
         w._add(e if held else as_expr(e), None if x is None else _vec(reduce(x)))
         out.append(w.issues)
     return out
+
+
+def dimension_reader(dims: Mapping, names: Mapping | None = None, held: bool = True):
+    """A function ``expr -> dimension`` like :func:`dimension_of` that shares one walk (and
+    its memo) between calls: for many expressions of one derivation.  ``held`` says whether
+    the expressions are symengine ones (with ``names``) or sympy ones.
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> from dualmech.dimensions import MASS, LENGTH, dimension_reader
+    >>> m, l = sp.symbols("m l")
+    >>> read = dimension_reader({m: MASS, l: LENGTH}, held=False)
+    >>> read(m*l**2), read(l)
+    ((('mass', Fraction(1, 1)), ('length', Fraction(2, 1))), (('length', Fraction(1, 1)),))
+    """
+    w = _SeWalker(dims, names or {}) if held else _Walker(dims)
+
+    def read(expr) -> Dims:
+        w.issues = []
+        d = w(expr if held else as_expr(expr))
+        if w.issues:
+            issues, w.issues = w.issues, []
+            w.forget()   # so that the same expression raises again
+            raise ValueError("; ".join(map(str, issues)))
+        return _pairs(d)
+    return read
 
 
 def dimension_of(expr, dims: Mapping, names: Mapping | None = None) -> Dims:

@@ -111,11 +111,14 @@ def solve_display(eqs, limits: Budget | None = None) -> dict:
     hit = limits.cache.get(key)
     if hit is not None and hit[0] is eqs:
         return hit[1]
+    n = len(eqs.accelerations) + len(eqs.unknowns)
+    if n > 8:   # decided before the matrix is built: its sympy form costs more than a verdict
+        raise OverBudget(f"{n} unknowns")
     A, b = eqs.matrix()
     if A.rows != A.cols:
         raise OverBudget(f"{A.rows} equations for {A.cols} unknowns: not a square system")
     ops = sp.count_ops(A) + sp.count_ops(b)
-    if A.cols > 8 or ops > 4 * limits.max_ops:
+    if ops > 4 * limits.max_ops:
         raise OverBudget(f"{A.cols} unknowns, {ops} operations")
     with budget(limits.remaining()):
         sol = A.LUsolve(b, iszerofunc=is_zero_expression)
