@@ -176,17 +176,18 @@ def _catalogue():
     return problems
 
 
-def _get(name: str, n: int | None = None):
+def _get(spec: str, n: int | None = None):
+    """The problem ``spec`` names: a catalogue name, ``path.py[:Class]``, ``module:Class`` or a
+    registered catalogue's problem (every command goes through here)."""
     cat = _catalogue()
     try:
-        decl = cat.module_of(name)
-    except KeyError as exc:
+        return cat.get(spec, **({"n": n} if n is not None else {}))
+    except KeyError as exc:   # SpecError: what to fix, with close matches
         raise UsageError(exc.args[0] if exc.args else str(exc)) from None
-    if n is not None and not decl.parametric:
-        raise UsageError(f"`--n` sizes a parametric problem; `{name}` has a fixed size.")
-    try:
-        return cat.get(name, **({"n": n} if n is not None else {}))
     except ValueError as exc:
+        if n is not None and "fixed size" in str(exc):
+            raise UsageError(f"`--n` sizes a parametric problem; `{spec}` has a fixed size.") \
+                from None
         raise UsageError(str(exc)) from None
 
 

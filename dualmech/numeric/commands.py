@@ -114,12 +114,12 @@ def _guard(handler):
 
 
 def _problem(name: str):
+    """The problem ``name`` names: a catalogue name, ``path.py[:Class]`` or ``module:Class``."""
     from dualmech import problems
     try:
-        problems.module_of(name)
-    except KeyError as exc:
+        return problems.get(name)
+    except KeyError as exc:   # SpecError: what to fix, with close matches
         raise _Usage(exc.args[0] if exc.args else str(exc)) from None
-    return problems.get(name)
 
 
 def _writable(out: Path) -> Path:
