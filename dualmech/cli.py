@@ -126,6 +126,17 @@ def build_parser() -> argparse.ArgumentParser:
     _points_seed(p)
     p.set_defaults(func=_cmd_report)
 
+    p = sub.add_parser("new", help="write a new problem's skeleton (both models, a test)",
+                       description="Write DIR/NAME.py -- a working problem with both models "
+                                   "(a pendulum to replace by your system), a sign sketch in "
+                                   "its docstring and TODO comments -- and DIR/test_NAME.py. "
+                                   "`dualmech check DIR/NAME.py` passes as written.")
+    p.add_argument("name", metavar="NAME", help="the problem's name (lower_case_with_underscores)")
+    p.add_argument("--out", metavar="DIR", default=Path("."), type=Path,
+                   help="where to write the two files (default: the current directory)")
+    p.add_argument("--force", action="store_true", help="overwrite existing files")
+    p.set_defaults(func=_cmd_new)
+
     from .grade.cli import register as _register_grade
     from .numeric.commands import register as _register_numeric
     _register_grade(sub)
@@ -404,3 +415,25 @@ def _cmd_report(args) -> int:
     return EXIT_OK if all(c.equivalent for _, c in results) else EXIT_DISAGREE
 
 
+
+
+def _cmd_new(args) -> int:
+    from .skeleton import SkeletonError, write_skeleton
+    try:
+        problem, test = write_skeleton(args.name, args.out, force=args.force)
+    except SkeletonError as exc:
+        raise UsageError(str(exc)) from None
+    print(f"wrote {problem} and {test}\n\n"
+          f"It is a working pendulum; make it your system:\n"
+          f"  1. draw your sign sketch in the docstring of {problem.name}: positive directions "
+          f"of every coordinate and force;\n"
+          f"  2. declare your parameters, coordinates and reactions (dimensions, defaults, "
+          f"ranges);\n"
+          f"  3. write newton_euler() from the free-body diagram and lagrange() from T and V, "
+          f"independently;\n"
+          f"  4. replace the hand result in {test.name} by yours.\n"
+          f"Every TODO comment marks a place to fill in.  Then:\n"
+          f"  dualmech check {problem}\n"
+          f"  dualmech show {problem}\n"
+          f"  python -m pytest {test}")
+    return EXIT_OK
