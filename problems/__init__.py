@@ -23,11 +23,12 @@ import importlib
 from dataclasses import dataclass
 from pathlib import Path
 
-from ._loader import GROUP, SpecError, canonical, registered
+from ._loader import GROUP, SpecError, canonical, catalogue_classes, registered
 from ._loader import resolve as _resolve
 
 __all__ = ["Declaration", "OUT_OF_SCOPE", "declarations", "all_problems", "get", "load",
-           "resolve", "module_of", "SpecError", "canonical", "registered", "GROUP"]
+           "resolve", "module_of", "SpecError", "canonical", "registered", "catalogue_classes",
+           "GROUP"]
 
 _HERE = Path(__file__).resolve().parent
 

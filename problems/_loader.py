@@ -35,7 +35,8 @@ import sys
 import traceback
 from pathlib import Path
 
-__all__ = ["SpecError", "resolve", "canonical", "registered", "problem_classes", "GROUP"]
+__all__ = ["SpecError", "resolve", "canonical", "registered", "catalogue_classes",
+           "problem_classes", "GROUP"]
 
 #: the entry-point group through which course packages register catalogues
 GROUP = "dualmech.problems"
@@ -188,7 +189,8 @@ def registered() -> dict:
     return {ep.name: ep for ep in entry_points(group=GROUP)}
 
 
-def _catalogue_classes(ep) -> list:
+def catalogue_classes(ep) -> list:
+    """The problem classes of the registered catalogue ``ep`` (an entry point)."""
     try:
         obj = ep.load()
     except Exception as exc:  # noqa: BLE001 - a broken course package is named, not a crash
@@ -208,7 +210,7 @@ def _catalogue_classes(ep) -> list:
 def _from_module(module: str, wanted: str):
     eps = registered()
     if module in eps and _NAME.match(module):
-        return _pick(_catalogue_classes(eps[module]), wanted, f"catalogue {module!r}")
+        return _pick(catalogue_classes(eps[module]), wanted, f"catalogue {module!r}")
     mod = _import_module(module)
     obj = getattr(mod, wanted, None)
     if obj is not None and not _is_problem_class(obj):
@@ -244,7 +246,7 @@ def resolve(spec: str, catalogue_class=None):
     except KeyError as exc:
         missing = exc
     for ep in registered().values():
-        for c in _catalogue_classes(ep):
+        for c in catalogue_classes(ep):
             if spec in (getattr(c, "name", None), c.__name__):
                 return c
     raise SpecError(str(missing.args[0] if missing.args else missing)
