@@ -150,6 +150,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", metavar="DIR", default=Path("."), type=Path,
                    help="where to write the two files (default: the current directory)")
     p.add_argument("--force", action="store_true", help="overwrite existing files")
+    _json_flag(p, "the files written")
     p.set_defaults(func=_cmd_new)
 
     from .grade.cli import register as _register_grade
@@ -554,6 +555,9 @@ def _cmd_new(args) -> int:
         problem, test = write_skeleton(args.name, args.out, force=args.force)
     except SkeletonError as exc:
         raise UsageError(str(exc)) from None
+    if args.json:
+        print(_json({"problem": str(problem), "test": str(test)}))
+        return EXIT_OK
     print(f"wrote {problem} and {test}\n\n"
           f"It is a working pendulum; make it your system:\n"
           f"  1. draw your sign sketch in the docstring of {problem.name}: positive directions "

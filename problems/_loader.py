@@ -245,10 +245,13 @@ def resolve(spec: str, catalogue_class=None):
         return catalogue_class(spec)
     except KeyError as exc:
         missing = exc
-    for ep in registered().values():
-        for c in catalogue_classes(ep):
-            if spec in (getattr(c, "name", None), c.__name__):
-                return c
+    found = {f"{cname}:{spec}": c for cname, ep in sorted(registered().items())
+             for c in catalogue_classes(ep) if spec in (getattr(c, "name", None), c.__name__)}
+    if len(found) == 1:
+        return next(iter(found.values()))
+    if found:
+        raise SpecError(f"several registered catalogues have a problem {spec!r}: name one, "
+                        f"{' or '.join(found)}.")
     raise SpecError(str(missing.args[0] if missing.args else missing)
                     + " Your own problem: give its file, path.py[:Class], or module:Class.")
 
