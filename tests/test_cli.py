@@ -316,3 +316,19 @@ def test_readme_catalogue_table_lists_every_declared_problem():
     names = {line.split("|")[1].strip() for line in table.splitlines()
              if line.startswith("| ") and not line.startswith(("| problem", "| ---"))}
     assert {d.name for d in problems.declarations()} == names
+
+
+def test_readme_hypothesis_example_shares_one_problem_and_passes():
+    """The example builds the problem once, outside the test (built inside, every example
+    derives the models again and shrinking a failure takes minutes), and it passes."""
+    from hypothesis import settings
+    blocks = re.findall(r"```python\n(.*?)```", README.read_text(), re.S)
+    example = next(b for b in blocks if "from hypothesis import given" in b)
+    test_body = example.split("def test_", 1)[1]
+    assert "Pendulum()" not in test_body and "get(" not in test_body
+    namespace = {"__name__": "readme_example"}
+    with contextlib.redirect_stdout(io.StringIO()):
+        exec(compile(blocks[0], "README.md", "exec"), namespace)
+    exec(compile(example, "README.md", "exec"), namespace)
+    test = namespace["test_pendulum_both_ways"]
+    settings(max_examples=10, derandomize=True, deadline=None)(test)()
