@@ -27,7 +27,7 @@ from ._loader import GROUP, SpecError, canonical, catalogue_classes, registered
 from ._loader import resolve as _resolve
 
 __all__ = ["Declaration", "OUT_OF_SCOPE", "declarations", "all_problems", "get", "load",
-           "resolve", "module_of", "SpecError", "canonical", "registered", "catalogue_classes",
+           "named", "is_name", "resolve", "module_of", "SpecError", "canonical", "registered", "catalogue_classes",
            "GROUP"]
 
 _HERE = Path(__file__).resolve().parent
@@ -205,3 +205,25 @@ def get(spec: str, **options):
     ``"toy_car"``, a file ``path.py[:Class]``, ``module:Class``, or a registered catalogue's
     problem; ``options`` go to a parametric problem, e.g. ``n=10``."""
     return load(spec, **options)
+
+
+def is_name(spec: str) -> bool:
+    """Whether ``spec`` is a plain problem name (``toy_car``), which :func:`get` resolves in
+    the catalogues only -- never by importing a file or a module that the text names.
+
+    >>> is_name("toy_car"), is_name("/tmp/x.py"), is_name("os:path")
+    (True, False, False)
+    """
+    import re
+    return isinstance(spec, str) and re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]{0,99}", spec) \
+        is not None
+
+
+def named(name: str, **options):
+    """The catalogue (or registered catalogue) problem called ``name``; for names from
+    untrusted text (a CSV, a web form): a path or ``module:Class`` is refused, never
+    imported.  Raises :class:`SpecError` (a ``KeyError``)."""
+    if not is_name(name):
+        raise SpecError(f"{str(name)[:80]!r} is not a problem name: here a problem is named "
+                        "by its catalogue name (dualmech list), not by a file or module.")
+    return load(name, **options)

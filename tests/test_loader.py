@@ -192,3 +192,19 @@ def test_new_writes_a_skeleton_that_passes_check_and_its_test(capsys, tmp_path):
     assert status == 2 and "already exist" in err
     status, _, err = run(capsys, "new", "Bad-Name")
     assert status == 2 and "lower-case" in err
+
+
+def test_a_batch_csv_row_never_imports_a_file_or_module(tmp_path):
+    """Questions in a CSV are untrusted text: a path or module:Class there is refused, and the
+    file it names is not executed."""
+    from dualmech.grade.batch import grade_rows
+    marker = tmp_path / "executed"
+    evil = tmp_path / "evil.py"
+    evil.write_text(f"open({str(marker)!r}, 'w').close()\n" + USER_FILE)
+    rows = [{"id": "1", "question": str(evil), "answer": "m*x'' + k*x = 0"},
+            {"id": "2", "question": f"{evil}:eom", "answer": "m*x'' + k*x = 0"}]
+    results = grade_rows(rows)
+    assert [r["status"] for r in results] == ["invalid", "invalid"]
+    assert "not a problem name" in results[0]["summary"]
+    assert not marker.exists()
+    assert not problems.is_name("os:path") and problems.is_name("toy_car")
