@@ -538,8 +538,8 @@ def _cmd_report(args) -> int:
         print(_json({"problems": [_summary_row(p, c) for p, c in results],
                      "files": {"html": str(w.html), "markdown": str(w.markdown),
                                "json": [str(out / f"{p.name}.json") for p, _ in results],
-                               "charts": [str(x) for x in w.charts.values()]
-                               if isinstance(w.charts, dict) else [str(x) for x in w.charts]},
+                               "charts": [str(x) for ch in w.charts.values()
+                                          for x in getattr(ch, "paths", [])]},
                      "no_chart": dict(w.failed)}))
     else:
         print(f"\nwrote {w.html} (open it in a browser), {w.markdown}, {len(results)} JSON "

@@ -8,6 +8,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -104,3 +105,22 @@ def test_numeric_commands_print_json(capsys, springs, tmp_path):
     assert status == 0, err
     d = json.loads(out)
     assert d["problem"] == "my_spring" and d["runs"] and d["files"]
+
+
+def test_report_json_summary_and_progress_lines(capsys, springs, tmp_path, monkeypatch):
+    from dualmech import problems
+    monkeypatch.setattr(problems, "all_problems",
+                        lambda: [problems.load(f"{springs}:Spring"),
+                                 problems.load(f"{springs}:WrongSpring")])
+    out_dir = tmp_path / "report"
+    status, out, err = run(capsys, "report", "--out", str(out_dir), "--duration", "0.5",
+                           "--json")
+    assert status == 1                                   # the wrong spring disagrees
+    d = json.loads(out)
+    assert [(p["problem"], p["equivalent"]) for p in d["problems"]] == \
+        [("my_spring", True), ("my_wrong_spring", False)]
+    assert d["files"]["html"] == str(out_dir / "report.html")
+    assert (out_dir / "report.html").exists()
+    assert all(Path(p).exists() for p in d["files"]["json"] + d["files"]["charts"])
+    lines = err.splitlines()
+    assert "checking 1/2: my_spring" in lines and "charts 2/2: my_wrong_spring" in lines
