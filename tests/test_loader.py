@@ -158,6 +158,20 @@ def test_a_registered_catalogue_is_found_by_name_and_qualified(capsys, user_dir,
     assert run(capsys, "check", "mycourse:my_spring")[0] == 0           # qualified
     assert run(capsys, "check", "mycourse:WrongSpring")[0] == 1
     assert problems.load("toy_car").name == "toy_car"                    # the catalogue first
+    status, out, _ = run(capsys, "list", "--json")
+    mine = [r for r in json.loads(out) if r["catalogue"] == "mycourse"]
+    assert [r["name"] for r in mine] == ["mycourse:my_spring", "mycourse:my_wrong_spring"]
+    assert "mycourse:my_wrong_spring" in run(capsys, "list")[1]
+
+
+def test_the_loader_doctests_run():
+    """problems/ is not among the suite's doctest paths; its examples run here."""
+    import doctest
+
+    import dualmech.problems._loader as loader
+    for module in (problems, loader):
+        failed, tried = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
+        assert tried > 0 and failed == 0, module.__name__
 
 
 def test_options_reach_only_parametric_problems():
