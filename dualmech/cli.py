@@ -93,7 +93,10 @@ def build_parser() -> argparse.ArgumentParser:
         prog="dualmech",
         description="Every mechanics problem written twice -- Newton-Euler and Lagrange -- "
                     "proved equivalent exactly, with the reaction forces recovered.",
-        epilog="Exit status: 0 all pairs agree, 1 a pair disagrees, 2 usage error.")
+        epilog="NAME is a catalogue name (dualmech list), a file path.py or path.py:Class, "
+               "module:Class, or a problem of a catalogue registered under the entry-point "
+               "group dualmech.problems.  Exit status: 0 all pairs agree, 1 a pair disagrees, "
+               "2 usage error.")
     parser.add_argument("--version", action="version", version=f"dualmech {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     sub.required = True
@@ -110,7 +113,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("check", help="prove each problem's models equivalent",
                        description="Compare every model of each problem with its reference "
                                    "model, exactly, and check the source's printed answers.")
-    p.add_argument("names", nargs="*", metavar="NAME", help="problems to check")
+    p.add_argument("names", nargs="*", metavar="NAME",
+                   help="problems to check: catalogue names, path.py[:Class] or module:Class")
     p.add_argument("--all", action="store_true", help="check every problem")
     p.add_argument("--json", action="store_true",
                    help="print JSON: one object for one problem, a list for several")
@@ -122,7 +126,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("show", help="print a problem's equations of motion and reactions",
                        description="Print the equations of motion of each model of a "
                                    "problem, then the recovered reaction forces.")
-    p.add_argument("name", metavar="NAME", help="the problem to show")
+    p.add_argument("name", metavar="NAME",
+                   help="the problem to show: a catalogue name, path.py[:Class] or module:Class")
     p.add_argument("--latex", action="store_true", help="LaTeX instead of pretty text")
     p.add_argument("--model", metavar="M", help="show only model M (e.g. lagrange)")
     _json_flag(p, "models (coordinates, unknowns, labelled equations) and reactions")
