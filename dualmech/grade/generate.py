@@ -263,41 +263,55 @@ def _written_mistakes(ctx) -> list[Sample]:
     acc = set(ctx.qdd)
     found: dict = {}
     names = [ctx.reference.name] + [n for n in ctx.models if n != ctx.reference.name]
-    for name in names:
-        model = ctx.models.get(name, ctx.reference)
-        for e in model.equations:
-            row = ctx.plain(e)
-            args = sp.Add.make_args(row)
-            if not 3 <= len(args) <= 12 or \
-                    len(sp.Add.make_args(sp.expand(row))) > _MAX_TERMS:
+    written = [ctx.plain(e) for name in names
+               for e in ctx.models.get(name, ctx.reference).equations]
+    for row in written + _rows(ctx):
+        args = sp.Add.make_args(row)
+        if not 3 <= len(args) <= 12 or \
+                len(sp.Add.make_args(sp.expand(row))) > _MAX_TERMS:
+            continue
+        for a in args:
+            rest = row - a
+            if not sp.expand(rest).free_symbols & acc or not a.free_symbols & states \
+                    or not _natural(a, rest, row, ctx):
                 continue
-            for a in args:
-                rest = row - a
-                if not sp.expand(rest).free_symbols & acc or not a.free_symbols & states:
-                    continue
-                inner = [f for f in sp.Mul.make_args(a) if f.is_Add]
-                size = len(sp.Add.make_args(sp.expand(a)))
-                if "group" not in found and inner and 2 <= size <= 4:
-                    found["group"] = Sample(write(rest, ctx), "equation", False,
-                                            "group of terms dropped", "group", a)
-                if "factor sign" not in found and len(inner) == 1 and \
-                        len(inner[0].args) >= 2 and size >= 2:
-                    piece = inner[0].args[-1]
-                    others = sp.Mul(*[f for f in sp.Mul.make_args(a) if f is not inner[0]])
-                    new = sp.Mul(others, inner[0] - 2 * piece, evaluate=False)
-                    found["factor sign"] = Sample(
-                        write(rest, ctx) + " + " + _grouped(new, ctx), "equation", False,
-                        "sign inside a factor", "factor sign", sp.expand(others * piece))
-                if "like-term sign" not in found and size == 1 and not a.free_symbols & acc:
-                    key = _state_part(a, states)
-                    if any(b != a and len(sp.Add.make_args(sp.expand(b))) == 1 and
-                           _state_part(sp.expand(b), states) == key for b in args):
-                        found["like-term sign"] = Sample(
-                            write(rest - a, ctx), "equation", False, "one of like terms "
-                            "flipped", "like-term sign", a)
-            if len(found) == 3:
-                return list(found.values())
+            inner = [f for f in sp.Mul.make_args(a) if f.is_Add]
+            size = len(sp.Add.make_args(sp.expand(a)))
+            if "group" not in found and inner and 2 <= size <= 4:
+                found["group"] = Sample(write(rest, ctx), "equation", False,
+                                        "group of terms dropped", "group", a)
+            if "factor sign" not in found and len(inner) == 1 and \
+                    len(inner[0].args) >= 2 and size >= 2:
+                piece = inner[0].args[-1]
+                others = sp.Mul(*[f for f in sp.Mul.make_args(a) if f is not inner[0]])
+                new = sp.Mul(others, inner[0] - 2 * piece, evaluate=False)
+                found["factor sign"] = Sample(
+                    write(rest, ctx) + " + " + _grouped(new, ctx), "equation", False,
+                    "sign inside a factor", "factor sign", sp.expand(others * piece))
+            if "like-term sign" not in found and size == 1 and not a.free_symbols & acc:
+                key = _state_part(a, states)
+                if any(b != a and len(sp.Add.make_args(sp.expand(b))) == 1 and
+                       _state_part(sp.expand(b), states) == key for b in args):
+                    found["like-term sign"] = Sample(
+                        write(rest - a, ctx), "equation", False, "one of like terms "
+                        "flipped", "like-term sign", a)
+        if len(found) == 3:
+            return list(found.values())
     return list(found.values())
+
+
+def _natural(a, rest, row, ctx) -> bool:
+    """A written term as a person writes it: its expanded terms neither cancel nor merge
+    with the rest of the row's, nor collapse by ``sin^2 + cos^2 = 1``."""
+    from .terms import term_table
+    n = len(sp.Add.make_args(sp.expand(a)))
+    if n + len(sp.Add.make_args(sp.expand(rest))) != len(sp.Add.make_args(sp.expand(row))):
+        return False
+    if n < 2:
+        return True
+    written, reduced_ = (term_table(a, ctx, mode=m) for m in ("written", "pythagoras"))
+    return written is not None and reduced_ is not None and \
+        len(written.terms) == len(reduced_.terms) == len(term_table(a, ctx).terms)
 
 
 def _grouped(expr, ctx) -> str:

@@ -9,7 +9,7 @@ Coefficients are compared exactly, by value at one of the context's random point
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 
@@ -32,6 +32,35 @@ class TermTable:
     label: str
     expr: object
     terms: dict
+    #: keys whose written terms cancel (``P*x1/a - P*x1/a``), with those written terms
+    hidden: dict = field(default_factory=dict)
+    #: the mode the table was built in
+    mode: str = "trig"
+    _groups: list | None = None
+
+    def groups(self, ctx: ProblemContext, parts: list | None = None) -> list:
+        """``[(written term, {key: value})]`` of the written terms (``parts``, default the
+        top-level terms of :attr:`expr`) that expand to two or more state parts: the groups
+        a person writes (``m*L*(cos(phi)*phi'' - sin(phi)*phi'^2)``)."""
+        if self._groups is None:
+            out = []
+            for p in parts if parts is not None else sp.Add.make_args(self.expr):
+                self._add_group(out, p, ctx)
+                if parts is not None and p.is_Mul:   # a term inside the student's factor
+                    sums = [f for f in p.args if f.is_Add]
+                    if len(sums) == 1 and len(sums[0].args) <= 8:
+                        others = sp.Mul(*[f for f in p.args if f is not sums[0]])
+                        for piece in sums[0].args:
+                            self._add_group(out, sp.Mul(others, piece), ctx)
+            self._groups = out
+        return self._groups
+
+    def _add_group(self, out, p, ctx) -> None:
+        if len(sp.Add.make_args(sp.expand(p))) < 2:
+            return
+        tab = term_table(p, ctx, mode=self.mode)
+        if tab is not None and len(tab.terms) >= 2 and not tab.hidden:
+            out.append((p, {k: v[1] for k, v in tab.terms.items()}))
 
 
 def state_symbols(ctx: ProblemContext) -> set:
@@ -108,16 +137,19 @@ def term_table(expr, ctx: ProblemContext, label: str = "", mode: str = "trig",
             local[k] = local.get(k, 0) + sp.Mul(*coeff)
         for k, c in local.items():
             terms.setdefault(k, []).append(c)
-    out = {}
+    out, hidden = {}, {}
     for k, cs in terms.items():
         try:
             vals = [Formula.from_sympy(c).evaluate(env) for c in cs]
         except (TypeError, ZeroDivisionError, KeyError):
             return None
         v = sum(vals, 0)
+        written = [(c, x) for c, x in zip(cs, vals) if not zero(x, [1])]
         if not zero(v, [1]):
-            out[k] = (sp.Add(*cs), v, [(c, x) for c, x in zip(cs, vals) if not zero(x, [1])])
-    return TermTable(label, expr, out)
+            out[k] = (sp.Add(*cs), v, written)
+        elif len(written) >= 2:
+            hidden[k] = (sp.Integer(0), 0, written)
+    return TermTable(label, expr, out, hidden, mode)
 
 
 def coefficient_env(ctx: ProblemContext):
