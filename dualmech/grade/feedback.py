@@ -31,7 +31,7 @@ Example
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 
 import mpmath
@@ -42,12 +42,13 @@ from ..dimensions import (ACCELERATION, DAMPING, STIFFNESS, TORSIONAL_DAMPING,
 from ..exact import MP_DIGITS
 from ..kinematics import t
 from .context import ProblemContext, zero
-from .audit import display, reduced
+from .audit import display, notation_of, reduced, restyle
 from .formula import Formula
 from .result import Edit
 from .terms import MODES, TermTable, coefficient_env, state_symbols, term_table
 
-__all__ = ["best_edit", "Diagnosis", "concrete_state", "category", "swap_pairs", "MAX_EDITS"]
+__all__ = ["best_edit", "Diagnosis", "concrete_state", "category", "swap_pairs", "MAX_EDITS",
+           "for_student", "coordinate_names"]
 
 MAX_EDITS = 3
 
@@ -479,3 +480,62 @@ def _real(v) -> float:
         return float(v)
     except TypeError:
         return float(mpmath.re(v))
+
+
+def coordinate_names(ctx: ProblemContext) -> list[str]:
+    """Names of every coordinate an answer may use (the reference's and the maps')."""
+    return [name for name, _ in _coordinate_states(ctx)]
+
+
+def _coordinate_states(ctx: ProblemContext) -> list:
+    """``[(name, (q, q', q'') plain symbols)]`` of the reference and the mapped coordinates."""
+    def build():
+        out = [(s.name, (s.q, s.qd, s.qdd)) for s in ctx.states]
+        derived = {sym.name: sym for sym in ctx.derived_formulas()}
+        for name, sym in derived.items():
+            if not name.endswith("_dot") and not name.endswith("_ddot"):
+                out.append((name, (sym, derived.get(name + "_dot"),
+                                   derived.get(name + "_ddot"))))
+        return out
+    return ctx.memo("coordinate_states", build)
+
+
+def for_student(ctx: ProblemContext, edits: list, text: str = "", where: str = "") -> list:
+    """``edits`` in the notation of the answer ``text`` (``thetadot`` if the student wrote
+    dots, ...), named ``where`` (``the theta equation``), with each term as MathML."""
+    coords = coordinate_names(ctx)
+    style = notation_of(text, coords) if text else "primes"
+    out = []
+    for e in edits:
+        out.append(replace(e, term=restyle(e.term, coords, style),
+                           correct=restyle(e.correct, coords, style),
+                           detail=restyle(e.detail, coords, style),
+                           where=where or e.where,
+                           term_html=_mathml(ctx, e.term), correct_html=_mathml(ctx, e.correct)))
+    return out
+
+
+def _mathml(ctx: ProblemContext, text: str) -> str:
+    """MathML of a term the feedback wrote (read back by the answer parser), or ''."""
+    if not text:
+        return ""
+    from ..report.mathml import expression
+    from .parser import parse
+    try:
+        expr = Formula.from_node(parse(text)[0].lhs, ctx.vocabulary).sympy()
+    except Exception:   # a display aid only: a term the parser cannot read has no MathML
+        return ""
+    return expression(expr.xreplace(_functions(ctx)))
+
+
+def _functions(ctx: ProblemContext) -> dict:
+    """Plain state symbols -> ``q(t)`` and its derivatives (for typesetting with dots)."""
+    def build():
+        rules = {}
+        for name, syms in _coordinate_states(ctx):
+            q = sp.Function(name)(t)
+            for order, sym in enumerate(syms):
+                if sym is not None:
+                    rules[sym] = q.diff(t, order) if order else q
+        return rules
+    return ctx.memo("functions", build)
