@@ -134,7 +134,8 @@ class Grader:
         key = ("vocabulary", q.basis)
         if key not in ctx.store:
             ctx.store[key] = Vocabulary.build(ctx.coordinates, ctx.parameters, ctx.reactions,
-                                              q.basis, [q for q, _ in ctx._extra_coordinates()])
+                                              q.basis, [q for q, _ in ctx._extra_coordinates()],
+                                              getattr(ctx.problem, "aliases", None))
         return ctx.store[key]
 
 

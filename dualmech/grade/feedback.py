@@ -31,6 +31,7 @@ Example
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 from fractions import Fraction
 
@@ -505,13 +506,33 @@ def for_student(ctx: ProblemContext, edits: list, text: str = "", where: str = "
     dots, ...), named ``where`` (``the theta equation``), with each term as MathML."""
     coords = coordinate_names(ctx)
     style = notation_of(text, coords) if text else "primes"
+    used = _aliases_used(ctx, text)
+
+    def mine(s):
+        s = restyle(s, coords, style)
+        for target, alias in used.items():
+            s = re.sub(r"(?<![A-Za-z0-9_'])" + re.escape(target) + r"(?![A-Za-z0-9_])",
+                       alias, s)
+        return s
     out = []
     for e in edits:
-        out.append(replace(e, term=restyle(e.term, coords, style),
-                           correct=restyle(e.correct, coords, style),
-                           detail=restyle(e.detail, coords, style),
+        out.append(replace(e, term=mine(e.term), correct=mine(e.correct),
+                           detail=mine(e.detail),
                            where=where or e.where,
                            term_html=_mathml(ctx, e.term), correct_html=_mathml(ctx, e.correct)))
+    return out
+
+
+def _aliases_used(ctx: ProblemContext, text: str) -> dict:
+    """``{symbol: alias}`` of the problem's declared aliases the answer uses instead of the
+    symbol's own name (``l`` for ``a``)."""
+    out = {}
+    for alias, target in (getattr(ctx.problem, "aliases", None) or {}).items():
+        word = r"(?<![A-Za-z0-9_])%s(?![A-Za-z0-9_])"
+        if ctx.vocabulary.table.get(alias) is not None and \
+                re.search(word % re.escape(alias), text) and \
+                not re.search(word % re.escape(str(target)), text):
+            out[str(target)] = alias
     return out
 
 
