@@ -110,3 +110,42 @@ def test_grade_list_shows_names_units_and_hides_internal_coordinates():
     out = subprocess.run([sys.executable, "-m", "dualmech", "grade", "simple_pendulum",
                           "--list"], capture_output=True, text=True, check=True).stdout
     assert "names an answer may use" in out and " l;" in out
+
+
+def test_an_answer_in_declared_coordinates_is_diagnosed_in_them():
+    # falling_container in (y1, y2) = (x1, x2 - x1 - l0), the source's second choice:
+    #   (m1 + m2) y1'' + m2 y2'' + (m1 + m2) g = 0,  m2 y1'' + m2 y2'' + c y2' + k y2 + m2 g = 0
+    # the damper's sign flipped in the second: named in y2, state shown in y1, y2
+    first = "m1*y1'' + m1*g + m2*g + m2*y1'' + m2*y2'' = 0\n"
+    assert grade("falling_container", first + "m2*(y1''+y2'') + m2*g + k*y2 + c*y2' = 0").right
+    r = grade("falling_container", first + "m2*(y1''+y2'') + m2*g + k*y2 - c*y2' = 0")
+    assert r.status == "wrong" and len(r.edits) == 1, str(r)
+    (e,) = r.edits
+    assert e.kind == "sign" and e.correct == "c*y2'" and "the y2 equation" in e.sentence()
+    assert "x1" not in str(r) and "x2" not in str(r), str(r)
+    # no small edit explains this one: the state where it fails is given in y1, y2
+    r = grade("falling_container", first + "m2*(y1''+y2'') + y2*y1^3 + c*y1'*y2' = 0")
+    assert r.status == "wrong" and not r.edits, str(r)
+    assert set(r.state) >= {"y1", "y1'", "y2", "y2'"} and "x1" not in r.state, r.state
+
+
+def test_a_map_the_student_states():
+    # simple_pendulum (M a^2 theta'' + M g a sin(theta) = 0) in the arc length s = a*theta
+    assert grade("simple_pendulum", "a*s'' + g*a*sin(s/a) = 0; where s = a*theta").right
+    assert grade("simple_pendulum", "M*s'' + M*g*sin(s/a) = 0 where s = a*theta").right
+    r = grade("simple_pendulum", "a*s'' - g*a*sin(s/a) = 0; where s = a*theta")
+    assert r.status == "wrong" and [e.kind for e in r.edits] == ["sign"], str(r)
+
+
+def test_a_map_that_is_not_invertible_is_refused_with_the_reason():
+    for answer, words in [
+            ("s'' = 0; where s = cos(theta)^2 + sin(theta)^2", "not invertible"),
+            ("u'' + v'' = 0; where u = theta + phi, v = 2*theta + 2*phi", "not invertible"),
+            ("s'' = 0; where s = theta'", "not their rates"),
+            ("s'' = 0; where g = theta", "already means a parameter"),
+            ("s'' = 0; where s = theta, s = phi", "defined twice"),
+            ("where s = theta", "write the answer"),
+            ("s'' = 0; where s", "name = expression")]:
+        problem = "toy_car" if "phi" in answer else "simple_pendulum"
+        r = grade(problem, answer)
+        assert r.status == "invalid" and words in r.summary, (answer, r.summary)

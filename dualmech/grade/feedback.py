@@ -108,6 +108,8 @@ def _best(expr, targets, ctx, scale, equation, mode, parts=None) -> Diagnosis | 
     (size, _, _), tab, c, plan = best
     if size == 0 or size > min(MAX_EDITS, max(len(mine.terms) - 1, 1)):
         return None
+    if len(mine.terms) > 1 and set(mine.terms) <= set(_differences(mine, tab, c)):
+        return None     # every term the student wrote changes: a rewrite, not an edit
     return _describe(mine, tab, c, ctx, equation, plan)
 
 
@@ -455,10 +457,12 @@ def category(term, ctx: ProblemContext) -> str:
 
 
 def concrete_state(ctx: ProblemContext, answer: Formula, truth: Formula | None,
-                   need=()) -> tuple[dict, float, float]:
+                   need=(), coordinates: tuple | None = None) -> tuple[dict, float, float]:
     """A real state in the declared ranges (on the motion): ``(state, answer, truth)`` values.
 
-    ``truth`` None means the answer should vanish there (an equation).
+    ``truth`` None means the answer should vanish there (an equation).  ``coordinates``
+    (names of another model's coordinates) gives the state in those instead of the
+    reference's.
     """
     point = ctx.points("mpmath")[0]
     env = point.env(need=need)
@@ -468,9 +472,19 @@ def concrete_state(ctx: ProblemContext, answer: Formula, truth: Formula | None,
     state = {}
     for s in ctx.parameters:
         state[str(s)] = float(point.values[s])
-    for s in ctx.states:
-        state[s.name] = float(point.values[s.q])
-        state[s.name + "'"] = float(point.values[s.qd])
+    if coordinates is not None:
+        derived = {sym.name: sym for sym in ctx.derived_formulas()}
+        with mpmath.workdps(MP_DIGITS):
+            full = point.env(need=list(ctx.derived_formulas())).values
+        for name in coordinates:
+            for key, sym_name in ((name, name), (name + "'", name + "_dot")):
+                sym = derived.get(sym_name)
+                if sym is not None and sym in full:
+                    state[key] = _real(full[sym])
+    else:
+        for s in ctx.states:
+            state[s.name] = float(point.values[s.q])
+            state[s.name + "'"] = float(point.values[s.qd])
     if any(answer.symbols & {t}) or (truth is not None and t in truth.symbols):
         state["t"] = float(point.values[t])
     return state, _real(a), _real(b)

@@ -31,7 +31,7 @@ from ..verify import linalg as la
 from .answers import Quantity
 from .context import GradingUnavailable, ProblemContext, build_seconds, zero
 from .feedback import Diagnosis, best_edit, concrete_state, coordinate_names, for_student
-from .terms import equation_targets, expression_tables, term_table
+from .terms import answer_coordinates, equation_targets, expression_tables, term_table
 from .audit import (dimension_issues, display, expected_dimension, label_words, notation_of,
                     restyle)
 from .formula import Formula
@@ -277,8 +277,10 @@ def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline,
     for i in wrong:
         deadline.check()
         d = None
+        own = answer_coordinates(ctx, formulas[i].symbols)
         if formulas[i].expanded_size() <= _MAX_FEEDBACK_TERMS:
-            d = best_edit(formulas[i].sympy(), lambda mode: equation_targets(ctx, mode), ctx,
+            d = best_edit(formulas[i].sympy(),
+                          lambda mode: equation_targets(ctx, mode, own), ctx,
                           equation=i if k > 1 else None, parts=formulas[i].written_terms())
         if d is not None:
             target = _target_words(d, ctx)
@@ -288,7 +290,7 @@ def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline,
             details.append(f"{name(i)} is closest to {target}")
         elif not state:
             try:
-                state, value, _ = concrete_state(ctx, formulas[i], None, need)
+                state, value, _ = concrete_state(ctx, formulas[i], None, need, own)
                 style = notation_of(formulas[i].text, coords)
                 state = {restyle(key, coords, style): v for key, v in state.items()}
                 details.append(f"no small edit explains {name(i)}: on the motion, at the "

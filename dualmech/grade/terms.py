@@ -18,7 +18,7 @@ from .context import ProblemContext, zero
 from .formula import Formula
 
 __all__ = ["TermTable", "term_table", "equation_targets", "expression_tables",
-           "coefficient_env", "state_symbols", "MODES"]
+           "coefficient_env", "state_symbols", "MODES", "answer_coordinates"]
 
 _MAX_TERMS = 60
 
@@ -156,20 +156,52 @@ def coefficient_env(ctx: ProblemContext):
     return ctx.memo("coefficient_env", lambda: ctx.points(ctx.method)[0].env())
 
 
-def equation_targets(ctx: ProblemContext, mode: str = "trig") -> list[TermTable]:
+def equation_targets(ctx: ProblemContext, mode: str = "trig",
+                     coordinates: tuple | None = None) -> list[TermTable]:
     """Correct equations to compare a wrong one with (cached per context and mode): the
-    reference model's rows first, then every other model's, then simple eliminations."""
+    reference model's rows first, then every other model's, then simple eliminations.
+
+    ``coordinates`` (names, as :func:`answer_coordinates` gives them) asks for the rows of
+    the models written in those coordinates instead, in those coordinates (falling_container's
+    ``y1, y2``), so that an answer in them is diagnosed in them."""
     def build():
         out = []
-        names = [ctx.reference.name] + [n for n in ctx.models if n != ctx.reference.name]
-        for name in names:
-            m = ctx.models.get(name, ctx.reference)
-            for label, e in zip(m.labels, m.equations):
-                tab = term_table(ctx.plain(e), ctx, f"{name}: {label}", mode)
+        if coordinates is None:
+            names = [ctx.reference.name] + [n for n in ctx.models if n != ctx.reference.name]
+            rows = [(name, m.labels, [ctx.plain(e) for e in m.equations]) for name, m in
+                    ((n, ctx.models.get(n, ctx.reference)) for n in names)]
+        else:
+            rows = []
+            for name, m in ctx.problem.models().items():
+                if tuple(q.func.__name__ for q in m.coordinates) == coordinates:
+                    rows.append((name, m.labels, [m.to_plain(e) for e in m.equations]))
+        for name, labels, equations in rows:
+            for label, e in zip(labels, equations):
+                tab = term_table(e, ctx, f"{name}: {label}", mode)
                 if tab is not None and tab.terms:
                     out.append(tab)
         return out + _eliminations(ctx, out, mode)
-    return ctx.memo(("equation_targets", mode), build)
+    return ctx.memo(("equation_targets", mode, coordinates), build)
+
+
+def answer_coordinates(ctx: ProblemContext, symbols: set) -> tuple | None:
+    """The coordinates (names) of a model the answer is written in, when it uses another
+    model's coordinates and none of the reference's; None for the reference coordinates."""
+    reference = set()
+    for s in ctx.states:
+        reference |= {s.q, s.qd, s.qdd}
+    derived = set(ctx.derived_formulas())
+    if not symbols & derived or symbols & reference:
+        return None
+    for m in ctx.problem.models().values():
+        names = tuple(q.func.__name__ for q in m.coordinates)
+        own = set()
+        for q in m.coordinates:
+            own |= {sym for sym in derived | reference if sym.name in
+                    (q.func.__name__, q.func.__name__ + "_dot", q.func.__name__ + "_ddot")}
+        if symbols & (derived | reference) <= own:
+            return names
+    return None
 
 
 def _eliminations(ctx, rows: list, mode: str) -> list:
