@@ -249,7 +249,44 @@ def wrong_answers(ctx: ProblemContext) -> list[Sample]:
                           "sign", term))
         break
     out += _written_mistakes(ctx)
+    out += _mapped_mistakes(ctx)
     return [s for s in out if _writable(s)]
+
+
+def _mapped_mistakes(ctx) -> list[Sample]:
+    """A wrong sign in a row of a model written in other coordinates than the reference's
+    (falling_container's ``y1, y2``): the answer is in those coordinates, and so must be the
+    diagnosis."""
+    from .terms import state_symbols
+    derived = set(ctx.derived_formulas())
+    reference = {s.name for s in ctx.states}
+    for name, m in ctx.problem.models().items():
+        names = {q.func.__name__ for q in m.coordinates}
+        if names <= reference or len(names) != len(reference):
+            continue    # the same coordinates, or constrained ones (a multiplier model)
+        for e in m.equations:
+            row = sp.expand(m.to_plain(e))
+            if not _exact(row):
+                continue    # decided by the comparator (sqrt, ...): no term edits
+            if not row.free_symbols & derived or row.free_symbols - derived - \
+                    set(ctx.parameters) - set(ctx.reactions) - {sp.Symbol("t")} - \
+                    state_symbols(ctx):
+                continue
+            for term in sp.Add.make_args(row):
+                if term.free_symbols & derived and not any(
+                        s.name.endswith("_ddot") for s in term.free_symbols):
+                    return [Sample(write(row - 2 * term, ctx), "equation", False,
+                                   f"sign error in {', '.join(sorted(names))}",
+                                   "sign (own coordinates)", term)]
+    return []
+
+
+def _exact(expr) -> bool:
+    from .formula import Formula
+    try:
+        return Formula.from_sympy(expr).exact
+    except TypeError:
+        return False
 
 
 def _written_mistakes(ctx) -> list[Sample]:
@@ -350,7 +387,7 @@ def names_mistake(ctx: ProblemContext, sample: Sample, edits: list) -> bool:
     if len(edits) != 1:
         return False
     have, right = val[0]
-    if m in ("sign", "factor sign", "like-term sign"):
+    if m in ("sign", "factor sign", "like-term sign", "sign (own coordinates)"):
         return edits[0].kind == "sign" and sp.expand(right - have - 2 * T) == 0
     if m in ("coefficient", "swap"):
         return edits[0].kind in ("coefficient", "swap") and \
