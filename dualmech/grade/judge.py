@@ -30,7 +30,8 @@ from ..kinematics import t
 from ..verify import linalg as la
 from .answers import Quantity
 from .context import GradingUnavailable, ProblemContext, build_seconds, zero
-from .feedback import Diagnosis, best_edit, concrete_state, coordinate_names, for_student
+from .feedback import Diagnosis, best_edit, concrete_state
+from .notation import coordinate_names, for_student
 from .terms import answer_coordinates, equation_targets, expression_tables, term_table
 from .audit import (dimension_issues, display, expected_dimension, label_words, notation_of,
                     restyle)

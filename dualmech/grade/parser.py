@@ -37,7 +37,8 @@ from fractions import Fraction
 from lark import Lark, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedToken
 
-__all__ = ["split_where", "Limits", "LIMITS", "Node", "Equation", "AnswerError", "AnswerSyntaxError",
+__all__ = ["split_where",
+           "Limits", "LIMITS", "Node", "Equation", "AnswerError", "AnswerSyntaxError",
            "AnswerTooLarge", "parse", "FUNCTIONS", "GREEK"]
 
 
