@@ -7,7 +7,7 @@ Usage::
     python bench/chart_atlas.py --all --quick        # every problem, the quick chart sweep
 
 For each problem: the CPU seconds of the work-precision sweep (full, or ``--quick``: three
-tolerances, two step counts) and of the stability atlas (every applicable section), then for
+tolerances, two step counts; one run per point, ``--repeats K`` for the chart's own median) and of the stability atlas (every applicable section), then for
 each integrator one solve of the reference model over the scene's span at ``rtol = 1e-6``:
 accepted steps, right-hand-side calls and states evaluated (a vectorised call of an implicit
 method's finite-difference Jacobian evaluates several).  Numbers from one run on this
@@ -46,9 +46,11 @@ def main(argv=None) -> int:
     ap.add_argument("names", nargs="*")
     ap.add_argument("--all", action="store_true")
     ap.add_argument("--quick", action="store_true", help="the quick chart sweep")
+    ap.add_argument("--repeats", type=int, default=1, help="runs per chart point (default 1)")
     args = ap.parse_args(argv)
     names = [d.name for d in problems.declarations()] if args.all else (args.names or DEFAULT)
     sweep = dict(tolerances=(1e-3, 1e-6, 1e-9), steps=(32, 256)) if args.quick else {}
+    sweep["repeats"] = args.repeats
     print(f"{'problem':26s} {'chart [s]':>10s} {'runs':>5s} {'atlas [s]':>10s}  sections")
     solves = []
     for name in names:

@@ -22,9 +22,11 @@ STEPS = (32, 64, 128)
 @pytest.fixture(scope="module")
 def wp():
     return work_precision(get("pendulum_particle"), duration=3.0, tolerances=TOLS,
-                          steps=STEPS, methods=("RK45", "DOP853", "midpoint"),
+                          steps=STEPS, methods=("RK45", "DOP853", "midpoint", "IDA"),
                           models=("lagrange", "newton_euler", "cartesian"), samples=51,
-                          y0=[1.0, 0.0], progress=False)
+                          y0=[1.0, 0.0], progress=False, baumgarte_gains=(10.0,),
+                          stabilisations=("none", "baumgarte", "projection", "ggl"),
+                          repeats=2)
 
 
 def _curve(wp, form, method):
@@ -45,12 +47,13 @@ def test_measures_apply_where_they_mean_something(wp):
 
 def test_one_run_recomputed_by_hand(wp):
     """The Baumgarte DAE with RK45 at 1e-6, measured again without the sweep's bookkeeping."""
-    f = {g.name: g for g in formulations(get("pendulum_particle"), y0=[1.0, 0.0])[0]}
+    f = {g.name: g for g in formulations(get("pendulum_particle"), y0=[1.0, 0.0],
+                                         baumgarte_gains=(10.0,))[0]}
     te = np.linspace(0.0, 3.0, 51)
     ref = f["lagrange"].run("DOP853", (0.0, 3.0), te, rtol=1e-13)
     th, thd = ref.y
     bob = np.vstack([np.sin(th), np.cos(th), np.cos(th) * thd, -np.sin(th) * thd])  # l = 1
-    dae = f["cartesian (DAE, Baumgarte)"]
+    dae = f["cartesian (DAE, Baumgarte 10/s)"]
     run = dae.run("RK45", (0.0, 3.0), te, rtol=1e-6)
     err = np.abs(run.y - bob) / dae.scales[:, None]
     point = [r for r in _curve(wp, dae.name, "RK45") if r.tolerance == 1e-6][0]
@@ -83,6 +86,35 @@ def test_same_ode_is_recognised_as_the_same_curve(wp):
         assert all(r.same_as == f"lagrange x {method}"
                    for r in _curve(wp, "newton_euler", method))
     assert not any(r.same_as for r in _curve(wp, "cartesian (DAE, index 1)", "RK45"))
+
+
+def test_every_point_records_its_repeats_backend_and_work(wp):
+    for r in wp.runs:
+        assert r.repeats == 2 and r.cpu_spread >= 1.0 and r.evaluations >= r.calls > 0
+        assert r.backend == {"ode": "NumPy", "dae": "C"}[r.kind] or \
+            (r.method == "IDA" and r.backend == "Python") or r.method == "midpoint"
+    # the projection is driven step by step: IDA only for the GGL form, no LSODA there
+    assert {m for (f, m) in wp.curves() if "GGL" in f} == {"IDA"}
+    assert {m for (f, m) in wp.curves() if "projection" in f} == {"RK45", "DOP853"}
+
+
+def test_projection_after_every_step_keeps_the_rod_length_and_lets_the_steps_follow_rtol(wp):
+    runs = _curve(wp, "cartesian (DAE, projection)", "DOP853")
+    # |g| = |l^2 - x^2 - y^2|/(2 l) after Gauss-Newton to 1e-13 relative, at every sample
+    assert all(r.drift <= 1e-12 for r in runs)
+    # a method, not a restart at every sample: the steps fall as the tolerance loosens
+    # (the restarting version took the same 199 steps at every tolerance)
+    steps = [r.steps for r in runs]
+    assert steps == sorted(steps) and steps[0] < steps[-1] < 100
+
+
+def test_ggl_error_follows_the_tolerance(wp):
+    runs = _curve(wp, "cartesian (DAE, GGL index 2)", "IDA")
+    assert all(r.success for r in runs)
+    errors = [r.path_error for r in runs]
+    assert errors == sorted(errors, reverse=True)
+    slope = np.polyfit(np.log([r.tolerance for r in runs]), np.log(errors), 1)[0]
+    assert 0.5 < slope < 1.5   # a BDF code's global error ~ its local tolerance
 
 
 def test_data_and_charts_are_written(wp, tmp_path):

@@ -14,7 +14,8 @@ __all__ = ["pyplot", "panels", "save", "METHOD_COLORS", "FORM_STYLES", "style_of
 
 #: One colour per integrator, one line style and marker per formulation (cycled).
 METHOD_COLORS = {"RK45": "#1f77b4", "DOP853": "#ff7f0e", "Radau": "#2ca02c", "BDF": "#d62728",
-                 "LSODA": "#9467bd", "midpoint": "#8c564b"}
+                 "LSODA": "#9467bd", "midpoint": "#8c564b",
+                 "IDA": "#e377c2"}
 FORM_STYLES = [("-", "o"), ("--", "s"), (":", "^"), ("-.", "D"), ((0, (5, 1)), "v"),
                ((0, (1, 1)), "P"), ((0, (3, 1, 1, 1)), "X"), ((0, (5, 3)), "*")]
 

@@ -55,6 +55,8 @@ def register(subparsers) -> None:
                    help="simulated seconds, cut to fit the scene (default: %(default)s)")
     p.add_argument("--quick", action="store_true",
                    help="three tolerances and two step counts instead of the full sweep")
+    p.add_argument("--repeats", metavar="K", type=_repeats, default=5,
+                   help="runs per point; its CPU time is their median (default: %(default)s)")
     p.set_defaults(func=_guard(_chart))
 
     p = subparsers.add_parser(
@@ -143,6 +145,17 @@ def _writable(out: Path) -> Path:
     return out
 
 
+def _repeats(text: str) -> int:
+    """``--repeats``: a whole number from 1 to 50."""
+    try:
+        k = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if not 1 <= k <= 50:
+        raise argparse.ArgumentTypeError(f"{k} is outside 1..50")
+    return k
+
+
 def _chart(args) -> int:
     from ..progress import progress
     from .workprecision import STEPS, TOLERANCES, work_precision
@@ -159,7 +172,8 @@ def _chart(args) -> int:
     failed, done = [], []
     for p in progress(chosen, "charting"):
         try:
-            wp = work_precision(p, duration=args.duration, tolerances=tolerances, steps=steps)
+            wp = work_precision(p, duration=args.duration, tolerances=tolerances, steps=steps,
+                                repeats=args.repeats)
             paths = wp.write(out)
         except OSError:
             raise

@@ -43,12 +43,17 @@ from .energy import dynamic_rows, identically_zero
 from .model import NumericModel, StateFunction
 
 __all__ = ["Constraints", "ConstrainedModel", "constraints_of", "index1_equations",
-           "ALPHA", "BETA", "STABILISATIONS"]
+           "ALPHA", "BETA", "STABILISATIONS", "DAE_SOLVED", "BAUMGARTE_GAINS"]
 
 #: Baumgarte's parameters (symbols of the index-1 equations; values given at run time).
 ALPHA = sp.Symbol("baumgarte_alpha", nonnegative=True)
 BETA = sp.Symbol("baumgarte_beta", nonnegative=True)
 STABILISATIONS = ("none", "baumgarte", "projection")
+#: Forms integrated by a DAE solver (:mod:`~dualmech.numeric.daesolve`), not as an ODE.
+DAE_SOLVED = ("index3", "ggl")
+#: Baumgarte gains ``alpha = beta`` [1/s] swept by the work-precision charts: slower than,
+#: near, and far faster than the motions of the catalogue's closed loops (a few rad/s).
+BAUMGARTE_GAINS = (1.0, 10.0, 100.0)
 
 
 @dataclass(frozen=True)
@@ -176,7 +181,9 @@ class ConstrainedModel:
         Default :func:`constraints_of` ``(eqs)``.
     anchor : sequence of n numbers
         A configuration on the manifold (fixes the constants of ``g``).
-    stabilisation : ``"none"``, ``"baumgarte"`` or ``"projection"``
+    stabilisation : ``"none"``, ``"baumgarte"``, ``"projection"``, ``"index3"`` or ``"ggl"``
+        (the last two are solved by :mod:`~dualmech.numeric.daesolve`; the index-1
+        system then gives the reactions only)
     alpha, beta : float
         Baumgarte's parameters in 1/s (default 5 and 5: a critically damped constraint error
         with time constant 0.2 s).
@@ -185,9 +192,9 @@ class ConstrainedModel:
     def __init__(self, eqs: EquationSet, params: Mapping, constraints: Constraints | None = None,
                  *, anchor: Sequence[float], stabilisation: str = "none", alpha: float = 5.0,
                  beta: float = 5.0):
-        if stabilisation not in STABILISATIONS:
-            raise ValueError(f"`stabilisation` must be one of {STABILISATIONS}, got "
-                             f"{stabilisation!r}.")
+        if stabilisation not in STABILISATIONS + DAE_SOLVED:
+            raise ValueError(f"`stabilisation` must be one of {STABILISATIONS + DAE_SOLVED}, "
+                             f"got {stabilisation!r}.")
         self.constraints = constraints or constraints_of(eqs)
         self.eqs, self.n, self.k = eqs, eqs.n, len(self.constraints.expressions)
         self.stabilisation = stabilisation
@@ -214,6 +221,10 @@ class ConstrainedModel:
         off = self.offsets if np.ndim(q) == 1 else self.offsets[:, None]
         return vals[: self.k] - off, vals[self.k:]
 
+    def gradient(self, q) -> np.ndarray:
+        """``G = dg/dq`` at one configuration: ``(k, n)``."""
+        return self._G(0.0, q, np.zeros(self.n)).reshape(self.k, self.n)
+
     def multipliers(self, time, q, qd) -> np.ndarray:
         """The reactions ``lambda`` at the states: ``(k,)`` or ``(k, K)``."""
         return self.numeric.solve(time, q, qd)[self.n:]
@@ -221,7 +232,7 @@ class ConstrainedModel:
     def _metric(self, time, q, qd) -> tuple[np.ndarray, np.ndarray]:
         """The kinetic-energy metric ``M`` (identity if the first rows give none) and ``G``."""
         A, _ = self.numeric.system(time, q, qd)
-        G = self._G(0.0, q, qd).reshape(self.k, self.n)
+        G = self.gradient(q)
         M = A[: self.n, : self.n]
         try:
             np.linalg.cholesky(M)

@@ -7,8 +7,11 @@ A **formulation** is one model of a problem made into ``y' = f(t, y)``:
   call;
 * ``dae`` -- a model in maximal coordinates with constraints (a multiplier model, or a direct
   model in the same coordinates completed by the multiplier model's constraints), as an
-  index-1 DAE, unstabilised, with Baumgarte stabilisation or with projection
-  (:class:`~dualmech.numeric.dae.ConstrainedModel`).
+  index-1 DAE, unstabilised, with Baumgarte stabilisation (gains swept with
+  ``baumgarte_gains``) or with projection after every accepted step
+  (:class:`~dualmech.numeric.dae.ConstrainedModel`, :mod:`~dualmech.numeric.stepping`);
+  or as the index-3 DAE or Gear-Gupta-Leimkuhler's stabilised index-2 form solved by IDA
+  (:mod:`~dualmech.numeric.daesolve`, method ``"IDA"``).
 
 Each formulation starts from the problem's initial state mapped into its own coordinates
 (:meth:`Problem.coordinate_maps <dualmech.problem.Problem.coordinate_maps>`) and can map any
@@ -33,14 +36,17 @@ from .._expr import as_expr
 from ..equations import EquationSet, ModelError
 from ..kinematics import t
 from .dae import STABILISATIONS, ConstrainedModel, constraints_of
+from .daesolve import DAE_FORMS, IDASolver
 from .energy import EnergyFunction, conservative_reason, dynamic_rows
 from .integrators import Run, integrate
 from .model import NumericModel, StateFunction
 from .simulation import default_initial_state, problem_parameters
+from .stepping import projected_run
 
 __all__ = ["Formulation", "formulations", "state_scales", "outside_parameters"]
 
-_LABEL = {"none": "DAE, index 1", "baumgarte": "DAE, Baumgarte", "projection": "DAE, projection"}
+_LABEL = {"none": "DAE, index 1", "baumgarte": "DAE, Baumgarte", "projection": "DAE, projection",
+          "index3": "DAE, index 3", "ggl": "DAE, GGL index 2"}
 
 
 @dataclass
@@ -64,6 +70,17 @@ class Formulation:
     energy_note: str = ""
     _solve: Callable | None = field(default=None, repr=False)
     _outside: Callable | None = field(default=None, repr=False)
+    dae_solver: IDASolver | None = field(default=None, repr=False)
+    numeric: NumericModel | None = field(default=None, repr=False)
+
+    @property
+    def backend(self) -> str:
+        """Where its generated code runs: ``"C"`` or ``"NumPy"`` (IDA's residual: Python)."""
+        if self.dae_solver is not None:
+            return "Python"
+        if self.numeric is None:
+            return ""
+        return "C" if self.numeric.compiled else "NumPy"
 
     @property
     def coordinates(self) -> tuple:
@@ -103,13 +120,33 @@ class Formulation:
             return None
         return self.energy.along(y[: self.n], y[self.n:])
 
+    def methods(self, candidates: Sequence[str]) -> list[str]:
+        """The methods of ``candidates`` that can integrate this form (``"IDA"`` for the
+        DAE-solved forms, the projectable scipy steppers for projection)."""
+        from .stepping import PROJECTABLE
+        if self.dae_solver is not None:
+            return [m for m in candidates if m == "IDA"]
+        if self.stabilisation == "projection":
+            return [m for m in candidates if m in PROJECTABLE]
+        return [m for m in candidates if m != "IDA"]
+
     def run(self, method: str, t_span, t_eval, rtol: float = 1e-6, step: float | None = None,
             events: Sequence = ()) -> Run:
-        """Integrate from ``y0`` (``atol = rtol * scales``; projection at the samples)."""
-        project = self.constrained.project if self.stabilisation == "projection" else None
+        """Integrate from ``y0`` (``atol = rtol * scales``; projection after every accepted
+        step for ``"projection"``; IDA for the index-3 and GGL forms)."""
+        atol = rtol * self.scales
+        if self.dae_solver is not None or method == "IDA":
+            if self.dae_solver is None or events:
+                raise ValueError(f"`{self.name}` is not solved by IDA (no events either); "
+                                 f"its methods: {', '.join(self.methods(['RK45', 'DOP853']))}.")
+            return self.dae_solver.run(t_span, self.y0, t_eval, rtol=rtol, atol=atol)
+        if self.stabilisation == "projection":
+            if events:
+                raise ValueError("projection after every step takes no events.")
+            return projected_run(self.rhs, t_span, self.y0, method, t_eval, rtol=rtol,
+                                 atol=atol, projector=self.constrained.project)
         return integrate(self.rhs, t_span, self.y0, method, t_eval=t_eval, rtol=rtol,
-                         atol=rtol * self.scales, step=step, events=events,
-                         projector=project, hamiltonian=self.energy)
+                         atol=atol, step=step, events=events, hamiltonian=self.energy)
 
 
 def state_scales(problem, coordinates) -> np.ndarray:
@@ -181,8 +218,13 @@ def outside_parameters(problem, params: Mapping) -> dict:
 def formulations(problem, params: Mapping | None = None, y0=None,
                  stabilisations: Sequence[str] = STABILISATIONS,
                  models: Sequence[str] | None = None,
-                 strict: bool = True) -> tuple[list[Formulation], dict]:
+                 strict: bool = True,
+                 baumgarte_gains: Sequence[float] | None = None) -> tuple[list[Formulation], dict]:
     """The problem's formulations and ``{model: why it is not one}`` for the rest.
+
+    ``stabilisations`` choose the DAE forms (:data:`~dualmech.numeric.dae.STABILISATIONS`
+    and :data:`~dualmech.numeric.dae.DAE_SOLVED`); ``baumgarte_gains`` (``alpha = beta`` in
+    1/s) give one Baumgarte form each, named with its gain (default: one, 5/s, unnamed).
 
     ``y0`` is the initial state in the reference coordinates (default
     :func:`~dualmech.numeric.simulation.default_initial_state`); ``models`` limits the models.
@@ -204,13 +246,14 @@ def formulations(problem, params: Mapping | None = None, y0=None,
     for name in names:
         eqs = problem.model(name)
         try:
-            out.extend(_forms(problem, ref, eqs, values, y0, n, stabilisations))
+            out.extend(_forms(problem, ref, eqs, values, y0, n, stabilisations,
+                              baumgarte_gains))
         except (ModelError, ValueError, NotImplementedError, ZeroDivisionError) as exc:
             skipped[name] = str(exc)
     return out, skipped
 
 
-def _forms(problem, ref, eqs, values, y0, n, stabilisations) -> list[Formulation]:
+def _forms(problem, ref, eqs, values, y0, n, stabilisations, gains) -> list[Formulation]:
     mapping = _mapping(problem, ref, eqs, values)
     y_own = mapping(0.0, y0[:n], y0[n:])
     scales = state_scales(problem, eqs.coordinates)
@@ -225,7 +268,7 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations) -> list[Formulation
                             tuple(u.name for u in eqs.unknowns), None, energy, note,
                             nm.solve if own else None,
                             _outside_reactions(problem, values) if in_ref and not own
-                            else None)]
+                            else None, None, nm)]
     if square:
         constraints = constraints_of(eqs)
     elif len(eqs.equations) < eqs.n + len(eqs.unknowns):
@@ -234,11 +277,16 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations) -> list[Formulation
         raise ModelError(f"model `{eqs.name}` has more equations than unknowns.")
     out = []
     for stab in stabilisations:
-        cm = ConstrainedModel(eqs, values, constraints, anchor=y_own[: eqs.n],
-                              stabilisation=stab)
-        out.append(Formulation(f"{eqs.name} ({_LABEL[stab]})", "dae", eqs, cm.rhs, y_own,
-                               scales, mapping, cm.reaction_names, cm, energy, note,
-                               cm.numeric.solve))
+        for gain in (gains or (None,)) if stab == "baumgarte" else (None,):
+            extra = {} if gain is None else {"alpha": gain, "beta": gain}
+            cm = ConstrainedModel(eqs, values, constraints, anchor=y_own[: eqs.n],
+                                  stabilisation=stab, **extra)
+            label = _LABEL[stab] + ("" if gain is None else f" {gain:g}/s")
+            out.append(Formulation(f"{eqs.name} ({label})", "dae", eqs, cm.rhs, y_own,
+                                   scales, mapping, cm.reaction_names, cm, energy, note,
+                                   cm.numeric.solve, None,
+                                   IDASolver(cm, stab) if stab in DAE_FORMS else None,
+                                   cm.numeric))
     return out
 
 

@@ -184,6 +184,25 @@ class NumericModel:
         self._code = _generated(self.eqs)
         self._setup(state["p"], state["backend"])
 
+    def with_backend(self, backend: str) -> "NumericModel":
+        """The same equations and parameter values evaluated by another ``backend``.
+
+        Example
+        -------
+        >>> import sympy as sp
+        >>> from dualmech import EquationSet, coordinate, t
+        >>> x = coordinate("x"); m, k = sp.symbols("m k", positive=True)
+        >>> eqs = EquationSet("spring", (x,), (m*x.diff(t, 2) + k*x,))
+        >>> nm = NumericModel(eqs, {m: 2.0, k: 8.0})
+        >>> nm.with_backend("python").rhs(0.0, np.array([0.5, 0.0]))
+        array([ 0., -2.])
+        """
+        if backend not in ("auto", "python", "c"):
+            raise ValueError(f"`backend` must be 'auto', 'python' or 'c', got {backend!r}.")
+        other = object.__new__(NumericModel)
+        other.__setstate__({**self.__getstate__(), "backend": backend})
+        return other
+
     def _setup(self, p: tuple, backend: str) -> None:
         code = self._code
         k = code.module.static(p)
@@ -197,6 +216,11 @@ class NumericModel:
         usable = m == N and N <= _C_MAX and (backend == "c" or (
             backend == "auto" and N >= _C_MIN and cbackend.compiler() is not None))
         self._c = False if usable else None  # False: not loaded yet
+
+    @property
+    def compiled(self) -> bool:
+        """Whether :meth:`solve` and :meth:`rhs` run compiled C code (else NumPy/Python)."""
+        return self._c is not None and self._c_solver() is not None
 
     def _c_solver(self):
         """The compiled solver (loaded, or compiled, on first use), or ``None``."""
@@ -229,7 +253,8 @@ class NumericModel:
             return work[n2: n2 + (n2 if rhs else self.shape[1])].copy()
 
     def _c_many(self, time, Y: np.ndarray, out: np.ndarray, offset: int, nrows: int):
-        """Solve at the states in the columns of ``Y`` into rows ``offset...`` of ``out``
+        """Solve at the states in the columns of ``Y`` (any layout) into rows ``offset...``
+        of ``out`` (a C-ordered float array: the compiled code writes it row by row)
         with the compiled code; ``None`` when done, else the mask of states that tripped the
         cheap estimate."""
         _, many, pp, kp, *_ = self._c_solver()
@@ -304,7 +329,7 @@ class NumericModel:
                 return out
             yl = y.tolist()
             return np.array(yl[n:] + self._solve_one(time, yl)[:n])
-        out = np.empty_like(y)
+        out = np.empty(y.shape)  # C order: the compiled code writes it row by row
         out[:n] = y[n:]
         if self._c_solver() is None:
             out[n:] = self._solve_many(time, y)[:n]

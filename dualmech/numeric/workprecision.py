@@ -13,12 +13,20 @@ reference (the reference model with DOP853 at ``rtol = 1e-13``):
 * **constraint drift**: the largest ``|g|`` of a DAE form (unit of the constraint);
 * **energy drift**: the largest ``|E(t) - E(0)|`` where the model conserves energy (N m);
 
-against the CPU seconds of the integration.  The reference's own error is estimated by
-running it again at ``1e-12``: no error below that is resolved.  :meth:`WorkPrecision.write`
-saves the data as CSV and JSON and the diagram as PNG and SVG: one panel per measure, log
-scales, labelled axes, a legend for the integrators (colours) and one for the formulations
-(line styles); curves that coincide exactly (two forms that are the same ODE) are drawn once
-and named in the legend.
+against two measures of work: the CPU seconds of the integration (the median of
+``repeats`` runs, 5 by default; the spread is kept in the data) and the states the generated
+code evaluated (right-hand sides, finite-difference Jacobian columns, DAE residuals).  Each
+formulation is labelled with the backend its generated code ran on (compiled C or NumPy):
+compare CPU times within one backend.  The DAE forms are the index-1 system unstabilised,
+with Baumgarte's gains swept (:data:`~dualmech.numeric.dae.BAUMGARTE_GAINS`), projected after
+every accepted step, and the index-3 and GGL forms solved by IDA.  The reference's own error
+is estimated by running it again at ``1e-12``: no error below that is resolved.
+:meth:`WorkPrecision.write` saves the data as CSV and JSON and the diagram as PNG and SVG: one
+row per measure, CPU time on the left and evaluations on the right, log scales, each point
+marked with its tolerance's exponent (``-6`` for 1e-6; the midpoint rule's with its step
+count), a legend for the integrators (colours) and one for the formulations (line styles);
+curves that coincide exactly (two forms that are the same ODE) are drawn once and named in
+the legend.
 
 Example
 -------
@@ -39,7 +47,8 @@ from typing import Mapping, Sequence
 import numpy as np
 
 from .contacts import scene_span
-from .dae import STABILISATIONS
+from .dae import BAUMGARTE_GAINS, DAE_SOLVED, STABILISATIONS
+from .daesolve import DAE_METHODS
 from .formulations import Formulation, formulations
 from .integrators import METHODS, Run
 from .units import work_conjugate_unit
@@ -78,6 +87,9 @@ class RunResult:
     drift: float = math.nan
     energy_drift: float = math.nan
     same_as: str = ""
+    backend: str = ""
+    repeats: int = 1
+    cpu_spread: float = math.nan
 
     @property
     def curve(self) -> tuple[str, str]:
@@ -130,31 +142,49 @@ class WorkPrecision:
         from .charts import METHOD_COLORS, panels, save, style_of
         measures = [(k, label.format(drift_unit=self.drift_unit)) for k, label in MEASURES
                     if any(np.isfinite(getattr(r, k)) for r in self.runs)]
-        fig, axes = panels(len(measures), f"{self.problem}: work against precision, "
-                           f"t in [{self.span[0]:g}, {self.span[1]:.3g}] s", height=2.3,
-                           width=12.0)
+        fig, axes = panels(2 * len(measures), f"{self.problem}: work against precision, "
+                           f"t in [{self.span[0]:g}, {self.span[1]:.3g}] s; each point "
+                           "marked with log10(tolerance) (midpoint: steps)", height=2.6,
+                           width=17.0, columns=2, sharex=False)
         forms = list(dict.fromkeys(r.formulation for r in self.runs))
-        for (key, label), ax in zip(measures, axes):
-            for (form, method), runs in self.curves().items():
-                if runs[0].same_as:
-                    continue
-                ok = [r for r in runs if r.success and np.isfinite(getattr(r, key))]
-                if not ok:
-                    continue
-                ls, mk = style_of(forms.index(form))
-                ax.plot([max(r.cpu, 1e-5) for r in ok],
-                        [max(getattr(r, key), 1e-17) for r in ok], linestyle=ls, marker=mk,
-                        markersize=3.5, color=METHOD_COLORS.get(method, "k"), linewidth=1.1)
-            ax.set_xscale("log")
-            ax.set_yscale("log")
-            ax.set_ylabel(label, fontsize="small")
-            ax.grid(True, which="major", alpha=0.3)
-            if key in ("final_error", "path_error"):
-                ax.axhline(self.reference_error, color="0.5", linewidth=0.8, linestyle=":")
-        axes[-1].set_xlabel("CPU time of the integration [s]")
+        for row, (key, label) in enumerate(measures):
+            for col, work in enumerate(("cpu", "evaluations")):
+                ax = axes[2 * row + col]
+                for (form, method), runs in self.curves().items():
+                    if runs[0].same_as:
+                        continue
+                    ok = [r for r in runs if r.success and np.isfinite(getattr(r, key))]
+                    if not ok:
+                        continue
+                    ls, mk = style_of(forms.index(form))
+                    colour = METHOD_COLORS.get(method, "k")
+                    xs = [max(float(getattr(r, work)), 1e-5) for r in ok]
+                    ys = [max(getattr(r, key), 1e-17) for r in ok]
+                    ax.plot(xs, ys, linestyle=ls, marker=mk, markersize=3.5, color=colour,
+                            linewidth=1.1)
+                    for r, x, y in zip(ok, xs, ys):
+                        ax.annotate(_tag(r), (x, y), xytext=(2, 2), textcoords="offset points",
+                                    fontsize=4.5, color=colour, alpha=0.8)
+                ax.set_xscale("log")
+                ax.set_yscale("log")
+                if col == 0:
+                    ax.set_ylabel(label, fontsize="small")
+                ax.grid(True, which="major", alpha=0.3)
+                if key in ("final_error", "path_error"):
+                    ax.axhline(self.reference_error, color="0.5", linewidth=0.8, linestyle=":")
+        axes[-2].set_xlabel("CPU time of the integration [s] (median of the repeats)")
+        axes[-1].set_xlabel("states evaluated (RHS calls, Jacobian columns, DAE residuals)")
         _legends(fig, self, forms)
-        fig.subplots_adjust(left=0.09, right=0.56, top=0.95, bottom=0.07, hspace=0.3)
+        fig.subplots_adjust(left=0.06, right=0.72, top=0.96, bottom=0.05, hspace=0.3,
+                            wspace=0.12)
         return save(fig, stem, tight=False)
+
+
+def _tag(r: "RunResult") -> str:
+    """The tolerance's exponent (``-6``), or the midpoint rule's step count."""
+    if r.method == "midpoint":
+        return f"{r.steps}"
+    return f"{math.log10(r.tolerance):.0f}"
 
 
 def _legends(fig, wp: WorkPrecision, forms) -> None:
@@ -164,15 +194,18 @@ def _legends(fig, wp: WorkPrecision, forms) -> None:
     same = {r.formulation: r.same_as.split(" x ")[0] for r in wp.runs if r.same_as}
     h1 = [Line2D([], [], color=METHOD_COLORS.get(m, "k"), label=m) for m in methods]
     h2 = []
+    backends = {r.formulation: r.backend for r in wp.runs}
     for i, f in enumerate(forms):
         ls, mk = style_of(i)
         note = f"\n    identical to {same[f]}: drawn once" if f in same else ""
-        h2.append(Line2D([], [], color="0.3", linestyle=ls, marker=mk, label=f + note))
+        tag = f" [{backends[f]}]" if backends.get(f) else ""
+        h2.append(Line2D([], [], color="0.3", linestyle=ls, marker=mk, label=f + tag + note))
     h2.append(Line2D([], [], color="0.5", linestyle=":", label="reference's own error"))
     fig.legend(handles=h1, title="integrator (colour)", fontsize="small", loc="upper left",
-               bbox_to_anchor=(0.58, 0.95))
-    fig.legend(handles=h2, title="formulation (line and marker)", fontsize="small",
-               loc="upper left", bbox_to_anchor=(0.58, 0.95 - 0.035 * (len(methods) + 2)))
+               bbox_to_anchor=(0.735, 0.96))
+    fig.legend(handles=h2, title="formulation [backend of its generated code]\n"
+               "(line and marker)", fontsize="x-small", loc="upper left",
+               bbox_to_anchor=(0.735, 0.96 - 0.028 * (len(methods) + 2)))
 
 
 def _json(v):
@@ -242,18 +275,25 @@ def _identical(runs: list[RunResult]) -> None:
 
 
 def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float] = TOLERANCES,
-                   steps: Sequence[int] = STEPS, methods: Sequence[str] = METHODS,
+                   steps: Sequence[int] = STEPS,
+                   methods: Sequence[str] = METHODS + DAE_METHODS,
                    models: Sequence[str] | None = None, samples: int = 101,
                    params: Mapping | None = None, y0=None, progress: bool = True,
-                   stabilisations: Sequence[str] = STABILISATIONS) -> WorkPrecision:
+                   stabilisations: Sequence[str] = STABILISATIONS + DAE_SOLVED,
+                   baumgarte_gains: Sequence[float] = BAUMGARTE_GAINS,
+                   repeats: int = 5) -> WorkPrecision:
     """The sweep of the module docstring over ``duration`` seconds (cut to fit the scene);
-    ``models`` and ``stabilisations`` narrow the formulations."""
+    ``models``, ``stabilisations`` and ``baumgarte_gains`` narrow the formulations;
+    ``repeats`` runs per point give its CPU time (their median)."""
+    if repeats < 1:
+        raise ValueError(f"`repeats` must be at least 1, got {repeats}.")
     from tqdm import tqdm
     scene = scene_span(problem, duration, y0, params)
     span = (scene.t0, scene.t_end)
     te = np.linspace(span[0], span[1], samples)
     forms, skipped = formulations(problem, params, y0, models=models,
-                                  stabilisations=stabilisations)
+                                  stabilisations=stabilisations,
+                                  baumgarte_gains=baumgarte_gains)
     ref, ref_error = _reference(forms, span, te)
     units = {work_conjugate_unit(problem.reaction_info()[u.name].dimension)
              for f in forms if f.constrained for u in f.constrained.constraints.multipliers
@@ -262,7 +302,7 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
                        ", ".join(sorted(units)) or "-", skipped=skipped)
     jobs = []
     for f in forms:
-        for m in methods:
+        for m in f.methods(methods):
             if m == "midpoint":
                 if f.kind == "ode" and f.energy is not None:
                     jobs += [(f, m, (span[1] - span[0]) / s) for s in steps]
@@ -277,8 +317,13 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
             wp.runs.append(RunResult(f.name, f.kind, m, tol, math.nan, 0, 0, 0, False,
                                      f"{type(exc).__name__}: {exc}"))
             continue
-        wp.runs.append(RunResult(f.name, f.kind, m, tol, run.cpu, run.calls, run.evaluations,
-                                 run.steps, run.success, str(run.message),
-                                 **_measure(f, run, ref, te)))
+        cpus = [run.cpu]
+        for _ in range(repeats - 1 if run.success else 0):
+            cpus.append(f.run(m, span, te, rtol=tol, step=tol).cpu)
+        wp.runs.append(RunResult(f.name, f.kind, m, tol, float(np.median(cpus)), run.calls,
+                                 run.evaluations, run.steps, run.success, str(run.message),
+                                 **_measure(f, run, ref, te), backend=f.backend,
+                                 repeats=len(cpus),
+                                 cpu_spread=float(max(cpus) / max(min(cpus), 1e-9))))
     _identical(wp.runs)
     return wp
