@@ -9,6 +9,9 @@
 * ``stiffness`` -- a stiff spring swept past its range (:func:`~.regimes.stiffness`);
 * ``linearisation`` -- the amplitudes where the small-oscillation model errs by 1 % and 10 %
   (:func:`~.regimes.linearisation`);
+* ``floquet`` -- for a periodically driven problem, its periodic motions and their Floquet
+  multipliers (:func:`~.floquet.floquet`), with the stability chart of Mathieu's equation
+  where an equilibrium's linearisation is one (:mod:`~.mathieu`);
 * ``chaos`` -- how long two formulations agree at each tolerance (:func:`~.regimes.chaos`).
 
 A section that does not apply says why (no DAE form, no stable equilibrium, ...).
@@ -36,7 +39,7 @@ from .singularities import GARBAGE, KAPPA_LIMIT, PROBES, probe, scan
 
 __all__ = ["Atlas", "atlas", "SECTIONS", "CHAOS_STATES"]
 
-SECTIONS = ("singularities", "dae_drift", "stiffness", "linearisation", "chaos")
+SECTIONS = ("singularities", "dae_drift", "stiffness", "linearisation", "floquet", "chaos")
 #: Initial states for the chaos section (reference coordinates, then rates).
 CHAOS_STATES = {"compound_double_pendulum": [2.0, 2.5, 0.0, 0.0]}
 
@@ -98,6 +101,8 @@ def _plain(x):
         return float(x) if math.isfinite(float(x)) else None
     if isinstance(x, np.integer):
         return int(x)
+    if isinstance(x, (complex, np.complexfloating)):
+        return {"re": _plain(x.real), "im": _plain(x.imag)}
     return x
 
 
@@ -151,7 +156,22 @@ def _stiff(problem):
     return stiffness(problem)
 
 
+def _driven(problem) -> str | None:
+    """Why the reference model is periodically driven (its period), or ``None``."""
+    from .floquet import NotDriven, forcing_period
+    from .simulation import problem_parameters
+    try:
+        period = forcing_period(problem.model(problem.reference), problem_parameters(problem))
+    except NotDriven:
+        return None
+    return f"period {period:.4g} s"
+
+
 def _linear(problem):
+    driven = _driven(problem)
+    if driven is not None:
+        raise _NotApplicable(f"the model is driven ({driven}): a linearisation frozen at one "
+                             "instant says nothing about its stability; see [floquet]")
     try:
         return linearisation(problem)
     except ValueError as exc:
@@ -174,8 +194,16 @@ def _chaos(problem):
         raise _NotApplicable(str(exc)) from None
 
 
+def _floquet(problem):
+    from .floquet import NotDriven, floquet
+    try:
+        return floquet(problem)
+    except NotDriven as exc:
+        raise _NotApplicable(str(exc)) from None
+
+
 _RUN = {"singularities": _singularities, "dae_drift": _dae, "stiffness": _stiff,
-        "linearisation": _linear, "chaos": _chaos}
+        "linearisation": _linear, "floquet": _floquet, "chaos": _chaos}
 
 
 # -- charts ------------------------------------------------------------------------------------
@@ -270,6 +298,39 @@ def _chart_chaos(c, stem: Path) -> list[Path]:
     return save(fig, stem)
 
 
+def _chart_floquet(fl, stem: Path) -> list[Path]:
+    from .charts import panels, save
+    from .mathieu import draw_chart
+    points = {f"{o.label}: {'stable' if o.stable else 'unstable'}": o.mathieu
+              for o in fl.orbits if o.mathieu is not None}
+    count = 3 if points else 1
+    fig, axes = panels(count, f"{fl.problem}: Floquet multipliers of each periodic motion"
+                       + (" and the stability chart of its linearisation (Mathieu)"
+                          if points else ""), height=3.6, sharex=False)
+    ax = axes[0]
+    circle = np.exp(1j * np.linspace(0, 2 * np.pi, 361))
+    ax.plot(circle.real, circle.imag, color="0.5", linewidth=0.8, label="unit circle")
+    for o in fl.orbits:
+        mu = np.array(o.multipliers, dtype=complex)
+        ax.plot(mu.real, mu.imag, marker="o", linestyle="none",
+                label=f"{o.label}: largest |mu| = {o.radius:.10f}")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("Re mu [1]")
+    ax.set_ylabel("Im mu [1]")
+    ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    if points:
+        qmax = max(abs(q) for _, q in points.values())
+        amax = max(abs(a) for a, _ in points.values())
+        draw_chart(axes[1], (0.0, 3.0), (-2.0, 5.0), points)
+        axes[1].set_title("stable where shaded: |trace of the monodromy matrix| < 2",
+                          fontsize="small")
+        axes[1].legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0))
+        draw_chart(axes[2], (0.0, 2.5 * qmax), (-2.5 * amax, 2.5 * amax), points)
+        axes[2].set_title("near the problem's own parameters", fontsize="small")
+        axes[2].legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    return save(fig, stem)
+
+
 _CHARTS = {"singularities": _chart_singularities, "dae_drift": _chart_drift,
            "stiffness": _chart_stiffness, "linearisation": _chart_linear,
-           "chaos": _chart_chaos}
+           "floquet": _chart_floquet, "chaos": _chart_chaos}
