@@ -12,7 +12,9 @@
 * ``floquet`` -- for a periodically driven problem, its periodic motions and their Floquet
   multipliers (:func:`~.floquet.floquet`), with the stability chart of Mathieu's equation
   where an equilibrium's linearisation is one (:mod:`~.mathieu`);
-* ``chaos`` -- how long two formulations agree at each tolerance (:func:`~.regimes.chaos`).
+* ``chaos`` -- how long two formulations agree at each tolerance (:func:`~.regimes.chaos`),
+  and how long a run stays right against a reference more accurate than it, with the
+  Lyapunov exponent those horizons imply beside Benettin's (:func:`~.horizon.horizons`).
 
 A section that does not apply says why (no DAE form, no stable equilibrium, ...).
 :meth:`Atlas.write` saves ``NAME_atlas.json``, ``NAME_atlas.txt`` and one chart per section
@@ -188,10 +190,14 @@ def _chaos(problem):
     if why is not None:
         raise _NotApplicable(f"the reference model does not conserve energy ({why}); the "
                              "agreement study needs a conservative motion")
+    from .horizon import horizons
+    y0 = CHAOS_STATES.get(problem.name)
     try:
-        return chaos(problem, y0=CHAOS_STATES.get(problem.name))
+        agreement = chaos(problem, y0=y0)
     except ValueError as exc:
         raise _NotApplicable(str(exc)) from None
+    return [agreement, horizons(problem, y0=y0, duration=10.0,
+                                tolerances=[r["rtol"] for r in agreement.rows])]
 
 
 def _floquet(problem):
@@ -286,15 +292,31 @@ def _chart_linear(lin, stem: Path) -> list[Path]:
     return save(fig, stem)
 
 
-def _chart_chaos(c, stem: Path) -> list[Path]:
+def _chart_chaos(results, stem: Path) -> list[Path]:
     from .charts import panels, save
-    fig, (ax,) = panels(1, f"{c.problem}: {c.pair[0]} and {c.pair[1]} agree until ... "
-                        f"(Lyapunov exponent {c.lyapunov:.3g} 1/s)", height=3.2)
-    ax.plot([r["rtol"] for r in c.rows], [r["horizon"] for r in c.rows], marker="o")
-    ax.set_xscale("log")
-    ax.invert_xaxis()
-    ax.set_xlabel("relative tolerance of both runs [1]")
-    ax.set_ylabel("agreement horizon [s]")
+    c, h = (results + [None])[:2] if isinstance(results, list) else (results, None)
+    fig, (ax,) = panels(1, f"{c.problem}: how long a chaotic run stays right", height=3.4)
+    x = [-np.log(r["rtol"]) for r in c.rows]
+    ax.plot(x, [r["horizon"] for r in c.rows], marker="o",
+            label=f"{c.pair[0]} and {c.pair[1]} agree (each other, not the truth)")
+    if h is not None:
+        xs = [-np.log(r["rtol"]) for r in h.rows]
+        ax.plot(xs, [r["horizon"] for r in h.rows], marker="s",
+                label=f"{h.formulation} right against the reference (hollow: at least)")
+        for xx, r in zip(xs, h.rows):
+            if r["bound"]:
+                ax.plot([xx], [r["horizon"]], marker="s", color="white", markersize=4)
+        good = [(xx, r["horizon"]) for xx, r in zip(xs, h.rows) if not r["bound"]]
+        if good and np.isfinite(h.lyapunov):
+            x0, t0 = np.mean(good, axis=0)
+            line = np.array([min(xs), max(xs)])
+            ax.plot(line, t0 + (line - x0) / h.lyapunov, linestyle="--", color="0.4",
+                    label=f"slope 1/lambda, Benettin's lambda = {h.lyapunov:.3g} 1/s")
+        ax.axhline(h.reference_valid, color="0.7", linestyle=":",
+                   label=f"reference trusted until {h.reference_valid:.3g} s")
+    ax.set_xlabel("-ln(relative tolerance) [1]")
+    ax.set_ylabel("horizon [s]")
+    ax.legend(fontsize="x-small")
     return save(fig, stem)
 
 
