@@ -45,6 +45,8 @@ def test_lyapunov_exponent_of_an_unstable_linear_system_is_its_eigenvalue():
         1.0, abs=1e-6)
 
 
-def test_state_sizes_are_root_mean_squares_floored():
-    y = np.array([[3.0, -4.0], [0.0, 0.0]])
-    assert state_sizes(y).tolist() == pytest.approx([np.sqrt(12.5), 1e-12 * np.sqrt(12.5)])
+def test_state_sizes_measure_coordinates_and_rates_each_as_a_block():
+    # q = (3, 0) then (-4, 0): rms of the coordinates sqrt((9 + 16) / 4); the rates all zero
+    # fall back to 1 (no division by zero)
+    y = np.array([[3.0, -4.0], [0.0, 0.0], [0.0, 0.0], [0.0, 0.0]])
+    assert state_sizes(y).tolist() == pytest.approx([2.5, 2.5, 1.0, 1.0])

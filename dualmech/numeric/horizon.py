@@ -44,10 +44,16 @@ class Reference:
 
 
 def state_sizes(y: np.ndarray) -> np.ndarray:
-    """Root-mean-square size of each component along a trajectory (``(2n,)``), at least
-    1e-12 of the largest (a component that stays zero does not make every error infinite)."""
-    rms = np.sqrt(np.mean(y**2, axis=1))
-    return np.maximum(rms, 1e-12 * rms.max())
+    """The state's own size along a trajectory ``y`` (``(2n, K)``), per component
+    (``(2n,)``): the root-mean-square of the coordinates together for each coordinate, of
+    the rates together for each rate -- so a coordinate that stays near zero (a track tilted
+    by a milliradian) is measured against the motion's size, not its own tiny one."""
+    n = y.shape[0] // 2
+    out = np.empty(y.shape[0])
+    for block in (slice(0, n), slice(n, 2 * n)):
+        rms = float(np.sqrt(np.mean(y[block]**2)))
+        out[block] = rms if rms > 0 else 1.0
+    return out
 
 
 def reference(f, span: tuple, t_eval: np.ndarray, threshold: float) -> Reference:
