@@ -104,7 +104,7 @@ def boundary(name: str, q: float, steps: int = 1600) -> float:
 
 
 def draw_chart(ax, q_range: tuple, alpha_range: tuple, points: dict | None = None,
-               resolution: int = 241, steps: int = 300) -> None:
+               resolution: int = 181, steps: int = 240) -> None:
     """Shade the stable region of Mathieu's equation on ``ax`` over ``q_range`` x
     ``alpha_range`` (``q`` across, ``alpha`` up), overlay the published series of the first
     transition curves (DLMF 28.6.1-28.6.4, where they converge: ``q <= 1``) and Kapitza's
