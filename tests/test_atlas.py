@@ -12,7 +12,7 @@ from scipy.special import ellipj, ellipk
 from dualmech.numeric.atlas import atlas
 from dualmech.numeric.regimes import (chaos, dae_drift, growth_exponent, linearisation,
                                       stability_radius, stiffness)
-from dualmech.numeric.singularities import GARBAGE, probe, scan
+from dualmech.numeric.singularities import GARBAGE, WRONG, probe, scan, verdict_word
 from dualmech.problems import get
 
 EPS = np.finfo(float).eps
@@ -65,14 +65,33 @@ def test_running_into_the_fold_in_x(fold):
     # RK45 evaluates past the fold and stops, naming the state (x = 2 l - l0 = 1.4)
     assert not runs["RK45", "unguarded"].success
     assert "x=1.4" in runs["RK45", "unguarded"].message
-    # BDF steps over it and reports success with wrong coordinates: detected as garbage
-    assert runs["BDF", "unguarded"].verdict.startswith("GARBAGE")
+    # BDF steps over it and reports success with wrong coordinates: detected, its error
+    # beyond 1 % of the state's own size
+    assert runs["BDF", "unguarded"].verdict.startswith("wrong")
+    assert runs["BDF", "unguarded"].error > WRONG
     # guarded runs keep the last good state, and the theta form continues from it; the
     # degeneracy at the switch is below GARBAGE, so the error is at most GARBAGE x rtol
     for m in ("RK45", "BDF"):
         assert not runs[m, "guarded"].success
         assert runs[m, "switched"].success
         assert runs[m, "switched"].error <= GARBAGE * fold.rtol
+
+
+def test_toy_car_near_its_pole_is_degraded_not_garbage():
+    # regression: errors were divided by the declared ranges, which the state leaves 30-fold,
+    # and RK45 / DOP853 were called garbage; against the state's own size they are off by
+    # a few thousandths -- more than 1000 x rtol, less than 1 %
+    pr = probe(get("toy_car"), methods=("RK45",))
+    (run,) = [r for r in pr.runs if r.mode == "unguarded"]
+    assert verdict_word(run.error, pr.rtol) == "degraded"
+    assert run.verdict.startswith("degraded")
+
+
+def test_verdict_words_follow_their_definitions():
+    assert verdict_word(1e-4, 1e-6) == "right"          # 100 x rtol
+    assert verdict_word(5e-3, 1e-6) == "degraded"       # 5000 x rtol, 0.5 %
+    assert verdict_word(0.02, 1e-6) == "wrong"          # 2 % of the state's size
+    assert verdict_word(float("nan"), 1e-6) == "wrong"
 
 
 # -- stiffness ----------------------------------------------------------------------------------

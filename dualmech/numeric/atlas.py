@@ -9,7 +9,12 @@
 * ``stiffness`` -- a stiff spring swept past its range (:func:`~.regimes.stiffness`);
 * ``linearisation`` -- the amplitudes where the small-oscillation model errs by 1 % and 10 %
   (:func:`~.regimes.linearisation`);
-* ``chaos`` -- how long two formulations agree at each tolerance (:func:`~.regimes.chaos`).
+* ``floquet`` -- for a periodically driven problem, its periodic motions and their Floquet
+  multipliers (:func:`~.floquet.floquet`), with the stability chart of Mathieu's equation
+  where an equilibrium's linearisation is one (:mod:`~.mathieu`);
+* ``chaos`` -- how long two formulations agree at each tolerance (:func:`~.regimes.chaos`),
+  and how long a run stays right against a reference more accurate than it, with the
+  Lyapunov exponent those horizons imply beside Benettin's (:func:`~.horizon.horizons`).
 
 A section that does not apply says why (no DAE form, no stable equilibrium, ...).
 :meth:`Atlas.write` saves ``NAME_atlas.json``, ``NAME_atlas.txt`` and one chart per section
@@ -36,7 +41,7 @@ from .singularities import GARBAGE, KAPPA_LIMIT, PROBES, probe, scan
 
 __all__ = ["Atlas", "atlas", "SECTIONS", "CHAOS_STATES"]
 
-SECTIONS = ("singularities", "dae_drift", "stiffness", "linearisation", "chaos")
+SECTIONS = ("singularities", "dae_drift", "stiffness", "linearisation", "floquet", "chaos")
 #: Initial states for the chaos section (reference coordinates, then rates).
 CHAOS_STATES = {"compound_double_pendulum": [2.0, 2.5, 0.0, 0.0]}
 
@@ -98,6 +103,8 @@ def _plain(x):
         return float(x) if math.isfinite(float(x)) else None
     if isinstance(x, np.integer):
         return int(x)
+    if isinstance(x, (complex, np.complexfloating)):
+        return {"re": _plain(x.real), "im": _plain(x.imag)}
     return x
 
 
@@ -151,7 +158,22 @@ def _stiff(problem):
     return stiffness(problem)
 
 
+def _driven(problem) -> str | None:
+    """Why the reference model is periodically driven (its period), or ``None``."""
+    from .floquet import NotDriven, forcing_period
+    from .simulation import problem_parameters
+    try:
+        period = forcing_period(problem.model(problem.reference), problem_parameters(problem))
+    except NotDriven:
+        return None
+    return f"period {period:.4g} s"
+
+
 def _linear(problem):
+    driven = _driven(problem)
+    if driven is not None:
+        raise _NotApplicable(f"the model is driven ({driven}): a linearisation frozen at one "
+                             "instant says nothing about its stability; see [floquet]")
     try:
         return linearisation(problem)
     except ValueError as exc:
@@ -168,14 +190,26 @@ def _chaos(problem):
     if why is not None:
         raise _NotApplicable(f"the reference model does not conserve energy ({why}); the "
                              "agreement study needs a conservative motion")
+    from .horizon import horizons
+    y0 = CHAOS_STATES.get(problem.name)
     try:
-        return chaos(problem, y0=CHAOS_STATES.get(problem.name))
+        agreement = chaos(problem, y0=y0)
     except ValueError as exc:
+        raise _NotApplicable(str(exc)) from None
+    return [agreement, horizons(problem, y0=y0, duration=10.0,
+                                tolerances=[r["rtol"] for r in agreement.rows])]
+
+
+def _floquet(problem):
+    from .floquet import NotDriven, floquet
+    try:
+        return floquet(problem)
+    except NotDriven as exc:
         raise _NotApplicable(str(exc)) from None
 
 
 _RUN = {"singularities": _singularities, "dae_drift": _dae, "stiffness": _stiff,
-        "linearisation": _linear, "chaos": _chaos}
+        "linearisation": _linear, "floquet": _floquet, "chaos": _chaos}
 
 
 # -- charts ------------------------------------------------------------------------------------
@@ -258,18 +292,67 @@ def _chart_linear(lin, stem: Path) -> list[Path]:
     return save(fig, stem)
 
 
-def _chart_chaos(c, stem: Path) -> list[Path]:
+def _chart_chaos(results, stem: Path) -> list[Path]:
     from .charts import panels, save
-    fig, (ax,) = panels(1, f"{c.problem}: {c.pair[0]} and {c.pair[1]} agree until ... "
-                        f"(Lyapunov exponent {c.lyapunov:.3g} 1/s)", height=3.2)
-    ax.plot([r["rtol"] for r in c.rows], [r["horizon"] for r in c.rows], marker="o")
-    ax.set_xscale("log")
-    ax.invert_xaxis()
-    ax.set_xlabel("relative tolerance of both runs [1]")
-    ax.set_ylabel("agreement horizon [s]")
+    c, h = (results + [None])[:2] if isinstance(results, list) else (results, None)
+    fig, (ax,) = panels(1, f"{c.problem}: how long a chaotic run stays right", height=3.4)
+    x = [-np.log(r["rtol"]) for r in c.rows]
+    ax.plot(x, [r["horizon"] for r in c.rows], marker="o",
+            label=f"{c.pair[0]} and {c.pair[1]} agree (each other, not the truth)")
+    if h is not None:
+        xs = [-np.log(r["rtol"]) for r in h.rows]
+        ax.plot(xs, [r["horizon"] for r in h.rows], marker="s",
+                label=f"{h.formulation} right against the reference (hollow: at least)")
+        for xx, r in zip(xs, h.rows):
+            if r["bound"]:
+                ax.plot([xx], [r["horizon"]], marker="s", color="white", markersize=4)
+        good = [(xx, r["horizon"]) for xx, r in zip(xs, h.rows) if not r["bound"]]
+        if good and np.isfinite(h.lyapunov):
+            x0, t0 = np.mean(good, axis=0)
+            line = np.array([min(xs), max(xs)])
+            ax.plot(line, t0 + (line - x0) / h.lyapunov, linestyle="--", color="0.4",
+                    label=f"slope 1/lambda, Benettin's lambda = {h.lyapunov:.3g} 1/s")
+        ax.axhline(h.reference_valid, color="0.7", linestyle=":",
+                   label=f"reference trusted until {h.reference_valid:.3g} s")
+    ax.set_xlabel("-ln(relative tolerance) [1]")
+    ax.set_ylabel("horizon [s]")
+    ax.legend(fontsize="x-small")
+    return save(fig, stem)
+
+
+def _chart_floquet(fl, stem: Path) -> list[Path]:
+    from .charts import panels, save
+    from .mathieu import draw_chart
+    points = {f"{o.label}: {'stable' if o.stable else 'unstable'}": o.mathieu
+              for o in fl.orbits if o.mathieu is not None}
+    count = 3 if points else 1
+    fig, axes = panels(count, f"{fl.problem}: Floquet multipliers of each periodic motion"
+                       + (" and the stability chart of its linearisation (Mathieu)"
+                          if points else ""), height=3.6, sharex=False)
+    ax = axes[0]
+    circle = np.exp(1j * np.linspace(0, 2 * np.pi, 361))
+    ax.plot(circle.real, circle.imag, color="0.5", linewidth=0.8, label="unit circle")
+    for o in fl.orbits:
+        mu = np.array(o.multipliers, dtype=complex)
+        ax.plot(mu.real, mu.imag, marker="o", linestyle="none",
+                label=f"{o.label}: largest |mu| = {o.radius:.10f}")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("Re mu [1]")
+    ax.set_ylabel("Im mu [1]")
+    ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0))
+    if points:
+        qmax = max(abs(q) for _, q in points.values())
+        amax = max(abs(a) for a, _ in points.values())
+        draw_chart(axes[1], (0.0, 3.0), (-2.0, 5.0), points)
+        axes[1].set_title("stable where shaded: |trace of the monodromy matrix| < 2",
+                          fontsize="small")
+        axes[1].legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0))
+        draw_chart(axes[2], (0.0, 2.5 * qmax), (-2.5 * amax, 2.5 * amax), points)
+        axes[2].set_title("near the problem's own parameters", fontsize="small")
+        axes[2].legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0))
     return save(fig, stem)
 
 
 _CHARTS = {"singularities": _chart_singularities, "dae_drift": _chart_drift,
            "stiffness": _chart_stiffness, "linearisation": _chart_linear,
-           "chaos": _chart_chaos}
+           "floquet": _chart_floquet, "chaos": _chart_chaos}

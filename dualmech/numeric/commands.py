@@ -68,7 +68,7 @@ def register(subparsers) -> None:
     _out(p)
     p.add_argument("--section", action="append", metavar="S", dest="sections",
                    help="run only this section (repeatable): singularities, dae_drift, "
-                        "stiffness, linearisation, chaos")
+                        "stiffness, linearisation, floquet, chaos")
     p.set_defaults(func=_guard(_atlas))
 
     p = subparsers.add_parser(

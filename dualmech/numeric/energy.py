@@ -173,6 +173,9 @@ class EnergyFunction:
         back = lambda e: from_plain(e, coords)  # noqa: E731
         n = eqs.n
         self.n, self.name = n, eqs.name
+        qsyms = {state_symbols(q).q for q in coords}
+        #: whether ``M`` is constant (a separable Hamiltonian: Stormer--Verlet applies)
+        self.constant_mass = not any(e.free_symbols & qsyms for e in M)
         exprs = [M[i, j] for i in range(n) for j in range(n)] + list(dT) + list(phi)
         # one generated function for everything a step needs: M, dT/dq and -dV/dq
         self._all = StateFunction([back(e) for e in exprs], coords, params)

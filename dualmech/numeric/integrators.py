@@ -2,10 +2,12 @@
 
 :func:`integrate` runs scipy's ``RK45``, ``DOP853``, ``Radau``, ``BDF`` or ``LSODA`` (through
 :func:`scipy.integrate.solve_ivp` with dense output, so the accepted steps are counted and the
-samples come from each method's own interpolant), or the structure-preserving
-``"midpoint"``: the implicit midpoint rule on the canonical state ``(q, p = M q')`` of a
-natural conservative model (:class:`~dualmech.numeric.energy.EnergyFunction`), which is
-symplectic -- its energy error stays bounded over long runs instead of drifting.
+samples come from each method's own interpolant), or a symplectic
+method of :mod:`~dualmech.numeric.symplectic` on the canonical state ``(q, p = M q')`` of a
+natural conservative model (:class:`~dualmech.numeric.energy.EnergyFunction`): ``"midpoint"``
+(implicit midpoint, Newton's method), ``"verlet"`` (Stormer--Verlet, constant mass matrix) or
+``"rattle"`` (Verlet with holonomic constraints) -- their energy error stays bounded over
+long runs instead of drifting.
 
 Every :class:`Run` says what it cost: CPU seconds, right-hand-side calls, states evaluated
 (a vectorised call evaluates many -- the implicit methods' finite-difference Jacobians),
@@ -33,11 +35,13 @@ from scipy.integrate import solve_ivp
 from .model import SingularityError
 
 __all__ = ["Run", "integrate", "METHODS", "SCIPY_METHODS", "EXPLICIT", "IMPLICIT",
-           "STRUCTURE_PRESERVING", "IntegrationError"]
+           "STRUCTURE_PRESERVING", "SYMPLECTIC", "IntegrationError"]
 
 SCIPY_METHODS = ("RK45", "DOP853", "Radau", "BDF", "LSODA")
 STRUCTURE_PRESERVING = ("midpoint",)
 METHODS = SCIPY_METHODS + STRUCTURE_PRESERVING
+#: Every fixed-step symplectic method (``verlet`` and ``rattle`` only where they apply).
+SYMPLECTIC = ("midpoint", "verlet", "rattle")
 EXPLICIT = ("RK45", "DOP853")
 IMPLICIT = ("Radau", "BDF")
 
@@ -87,42 +91,55 @@ def integrate(fun: Callable, t_span: Sequence[float], y0, method: str, *,
               t_eval: np.ndarray, rtol: float = 1e-6, atol: float | np.ndarray = 1e-9,
               step: float | None = None, events: Sequence[Callable] = (),
               projector: Callable | None = None, hamiltonian=None,
-              max_steps: int = 2_000_000) -> Run:
+              constraint: tuple | None = None, max_steps: int = 2_000_000) -> Run:
     """Integrate ``y' = fun(t, y)`` (vectorised ``fun`` accepted) and count the work.
 
     Parameters
     ----------
-    method : one of :data:`METHODS`
+    method : one of :data:`METHODS` or :data:`SYMPLECTIC`
     t_eval : sample times inside ``t_span`` (increasing)
-    rtol, atol : scipy's tolerances (ignored by ``"midpoint"``)
-    step : the fixed step of ``"midpoint"`` (required there)
+    rtol, atol : scipy's tolerances (ignored by the symplectic methods)
+    step : the fixed step of a symplectic method (required there)
     events : scipy-style event functions (``terminal`` honoured)
     projector : ``(t, y) -> y`` applied at every sample time (scipy methods)
-    hamiltonian : :class:`~dualmech.numeric.energy.EnergyFunction`, for ``"midpoint"``
+    hamiltonian : :class:`~dualmech.numeric.energy.EnergyFunction`, for a symplectic method
+    constraint : ``(g, G)`` for ``"rattle"``: ``g(q)`` the constraint residuals, ``G(q)``
+        their gradients
 
     A :class:`~dualmech.numeric.model.SingularityError` raised by ``fun`` ends the run with
     ``success = False`` and its message (nothing is hidden, nothing goes on).
     """
-    if method not in METHODS:
-        raise ValueError(f"`method` must be one of {METHODS}, got {method!r}.")
+    if method not in METHODS + SYMPLECTIC:
+        raise ValueError(f"`method` must be one of {METHODS + SYMPLECTIC}, got {method!r}.")
     t_eval = np.asarray(t_eval, dtype=float)
     y0 = np.asarray(y0, dtype=float)
     if not t_span[1] > t_span[0]:
         raise ValueError(f"`t_span` must run forward, got {tuple(t_span)}.")
     counted = _Counted(fun)
     start = _time.process_time()
-    if method == "midpoint":
+    if method in SYMPLECTIC:
+        from . import symplectic
         if hamiltonian is None or step is None:
-            raise ValueError("`midpoint` needs `hamiltonian` (an EnergyFunction) and `step`.")
+            raise ValueError(f"`{method}` needs `hamiltonian` (an EnergyFunction) and `step`.")
         if events or projector is not None:
-            raise ValueError("`midpoint` takes no `events` or `projector`.")
-        run = _midpoint(hamiltonian, t_span, y0, t_eval, float(step), max_steps)
+            raise ValueError(f"`{method}` takes no `events` or `projector`.")
+        try:
+            if method == "rattle":
+                if constraint is None:
+                    raise ValueError("`rattle` needs `constraint` = (g, G).")
+                run = symplectic.rattle(hamiltonian, *constraint, t_span, y0, t_eval,
+                                        float(step), max_steps)
+            else:
+                run = getattr(symplectic, method)(hamiltonian, t_span, y0, t_eval,
+                                                  float(step), max_steps)
+        except symplectic.SymplecticError as exc:
+            raise IntegrationError(str(exc)) from None
     elif projector is None:
         run = _scipy(counted, t_span, y0, method, t_eval, rtol, atol, events)
     else:
         run = _projected(counted, t_span, y0, method, t_eval, rtol, atol, events, projector)
     run.cpu = _time.process_time() - start
-    if method != "midpoint":
+    if method not in SYMPLECTIC:
         run.calls, run.evaluations = counted.calls, counted.evaluations
     return run
 
@@ -165,65 +182,3 @@ def _projected(fun, t_span, y0, method, t_eval, rtol, atol, events, projector) -
             first = 0.5 * (b - a) / max(run.steps, 1)  # multistep ones restart at order 1
     return Run(method, t_eval.copy(), np.array(ys).T, True, "projected at every sample", 0.0,
                0, 0, steps, jac, lu, float(t_eval[-1]))
-
-
-def _midpoint(energy, t_span, y0, t_eval, h, max_steps) -> Run:
-    """Implicit midpoint on ``(q, p)``, fixed-point iteration to round-off, samples by cubic
-    interpolation of the steps (fourth order, below the method's second)."""
-    n = y0.size // 2
-    t0, t1 = float(t_span[0]), float(t_span[1])
-    steps = int(np.ceil(abs(t1 - t0) / h - 1e-9))
-    if steps > max_steps:
-        raise IntegrationError(f"`midpoint` would take {steps} steps (> {max_steps}); take a "
-                               "larger `step`.")
-    h = (t1 - t0) / steps
-    q, qd = y0[:n].copy(), y0[n:].copy()
-    M, force = energy.step_terms(q, qd)
-    p = M @ qd
-    ts, qs, vs, fs = [t0], [q.copy()], [qd.copy()], [force]
-    evals = 1
-    for i in range(steps):
-        q1, p1 = q + h * qd, p + h * fs[-1]
-        for _ in range(60):
-            qm, pm = (q + q1) / 2, (p + p1) / 2
-            M, _ = energy.step_terms(qm, qd)
-            vm = np.linalg.solve(M, pm)
-            _, force = energy.step_terms(qm, vm)
-            q_new, p_new = q + h * vm, p + h * force
-            evals += 2
-            done = np.abs(q_new - q1).max() <= 4e-16 * max(1.0, np.abs(q_new).max()) and \
-                np.abs(p_new - p1).max() <= 4e-16 * max(1.0, np.abs(p_new).max())
-            q1, p1 = q_new, p_new
-            if done:
-                break
-        else:
-            raise IntegrationError(
-                f"`midpoint` did not converge at t={t0 + i * h:.6g} with step {h:.3g}: the "
-                "step is too large for the fastest motion of this model; halve `step`.")
-        q, p = q1, p1
-        M, _ = energy.step_terms(q, qd)
-        qd = np.linalg.solve(M, p)
-        _, force = energy.step_terms(q, qd)
-        evals += 2
-        ts.append(t0 + (i + 1) * h)
-        qs.append(q.copy())
-        vs.append(qd.copy())
-        fs.append(force)
-    T, Y = np.array(ts), np.vstack([np.array(qs).T, np.array(vs).T])
-    y = _lagrange4(T, Y, t_eval)
-    # generated-code evaluations (mass matrix or force): the iterations' and each step's own
-    return Run("midpoint", t_eval.copy(), y, True, f"{steps} steps of {h:.4g} s", 0.0, evals,
-               evals, steps, 0, 0, t1)
-
-
-def _lagrange4(T, Y, t):
-    """Cubic interpolation through the four nodes around each time of ``t`` (uniform ``T``):
-    error O(h^4), below the midpoint rule's O(h^2); exact at the nodes."""
-    if len(T) < 4:
-        return np.vstack([np.interp(t, T, row) for row in Y])
-    h = T[1] - T[0]
-    i = np.clip(np.floor((t - T[0]) / h + 1e-9).astype(int) - 1, 0, len(T) - 4)
-    s = (t - T[i]) / h  # position in units of h from the first of the four nodes
-    w = [-(s - 1) * (s - 2) * (s - 3) / 6, s * (s - 2) * (s - 3) / 2,
-         -s * (s - 1) * (s - 3) / 2, s * (s - 1) * (s - 2) / 6]
-    return sum(Y[:, i + k] * w[k] for k in range(4))

@@ -44,11 +44,12 @@ from ..dimensions import ANGLE
 from .formulations import Formulation, formulations
 from .integrators import Run
 from .model import NumericModel, SingularityError, StateFunction
+from .horizon import state_sizes
 from .simulation import problem_parameters
 from .units import unit
 
-__all__ = ["KAPPA_LIMIT", "GARBAGE", "Scan", "SingularPoint", "ProbeRun", "Probe", "scan", "probe", "PROBES",
-           "degeneracy"]
+__all__ = ["KAPPA_LIMIT", "GARBAGE", "WRONG", "Scan", "SingularPoint", "ProbeRun", "Probe",
+           "scan", "probe", "PROBES", "degeneracy", "verdict_word"]
 
 #: Beyond this degeneracy a linear solve keeps fewer than half of double precision's digits.
 KAPPA_LIMIT = 1e8
@@ -56,6 +57,9 @@ KAPPA_LIMIT = 1e8
 #: (or switches form) where the degeneracy -- the factor by which the system amplifies an
 #: error of the state into the accelerations -- passes the same factor.
 GARBAGE = 1e3
+#: A run whose error passes this fraction of the state's own size is wrong (between
+#: ``GARBAGE x rtol`` and this it is degraded: fine for a picture, not for the digits asked).
+WRONG = 1e-2
 #: Initial states (reference coordinates, then rates) that run close to each problem's
 #: declared singular set, with the formulation to watch and the span (s).
 PROBES = {
@@ -339,34 +343,49 @@ def probe(problem, name: str | None = None, *, methods: Sequence[str] = ("RK45",
     te = np.linspace(*span, samples)
     tight = ref.run("DOP853", span, te, rtol=1e-12)
     truth = f.from_reference(tight.t, tight.y[: ref.n], tight.y[ref.n:])
+    # errors relative to each component's own size along the truth, not a declared range
+    sizes = state_sizes(truth)
     kappa = _kappa_of(f, values)
     ref_kappa = _kappa_of(ref, values)
     out = Probe(problem.name, fname, list(y0), span, description, rtol)
     for method in methods:
         run = f.run(method, span, te, rtol=rtol)
-        out.runs.append(_judge(f, run, "unguarded", truth, kappa, rtol))
+        out.runs.append(_judge(f, run, "unguarded", truth, kappa, rtol, sizes))
         g = _guarded(f, method, span, te, rtol, kappa)
-        out.runs.append(_judge(f, g, "guarded", truth, kappa, rtol))
+        out.runs.append(_judge(f, g, "guarded", truth, kappa, rtol, sizes))
         if g.t_end < span[1] and f is not ref:
-            out.runs.append(_switch(f, ref, g, te, truth, rtol, ref_kappa))
+            out.runs.append(_switch(f, ref, g, te, truth, rtol, ref_kappa, sizes))
     return out
 
 
-def _judge(f, run, mode, truth, kappa, rtol) -> ProbeRun:
+def verdict_word(error: float, rtol: float) -> str:
+    """``"right"`` (relative error within ``GARBAGE x rtol``), ``"degraded"`` (within
+    :data:`WRONG` of the state's own size) or ``"wrong"`` (beyond, or not a number)."""
+    if not np.isfinite(error) or error > WRONG:
+        return "wrong"
+    return "right" if error <= GARBAGE * rtol else "degraded"
+
+
+def _judge(f, run, mode, truth, kappa, rtol, sizes) -> ProbeRun:
     k = run.y.shape[1]
     kmax = max((kappa(run.y[:, j]) for j in range(k)), default=np.nan)
-    err = float((np.abs(run.y - truth[:, :k]) / f.scales[:, None]).max()) if k else np.nan
+    err = float((np.abs(run.y - truth[:, :k]) / sizes[:, None]).max()) if k else np.nan
     dE = f.energy_change(run.y) if k else None
     energy = float(np.abs(dE).max()) if dE is not None else np.nan
+    word = verdict_word(err, rtol)
     if not run.success and mode == "guarded":
         verdict = f"stopped, with the state kept: {run.message}"
     elif not run.success:
         verdict = f"stopped with an error: {run.message}"
-    elif err <= GARBAGE * rtol:
-        verdict = f"right: error {err:.2g} in {run.steps} steps (max degeneracy {kmax:.2g})"
+    elif word == "right":
+        verdict = (f"right: relative error {err:.2g} in {run.steps} steps (max degeneracy "
+                   f"{kmax:.2g})")
+    elif word == "degraded":
+        verdict = (f"degraded: relative error {err:.2g} (> {GARBAGE:g} x rtol, below "
+                   f"{WRONG:g}) after degeneracy {kmax:.2g}")
     else:
-        verdict = (f"GARBAGE: reports success, but its coordinates are off by {err:.2g} "
-                   f"(> {GARBAGE:g} x rtol) after degeneracy {kmax:.2g}")
+        verdict = (f"wrong: reports success, but its state is off by {err:.2g} of its own "
+                   f"size (> {WRONG:g}) after degeneracy {kmax:.2g}")
         if np.isfinite(energy):
             verdict += f"; its energy error is {energy:.2g} N m"
     return ProbeRun(run.method, mode, run.success, str(run.message), run.t_end, run.steps,
@@ -423,7 +442,7 @@ def _guarded(f: Formulation, method: str, span, te, rtol, kappa) -> Run:
     return run
 
 
-def _switch(f, ref, run, te, truth, rtol, ref_kappa) -> ProbeRun:
+def _switch(f, ref, run, te, truth, rtol, ref_kappa, sizes) -> ProbeRun:
     """Continue a guarded run in the reference form from where the guard stopped it."""
     from .integrators import integrate
     n = ref.n
@@ -442,7 +461,7 @@ def _switch(f, ref, run, te, truth, rtol, ref_kappa) -> ProbeRun:
     Y = np.hstack([lifted, cont.y[:, 1:]])
     k = min(Y.shape[1], truth.shape[1])
     back = f.from_reference(0.0, Y[:n, :k], Y[n:, :k])
-    err = float((np.abs(back - truth[:, :k]) / f.scales[:, None]).max())
+    err = float((np.abs(back - truth[:, :k]) / sizes[:, None]).max())
     verdict = (f"switched to {ref.name} at t = {t_sw:.6g} s (its degeneracy there "
                f"{k_sw:.2g}); the joined run's error is {err:.2g}")
     return ProbeRun(run.method, "switched", cont.success, str(cont.message), cont.t_end,

@@ -1,0 +1,156 @@
+"""How long a chaotic run stays right: horizons against a reference more accurate than the run.
+
+:func:`reference` integrates a formulation with DOP853 at rtol 1e-13 and again at 1e-12; the
+second's departure from the first bounds the looser one's error, and the tighter one is
+trusted only while that departure stays below a thousandth of the error threshold (its
+**validity**).  :func:`horizons` runs the formulation at each tolerance and finds the first
+time its error passes ``threshold`` -- the error of each coordinate and rate divided by the
+root-mean-square size of that component along the reference (the state's own size, not a
+declared range).  A horizon past the reference's validity is reported as a lower bound.
+
+An error that starts near the tolerance and grows like ``e^(lambda t)`` passes the threshold
+at ``t = (ln threshold - ln tol) / lambda``: the horizons against ``-ln tol`` lie on a line of
+slope ``1 / lambda``.  :func:`lyapunov` estimates ``lambda`` independently (Benettin's method:
+a companion orbit a small distance away, renormalised at fixed intervals), so the two can be
+checked against each other.
+
+Example
+-------
+>>> from dualmech.problems import get                                      # doctest: +SKIP
+>>> print(horizons(get("compound_double_pendulum"), y0=[2.0, 2.5, 0.0, 0.0]))  # doctest: +SKIP
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Sequence
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+__all__ = ["Reference", "reference", "Horizons", "horizons", "lyapunov", "state_sizes"]
+
+#: Tolerances of the reference and of its check.
+REFERENCE_RTOL, CHECK_RTOL = 1e-13, 1e-12
+
+
+@dataclass
+class Reference:
+    """States ``y`` at ``t``, the check run's departure, and the time it stays trustworthy."""
+
+    t: np.ndarray
+    y: np.ndarray
+    departure: np.ndarray
+    valid_until: float
+
+
+def state_sizes(y: np.ndarray) -> np.ndarray:
+    """The state's own size along a trajectory ``y`` (``(2n, K)``), per component
+    (``(2n,)``): the root-mean-square of the coordinates together for each coordinate, of
+    the rates together for each rate -- so a coordinate that stays near zero (a track tilted
+    by a milliradian) is measured against the motion's size, not its own tiny one."""
+    n = y.shape[0] // 2
+    out = np.empty(y.shape[0])
+    for block in (slice(0, n), slice(n, 2 * n)):
+        rms = float(np.sqrt(np.mean(y[block]**2)))
+        out[block] = rms if rms > 0 else 1.0
+    return out
+
+
+def reference(f, span: tuple, t_eval: np.ndarray, threshold: float) -> Reference:
+    """The reference run of ``f`` (see the module docstring)."""
+    runs = []
+    for rtol in (REFERENCE_RTOL, CHECK_RTOL):
+        sol = solve_ivp(f.rhs, span, f.y0, method="DOP853", rtol=rtol, atol=rtol * f.scales,
+                        t_eval=t_eval, dense_output=False)
+        if not sol.success:
+            raise RuntimeError(f"the reference run of {f.name} failed: {sol.message}")
+        runs.append(sol.y)
+    sizes = state_sizes(runs[0])
+    dep = (np.abs(runs[0] - runs[1]) / sizes[:, None]).max(axis=0)
+    bad = np.flatnonzero(dep > threshold / 1000)
+    valid = float(t_eval[bad[0]]) if bad.size else float(t_eval[-1])
+    return Reference(t_eval, runs[0], dep, valid)
+
+
+@dataclass
+class Horizons:
+    """Per tolerance: the horizon (s) and whether it is only a lower bound; the fitted and
+    the independently estimated Lyapunov exponents (1/s)."""
+
+    problem: str
+    formulation: str
+    method: str
+    threshold: float
+    reference_valid: float
+    rows: list = field(default_factory=list)
+    fitted: float = float("nan")
+    slope_error: float = float("nan")
+    lyapunov: float = float("nan")
+
+    def __str__(self) -> str:
+        lines = [f"{self.problem}: {self.formulation} with {self.method} against a reference "
+                 f"at rtol {REFERENCE_RTOL:g} (trusted until t = {self.reference_valid:.3g} s); "
+                 f"a run is right until its error passes {self.threshold:g} of the state's "
+                 "own size"]
+        for r in self.rows:
+            mark = "at least " if r["bound"] else ""
+            lines.append(f"  rtol {r['rtol']:.0e}: right until {mark}t = {r['horizon']:.3g} s")
+        lines.append(f"  horizon against -ln(rtol): slope {1 / self.fitted:.3g} +- "
+                     f"{self.slope_error:.2g} s, i.e. "
+                     f"lambda = {self.fitted:.3g} 1/s; Benettin's estimate {self.lyapunov:.3g}"
+                     " 1/s")
+        return "\n".join(lines)
+
+
+def horizons(problem, y0=None, tolerances: Sequence[float] = tuple(10.0 ** -k for k in
+                                                                   range(4, 11)),
+             duration: float = 15.0, threshold: float = 0.01, method: str = "DOP853",
+             samples: int = 3001, lyapunov_time: float = 60.0) -> Horizons:
+    """The horizons of the module docstring for the problem's reference formulation."""
+    from .formulations import formulations
+    f = formulations(problem, y0=y0, models=[problem.reference])[0][0]
+    te = np.linspace(0.0, duration, samples)
+    ref = reference(f, (0.0, duration), te, threshold)
+    sizes = state_sizes(ref.y)
+    out = Horizons(problem.name, f.name, method, threshold, ref.valid_until)
+    for tol in tolerances:
+        run = f.run(method, (0.0, duration), te, rtol=tol)
+        k = run.y.shape[1]
+        err = (np.abs(run.y - ref.y[:, :k]) / sizes[:, None]).max(axis=0)
+        over = np.flatnonzero(err > threshold)
+        t_h = float(te[over[0]]) if over.size else float(te[k - 1])
+        bound = (not over.size) or t_h > ref.valid_until
+        out.rows.append({"rtol": tol, "horizon": min(t_h, ref.valid_until) if bound else t_h,
+                         "bound": bool(bound)})
+    good = [r for r in out.rows if not r["bound"]]
+    if len(good) >= 3:
+        (slope, _), cov = np.polyfit(-np.log([r["rtol"] for r in good]),
+                                     [r["horizon"] for r in good], 1, cov="unscaled"
+                                     if len(good) == 3 else True)
+        out.fitted = float(1 / slope)
+        out.slope_error = float(np.sqrt(cov[0, 0]))
+    out.lyapunov = lyapunov(f.rhs, f.y0, lyapunov_time)
+    return out
+
+
+def lyapunov(rhs, y0, duration: float, d0: float = 1e-8, every: float = 0.5,
+             transient: float = 0.0) -> float:
+    """Benettin's estimate of the largest Lyapunov exponent: a companion ``d0`` away
+    (relative to the state's size), renormalised every ``every`` seconds; the growth after
+    ``transient`` seconds, averaged."""
+    y = np.asarray(y0, dtype=float).copy()
+    scale = max(1.0, np.abs(y).max())
+    direction = np.ones_like(y) / np.sqrt(y.size)
+    z = y + d0 * scale * direction
+    total, t, counted = 0.0, 0.0, 0.0
+    while t < duration - 1e-12:
+        span = (t, min(t + every, duration))
+        y = solve_ivp(rhs, span, y, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
+        z = solve_ivp(rhs, span, z, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
+        d = np.linalg.norm(z - y)
+        if span[0] >= transient:
+            total += np.log(d / (d0 * scale))
+            counted += span[1] - span[0]
+        z = y + (z - y) * (d0 * scale / d)
+        t = span[1]
+    return total / counted
