@@ -113,6 +113,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("name", metavar="NAME", help="the problem to show")
     p.add_argument("--latex", action="store_true", help="LaTeX instead of pretty text")
     p.add_argument("--model", metavar="M", help="show only model M (e.g. lagrange)")
+    _notation_option(p)
     p.set_defaults(func=_cmd_show)
 
     p = sub.add_parser("report", help="check everything and write a report with charts",
@@ -316,7 +317,7 @@ def _cmd_show(args) -> int:
         unknowns = ", ".join(str(u) for u in eqs.unknowns) or "none"
         print()
         print(_heading(f"{name}  (coordinates: {coords}; unknowns: {unknowns})"))
-        print(eqs.pretty(latex=args.latex))
+        print(eqs.pretty(latex=args.latex, notation=args.notation))
     if not problem.reactions:
         return EXIT_OK
     c = _compare(problem, 8, 0)
@@ -326,33 +327,27 @@ def _cmd_show(args) -> int:
         print(c)
         return EXIT_DISAGREE
     info = problem.reaction_info()
+    import sympy as sp
+    from . import notation
     coords = problem.coordinate_functions + tuple(problem.model(problem.reference).coordinates)
     for rname, expr in c.reactions.items():
         where = info.get(str(rname))
         note = f"   [{where.direction}]" if where is not None and where.direction else ""
-        expr = _dotted(expr, coords)
         if args.latex:
-            import sympy as sp
-            print(f"{sp.latex(sp.Symbol(str(rname)))} = {sp.latex(expr)}{note}")
+            print(f"{notation.latex(sp.Symbol(str(rname)))} = "
+                  f"{notation.latex(expr, args.notation, coords)}{note}")
         else:
             print(f"{rname}{note} =")
-            import sympy as sp
-            print(sp.pretty(expr, use_unicode=True))
+            print(notation.pretty(expr, args.notation, coords))
         print()
     return EXIT_OK if c.equivalent else EXIT_DISAGREE
 
 
-def _dotted(expr, coordinates):
-    """``expr`` with ``q(t), q', q''`` as symbols ``q``, ``qdot``, ``qddot``, which sympy prints
-    with dots (``\\dot{q}`` in LaTeX)."""
-    import sympy as sp
-    from .equations import state_symbols, to_plain
-    rules = {}
-    for q in dict.fromkeys(coordinates):
-        s = state_symbols(q)
-        rules[s.qd] = sp.Symbol(f"{s.name}dot", real=True)
-        rules[s.qdd] = sp.Symbol(f"{s.name}ddot", real=True)
-    return to_plain(expr, tuple(dict.fromkeys(coordinates))).xreplace(rules)
+def _notation_option(p) -> None:
+    from .notation import NOTATIONS
+    p.add_argument("--notation", choices=NOTATIONS, default="dots",
+                   help="rates as dots over the letter (θ̇, \\dot{\\theta}) or primes "
+                        "(θ′); default: %(default)s")
 
 
 def _heading(text: str) -> str:

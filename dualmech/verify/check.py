@@ -219,7 +219,19 @@ class Comparison:
             "points": self.points,
             "false_equal_bound": _json_float(self.bound),
             "dimension_issues": list(self.dimension_issues),
+            "machine": self._machine(),
         }
+
+    def _machine(self) -> dict:
+        """The expressions of :meth:`to_dict` in a form parsers read: ``theta_d``, ``theta_dd``
+        for the rates (the grader's parser and sympy's ``parse_expr`` both take it)."""
+        from ..notation import machine
+        pr = self.problem
+        coords = pr.model(pr.reference).coordinates
+        return {"notation": "q_d = dq/dt, q_dd = d2q/dt2; ** is a power",
+                "eom": [machine(e, coords) for e in pr.model(pr.reference).equations],
+                "accelerations": {k: machine(v, coords) for k, v in self.accelerations.items()},
+                "reactions": {k: machine(v, coords) for k, v in self.reactions.items()}}
 
 
 def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = None) -> Comparison:
