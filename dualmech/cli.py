@@ -124,6 +124,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="output directory (default: %(default)s)")
     p.add_argument("--duration", metavar="T", default=5.0, type=_duration,
                    help="simulated time for the charts, in seconds (default: %(default)s)")
+    p.add_argument("--for", dest="audience", choices=("teachers", "students"),
+                   default="teachers",
+                   help="teachers: why each wrong printed answer is wrong; students: a page "
+                        "to hand out, printed answers judged and corrections hidden "
+                        "(default: %(default)s)")
     _points_seed(p)
     p.set_defaults(func=_cmd_report)
 
@@ -390,7 +395,8 @@ def _cmd_report(args) -> int:
         results.append((problem, c))
         (out / f"{problem.name}.json").write_text(_json(c.to_dict()) + "\n")
     print(_summary(results))
-    w = write_report([c for _, c in results], out, args.duration)
+    w = write_report([c for _, c in results], out, args.duration,
+                     audience=args.audience)
     print(f"\nwrote {w.markdown}, {w.html}, {len(results)} JSON files and "
           f"{len(w.charts) - len(w.failed)} charts to {out}/")
     for name, why in w.failed.items():

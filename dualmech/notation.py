@@ -165,45 +165,29 @@ class _Str(StrPrinter):
         return super()._print_Function(e) if r is None else self._name(r)
 
 
-class _MathML(MathMLPresentationPrinter):
-    _default_settings = dict(MathMLPresentationPrinter._default_settings, coordinates=None,
-                             notation="dots")
+class _Named(StrPrinter):
+    """Only for :func:`_rate`'s settings lookup."""
+    _default_settings = dict(StrPrinter._default_settings, coordinates=None)
 
-    def _print_Derivative(self, e):
-        r = _rate(self, e)
-        return super()._print_Derivative(e) if r is None else self._dotted(*r)
 
-    def _print_Function(self, e):
-        r = _rate(self, e)
-        return super()._print_Function(e) if r is None else self._dotted(*r)
-
-    def _dotted(self, name: str, order: int):
-        stem, sub = _split(name)
-        base = self._print(sp.Symbol(stem))
-        if order:
-            if self._settings["notation"] == "dots" and order in _DOTS:
-                over = self.dom.createElement("mover")
-                over.setAttribute("accent", "true")
-                mo = self.dom.createElement("mo")
-                mo.appendChild(self.dom.createTextNode("\u02d9" if order == 1 else "\u00a8"))
-                over.appendChild(base)
-                over.appendChild(mo)
-                base = over
-            else:
-                row = self.dom.createElement("mrow")
-                row.appendChild(base)
-                mo = self.dom.createElement("mo")
-                mo.appendChild(self.dom.createTextNode("\u2032" * order))
-                row.appendChild(mo)
-                base = row
-        if not sub:
-            return base
-        msub = self.dom.createElement("msub")
-        mi = self.dom.createElement("mi" if not sub.isdigit() else "mn")
-        mi.appendChild(self.dom.createTextNode(sub))
-        msub.appendChild(base)
-        msub.appendChild(mi)
-        return msub
+def _as_symbols(expr, notation: str, coordinates):
+    """``expr`` with each coordinate and rate replaced by a symbol whose name is its unicode
+    form (``θ̇_1``): sympy's MathML printer shows that as a dotted letter with a subscript
+    and, unlike a function, never puts it in parentheses."""
+    probe = _Named({"coordinates": coordinates})
+    rules = {}
+    for a in expr.atoms(sp.Derivative, AppliedUndef):
+        r = _rate(probe, a)
+        if r is not None:
+            stem, sub = _split(r[0])
+            name = greek_unicode.get(stem, stem)
+            if r[1]:
+                name += _DOTS[r[1]] if notation == "dots" and r[1] in _DOTS else \
+                    "\u2032" * r[1]
+            rules[a] = sp.Symbol(name + (f"_{sub}" if sub else ""))
+    derivs = {k: v for k, v in rules.items() if isinstance(k, sp.Derivative)}
+    plain = {k: v for k, v in rules.items() if not isinstance(k, sp.Derivative)}
+    return expr.xreplace(derivs).xreplace(plain)
 
 
 def _settings(coordinates: Iterable | None) -> dict:
@@ -240,7 +224,9 @@ def machine(expr, coordinates: Iterable | None = None) -> str:
 def mathml(expr, notation: str = "dots", coordinates: Iterable | None = None) -> str:
     """Presentation MathML (no ``<math>`` wrapper) of ``expr``, rates as dotted letters."""
     check_notation(notation)
-    return _MathML(dict(_settings(coordinates), notation=notation)).doprint(as_expr(expr))
+    coords = _settings(coordinates)["coordinates"]
+    expr = _as_symbols(as_expr(expr), notation, coords)
+    return MathMLPresentationPrinter().doprint(expr)
 
 
 def symbol_text(name: str, order: int = 0, notation: str = "dots") -> str:

@@ -18,6 +18,7 @@ import symengine as se
 import sympy as sp
 
 from ..equations import EquationSet, ModelError
+from ..sources import source_name
 from .display import Budget, OverBudget, dotted, solve_display
 from .explain import Mismatch, explain_model
 from .published import PublishedVerdict, check_published
@@ -165,7 +166,7 @@ class Comparison:
     def __str__(self) -> str:
         pr = self.problem
         ref = pr.model(pr.reference)
-        out = [f"{pr.name}: {pr.title}", f"  source: {pr.source}",
+        out = [f"{pr.name}: {pr.title}", f"  source: {source_name(pr.source)}",
                f"  coordinates: {', '.join(q.func.__name__ for q in ref.coordinates)}",
                f"  verdict: {self.verdict_line()}"]
         for p in self.pairs:
