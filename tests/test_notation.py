@@ -102,3 +102,30 @@ def test_json_carries_a_machine_form_beside_the_human_one(capsys):
     assert d["machine"]["eom"] == ["M*a**2*theta_dd + M*a*g*sin(theta)"]
     # the string tension T = M (a theta'^2 + g cos theta), from the free-body diagram
     assert d["machine"]["reactions"]["T"] == "M*(a*theta_d**2 + g*cos(theta))"
+
+
+# -- Jupyter rich display ---------------------------------------------------------------------
+def test_comparison_displays_its_verdict_and_typeset_reactions():
+    from dualmech.compare import compare
+    c = compare(get("simple_pendulum"))
+    assert repr(c).startswith("<Comparison simple_pendulum: all derivations agree")
+    page = c._repr_html_()
+    assert "all derivations agree" in page and page.count("<math") >= 2   # theta'', T
+    assert "<mi>&#952;&#775;</mi>" in page          # T = M (a theta-dot^2 + g cos theta)
+    assert "Derivative" not in page and "(t)" not in page
+
+
+def test_problem_grade_and_chart_display(tmp_path):
+    from dualmech.grade import grade
+    from dualmech.report.charts import trajectory_chart
+    p = get("simple_pendulum")
+    card = p._repr_html_()
+    assert "Cambridge 3C5" in card and "<math" in card and "002_df41972c66c4514e" not in card
+    g = grade("simple_pendulum", "theta'' - g/a*sin(theta)")      # the sign of gravity flipped
+    html = g._repr_html_()
+    assert '<b class="wrong">WRONG</b>' in html and "wrong sign" in html
+    assert "&#x27;&#x27;" in html and "theta'' -" not in html        # the answer is escaped
+    chart = trajectory_chart(get("wheel_on_pivot"), tmp_path, 0.5)
+    shown = chart._repr_html_()
+    assert shown.count('src="data:image/png;base64,') == 1
+    assert shown.count("<figcaption>") == 1 and "F_z stays at 19.62 N" in shown

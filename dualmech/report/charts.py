@@ -48,6 +48,11 @@ class Chart:
     error: str = ""
     span: tuple = ()
 
+    def _repr_html_(self) -> str:
+        """Jupyter: the picture and its one caption."""
+        from ..jupyter import chart_html
+        return chart_html(self)
+
 
 def group_curves(names, values, scale: float) -> list[list[str]]:
     """Names grouped by identical curves (max difference <= SAME * scale), first-seen order."""

@@ -197,6 +197,14 @@ class Comparison:
                     out.append("              " + v.detail.replace("\n", "\n              "))
         return "\n".join(out)
 
+    def __repr__(self) -> str:
+        return f"<Comparison {self.problem.name}: {self.verdict_line()}>"
+
+    def _repr_html_(self) -> str:
+        """Jupyter: verdict, accelerations, reactions and printed answers, typeset."""
+        from ..jupyter import comparison_html
+        return comparison_html(self)
+
     def to_dict(self) -> dict:
         pr = self.problem
         ref = pr.model(pr.reference)
