@@ -1,9 +1,11 @@
-"""Every notebook in notebooks/ runs from top to bottom without an error (nbclient).
+"""Every notebook in notebooks/ runs from top to bottom without an error (nbclient), and is
+stored with its outputs so that it reads online without running.
 
-Each notebook derives its problem both ways, compares them, recovers the reactions,
-simulates, and shows a work-precision chart or a stability finding; the outputs checked here
-are the ones a reader relies on (verdicts, the detected breaks), not the pictures.  The
-notebooks are kept small: the whole file runs in well under a minute on one core.
+Each notebook is teaching material: markdown with the mathematics, a sketch of the system
+(matplotlib), the problem and its comparison shown with rich display, simulation and a
+work-precision chart or a stability finding, and questions to try.  The outputs checked here
+are the ones a reader relies on (verdicts, the detected breaks, the sketch).  The notebooks
+are kept small: each runs in seconds.
 """
 from pathlib import Path
 
@@ -51,4 +53,21 @@ def test_notebook_runs_and_shows_its_findings(path):
         assert phrase in text, f"{path.name} does not show {phrase!r}"
     images = sum("image/png" in o.get("data", {}) for c in book.cells if c.cell_type == "code"
                  for o in c.get("outputs", []))
-    assert images == (1 if any("work_precision" in c.source for c in book.cells) else 0)
+    # the sketch of the system, and the work-precision chart where there is one
+    assert images == 1 + any("work_precision" in c.source for c in book.cells)
+    html = "".join(o.get("data", {}).get("text/html", "") for c in book.cells
+                   if c.cell_type == "code" for o in c.get("outputs", []))
+    assert "<math" in html                                  # the comparison, typeset
+    assert "Derivative(" not in text and "(t)" not in html
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])
+def test_notebook_is_teaching_material_stored_with_outputs(path):
+    book = nbformat.read(path, as_version=4)
+    code = [c for c in book.cells if c.cell_type == "code"]
+    markdown = "\n".join(c.source for c in book.cells if c.cell_type == "markdown")
+    assert [c.execution_count for c in code] == list(range(1, len(code) + 1))   # run in order
+    assert not any(o.get("output_type") == "error" for c in code for o in c.outputs)
+    stored_png = sum("image/png" in o.get("data", {}) for c in code for o in c.outputs)
+    assert stored_png >= 1                                  # the sketch reads online
+    assert "$" in markdown and "## Questions to try" in markdown
