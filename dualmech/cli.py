@@ -316,7 +316,8 @@ def _cmd_show(args) -> int:
             raise UsageError(f"problem `{problem.name}` has no model {args.model!r}; it has "
                              f"{', '.join(models)}.")
         models = {args.model: models[args.model]}
-    print(f"{problem.name}: {problem.title}  ({problem.source})")
+    from .sources import source_name
+    print(f"{problem.name}: {problem.title}  ({source_name(problem.source)})")
     for name, eqs in models.items():
         coords = ", ".join(q.func.__name__ for q in eqs.coordinates)
         unknowns = ", ".join(str(u) for u in eqs.unknowns) or "none"
