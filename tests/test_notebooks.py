@@ -27,6 +27,10 @@ EXPECTED = {
     "pendulum_dae": ["all derivations agree", "|g| ~ t^", "largest difference"],
     "kane_toy_car": ["all derivations agree", "`kane` disagrees with", "cos(theta(t))**2"],
 }
+#: The notebooks written as teaching material (sketch, typeset comparison, questions to try);
+#: kane_toy_car is the sympy.mechanics interop walk-through and keeps its own form.
+TEACHING = {"toy_car", "falling_container", "block_on_wedge", "pendulum_on_mass",
+            "mobile_robot", "pendulum_dae"}
 
 
 def _text(cell) -> str:
@@ -52,6 +56,8 @@ def test_notebook_runs_and_shows_its_findings(path):
     text = "".join(_text(c) for c in book.cells if c.cell_type == "code")
     for phrase in EXPECTED[path.stem]:
         assert phrase in text, f"{path.name} does not show {phrase!r}"
+    if path.stem not in TEACHING:
+        return
     images = sum("image/png" in o.get("data", {}) for c in book.cells if c.cell_type == "code"
                  for o in c.get("outputs", []))
     # the sketch of the system, and the work-precision chart where there is one
@@ -62,7 +68,8 @@ def test_notebook_runs_and_shows_its_findings(path):
     assert "Derivative(" not in text and "(t)" not in html
 
 
-@pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])
+@pytest.mark.parametrize("path", [p for p in NOTEBOOKS if p.stem in TEACHING],
+                         ids=[p.stem for p in NOTEBOOKS if p.stem in TEACHING])
 def test_notebook_is_teaching_material_stored_with_outputs(path):
     book = nbformat.read(path, as_version=4)
     code = [c for c in book.cells if c.cell_type == "code"]
