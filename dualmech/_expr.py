@@ -39,7 +39,7 @@ def as_matrix(value) -> sp.Matrix:
 TEXT_PARAMETERS = frozenset({
     "name", "key", "label", "labels", "description", "axes", "axis", "normal", "model",
     "title", "source", "summary", "where", "kind", "direction_name", "backend", "method",
-    "which", "section", "coordinates_of", "self", "cls"})
+    "which", "section", "coordinates_of", "self", "cls", "notation"})
 
 
 #: dict-valued parameters whose keys are names (ingredient labels), not expressions
@@ -119,15 +119,7 @@ def refuse_text_in(cls):
 
 def dotted(expr) -> str:
     """``expr`` as text with ``theta'`` and ``theta''`` for the derivatives of functions of
-    time (the notation people read), ``theta`` for ``theta(t)``."""
-    expr = as_expr(expr)
-    rules = {}
-    for d in expr.atoms(sp.Derivative):
-        f = d.expr
-        if isinstance(f, sp.core.function.AppliedUndef) and len(f.args) == 1 and \
-                d.variables and all(v == f.args[0] for v in d.variables):
-            rules[d] = sp.Symbol(f.func.__name__ + "'" * d.derivative_count)
-    for f in expr.atoms(sp.core.function.AppliedUndef):
-        if len(f.args) == 1 and f.args[0].is_Symbol:
-            rules.setdefault(f, sp.Symbol(f.func.__name__))
-    return str(expr.xreplace(rules)) if rules else str(expr)
+    time (the notation people read), ``theta`` for ``theta(t)``: :func:`dualmech.notation.text`.
+    """
+    from .notation import text
+    return text(as_expr(expr))

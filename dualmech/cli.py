@@ -133,6 +133,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="the problem to show: a catalogue name, path.py[:Class] or module:Class")
     p.add_argument("--latex", action="store_true", help="LaTeX instead of pretty text")
     p.add_argument("--model", metavar="M", help="show only model M (e.g. lagrange)")
+    _notation_option(p)
     _json_flag(p, "models (coordinates, unknowns, labelled equations) and reactions")
     p.set_defaults(func=_cmd_show)
 
@@ -145,6 +146,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="output directory (default: %(default)s)")
     p.add_argument("--duration", metavar="T", default=5.0, type=_duration,
                    help="simulated time for the charts, in seconds (default: %(default)s)")
+    p.add_argument("--for", dest="audience", choices=("teachers", "students"),
+                   default="teachers",
+                   help="teachers: why each wrong printed answer is wrong; students: a page "
+                        "to hand out, printed answers judged and corrections hidden "
+                        "(default: %(default)s)")
     _points_seed(p)
     _json_flag(p, "the summary: one object per problem, and the files written")
     p.set_defaults(func=_cmd_report)
@@ -462,13 +468,14 @@ def _cmd_show(args) -> int:
         models = {args.model: models[args.model]}
     if args.json:
         return _show_json(problem, models)
-    print(f"{problem.name}: {problem.title}  ({problem.source})")
+    from .sources import source_name
+    print(f"{problem.name}: {problem.title}  ({source_name(problem.source)})")
     for name, eqs in models.items():
         coords = ", ".join(q.func.__name__ for q in eqs.coordinates)
         unknowns = ", ".join(str(u) for u in eqs.unknowns) or "none"
         print()
         print(_heading(f"{name}  (coordinates: {coords}; unknowns: {unknowns})"))
-        print(eqs.pretty(latex=args.latex))
+        print(eqs.pretty(latex=args.latex, notation=args.notation))
     if not problem.reactions:
         return EXIT_OK
     c = _compare(problem, 8, 0)
@@ -478,30 +485,39 @@ def _cmd_show(args) -> int:
         print(c)
         return EXIT_DISAGREE
     info = problem.reaction_info()
+    import sympy as sp
+    from . import notation
     coords = problem.coordinate_functions + tuple(problem.model(problem.reference).coordinates)
     for rname, expr in c.reactions.items():
         where = info.get(str(rname))
         note = f"   [{where.direction}]" if where is not None and where.direction else ""
-        expr = _dotted(expr, coords)
         if args.latex:
-            import sympy as sp
-            print(f"{sp.latex(sp.Symbol(str(rname)))} = {sp.latex(expr)}{note}")
+            print(f"{notation.latex(sp.Symbol(str(rname)))} = "
+                  f"{notation.latex(expr, args.notation, coords)}{note}")
         else:
             print(f"{rname}{note} =")
-            import sympy as sp
-            print(sp.pretty(expr, use_unicode=True))
+            print(notation.pretty(expr, args.notation, coords))
         print()
     return EXIT_OK if c.equivalent else EXIT_DISAGREE
+
+
+def _notation_option(p) -> None:
+    from .notation import NOTATIONS
+    p.add_argument("--notation", choices=NOTATIONS, default="dots",
+                   help="rates as dots over the letter (θ̇, \\dot{\\theta}) or primes "
+                        "(θ′); default: %(default)s")
 
 
 def _show_json(problem, models: dict) -> int:
     """``show --json``: each model's labelled equations, then the recovered reactions (the
     expressions as ``check --json`` writes them)."""
+    from .notation import machine
     from .verify.display import dotted
     doc = {"name": problem.name, "title": problem.title, "source": problem.source,
            "models": {name: {"coordinates": [q.func.__name__ for q in eqs.coordinates],
                              "unknowns": [str(u) for u in eqs.unknowns],
-                             "equations": [{"label": label, "expression": dotted(e)}
+                             "equations": [{"label": label, "expression": dotted(e),
+                                            "machine": machine(e, eqs.coordinates)}
                                            for label, e in zip(eqs.labels, eqs.equations)]}
                       for name, eqs in models.items()},
            "reactions": {}}
@@ -516,23 +532,12 @@ def _show_json(problem, models: dict) -> int:
             where = info.get(str(rname))
             doc["reactions"][str(rname)] = {
                 "expression": dotted(expr),
+                "machine": machine(expr, problem.coordinate_functions
+                                   + tuple(problem.model(problem.reference).coordinates)),
                 "direction": where.direction if where is not None else ""}
         status = EXIT_OK if c.equivalent else EXIT_DISAGREE
     print(_json(doc))
     return status
-
-
-def _dotted(expr, coordinates):
-    """``expr`` with ``q(t), q', q''`` as symbols ``q``, ``qdot``, ``qddot``, which sympy prints
-    with dots (``\\dot{q}`` in LaTeX)."""
-    import sympy as sp
-    from .equations import state_symbols, to_plain
-    rules = {}
-    for q in dict.fromkeys(coordinates):
-        s = state_symbols(q)
-        rules[s.qd] = sp.Symbol(f"{s.name}dot", real=True)
-        rules[s.qdd] = sp.Symbol(f"{s.name}ddot", real=True)
-    return to_plain(expr, tuple(dict.fromkeys(coordinates))).xreplace(rules)
 
 
 def _heading(text: str) -> str:
@@ -587,7 +592,8 @@ def _cmd_report(args) -> int:
     if not sys.stderr.isatty():
         print(f"report: writing the charts and {out / 'report.html'}", file=sys.stderr,
               flush=True)
-    w = write_report([c for _, c in results], out, args.duration)
+    w = write_report([c for _, c in results], out, args.duration,
+                     audience=args.audience)
     if args.json:
         print(_json({"problems": [_summary_row(p, c) for p, c in results],
                      "files": {"html": str(w.html), "markdown": str(w.markdown),

@@ -21,6 +21,7 @@ Example
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Mapping, Sequence
@@ -553,13 +554,40 @@ class EquationSet:
         order = np.argsort(w2.real)
         return np.sqrt(w2.real[order].astype(complex)), modes[:, order].real
 
-    def pretty(self, latex: bool = False) -> str:
+    def pretty(self, latex: bool = False, notation: str = "dots") -> str:
+        """The equations as a worked solution writes them, one ``[label]`` block each:
+        two-dimensional unicode text, or LaTeX with ``latex=True``; rates as dots
+        (``notation="dots"``: ``θ̈``, ``\\ddot{\\theta}``) or primes (``"primes"``)."""
+        from . import notation as _notation
         lines = []
         for label, e in zip(self.labels, self.equations):
-            body = sp.latex(e) + " = 0" if latex else \
-                sp.pretty(sp.Eq(e, 0, evaluate=False), use_unicode=True, wrap_line=False)
+            body = (_notation.latex(e, notation, self.coordinates) + " = 0" if latex else
+                    _notation.pretty(sp.Eq(e, 0, evaluate=False), notation, self.coordinates))
             lines.append(f"[{label}]\n{body}")
         return "\n\n".join(lines)
+
+    def __str__(self) -> str:
+        from . import notation as _notation
+        rows = "; ".join(f"{_notation.text(e, self.coordinates)} = 0" for e in self.equations)
+        return f"{self.name}: {rows}"
+
+    def __repr__(self) -> str:
+        coords = ", ".join(q.func.__name__ for q in self.coordinates)
+        return f"<EquationSet {self.name} in ({coords}): " + str(self).partition(": ")[2] + ">"
+
+    def _repr_latex_(self) -> str:
+        """Jupyter: the equations as an aligned LaTeX block, rates as dots."""
+        from . import notation as _notation
+        rows = r" \\ ".join(
+            f"{_notation.latex(e, 'dots', self.coordinates)} &= 0 "
+            rf"&& \text{{{_latex_text(label)}}}" for label, e in zip(self.labels, self.equations))
+        return rf"$$\begin{{aligned}} {rows} \end{{aligned}}$$"
+
+
+def _latex_text(label: str) -> str:
+    """``label`` safe inside ``\\text{}``."""
+    return re.sub(r"([#$%&_{}\\^~])", lambda m: "\\" + m.group(1)
+                  if m.group(1) not in "\\^~" else " ", label)
 
 
 _ZERO = se.Integer(0)

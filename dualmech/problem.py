@@ -351,3 +351,8 @@ class Problem:
 
     def __repr__(self) -> str:
         return f"<Problem {self.name}: {self.title}>"
+
+    def _repr_html_(self) -> str:
+        """Jupyter: the problem's card (symbols, models, equations typeset)."""
+        from .jupyter import problem_html
+        return problem_html(self)

@@ -1,9 +1,11 @@
-"""Every notebook in notebooks/ runs from top to bottom without an error (nbclient).
+"""Every notebook in notebooks/ runs from top to bottom without an error (nbclient), and is
+stored with its outputs so that it reads online without running.
 
-Each notebook derives its problem both ways, compares them, recovers the reactions,
-simulates, and shows a work-precision chart or a stability finding; the outputs checked here
-are the ones a reader relies on (verdicts, the detected breaks), not the pictures.  The
-notebooks are kept small: the whole file runs in well under a minute on one core.
+Each notebook is teaching material: markdown with the mathematics, a sketch of the system
+(matplotlib), the problem and its comparison shown with rich display, simulation and a
+work-precision chart or a stability finding, and questions to try.  The outputs checked here
+are the ones a reader relies on (verdicts, the detected breaks, the sketch).  The notebooks
+are kept small: each runs in seconds.
 """
 from pathlib import Path
 
@@ -25,6 +27,10 @@ EXPECTED = {
     "pendulum_dae": ["all derivations agree", "|g| ~ t^", "largest difference"],
     "kane_toy_car": ["all derivations agree", "`kane` disagrees with", "cos(theta(t))**2"],
 }
+#: The notebooks written as teaching material (sketch, typeset comparison, questions to try);
+#: kane_toy_car is the sympy.mechanics interop walk-through and keeps its own form.
+TEACHING = {"toy_car", "falling_container", "block_on_wedge", "pendulum_on_mass",
+            "mobile_robot", "pendulum_dae"}
 
 
 def _text(cell) -> str:
@@ -50,6 +56,26 @@ def test_notebook_runs_and_shows_its_findings(path):
     text = "".join(_text(c) for c in book.cells if c.cell_type == "code")
     for phrase in EXPECTED[path.stem]:
         assert phrase in text, f"{path.name} does not show {phrase!r}"
+    if path.stem not in TEACHING:
+        return
     images = sum("image/png" in o.get("data", {}) for c in book.cells if c.cell_type == "code"
                  for o in c.get("outputs", []))
-    assert images == (1 if any("work_precision" in c.source for c in book.cells) else 0)
+    # the sketch of the system, and the work-precision chart where there is one
+    assert images == 1 + any("work_precision" in c.source for c in book.cells)
+    html = "".join(o.get("data", {}).get("text/html", "") for c in book.cells
+                   if c.cell_type == "code" for o in c.get("outputs", []))
+    assert "<math" in html                                  # the comparison, typeset
+    assert "Derivative(" not in text and "(t)" not in html
+
+
+@pytest.mark.parametrize("path", [p for p in NOTEBOOKS if p.stem in TEACHING],
+                         ids=[p.stem for p in NOTEBOOKS if p.stem in TEACHING])
+def test_notebook_is_teaching_material_stored_with_outputs(path):
+    book = nbformat.read(path, as_version=4)
+    code = [c for c in book.cells if c.cell_type == "code"]
+    markdown = "\n".join(c.source for c in book.cells if c.cell_type == "markdown")
+    assert [c.execution_count for c in code] == list(range(1, len(code) + 1))   # run in order
+    assert not any(o.get("output_type") == "error" for c in code for o in c.outputs)
+    stored_png = sum("image/png" in o.get("data", {}) for c in code for o in c.outputs)
+    assert stored_png >= 1                                  # the sketch reads online
+    assert "$" in markdown and "## Questions to try" in markdown

@@ -121,6 +121,11 @@ class Grade:
             lines.append(f"  (decided by the {self.method}; {self.problem}, {self.quantity})")
         return "\n".join(lines)
 
+    def _repr_html_(self) -> str:
+        """Jupyter: the verdict in colour, the summary and the smallest edit."""
+        from ..jupyter import grade_html
+        return grade_html(self)
+
     def to_dict(self) -> dict:
         return {"problem": self.problem, "quantity": self.quantity, "kind": self.kind,
                 "answer": self.answer, "status": self.status, "right": self.right,

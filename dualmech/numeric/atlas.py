@@ -233,19 +233,35 @@ def _chart_singularities(results, stem: Path) -> list[Path]:
     return save(fig, stem)
 
 
+#: a constraint residual at or below this (in SI units, scenes of order 1 m) is rounding: a
+#: thousand units in the last place of a number of order one
+ROUNDING = 1e3 * float(np.finfo(float).eps)
+
+
 def _chart_drift(d, stem: Path) -> list[Path]:
     from .charts import panels, save
     fig, (ax,) = panels(1, f"{d.problem}: constraint drift of {d.model}, {d.method} at rtol "
                         f"{d.rtol:g}", height=3.2)
+    flat = []
     for k, g in d.residual.items():
         t = d.times[k]
         note = " -- stopped early" if k in d.stopped else ""
-        ax.plot(t[1:], np.maximum(np.abs(g[1:]), 1e-17),
+        peak = float(np.abs(g).max()) if g.size else 0.0
+        if peak <= ROUNDING:   # a flat line at the floor says nothing: say it in words
+            flat.append(f"{k}: " + ("exactly zero" if peak == 0 else
+                                    f"at rounding level (max |g| = {peak:.1e} {d.unit})")
+                        + " along the whole run" + note)
+            continue
+        ax.plot(t[1:], np.maximum(np.abs(g[1:]), ROUNDING / 10),
                 label=f"{k} (|g| ~ t^{d.growth[k]:.2f}){note}")
+    if flat:
+        ax.text(0.02, 0.04, "\n".join(flat), transform=ax.transAxes, fontsize="small",
+                va="bottom", bbox={"facecolor": "white", "edgecolor": "0.7"})
     ax.set_yscale("log")
     ax.set_xlabel("t [s]")
     ax.set_ylabel(f"|g| [{d.unit}]")
-    ax.legend(fontsize="small")
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize="small")
     return save(fig, stem)
 
 

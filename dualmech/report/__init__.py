@@ -21,9 +21,9 @@ from pathlib import Path
 from typing import Sequence
 
 from .charts import Chart, trajectory_chart
-from .pages import html_page, markdown_page
+from .pages import AUDIENCES, check_audience, html_page, markdown_page
 
-__all__ = ["write_report", "Written", "Chart", "trajectory_chart"]
+__all__ = ["write_report", "Written", "Chart", "trajectory_chart", "AUDIENCES"]
 
 
 @dataclass
@@ -41,12 +41,15 @@ class Written:
 
 
 def write_report(comparisons: Sequence, out_dir: Path, duration: float = 5.0,
-                 progress: bool = True) -> Written:
+                 progress: bool = True, audience: str = "teachers") -> Written:
     """Draw every problem's chart and write ``out_dir/report.md`` and ``out_dir/report.html``.
 
     ``duration`` is the longest simulated span in seconds; each chart stops earlier where
-    its scene ends.  Raises ``OSError`` when ``out_dir`` cannot be written.
+    its scene ends.  ``audience`` is ``"teachers"`` (why each wrong printed answer is wrong,
+    and the full text report) or ``"students"`` (verdicts only, corrections hidden: a page
+    to hand out).  Raises ``OSError`` when ``out_dir`` cannot be written.
     """
+    check_audience(audience)
     if not duration > 0:
         raise ValueError(f"`duration` must be positive, got {duration!r}.")
     out = Path(out_dir)
@@ -58,7 +61,7 @@ def write_report(comparisons: Sequence, out_dir: Path, duration: float = 5.0,
                        label=lambda c: c.problem.name):
         charts[c.problem.name] = trajectory_chart(c.problem, out, duration)
     md = out / "report.md"
-    md.write_text(markdown_page(comparisons, charts, duration))
+    md.write_text(markdown_page(comparisons, charts, duration, audience), encoding="utf-8")
     page = out / "report.html"
-    page.write_text(html_page(comparisons, charts, out, duration), encoding="utf-8")
+    page.write_text(html_page(comparisons, charts, out, duration, audience), encoding="utf-8")
     return Written(md, page, charts)

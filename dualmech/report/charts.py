@@ -7,7 +7,10 @@ leaves its declared range or a one-sided contact would have to pull) and draws
 * one panel per unit of the coordinates (lengths in m, angles in rad, ...), one per unit of
   the reactions (forces in N, torques in N m), each axis labelled with its unit;
 * curves that coincide (to 1e-9 of the panel's scale) once, the legend naming all of them;
-* reactions that stay zero along the whole motion not drawn, but named under the chart.
+* reactions that stay zero along the whole motion, and curves that stay constant, not drawn
+  but said in words on their panel ("identically zero along the whole motion: ...").
+
+The notes (:attr:`Chart.notes`) are the chart's caption; the page prints them once, under it.
 
 It returns a :class:`Chart` with the paths and the notes, or the reason it could not draw.
 
@@ -44,6 +47,11 @@ class Chart:
     notes: list = field(default_factory=list)
     error: str = ""
     span: tuple = ()
+
+    def _repr_html_(self) -> str:
+        """Jupyter: the picture and its one caption."""
+        from ..jupyter import chart_html
+        return chart_html(self)
 
 
 def group_curves(names, values, scale: float) -> list[list[str]]:
@@ -92,23 +100,32 @@ def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400
     zero = [k for k, v in reactions.items() if float(np.abs(v).max()) <= floor]
     if zero:
         chart.notes.append(f"{', '.join(zero)} = 0 along the whole motion (not drawn)")
+
     forces = _panels([(k, v, rinfo[k].dimension if k in rinfo else None)
                       for k, v in reactions.items() if k not in zero], _unit)
     plt = pyplot()
-    count = len(coords) + len(forces)
-    fig, axes = plt.subplots(count, 1, figsize=(8, 2.4 * count + 0.8), sharex=True,
+    panels = list(coords.items()) + list(forces.items())
+    if zero and not forces:
+        panels.append(("N", []))          # a panel that says the reactions are all zero
+    count = len(panels)
+    fig, axes = plt.subplots(count, 1, figsize=(8, 2.4 * count + 0.6), sharex=True,
                              squeeze=False)
     axes = list(axes[:, 0])
     title = f"{problem.name}: {problem.title}"
     if not reactions:
         title += " (no reaction unknowns)"
     fig.suptitle(title, fontsize="medium")
-    for ax, (u, curves) in zip(axes, list(coords.items()) + list(forces.items())):
-        _draw(ax, u, curves, traj.t, chart)
+    for i, (ax, (u, curves)) in enumerate(zip(axes, panels)):
+        said = _draw(ax, u, curves, traj.t, chart)
+        if zero and i == len(coords) + max(len(forces), 1) - 1:
+            said.append("identically zero along the whole motion: " + ", ".join(zero))
+        if said:
+            ax.text(0.5, 0.5, "\n".join(said), transform=ax.transAxes, ha="center",
+                    va="center", fontsize="small",
+                    bbox={"facecolor": "white", "edgecolor": "0.7", "alpha": 0.9})
     axes[-1].set_xlabel("t [s]")
-    notes = [n[0].upper() + n[1:] + "." for n in chart.notes]
-    fig.text(0.01, 0.005, "\n".join(notes), fontsize="x-small", va="bottom", wrap=True)
-    fig.tight_layout(rect=(0, 0.025 + 0.028 * len(notes) * 3.2 / fig.get_figheight(), 1, 1))
+    axes[-1].set_xlim(span.t0, span.t_end)
+    fig.tight_layout()
     chart.paths = save(fig, Path(out_dir) / f"{problem.name}_reactions", tight=False)
     return chart
 
@@ -119,18 +136,31 @@ def _unit(dimension) -> str:
     return "rad" if dimension == ANGLE else unit(dimension)
 
 
-def _draw(ax, u: str, curves, t, chart: Chart) -> None:
+def _draw(ax, u: str, curves, t, chart: Chart) -> list[str]:
+    """Draw the curves of one panel; return what the panel must say in words instead of
+    drawing it (curves that stay constant along the whole motion)."""
     names = [n for n, _ in curves]
     values = [np.asarray(v, dtype=float) for _, v in curves]
-    scale = max(float(np.abs(v).max()) for v in values) or 1.0
+    scale = max((float(np.abs(v).max()) for v in values), default=0.0) or 1.0
+    kind = _KIND.get(u, "value")
+    ax.set_ylabel(f"{kind} [{u}]")
+    said, drawn = [], 0
     for group in group_curves(names, values, scale):
         v = values[names.index(group[0])]
         label = group[0] if len(group) == 1 else f"{' = '.join(group)} (identical)"
         if len(group) > 1:
             chart.notes.append(f"{' and '.join(group)} coincide along the whole motion "
                                "(drawn once)")
+        if np.ptp(v) <= SAME * scale:      # a flat line: say its value instead
+            said.append(f"{' = '.join(group)} = {v[0]:.4g} {u}, constant along the whole "
+                        "motion")
+            chart.notes.append(f"{' = '.join(group)} stays at {v[0]:.4g} {u} (not drawn)")
+            continue
         ax.plot(t, v, label=label, linewidth=1.3)
-    kind = _KIND.get(u, "value")
-    ax.set_ylabel(f"{kind} [{u}]")
+        drawn += 1
     ax.grid(True, alpha=0.3)
-    ax.legend(loc="best", fontsize="small")
+    if drawn:
+        ax.legend(loc="best", fontsize="small")
+    else:
+        ax.set_yticks([])
+    return said

@@ -5,7 +5,13 @@ embedded as PNG data, styling is a few lines of CSS, and there is no script.  Bo
 the summary table (verdict, method, time, reactions, printed answers per problem), then per
 problem: the verdict line, the equations of motion of the reference model, the reactions
 recovered from the direct form, every printed answer with its judgement, and the chart with
-its notes (identical curves, zero reactions, why the simulation stops where it does).
+its notes (identical curves, zero reactions, why the simulation stops where it does) as its
+one caption.  The summary links to each problem's section; sources are named by course
+(:mod:`dualmech.sources`).
+
+Two audiences: ``"teachers"`` see why each wrong printed answer is wrong (typeset) and the full
+text report; ``"students"`` see which printed answers are right and which are wrong, with the
+corrections left for them to find.
 """
 from __future__ import annotations
 
@@ -16,8 +22,21 @@ from pathlib import Path
 import sympy as sp
 
 from . import mathml
+from ..sources import source_name
 
-__all__ = ["markdown_page", "html_page", "summary_rows", "SUMMARY_HEADERS"]
+__all__ = ["markdown_page", "html_page", "summary_rows", "SUMMARY_HEADERS", "AUDIENCES",
+           "check_audience"]
+
+#: who a page is for: teachers see the corrections, students only the verdicts
+AUDIENCES = ("teachers", "students")
+
+
+def check_audience(audience: str) -> str:
+    """``audience`` if it is one of :data:`AUDIENCES`, else a ``ValueError`` naming them."""
+    if audience not in AUDIENCES:
+        raise ValueError(f"`audience` must be one of {', '.join(AUDIENCES)}; got "
+                         f"{audience!r}.")
+    return audience
 
 SUMMARY_HEADERS = ("problem", "dof", "equivalent", "method", "seconds", "reactions",
                    "printed answers")
@@ -70,29 +89,59 @@ def _verdict(c) -> str:
     return line() if callable(line) else str(c).splitlines()[0]
 
 
-def markdown_page(comparisons, charts: dict, duration: float) -> str:
+def _why_text(p) -> str:
+    return "" if p.verdict == "correct" else p.detail
+
+
+def markdown_page(comparisons, charts: dict, duration: float,
+                  audience: str = "teachers") -> str:
+    check_audience(audience)
+    teachers = audience == "teachers"
     ok = sum(1 for c in comparisons if c.equivalent)
-    lines = ["# dualmech report", "",
+    rows = [(f"[{r[0]}](#{r[0]})",) + r[1:] for r in summary_rows(comparisons)]
+    lines = ["# dualmech report" + ("" if teachers else " (for students)"), "",
              f"{ok} of {len(comparisons)} problems: every model agrees with the reference "
              f"model. Charts: up to {duration:g} s of simulated motion, cut where the scene "
-             "ends.", "", _md_table(SUMMARY_HEADERS, summary_rows(comparisons)), ""]
+             "ends." + ("" if teachers else _STUDENTS_NOTE), "",
+             _md_table(SUMMARY_HEADERS, rows), ""]
     for c in comparisons:
         name = c.problem.name
-        lines += [f"## {name}", "", "```", str(c), "```", ""]
+        lines += [f"## {name}", "", f"*{c.problem.title}* -- {source_name(c.problem.source)}",
+                  "", f"**Verdict:** {_verdict(c)}", ""]
+        if teachers:
+            lines += ["```", str(c), "```", ""]
         pubs = _published(c)
         if pubs:
+            headers = ("answer", "where", "verdict") + (("why",) if teachers else ())
             lines += ["Printed answers:", "",
-                      _md_table(("answer", "where", "verdict", "why"),
-                                [(p.label, p.where, p.verdict.upper(),
-                                  "" if p.verdict == "correct" else p.detail) for p in pubs]),
-                      ""]
+                      _md_table(headers, [(p.label, _where(p, teachers), p.verdict.upper())
+                                          + ((_why_text(p),) if teachers else ())
+                                          for p in pubs]), ""]
         chart = charts.get(name)
         if chart is None or chart.error:
             lines += [f"No chart: {chart.error if chart else 'not drawn'}", ""]
         else:
             lines += [f"![{name}: simulated motion and reactions]({name}_reactions.png)", ""]
-            lines += [f"- {n}" for n in chart.notes] + [""]
+            lines += ["*" + _caption(chart) + "*", ""]
     return "\n".join(lines)
+
+
+_STUDENTS_NOTE = (" Each printed answer of the source is marked right or wrong; finding what "
+                  "is wrong in a wrong one is left to you.")
+
+
+def _caption(chart) -> str:
+    """The chart's notes as one caption (sentences)."""
+    notes = [n + "." for n in chart.notes]
+    if notes:
+        notes[0] = notes[0][0].upper() + notes[0][1:]
+    return " ".join(notes)
+
+
+def _where(p, teachers: bool) -> str:
+    """Where the answer is printed; for students only the place (the source's own remark
+    after the colon may give the correction away)."""
+    return p.where if teachers else p.where.split(":")[0]
 
 
 _CSS = """
@@ -103,9 +152,13 @@ th, td { border: 1px solid #bbb; padding: 0.25em 0.6em; vertical-align: top; tex
 th { background: #eee; }
 td.yes, td.correct { color: #176317; } td.NO, td.wrong { color: #a31515; font-weight: bold; }
 h2 { border-bottom: 1px solid #ccc; margin-top: 2.2em; }
-math { font-size: 1.05em; margin: 0.4em 0; overflow-x: auto; }
+math { font-size: 1.05em; }
+math[display="block"] { margin: 0.4em 0; padding: 0.2em 0; overflow-x: auto;
+                        overflow-y: hidden; }
 img { max-width: 100%; }
 .note { color: #555; font-size: 0.92em; }
+figure { margin: 1em 0; } figcaption { color: #555; font-size: 0.92em; }
+nav.toc a { text-decoration: none; }
 code, pre { font-size: 0.88em; }
 """
 
@@ -113,15 +166,6 @@ code, pre { font-size: 0.88em; }
 def _cell(value, cls: str = "") -> str:
     attr = f' class="{html.escape(cls)}"' if cls else ""
     return f"<td{attr}>{html.escape(str(value))}</td>"
-
-
-def _table(headers, rows, classes=None) -> str:
-    out = ["<table><tr>" + "".join(f"<th>{html.escape(h)}</th>" for h in headers) + "</tr>"]
-    for i, r in enumerate(rows):
-        cls = classes[i] if classes else [""] * len(r)
-        out.append("<tr>" + "".join(_cell(v, k) for v, k in zip(r, cls)) + "</tr>")
-    out.append("</table>")
-    return "\n".join(out)
 
 
 def _equations_html(c) -> list[str]:
@@ -132,8 +176,10 @@ def _equations_html(c) -> list[str]:
     except Exception as exc:  # noqa: BLE001
         return [f"<p class='note'>no equations: {html.escape(str(exc))}</p>"]
     out.append(f"<h3>Equations of motion ({html.escape(ref.name)})</h3>")
+    limits = getattr(c, "limits", None)
     for label, e in zip(ref.labels, ref.equations):
-        out.append(f"<p class='note'>{html.escape(label)}</p>{mathml.equation(e, 0)}")
+        out.append(f"<p class='note'>{html.escape(label)}</p>"
+                   f"{mathml.equation(_shortest(e, limits), 0)}")
     reactions = _reactions(c)
     if reactions:
         directions = {r.name: r.direction for r in p.reactions}
@@ -147,46 +193,96 @@ def _equations_html(c) -> list[str]:
     return out
 
 
+def _shortest(expr, limits=None):
+    """``expr`` or its tidied form (:func:`~dualmech.verify.display.tidy`, within the display
+    budget), whichever is shorter: ``m q1''(2 sin^2 a + 2 cos^2 a)/2`` becomes ``m q1''``."""
+    from ..verify.display import OverBudget, tidy
+    try:
+        short = tidy(expr, limits)
+    except OverBudget:
+        return expr
+    return short if sp.count_ops(short) < sp.count_ops(expr) else expr
+
+
+def _why_html(p) -> str:
+    """Why a printed answer is wrong: its sentences, expressions typeset."""
+    if p.verdict == "correct":
+        return ""
+    parts = getattr(p, "parts", None)
+    if parts is None:
+        return html.escape(p.detail)
+    out = []
+    for sentence in parts:
+        out.append("".join(html.escape(x) if isinstance(x, str) else mathml.inline(x)
+                           for x in sentence))
+    return "; ".join(out)
+
+
 def _chart_html(name: str, chart, out_dir: Path) -> list[str]:
     if chart is None or chart.error:
         why = chart.error if chart else "not drawn"
         return [f"<p class='note'>No chart: {html.escape(why)}</p>"]
     png = Path(out_dir) / f"{name}_reactions.png"
     data = base64.b64encode(png.read_bytes()).decode("ascii")
-    out = [f'<img alt="{html.escape(name)}: simulated motion and reactions" '
-           f'src="data:image/png;base64,{data}">']
-    out += [f"<p class='note'>{html.escape(n)}</p>" for n in chart.notes]
+    return [f'<figure><img alt="{html.escape(name)}: simulated motion and reactions" '
+            f'src="data:image/png;base64,{data}">'
+            f"<figcaption>{html.escape(_caption(chart))}</figcaption></figure>"]
+
+
+def _published_html(c, teachers: bool) -> list[str]:
+    pubs = _published(c)
+    if not pubs:
+        return []
+    headers = ("answer", "where", "verdict") + (("why",) if teachers else ())
+    out = ["<h3>Printed answers</h3>", "<table><tr>"
+           + "".join(f"<th>{h}</th>" for h in headers) + "</tr>"]
+    for p in pubs:
+        cells = [_cell(p.label), _cell(_where(p, teachers)),
+                 _cell(p.verdict.upper(), p.verdict)]
+        if teachers:
+            cells.append(f"<td>{_why_html(p)}</td>")
+        out.append("<tr>" + "".join(cells) + "</tr>")
+    out.append("</table>")
     return out
 
 
-def html_page(comparisons, charts: dict, out_dir: Path, duration: float) -> str:
+def html_page(comparisons, charts: dict, out_dir: Path, duration: float,
+              audience: str = "teachers") -> str:
+    check_audience(audience)
+    teachers = audience == "teachers"
     ok = sum(1 for c in comparisons if c.equivalent)
     rows = summary_rows(comparisons)
-    classes = [["", "", r[2], "", "", "", ""] for r in rows]
+    head = "<table><tr>" + "".join(f"<th>{html.escape(h)}</th>" for h in SUMMARY_HEADERS) \
+        + "</tr>"
+    table = [head]
+    for r in rows:
+        link = f'<td><a href="#{html.escape(r[0])}">{html.escape(r[0])}</a></td>'
+        table.append("<tr>" + link + "".join(_cell(v, r[2] if i == 2 else "")
+                                             for i, v in enumerate(r[1:], 1)) + "</tr>")
+    table.append("</table>")
+    title = "dualmech report" + ("" if teachers else " (for students)")
     parts = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
-             "<title>dualmech report</title>", f"<style>{_CSS}</style></head><body>",
-             "<h1>dualmech report</h1>",
+             f"<title>{title}</title>", f"<style>{_CSS}</style></head><body>",
+             f"<h1>{title}</h1>",
              f"<p>{ok} of {len(comparisons)} problems: every model agrees with the reference "
              f"model. Each problem was written twice (Newton&ndash;Euler and Lagrange); the "
              f"charts show up to {duration:g} s of simulated motion, cut where the scene "
-             "ends.</p>", _table(SUMMARY_HEADERS, rows, classes)]
+             "ends." + ("" if teachers else html.escape(_STUDENTS_NOTE)) + "</p>",
+             '<nav class="toc">', "\n".join(table), "</nav>"]
     for c in comparisons:
         name = c.problem.name
         parts.append(f'<h2 id="{html.escape(name)}">{html.escape(name)}: '
                      f"{html.escape(c.problem.title)}</h2>")
-        parts.append(f"<p class='note'>source: {html.escape(c.problem.source)}</p>")
+        parts.append(f"<p class='note'>source: {html.escape(source_name(c.problem.source))}"
+                     "</p>")
         parts.append(f"<p><b>Verdict:</b> {html.escape(_verdict(c))}</p>")
         parts += _equations_html(c)
-        pubs = _published(c)
-        if pubs:
-            parts.append("<h3>Printed answers</h3>")
-            parts.append(_table(("answer", "where", "verdict", "why"),
-                                [(p.label, p.where, p.verdict.upper(),
-                                  "" if p.verdict == "correct" else p.detail) for p in pubs],
-                                [["", "", p.verdict, ""] for p in pubs]))
+        parts += _published_html(c, teachers)
         parts.append("<h3>Simulated motion</h3>")
         parts += _chart_html(name, charts.get(name), out_dir)
-        parts.append(f"<details><summary>full report</summary><pre>{html.escape(str(c))}"
-                     "</pre></details>")
+        if teachers:
+            parts.append(f"<details><summary>full text report</summary><pre>"
+                         f"{html.escape(str(c))}</pre></details>")
+        parts.append('<p class="note"><a href="#">back to the summary</a></p>')
     parts.append("</body></html>")
     return "\n".join(parts) + "\n"

@@ -18,6 +18,7 @@ import symengine as se
 import sympy as sp
 
 from ..equations import EquationSet, ModelError, Rows
+from ..sources import source_name
 from .display import Budget, OverBudget, dotted, solve_display
 from .explain import Mismatch, explain_model
 from .published import PublishedVerdict, check_published
@@ -165,7 +166,7 @@ class Comparison:
     def __str__(self) -> str:
         pr = self.problem
         ref = pr.model(pr.reference)
-        out = [f"{pr.name}: {pr.title}", f"  source: {pr.source}",
+        out = [f"{pr.name}: {pr.title}", f"  source: {source_name(pr.source)}",
                f"  coordinates: {', '.join(q.func.__name__ for q in ref.coordinates)}",
                f"  verdict: {self.verdict_line()}"]
         for p in self.pairs:
@@ -196,6 +197,14 @@ class Comparison:
                     out.append("              " + v.detail.replace("\n", "\n              "))
         return "\n".join(out)
 
+    def __repr__(self) -> str:
+        return f"<Comparison {self.problem.name}: {self.verdict_line()}>"
+
+    def _repr_html_(self) -> str:
+        """Jupyter: verdict, accelerations, reactions and printed answers, typeset."""
+        from ..jupyter import comparison_html
+        return comparison_html(self)
+
     def to_dict(self) -> dict:
         pr = self.problem
         ref = pr.model(pr.reference)
@@ -219,7 +228,19 @@ class Comparison:
             "points": self.points,
             "false_equal_bound": _json_float(self.bound),
             "dimension_issues": list(self.dimension_issues),
+            "machine": self._machine(),
         }
+
+    def _machine(self) -> dict:
+        """The expressions of :meth:`to_dict` in a form parsers read: ``theta_d``, ``theta_dd``
+        for the rates (the grader's parser and sympy's ``parse_expr`` both take it)."""
+        from ..notation import machine
+        pr = self.problem
+        coords = pr.model(pr.reference).coordinates
+        return {"notation": "q_d = dq/dt, q_dd = d2q/dt2; ** is a power",
+                "eom": [machine(e, coords) for e in pr.model(pr.reference).equations],
+                "accelerations": {k: machine(v, coords) for k, v in self.accelerations.items()},
+                "reactions": {k: machine(v, coords) for k, v in self.reactions.items()}}
 
 
 def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = None) -> Comparison:

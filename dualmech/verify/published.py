@@ -42,14 +42,24 @@ class PublishedVerdict:
         self._detail = detail
 
     @property
-    def detail(self) -> str:
+    def parts(self) -> list[tuple]:
+        """:attr:`detail` as sentences, each a tuple of text and sympy expressions (so a page
+        can typeset the expressions); computed when first read."""
         if callable(self._detail):
             try:
                 self._detail = self._detail()
             except Exception as exc:  # noqa: BLE001 - display must never break a verdict
                 self._detail = f"differs from the derivation ({type(exc).__name__} while " \
                                "explaining)"
-        return self._detail
+        if isinstance(self._detail, str):
+            return [(self._detail,)] if self._detail else []
+        return list(self._detail)
+
+    @property
+    def detail(self) -> str:
+        """Why the answer is wrong, in plain text (primes for rates)."""
+        return "; ".join("".join(x if isinstance(x, str) else dotted(x) for x in sentence)
+                         for sentence in self.parts)
 
     def __repr__(self) -> str:
         return f"PublishedVerdict({self.label!r}, {self.verdict!r})"
@@ -223,8 +233,9 @@ def _published_exprs(problem, pub) -> list:
     return exprs
 
 
-def _detail(problem, pub, which, limits: Budget) -> str:
-    """Say what is wrong with a printed answer (display work, within budget)."""
+def _detail(problem, pub, which, limits: Budget) -> list[tuple]:
+    """Say what is wrong with a printed answer (display work, within budget): sentences of
+    text and expressions.  A difference is shown only between quantities of one dimension."""
     dims = problem.dimensions()
     lines = []
     if "determines" in which:
@@ -236,7 +247,7 @@ def _detail(problem, pub, which, limits: Budget) -> str:
         else:
             why = (f"its {k} equations are dependent or too few for the "
                    + (f"{n} coordinates" if n != 1 else "coordinate"))
-        lines.append(f"the printed set does not determine every acceleration: {why}")
+        lines.append((f"the printed set does not determine every acceleration: {why}",))
     exprs = _published_exprs(problem, pub)
     for j in sorted(x for x in which if isinstance(x, int)):
         what = f"equation {j + 1}" if pub.kind != "expression" else f"component {j + 1}"
@@ -245,7 +256,8 @@ def _detail(problem, pub, which, limits: Budget) -> str:
         issues = audit(pub.printed[j], dims) if pub.kind != "expression" else \
             audit(pub.printed[j] - pub.reference[j], dims)
         if issues:
-            lines.append(f"{what} is dimensionally inconsistent: " + "; ".join(map(str, issues)))
+            lines.append((f"{what} is dimensionally inconsistent: "
+                          + "; ".join(map(str, issues)),))
         shell = None
         if pub.kind != "expression":
             ref = problem.model(problem.reference)
@@ -253,21 +265,28 @@ def _detail(problem, pub, which, limits: Budget) -> str:
                                     problem.parameter_symbols)
             if near is not None:
                 label, alpha, rest = near
-                lines.append(f"{what} is closest to ({alpha}) x [{problem.reference}: {label}];"
-                             f" printed minus that = {dotted(rest)}")
+                lines.append((f"{what} is closest to ", alpha,
+                              f" \u00d7 [{problem.reference}: {label}]")
+                             + (("; printed minus that = ", rest) if not issues else ()))
                 # the derived row vanishes on the motion: a remainder free of accelerations
                 # and reactions is the printed side's value there, with no solve
                 shell = rest
         diff = _on_shell(problem, exprs[j], limits, shell)
-        if diff is not None and len(diff) < 200:
+        if issues and pub.kind == "expression":
+            lines.append((f"{what} and the derivation have different dimensions, so their "
+                          "difference is not shown",))
+        elif issues:
+            lines.append((f"{what} does not follow from the equations of motion (its terms "
+                          "differ in dimension, so its value on the motion is not shown)",))
+        elif diff is not None and len(dotted(diff)) < 200:
             if pub.kind != "expression":
-                lines.append(f"{what} does not follow from the equations of motion: on the "
-                             f"motion its left side equals {diff}, not 0")
+                lines.append((f"{what} does not follow from the equations of motion: on the "
+                              "motion its left side equals ", diff, ", not 0"))
             else:
-                lines.append(f"{what}: printed minus derived = {diff}")
+                lines.append((f"{what}: printed minus derived = ", diff))
         elif not lines or pub.kind == "expression":
-            lines.append(f"{what} differs from the derivation")
-    return "; ".join(lines)
+            lines.append((f"{what} differs from the derivation",))
+    return lines
 
 
 def closest_equation(expr, equations, labels, parameters, max_terms: int = 40):
@@ -321,7 +340,7 @@ def _coefficients(expr) -> dict:
     return out
 
 
-def _on_shell(problem, expr, limits: Budget, same_on_motion=None) -> str | None:
+def _on_shell(problem, expr, limits: Budget, same_on_motion=None):
     """``expr`` on the motion (accelerations and reactions substituted), for display.
 
     ``same_on_motion`` is an expression known to equal ``expr`` on the motion (``expr``
@@ -337,7 +356,7 @@ def _on_shell(problem, expr, limits: Budget, same_on_motion=None) -> str | None:
             expr = other
     if not any(expr.has(a) for a in ref.accelerations) and not (expr.free_symbols & unknowns):
         try:
-            return dotted(tidy(expr, limits))
+            return tidy(expr, limits)
         except OverBudget:
             return None
     try:
@@ -356,6 +375,6 @@ def _on_shell(problem, expr, limits: Budget, same_on_motion=None) -> str | None:
         out = as_expr(expr).xreplace(rules)
         if sp.count_ops(out) > 2000:
             return None
-        return dotted(tidy(out, limits))
+        return tidy(out, limits)
     except (OverBudget, ModelError, ValueError, ZeroDivisionError):
         return None
