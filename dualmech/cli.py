@@ -368,10 +368,14 @@ def _summary(results, markdown: bool = False) -> str:
         verdicts = [p.get("verdict") for p in published if isinstance(p, dict)]
         rows.append((problem.name, _dof(problem), "yes" if c.equivalent else "NO",
                      d.get("method", "?"), f"{float(d.get('seconds', 0.0)):.2f}",
-                     len(d.get("reactions") or {}),
-                     _verdict_counts(verdicts)))
-    return _table(("problem", "dof", "equivalent", "method", "seconds", "reactions",
-                   "published answers"), rows, markdown=markdown)
+                     c.reaction_count_text(), _verdict_counts(verdicts)))
+    table = _table(("problem", "dof", "equivalent", "method", "seconds", "reactions",
+                    "published answers"), rows, markdown=markdown)
+    lonely = sum(len(c.not_cross_checked) for _, c in results)
+    if lonely:
+        table += (f"\n{lonely} reaction(s) not cross-checked (given by one derivation only; "
+                  "`dualmech check NAME` names them)")
+    return table
 
 
 def _verdict_counts(verdicts) -> str:

@@ -19,7 +19,7 @@ import sympy as sp
 
 from ..equations import EquationSet, ModelError
 from .display import Budget, OverBudget, dotted, solve_display
-from .explain import Mismatch, explain_model
+from .explain import Mismatch, explain_model, explain_reaction
 from .published import PublishedVerdict, check_published
 from .sampling import Context
 from .verdicts import Judgement, judge
@@ -122,6 +122,27 @@ class Comparison:
         return method_name(self.judgement.method)
 
     @property
+    def reaction_derivations(self) -> dict:
+        """``{declared reaction: [names of the models that derive it]}``."""
+        out = {r.name: [] for r in self.problem.reactions}
+        for name, m in self.judgement.models.items():
+            for u in m.unknowns:
+                if u.name in out:
+                    out[u.name].append(name)
+        return out
+
+    @property
+    def not_cross_checked(self) -> list[str]:
+        """Declared reactions that fewer than two derivations give: their value rests on one
+        free-body diagram alone, so no comparison could have caught a wrong term in it."""
+        return [n for n, held in self.reaction_derivations.items() if len(held) < 2]
+
+    def reaction_count_text(self) -> str:
+        """``"3"``, or ``"3 (1 not cross-checked)"`` -- the summary tables' cell."""
+        n, k = len(self.problem.reactions), len(self.not_cross_checked)
+        return f"{n} ({k} not cross-checked)" if k else str(n)
+
+    @property
     def bound(self) -> float:
         return max((p.bound for p in self.pairs), default=0.0)
 
@@ -174,12 +195,20 @@ class Comparison:
             out.append("  accelerations:")
             for k, v in self.accelerations.items():
                 out.append(f"    {k}'' = {dotted(v)}")
+        lonely = self.not_cross_checked
         if self.equivalent and self.reactions:
             out.append("  reactions (from the direct form):")
             dirs = self.reaction_directions
             for k, v in self.reactions.items():
                 d = dirs.get(k, "")
-                out.append(f"    {k} = {dotted(v)}" + (f"   [{d}]" if d else ""))
+                out.append(f"    {k} = {dotted(v)}" + (f"   [{d}]" if d else "")
+                           + ("   (NOT CROSS-CHECKED)" if k in lonely else ""))
+        if lonely:
+            held = self.reaction_derivations
+            out.append("  not cross-checked (one derivation only): " + ", ".join(
+                f"{n} ({', '.join(held[n]) or 'no model'})" for n in lonely)
+                + "; a second derivation (a multiplier model or another free-body diagram) "
+                "would catch a wrong term in it")
         for note in self.display_notes:
             out.append(f"  ({note})")
         if self.dimension_issues:
@@ -211,6 +240,8 @@ class Comparison:
             "accelerations": {k: dotted(v) for k, v in self.accelerations.items()},
             "reactions": {k: dotted(v) for k, v in self.reactions.items()},
             "reaction_directions": self.reaction_directions,
+            "reaction_derivations": self.reaction_derivations,
+            "reactions_not_cross_checked": self.not_cross_checked,
             "display_notes": list(self.display_notes),
             "published": [v.to_dict() for v in self.published],
             "mismatches": [m.to_dict() for m in self.mismatches],
@@ -390,12 +421,11 @@ def _pairs(j: Judgement, reference: str, ctx: Context, seed: int) -> list[PairRe
         for r in bad:
             others = ", ".join(r.agreeing) if r.agreeing else None
             for suspect in r.suspects:
-                rest = [x for x in r.suspects + r.agreeing if x != suspect]
-                mism.append(Mismatch(suspect, f"reaction {r.name}",
-                                     f"{r.name} differs from the value "
-                                     f"{', '.join(f'`{x}`' for x in rest)} give"
-                                     + ("" if len(rest) > 1 else "s")
-                                     + (f" ({others} agree)" if others else "")))
+                rest = tuple(x for x in r.agreeing + r.suspects if x != suspect)
+                mm = explain_reaction(r.name, suspect, rest, j, ctx, seed)
+                if others:
+                    mm.reason += f" ({others} agree)"
+                mism.append(mm)
         ok = motion_ok and not bad
         out.append(PairResult(holders[0], ", ".join(holders[1:]), ok, j.method, j.points,
                               bound if ok else 0.0, j.seconds, mism, "reactions",
@@ -436,7 +466,8 @@ def compare_models(reference: EquationSet, candidate: EquationSet, *, points: in
             not j.fault_of(rname) else explain_model(rname, j, (cname,), ctx, seed)
     elif not j.equivalent:
         mism = [Mismatch(candidate.name, f.model, f.detail or f.kind) for f in j.faults] or \
-            [Mismatch(candidate.name, f"reaction {r.name}", "differs")
+            [Mismatch(candidate.name, f"reaction {r.name}",
+                      f"{r.name} differs from the value `{rname}` gives")
              for r in j.reaction_faults]
     for m in mism:
         if m.model == cname:
@@ -458,8 +489,9 @@ def compare_reactions(reference: EquationSet, first: EquationSet, second: Equati
     wanted = {str(u) for u in names}
     bad = [r for r in j.reaction_faults if r.name in wanted]
     undetermined = [f for f in j.faults if f.kind == "reactions"]
-    mism = [Mismatch(second.name, f"reaction {r.name}",
-                     f"{r.name} differs from the value `{first.name}` gives") for r in bad]
+    mism = [explain_reaction(r.name, second.name, (first.name,), j, ctx, seed) if explain
+            else Mismatch(second.name, f"reaction {r.name}",
+                          f"{r.name} differs from the value `{first.name}` gives") for r in bad]
     mism += [Mismatch(f.model, "reactions", f.detail) for f in undetermined]
     ok = not bad and not undetermined
     return PairResult(first.name, second.name, ok, j.method, j.points,
