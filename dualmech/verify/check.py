@@ -18,14 +18,15 @@ import symengine as se
 import sympy as sp
 
 from ..equations import EquationSet, ModelError
-from .display import Budget, OverBudget, dotted, solve_display
+from .display import Budget, OverBudget, budget, dotted, solve_display
 from .explain import Mismatch, explain_model, explain_reaction
 from .published import PublishedVerdict, check_published
 from .sampling import Context
 from .verdicts import Judgement, judge
 
 __all__ = ["Comparison", "PairResult", "claims_of", "compare", "compare_models", "compare_reactions",
-           "reaction_pairs", "recover_reactions", "METHOD_NAMES", "method_name"]
+           "reaction_pairs", "recover_reactions", "solve_with_static", "METHOD_NAMES",
+           "method_name"]
 
 METHOD_NAMES = {
     "exact": "exact rational-point test",
@@ -108,6 +109,7 @@ class Comparison:
         self.limits = limits or Budget()
         self.display_notes: list[str] = []
         self._acc = self._reac = None
+        self._static: dict = {}
 
     @property
     def reaction_directions(self) -> dict:
@@ -155,14 +157,22 @@ class Comparison:
         if self._acc is None:
             ref = self.problem.model(self.problem.reference)
             try:
-                sol = solve_display(ref, self.limits)
+                static, sol = solve_with_static(ref, self.limits)
+                self._static = {q.func.__name__: v for q, v in static.items()}
                 self._acc = {q.func.__name__: sol[a]
-                             for q, a in zip(ref.coordinates, ref.accelerations)}
+                             for q, a in zip(ref.coordinates, ref.accelerations) if a in sol}
             except (OverBudget, ModelError, ValueError, ZeroDivisionError) as exc:
                 self._acc = {}
                 self.display_notes.append(f"accelerations not solved symbolically ({exc}); "
                                           "the equations above are M q'' = f")
         return self._acc
+
+    @property
+    def static(self) -> dict:
+        """``{coordinate: expression}`` of the coordinates fixed by static rows (a massless
+        body's balance, no acceleration in it), solved for display; ``{}`` when none."""
+        self.accelerations
+        return self._static
 
     @property
     def reactions(self) -> dict:
@@ -195,6 +205,8 @@ class Comparison:
             out.append("  accelerations:")
             for k, v in self.accelerations.items():
                 out.append(f"    {k}'' = {dotted(v)}")
+            for k, v in self.static.items():
+                out.append(f"    {k} = {dotted(v)}   (static row: no inertia in {k})")
         lonely = self.not_cross_checked
         if self.equivalent and self.reactions:
             out.append("  reactions (from the direct form):")
@@ -238,6 +250,7 @@ class Comparison:
             "seconds": self.seconds,
             "eom": [dotted(e) for e in ref.equations],
             "accelerations": {k: dotted(v) for k, v in self.accelerations.items()},
+            "static": {k: dotted(v) for k, v in self.static.items()},
             "reactions": {k: dotted(v) for k, v in self.reactions.items()},
             "reaction_directions": self.reaction_directions,
             "reaction_derivations": self.reaction_derivations,
@@ -526,10 +539,53 @@ def recover_reactions(problem, limits: Budget | None = None) -> dict:
         m = _drop_zero_rows(problem.in_reference_coordinates(m))
         if not m.is_square:
             continue
-        sol = solve_display(m, limits)
+        _, sol = solve_with_static(m, limits)
         for u in m.unknowns:
             out.setdefault(u.name, sol[u])
     return out
+
+
+def solve_with_static(eqs: EquationSet, limits: Budget | None = None) -> tuple[dict, dict]:
+    """``(static, solution)`` of a square ``eqs`` for display.
+
+    ``solution`` maps accelerations and reactions to expressions (as
+    :func:`~dualmech.verify.display.solve_display`).  When the system is singular because
+    some rows hold no acceleration and no reaction (the balance of a massless body) and some
+    coordinates have no inertia, those static rows are solved for those coordinates first
+    (``static``: ``{q(t): expression}``), substituted into the other rows, and the rest is
+    solved; the static coordinates' accelerations are then not in ``solution``.
+
+    >>> from dualmech.problems import get
+    >>> static, sol = solve_with_static(get("copying_machine").model("lagrange"))
+    >>> static
+    {theta(t): L*k2*y(t)/(L**2*k2 + a**2*k1)}
+    """
+    try:
+        return {}, solve_display(eqs, limits)
+    except (ValueError, ZeroDivisionError) as exc:
+        singular = exc
+    A, _ = eqs.matrix()
+    n = len(eqs.coordinates)
+    static_rows = [i for i in range(A.rows) if all(A[i, j] == 0 for j in range(A.cols))]
+    massless = [q for j, q in enumerate(eqs.coordinates)
+                if all(A[i, j] == 0 for i in range(A.rows))]
+    if not static_rows or len(static_rows) != len(massless) or len(massless) == n:
+        raise singular
+    plain = {q: sp.Symbol(f"_{q.func.__name__}_static") for q in massless}
+    rows = [eqs.equations[i].xreplace(plain) for i in static_rows]
+    if any(r.has(sp.Derivative) for r in rows):
+        raise singular
+    with budget((limits or Budget()).remaining()):
+        found = sp.solve(rows, list(plain.values()), dict=True)
+    if len(found) != 1 or set(found[0]) != set(plain.values()):
+        raise ValueError(f"the static rows do not fix {[q.func.__name__ for q in massless]} "
+                         "uniquely; not solved symbolically")
+    static = {q: sp.factor(found[0][plain[q]]) for q in massless}
+    keep = [i for i in range(len(eqs.equations)) if i not in static_rows]
+    reduced = EquationSet(eqs.name, [q for q in eqs.coordinates if q not in static],
+                          [eqs.equations[i].subs(static).doit() for i in keep], eqs.unknowns,
+                          [eqs.labels[i] for i in keep])
+    return static, solve_display(reduced, limits)
 
 
 def _drop_zero_rows(m: EquationSet) -> EquationSet:
