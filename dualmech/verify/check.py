@@ -278,6 +278,7 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
     True
     """
     _check_points(points)
+    _check_problem(problem)
     t0 = time.perf_counter()
     problem.validate()
     models = problem.models()
@@ -288,16 +289,40 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
               claims=claims_of(problem))
     pairs = _pairs(j, problem.reference, ctx, seed)
     limits = limits or Budget()
-    if j.equivalent:
+    try:
+        printed = problem.published()
+    except (ValueError, TypeError, ArithmeticError, ModelError, KeyError) as exc:
+        # the printed answers are built from a model that is wrong or singular here
+        printed = None
+        published = [PublishedVerdict(
+            "printed answers", "", "unchecked",
+            f"NOT CHECKED: `published()` failed ({type(exc).__name__}: {exc}); it builds "
+            "them from the models, so fix the models first", "none")]
+    if printed is None:
+        pass
+    elif j.equivalent:
         published = check_published(problem, points=points, seed=seed, context=ctx,
                                     limits=limits, claims=claims_of(problem))
     else:
         published = [PublishedVerdict(p.label, p.where, "unchecked",
                                       "the derivations disagree; fix them before judging "
-                                      "printed answers", "none") for p in problem.published()]
+                                      "printed answers", "none") for p in printed]
     issues = list(problem.dimension_issues()) + _reaction_dimension_issues(problem)
     return Comparison(problem, j, pairs, published, issues, time.perf_counter() - t0, points,
                       limits)
+
+
+def _check_problem(problem) -> None:
+    """A string (a catalogue name) or anything else that is not a problem: a TypeError that
+    shows the fix.  ``compare`` does not look names up itself: the catalogue sits above the
+    verifier in the pipeline, and a name may also be a file or ``module:Class``."""
+    from ..problem import Problem
+    if isinstance(problem, str):
+        raise TypeError(f"`problem` must be a Problem, got the string {problem[:60]!r}; "
+                        f"look it up first: compare(dualmech.problems.get({problem[:60]!r})).")
+    if not isinstance(problem, Problem):
+        raise TypeError(f"`problem` must be a Problem (dualmech.problem.Problem), got "
+                        f"{type(problem).__name__}.")
 
 
 def claims_of(problem) -> dict:

@@ -82,12 +82,24 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
     unknowns = list(dict.fromkeys(u for nm in solvers for u in mapped[nm].unknowns))
     n = len(coords)
     items = []
-    for pub in pubs:
-        es = [_plain(e, coords) for e in _published_exprs(problem, pub)]
-        motion = _motion_system(problem, pub, coords, unknowns) if pub.kind == "motion" \
-            else None
-        items.append((pub, es, motion))
     symbols = tuple(ctx.unknown_symbols(unknowns))
+    faulty: dict = {}     # a printed answer that cannot be evaluated: reported on it alone
+    known = set(ctx.base) | set(ctx.qdd) | set(symbols)
+    for pub in pubs:
+        try:
+            es = [_plain(e, coords) for e in _published_exprs(problem, pub)]
+            motion = _motion_system(problem, pub, coords, unknowns) if pub.kind == "motion" \
+                else None
+        except (ValueError, TypeError, KeyError, ZeroDivisionError) as exc:
+            faulty[pub.label] = f"could not be read: {type(exc).__name__}: {exc}"
+            continue
+        stray = sorted({str(x) for e in es for x in e.free_symbols} - {str(x) for x in known})
+        if stray:
+            faulty[pub.label] = (f"uses undeclared symbol(s) {', '.join(stray)}: declare them "
+                                 "as parameters of the problem or write the answer with its "
+                                 "symbols")
+            continue
+        items.append((pub, es, motion))
     claims = claims or {}
     every = [System.of(mapped[nm], coords) for nm in mapped if nm not in solvers]
     deps = shared_manifold(systems + every, [nm in claims for nm in solvers] +
@@ -105,11 +117,25 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
         for group, dependents in groups:
             if not group:
                 continue
-            g, method = _evaluate(group, systems, solvers, mapped, ctx, symbols, dependents,
-                                  claims, n, points, seed, bad)
+            try:
+                g, method = _evaluate(group, systems, solvers, mapped, ctx, symbols,
+                                      dependents, claims, n, points, seed, bad)
+            except (ValueError, TypeError, ZeroDivisionError) as exc:
+                for pub, _, _ in group:
+                    faulty[pub.label] = f"could not be evaluated: {type(exc).__name__}: {exc}"
+                continue
             good = max(good, g)
     verdicts = []
+    for pub in pubs:
+        if pub.label in faulty:
+            verdicts.append(PublishedVerdict(pub.label, pub.where, "unchecked",
+                                             "NOT CHECKED, the printed answer "
+                                             + faulty[pub.label], "none"))
+    by_label = {v.label: v for v in verdicts}
+    verdicts = []
     for pub, es, motion in items:
+        if pub.label in by_label:
+            continue
         if isinstance(motion, str):
             verdicts.append(PublishedVerdict(pub.label, pub.where, "wrong", motion, method))
         elif pub.label not in bad:
@@ -124,7 +150,9 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
                 pub.label, pub.where, "wrong",
                 lambda pub=pub, which=bad[pub.label]: _detail(problem, pub, which, limits),
                 method))
-    return verdicts
+    judged = {v.label: v for v in verdicts}
+    judged.update(by_label)
+    return [judged[pub.label] for pub in pubs if pub.label in judged]
 
 
 def _evaluate(items, systems, solvers, mapped, ctx, symbols, dependents, claims, n, points,
