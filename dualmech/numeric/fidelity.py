@@ -22,8 +22,10 @@ a rung neglects, with their size along that trajectory.
 
 Example
 -------
->>> from dualmech.problems import get                                         # doctest: +SKIP
->>> print(ladder(get("mobile_robot")))                                # doctest: +SKIP
+>>> from dualmech.problems import get
+>>> lad = ladder(get("simple_pendulum"), duration=1.0)
+>>> [(r.label, r.error_path > 0) for r in lad.rungs]
+[('linearised (small oscillations about [0.0])', True), ('nonlinear', False)]
 """
 from __future__ import annotations
 

@@ -273,8 +273,8 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
     the result.  Raises :class:`~dualmech.problem.ProblemError` for a declaration that cannot
     be used (with every mistake listed) and ``ValueError`` for ``points < 1``.
 
-    >>> from dualmech.problems import get                        # doctest: +SKIP
-    >>> c = compare(get("toy_car")); c.equivalent        # doctest: +SKIP
+    >>> from dualmech.problems import get
+    >>> c = compare(get("toy_car")); c.equivalent
     True
     """
     _check_points(points)
