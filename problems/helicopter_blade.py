@@ -222,11 +222,7 @@ class HelicopterBladeWeighted(HelicopterBlade):
     coordinates = (
         Coordinate(beta, ANGLE, (-0.6, 0.6), (-3.0, 3.0), "flapping angle, up from the hub plane"),
     )
-    weight = True
-
-    def published(self) -> list[Published]:
-        """None: the source's answers belong to its own model (:class:`HelicopterBlade`)."""
-        return []
+    weight = True   # the printed answers (lift, Q) do not involve the weight: inherited
 
 
 PROBLEMS = (HelicopterBlade, HelicopterBladeWeighted)

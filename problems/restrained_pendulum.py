@@ -317,8 +317,34 @@ class RestrainedPendulumHorizontal(RestrainedPendulum):
         return lg.equations()
 
     def published(self) -> list[Published]:
-        """None: the source's answers belong to its own model (:class:`RestrainedPendulum`)."""
-        return []
+        """The source's answers read for horizontal elements: right to first order only."""
+        sc = _scene()
+        O = sc.O
+        rate_D = sc.D.vel(O).dot(O.x)               # horizontal velocity of the dashpot's end
+        x_S = sc.S.pos_from().dot(O.x)              # horizontal travel of the spring's end
+        height_B = sc.B.pos_from().dot(O.y) + l
+        M, C, K = self.model("lagrange").linearize()
+        where = "Example 12, read with horizontal elements"
+        return [
+            Published("T", "expression", (m * (l * D(theta))**2 / 2,),
+                      (sc.bob.kinetic_energy(O),), where=where),
+            Published("R", "expression", (c * (a * D(theta))**2 / 2,), (c * rate_D**2 / 2,),
+                      where=where + ": WRONG for this reading beyond first order, the "
+                      "dashpot's rate is a th' cos(th)"),
+            Published("U", "expression",
+                      (m * g * l - m * g * l * sp.cos(theta) + k * (b * theta)**2 / 2,),
+                      (m * g * height_B + k * x_S**2 / 2,),
+                      where=where + ": WRONG for this reading beyond first order, the "
+                      "spring's travel is b sin(th)"),
+            Published("equation of motion", "motion",
+                      (m * l**2 * DD(theta) + c * a**2 * D(theta) + m * g * l * sp.sin(theta)
+                       + k * b**2 * theta,),
+                      where=where + ": WRONG for this reading beyond first order; exact: "
+                      "k b^2 sin(th) cos(th), c a^2 th' cos^2(th)"),
+            Published("linearised equation: M, C, K", "expression",
+                      (m * l**2, c * a**2, m * g * l + k * b**2),
+                      (M[0, 0], C[0, 0], K[0, 0]), where=where),
+        ]
 
 
 PROBLEMS = (RestrainedPendulum, RestrainedPendulumHorizontal)

@@ -50,7 +50,9 @@ def test_equation_of_motion_by_hand(p, weight):
 def test_source_model_has_no_weight_and_the_variant_agrees_with_itself():
     assert g not in problem.parameter_symbols
     result = compare(HelicopterBladeWeighted())
-    assert result.equivalent and result.published == []
+    # the printed answers (angle of attack, lift, Q) do not involve the weight: same verdicts
+    assert result.equivalent and [(v.label, v.verdict) for v in result.published] == \
+        [(v.label, v.verdict) for v in compare(problem).published]
 
 
 def test_lift_acts_at_three_quarters_of_the_span():
