@@ -32,6 +32,22 @@ def test_undeclared_symbol_is_reported_on_that_answer_and_the_rest_stands():
     assert {k: v.verdict for k, v in verdicts.items() if k != "friction"} == plain
 
 
+class _UndecidableOne(RestrainedPendulum):
+    """A printed answer the comparator cannot evaluate (an undefined function of the state)."""
+
+    def published(self):
+        f = sp.Function("f")
+        return super().published() + [Published("odd", "expression", (f(theta) * m,), (m,))]
+
+
+def test_an_undecidable_answer_does_not_make_the_others_undecidable():
+    c = compare(_UndecidableOne())
+    verdicts = {v.label: v for v in c.published}
+    assert verdicts["odd"].verdict == "unchecked" and "f(theta)" in verdicts["odd"].detail
+    plain = {v.label: v.verdict for v in compare(RestrainedPendulum()).published}
+    assert {k: v.verdict for k, v in verdicts.items() if k != "odd"} == plain
+
+
 class _NoKineticEnergy(RestrainedPendulum):
     def lagrange(self):
         lg = Lagrangian("lagrange", coordinates=[theta])

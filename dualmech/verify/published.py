@@ -120,21 +120,30 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
             try:
                 g, method = _evaluate(group, systems, solvers, mapped, ctx, symbols,
                                       dependents, claims, n, points, seed, bad)
-            except (ValueError, TypeError, ZeroDivisionError) as exc:
-                for pub, _, _ in group:
-                    faulty[pub.label] = f"could not be evaluated: {type(exc).__name__}: {exc}"
-                continue
-            good = max(good, g)
-    verdicts = []
-    for pub in pubs:
-        if pub.label in faulty:
-            verdicts.append(PublishedVerdict(pub.label, pub.where, "unchecked",
-                                             "NOT CHECKED, the printed answer "
-                                             + faulty[pub.label], "none"))
-    by_label = {v.label: v for v in verdicts}
-    verdicts = []
+                good = max(good, g)
+                undecided = [it for it in group
+                             if any(isinstance(x, str) and x.startswith("undecid")
+                                    for x in bad.get(it[0].label, ()))]
+                if len(group) == 1 or not undecided:
+                    continue
+                group = undecided   # maybe one answer made the whole group undecidable
+                for it in group:
+                    bad.pop(it[0].label, None)
+            except (ValueError, TypeError, ZeroDivisionError):
+                pass
+            for item in group:      # one answer sank the group: find it, judge the others
+                try:
+                    g, method = _evaluate([item], systems, solvers, mapped, ctx, symbols,
+                                          dependents, claims, n, points, seed, bad)
+                    good = max(good, g)
+                except (ValueError, TypeError, ZeroDivisionError) as exc:
+                    faulty[item[0].label] = (f"could not be evaluated: "
+                                             f"{type(exc).__name__}: {exc}")
+    verdicts = [PublishedVerdict(pub.label, pub.where, "unchecked",
+                                 "NOT CHECKED, the printed answer " + faulty[pub.label], "none")
+                for pub in pubs if pub.label in faulty]
     for pub, es, motion in items:
-        if pub.label in by_label:
+        if pub.label in faulty:
             continue
         if isinstance(motion, str):
             verdicts.append(PublishedVerdict(pub.label, pub.where, "wrong", motion, method))
@@ -151,7 +160,6 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
                 lambda pub=pub, which=bad[pub.label]: _detail(problem, pub, which, limits),
                 method))
     judged = {v.label: v for v in verdicts}
-    judged.update(by_label)
     return [judged[pub.label] for pub in pubs if pub.label in judged]
 
 
