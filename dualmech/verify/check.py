@@ -17,7 +17,7 @@ from typing import Sequence
 import symengine as se
 import sympy as sp
 
-from ..equations import EquationSet, ModelError
+from ..equations import EquationSet, ModelError, Rows
 from .display import Budget, OverBudget, budget, dotted, solve_display
 from .explain import Mismatch, explain_model, explain_reaction
 from .published import PublishedVerdict, check_published
@@ -349,7 +349,7 @@ def _reaction_dimension_issues(problem) -> list[str]:
     In each equation the reaction's coefficient times its declared dimension must have the
     dimension of the rest of the equation; decided from the structure, without solving.
     """
-    from ..dimensions import dimension_of, format_dimension, reduce
+    from ..dimensions import dimension_reader, format_dimension, reduce
     dims = problem.dimensions()
     declared = problem.reaction_info()
     out, seen = [], set()
@@ -366,6 +366,7 @@ def _reaction_dimension_issues(problem) -> list[str]:
         else:
             A, _ = m.matrix()
             us, rows, names = list(m.unknowns), list(m.equations), None
+        dimension_of = dimension_reader(dims, names, held=held is not None)
         for j, u in enumerate(m.unknowns):
             info = declared.get(u.name)
             if info is None or u.name in seen:
@@ -381,8 +382,8 @@ def _reaction_dimension_issues(problem) -> list[str]:
                 if rest == 0:
                     continue
                 try:
-                    dc = dimension_of(coeff, dims, names)
-                    dr = dimension_of(rest, dims, names)
+                    dc = dimension_of(coeff)
+                    dr = dimension_of(rest)
                 except (ValueError, KeyError, TypeError):
                     continue
                 need = tuple(sorted(dict(dr).items()))
@@ -614,7 +615,11 @@ def solve_with_static(eqs: EquationSet, limits: Budget | None = None) -> tuple[d
 
 
 def _drop_zero_rows(m: EquationSet) -> EquationSet:
-    keep = [i for i, e in enumerate(m.equations) if sp.expand(e) != 0]
+    rows = m.equations
+    if isinstance(rows, Rows):   # held in symengine: expand there, never build the sympy form
+        keep = [i for i, e in enumerate(rows.se) if se.expand(e) != 0]
+    else:
+        keep = [i for i, e in enumerate(rows) if sp.expand(e) != 0]
     if len(keep) == len(m.equations):
         return m
     return EquationSet(m.name, m.coordinates, [m.equations[i] for i in keep], m.unknowns,
