@@ -84,6 +84,9 @@ def grade_rows(rows: Sequence[dict]) -> list[dict]:
         name, quantity = _question(row)
         about = (row.get("about") or "").strip() or None
         try:
+            from dualmech.problems import is_name, named
+            if not is_name(name):   # a CSV row never makes us import a file or module
+                named(name)
             grader = Grader.of(name)
             result = grader.grade(row.get("answer", ""), quantity, about).to_dict()
         except Exception as exc:  # unknown problem, a problem that fails to build: reported
