@@ -551,20 +551,28 @@ def _summary_row(problem, c) -> dict:
     verdicts = [p.get("verdict") for p in published if isinstance(p, dict)]
     return {"problem": problem.name, "dof": _dof(problem), "equivalent": bool(c.equivalent),
             "method": d.get("method", "?"), "seconds": float(d.get("seconds", 0.0)),
-            "reactions": len(d.get("reactions") or {}),
+            "reactions": len(getattr(problem, "reactions", ()) or d.get("reactions") or {}),
+            "reactions_not_cross_checked": list(d.get("reactions_not_cross_checked") or []),
             "published": {v: verdicts.count(v) for v in dict.fromkeys(verdicts)}}
 
 
 def _summary(results, markdown: bool = False) -> str:
     """One row per ``(problem, comparison)``."""
-    rows = []
+    rows, lonely_total = [], 0
     for problem, c in results:
         r = _summary_row(problem, c)
+        lonely = len(r["reactions_not_cross_checked"])
+        lonely_total += lonely
+        cell = f"{r['reactions']}" + (f" ({lonely} not cross-checked)" if lonely else "")
         rows.append((r["problem"], r["dof"], "yes" if r["equivalent"] else "NO", r["method"],
-                     f"{r['seconds']:.2f}", r["reactions"],
+                     f"{r['seconds']:.2f}", cell,
                      _verdict_counts([v for v, n in r["published"].items() for _ in range(n)])))
-    return _table(("problem", "dof", "equivalent", "method", "seconds", "reactions",
-                   "published answers"), rows, markdown=markdown)
+    table = _table(("problem", "dof", "equivalent", "method", "seconds", "reactions",
+                    "published answers"), rows, markdown=markdown)
+    if lonely_total:
+        table += (f"\n{lonely_total} reaction(s) not cross-checked (given by one derivation only; "
+                  "`dualmech check NAME` names them)")
+    return table
 
 
 def _verdict_counts(verdicts) -> str:

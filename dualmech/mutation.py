@@ -16,12 +16,16 @@ Both are detected exactly and reported apart, not counted.  The sign of an
 with the unknown renamed, so the motion cannot change (the sign of a recovered reaction is
 checked against the published answers instead).
 
+Mutants that raise (``errored``) or on which the comparator gives no verdict
+(``undetermined``) are reported apart too: neither is a catch.  The kill rate is over the
+judged mutants only.
+
 Example
 -------
->>> from dualmech.problems import get                      # doctest: +SKIP
->>> report = mutation_report(get("block_on_wedge"))   # doctest: +SKIP
->>> report.kill_rate                              # doctest: +SKIP
-1.0
+>>> from dualmech.problems import get
+>>> report = mutation_report(get("simple_pendulum"), points=1)
+>>> report.kill_rate, report.errored, report.undetermined
+(1.0, [], [])
 """
 from __future__ import annotations
 
@@ -58,23 +62,34 @@ class MutationReport:
     survived: list = field(default_factory=list)    # mutant descriptions
     why: dict = field(default_factory=dict)         # survivor -> why it survived
     identical: list = field(default_factory=list)   # mutants equal to their original
+    errored: list = field(default_factory=list)     # (mutant description, the error raised)
+    undetermined: list = field(default_factory=list)  # (mutant description, why no verdict)
 
     @property
     def total(self) -> int:
+        """Mutants with a verdict: caught or survived (errored, undetermined and identical
+        ones are reported apart and not counted)."""
         return len(self.killed) + len(self.survived)
 
     @property
     def kill_rate(self) -> float:
-        return len(self.killed) / self.total if self.total else 1.0
+        """Caught over judged; ``nan`` when no mutant was judged (nothing to score)."""
+        return len(self.killed) / self.total if self.total else float("nan")
 
     def __str__(self) -> str:
+        rate = f"{100 * self.kill_rate:.0f} %" if self.total else "no verdict"
         lines = [f"{self.problem}: {len(self.killed)}/{self.total} mutants caught "
-                 f"({100 * self.kill_rate:.0f} %), {len(self.identical)} identical to the "
-                 "original (not counted)"]
+                 f"({rate}), {len(self.identical)} identical to the original, "
+                 f"{len(self.errored)} errored, {len(self.undetermined)} undetermined "
+                 "(none of those counted)"]
         for d in self.survived:
             lines.append(f"  SURVIVED: {d}")
             if d in self.why:
                 lines.append(f"    {self.why[d]}")
+        for d, why in self.errored:
+            lines.append(f"  ERRORED: {d}: {why}")
+        for d, why in self.undetermined:
+            lines.append(f"  UNDETERMINED: {d}: {why}")
         return "\n".join(lines)
 
 
@@ -136,7 +151,7 @@ def _identical(original: EquationSet, mutant: EquationSet, parameters, seed: int
         checked += 1
         if checked == 3:
             return True
-    return True
+    return checked > 0   # no point could be evaluated: nothing shows they are the same
 
 
 def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
@@ -147,10 +162,15 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
     the verdict is "disagree" and names the mutant's derivation among the faulty ones (the
     odd one out, or a suspect of a tie) or a reaction it gives differently.
     """
+    if isinstance(points, bool) or not isinstance(points, int) or not 1 <= points <= 1000:
+        raise ValueError(f"`points` must be an integer from 1 to 1000 (random points per "
+                         f"verdict), got {points!r}.")
     report = MutationReport(problem.name)
     models = {n: problem.in_reference_coordinates(m) for n, m in problem.models().items()}
     if len(models) < 2:
-        return report
+        raise ValueError(f"`{problem.name}` has a single derivation ({', '.join(models)}): a "
+                         "mutant can only be caught against a second, independent one; add a "
+                         "second model before scoring mutants.")
     ref_model = problem.model(problem.reference)
     ctx = Context(ref_model.coordinates, problem.parameter_symbols, problem)
     claims = claims_of(problem)
@@ -161,16 +181,18 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
             continue
         try:
             candidate = _in_ref(problem, mut.equations, original)
-        except Exception as exc:  # noqa: BLE001 - a mutant the mapping rejects is caught too
-            report.killed.append((mut.description, [f"rejected: {exc}"]))
-            continue
-        trial = dict(models)
-        trial[mut.model] = candidate
-        try:
+            trial = dict(models)
+            trial[mut.model] = candidate
             j = judge(trial, context=ctx, points=points, seed=seed,
                       reference=problem.reference, claims=claims)
-        except ModelError as exc:   # e.g. a static row nobody can sample: refused, caught
-            report.killed.append((mut.description, [f"rejected: {exc}"]))
+        except (ModelError, ValueError, TypeError, ArithmeticError) as exc:
+            # raising is not catching: the comparator gave no verdict on this mutant
+            report.errored.append((mut.description, f"{type(exc).__name__}: {exc}"))
+            continue
+        if j.refusal or (j.points == 0 and all(f.kind == "undetermined" for f in j.faults)
+                         and set(j.odd) == set(trial)):
+            report.undetermined.append((mut.description, j.refusal or "no derivation "
+                                        "determines the motion at any sampled state"))
             continue
         named = []
         if not j.equivalent and mut.model in j.odd:

@@ -37,6 +37,12 @@ about O and is not needed).  With ``a_G = d^2 r_G / dt^2``::
 A second direct derivation without reactions: moments about O for link + body (the hinge
 force is internal, the pivot's passes through O), and about the moving hinge A for the body.
 
+The hinge force a second time, independently (``multiplier``): free the hinge by a gap
+``(u, v)`` between the link's end A and the body's hinge point, so that
+``r_G = r_A + (u, v) - b L2.y``, and close it by ``u = 0`` (multiplier ``R_x``) and ``v = 0``
+(multiplier ``R_y``): the pair ``R`` on the body and ``-R`` on the link does the virtual work
+``R_x du + R_y dv``, so the multipliers are the hinge force on the body.
+
 Lagrangian (written independently; the source's second form of T)::
 
         T = m (a^2 th1'^2 + b^2 th2'^2 + 2 a b th1' th2' cos(th1 - th2)) / 2 + I0 th2'^2 / 2
@@ -93,6 +99,7 @@ __all__ = ["CompoundDoublePendulum", "PROBLEMS", "m", "a", "b", "I0", "g", "thet
 
 m, a, b, I0, g = sp.symbols("m a b I0 g", positive=True)
 theta1, theta2 = coordinate("theta1"), coordinate("theta2")
+u, v = coordinate("u"), coordinate("v")   # the hinge freed (multiplier model only)
 
 D = lambda q: q.diff(t)  # noqa: E731
 DD = lambda q: q.diff(t, 2)  # noqa: E731
@@ -152,7 +159,14 @@ class CompoundDoublePendulum(Problem):
         Reaction("R_x", FORCE, "hinge on body, along i"),
         Reaction("R_y", FORCE, "hinge on body, along j"),
     )
-    extra_models = ("moments",)
+    extra_coordinates = (
+        Coordinate(u, LENGTH, (-0.05, 0.05), (-0.2, 0.2), "hinge gap along i (body from link)"),
+        Coordinate(v, LENGTH, (-0.05, 0.05), (-0.2, 0.2), "hinge gap along j (body from link)"),
+    )
+    extra_models = ("moments", "multiplier")
+
+    def coordinate_maps(self) -> dict:
+        return {"multiplier": {theta1: theta1, theta2: theta2, u: 0, v: 0}}
 
     def newton_euler(self) -> EquationSet:
         """Body: forces along ``i``, ``j`` and moments about G; light link: moments about O."""
@@ -176,6 +190,20 @@ class CompoundDoublePendulum(Problem):
         ne.angular_momentum([sc.link, sc.body], sc.O.z, about=sc.o)
         ne.angular_momentum(sc.body, sc.O.z, about=sc.A)
         return ne.equations()
+
+    def multiplier(self) -> EquationSet:
+        """The hinge freed by a gap ``(u, v)`` between link end and body, closed again by the
+        multipliers ``R_x``, ``R_y`` (module doc): the hinge force a second time."""
+        lg = Lagrangian("multiplier", coordinates=[theta1, theta2, u, v],
+                        description="hinge freed by (u, v), held by R_x and R_y")
+        G = sp.Matrix([a * sp.sin(theta1) + u + b * sp.sin(theta2),
+                       -a * sp.cos(theta1) + v - b * sp.cos(theta2)])
+        lg.kinetic("T of body (translation)", m * (D(G).T * D(G))[0, 0] / 2)
+        lg.kinetic("T of body (rotation)", I0 * D(theta2)**2 / 2)
+        lg.potential("gravity", m * g * G[1])
+        lg.constraint("R_x", u)
+        lg.constraint("R_y", v)
+        return lg.equations()
 
     def lagrange(self) -> EquationSet:
         """The source's second form of ``T`` and its ``V``."""

@@ -73,11 +73,21 @@ Errata
 ------
 * The printed second ``x`` equation has ``m1 x2''``; it must be ``m2 x2''`` (the momentum of
   ``m2`` is ``m2 x2'``).
-* The printed potential ``k (x1 - x2)^2/2`` makes the spring unstretched at ``x1 = x2``: with
-  both heights measured from the ground the spring term is ``k (x1 - x2 + l0)`` in the first
-  equation and ``k (x2 - x1 - l0)`` in the second.  The printed ``x`` equations are right only
-  for ``l0 = 0`` (or if ``x2`` were measured from ``l0`` above the floor, which the source's
-  "positions with respect to horizontal ground" rules out).
+* The datum of ``x2``.  The source says both heights are measured "with respect to horizontal
+  ground", yet its ``U = k (x1 - x2)^2/2`` makes the spring unstretched at ``x1 = x2``: that
+  energy implies ``x2`` measured from the spring's free length (``l0`` above the floor's
+  datum).  The two statements cannot both hold, so each printed ``x`` equation is judged under
+  both readings, and the report says which reading gives which verdict:
+
+  - ``x2`` from the ground (the reference model's coordinate): the spring term must be
+    ``k (x1 - x2 + l0)`` in the first equation and ``k (x2 - x1 - l0)`` in the second; the
+    printed ``k (x1 - x2)`` is WRONG (right only for ``l0 = 0``);
+  - ``x2`` from the free length (the energy's reading, ``x2_printed = x2 - l0``): the first
+    printed equation is CORRECT; the second is still WRONG by its ``m1 x2''``.
+
+  The model keeps the ground datum (the source's words, and the coordinate the ``y`` form's
+  ``y2 = x2 - x1 - l0`` is written against); the printed answers are re-read for the other
+  datum by substituting ``x2 -> x2 - l0`` into them (:meth:`FallingContainer.published`).
 * The printed ``y`` equations are right.
 
 Example
@@ -177,15 +187,28 @@ class FallingContainer(Problem):
     def published(self) -> list[Published]:
         where = "Example 15, Lagrange's equations in x1, x2"
         where_y = "Example 15, Lagrange's equations in y1, y2"
+        eq1 = m1 * DD(x1) + c * (D(x1) - D(x2)) + k * (x1 - x2) + m1 * g       # as printed
+        eq2 = m1 * DD(x2) + c * (D(x2) - D(x1)) + k * (x2 - x1) + m2 * g
+
+        def free(e):
+            """``e`` with its ``x2`` read from the spring's free length: x2_printed = x2 - l0."""
+            return e.subs(x2, x2 - l0).doit()
+
         return [
-            # Wrong: the spring term must be k(x1 - x2 + l0); right only for l0 = 0.
-            Published("x-equation 1", "equation",
-                      (m1 * DD(x1) + c * (D(x1) - D(x2)) + k * (x1 - x2) + m1 * g,),
-                      where=where),
-            # Wrong: m1 x2'' must be m2 x2''; and the spring term must be k(x2 - x1 - l0).
-            Published("x-equation 2", "equation",
-                      (m1 * DD(x2) + c * (D(x2) - D(x1)) + k * (x2 - x1) + m2 * g,),
-                      where=where),
+            # Ground datum: the spring term must be k(x1 - x2 + l0); right only for l0 = 0.
+            Published("x-equation 1, x2 from the ground", "equation", (eq1,),
+                      where=where + ": WRONG if x2 is measured from the ground (the source's "
+                      "words): the spring term is k (x1 - x2 + l0)"),
+            # The energy's datum (x2 from the free length): right.
+            Published("x-equation 1, x2 from the free length", "equation", (free(eq1),),
+                      where=where + ": x2 read from the spring's free length, the datum "
+                      "U = k (x1 - x2)^2/2 implies"),
+            # Wrong in both readings: m1 x2'' must be m2 x2''.
+            Published("x-equation 2, x2 from the ground", "equation", (eq2,),
+                      where=where + ": WRONG, m1 x2'' for m2 x2'' (and k (x2 - x1) for "
+                      "k (x2 - x1 - l0))"),
+            Published("x-equation 2, x2 from the free length", "equation", (free(eq2),),
+                      where=where + ": WRONG in this reading too, m1 x2'' for m2 x2''"),
             # Right: d/dt dT/dy1' = (m1 + m2) y1'' + m2 y2'', dV/dy1 = (m1 + m2) g.
             Published("y-equation 1", "equation",
                       ((m1 + m2) * DD(y1) + m2 * DD(y2) + m1 * g + m2 * g,),

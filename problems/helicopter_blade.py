@@ -17,7 +17,7 @@ Omega)^2`` per unit length (``A`` lumps density, chord and lift slope)::
                   z_b         .                lift per unit length at x, along z_b:
                    ^     .   L                   w(x) = A (alpha0 Omega^2 x^2 - Omega x^2 beta')
                    | .  beta
-      Z   hinge ---o----------------> x_H       weight -M g Z per unit length
+      Z   hinge ---o----------------> x_H       (weight neglected, as in the source)
       |            |
       +-- x_H      | rotor axis, Omega
 
@@ -30,7 +30,8 @@ Frames (columns = the child's unit vectors in the parent)::
 
 Body: the blade, a thin rod of mass ``M L`` along ``x_b``, centre at ``L/2 x_b``.
 
-Free-body diagram: weight ``-M L g Z`` at the centre; the lift, ``w(x) z_b`` along the span,
+Free-body diagram (the source neglects the blade's weight; so does this model): the lift,
+``w(x) z_b`` along the span,
 replaced by its resultant ``F = int_0^L w dx = A L^3 (alpha0 Omega^2 - Omega beta') / 3`` at
 the centre of pressure ``x_p = int x w dx / F = 3 L / 4``; at the hinge the pin force and the
 moments about ``x_b`` and ``z_b`` (none about the hinge axis) -- all without moment about
@@ -38,20 +39,27 @@ moments about ``x_b`` and ``z_b`` (none about the hinge axis) -- all without mom
 
 Direct form: ``sum tau_hinge = dH_hinge/dt`` on ``-y_b`` (the hinge is fixed)::
 
-    (M L^3 / 3) (beta'' + Omega^2 sin(beta) cos(beta)) + (M g L^2 / 2) cos(beta)
-        = F x_p = A L^4 (alpha0 Omega^2 - Omega beta') / 4
+    (M L^3 / 3) (beta'' + Omega^2 sin(beta) cos(beta)) = F x_p = A L^4 (alpha0 Omega^2 - Omega beta') / 4
 
 Lagrangian, written independently: a station at ``x`` moves at ``x beta'`` across the blade
 and ``Omega x cos(beta)`` round the axis::
 
     T = int_0^L M (x^2 beta'^2 + Omega^2 x^2 cos^2 beta) / 2 dx = M L^3 (beta'^2 + Omega^2 cos^2 beta) / 6
-    V = int_0^L M g x sin(beta) dx = M g L^2 sin(beta) / 2
+    V = 0 (no weight)
     delta W = int_0^L w(x) (x delta beta) dx   =>   Q = int_0^L w(x) x dx = A L^4 (alpha0 Omega^2 - Omega beta') / 4
 
-Small flapping (``alpha0 = 0``, weight neglected): ``(M L^3/3) beta'' + (A Omega L^4/4)
-beta' + (M L^3/3) Omega^2 beta = 0`` -- the flapping frequency is the rotor speed and the
-damping ratio ``3 A L / (8 M)`` (the Lock number over 16).  With pitch and no weight the
-blade cones at ``sin(2 beta0) = 3 A alpha0 L / (2 M)``.
+Small flapping (``alpha0 = 0``): ``(M L^3/3) beta'' + (A Omega L^4/4) beta' + (M L^3/3)
+Omega^2 beta = 0`` -- the flapping frequency is the rotor speed and the damping ratio
+``3 A L / (8 M)`` (the Lock number over 16).  With pitch the blade cones at
+``sin(2 beta0) = 3 A alpha0 L / (2 M)``.
+
+Where the model departs from the source, and the richer variant: nowhere in the equations --
+the source's "Mass/unit length = M" and its lift are all it takes into account, and the
+reference follows it.  The blade's weight (``V = M g L^2 sin(beta)/2``, a moment
+``(M g L^2/2) cos(beta)`` about the hinge) is the next rung of this scene's fidelity ladder,
+:class:`HelicopterBladeWeighted` (``helicopter_blade_weighted``; ``dualmech fidelity
+helicopter_blade`` shows what it adds: next to the centrifugal stiffness ``M L^3 Omega^2/3``
+it is small at rotor speed, and it lowers the coning angle).
 
 The rotor speed is prescribed; the torque that keeps it constant, like the pin force, is
 not asked for by the source and is not modelled.
@@ -81,7 +89,7 @@ from dualmech.dimensions import ACCELERATION, ANGLE, FREQUENCY, LENGTH, MASS
 from dualmech.equations import EquationSet
 from dualmech.problem import Coordinate, Parameter, Problem, Published
 
-__all__ = ["HelicopterBlade", "PROBLEMS", "frames", "lift_per_length", "first_order", "M", "L",
+__all__ = ["HelicopterBlade", "HelicopterBladeWeighted", "PROBLEMS", "frames", "lift_per_length", "first_order", "M", "L",
            "Omega", "A", "alpha0", "g", "beta", "x"]
 
 M, L, Omega, A, g = sp.symbols("M L Omega A g", positive=True)
@@ -121,9 +129,9 @@ class HelicopterBlade(Problem):
     name = "helicopter_blade"
     title = "Helicopter blade flapping"
     source = "002_df41972c66c4514e.txt: handwritten helicopter rotor blade example"
-    summary = ("Hinged blade turning at a fixed rotor speed, flapping under centrifugal, "
-               "weight and aerodynamic loads; the lift's generalised force by virtual work "
-               "against its resultant at the centre of pressure.")
+    summary = ("Hinged blade turning at a fixed rotor speed, flapping under centrifugal and "
+               "aerodynamic loads (weight neglected, as in the source); the lift's generalised "
+               "force by virtual work against its resultant at the centre of pressure.")
     parameters = (
         Parameter(M, MASS / LENGTH, 10.0, (1.0, 50.0), "blade mass per unit length"),
         Parameter(L, LENGTH, 5.0, (1.0, 10.0), "blade length, hinge to tip"),
@@ -131,13 +139,14 @@ class HelicopterBlade(Problem):
         Parameter(A, MASS / LENGTH**2, 0.3, (0.01, 2.0),
                   "lift per unit length per unit angle of attack per unit speed squared"),
         Parameter(alpha0, ANGLE, 0.1, (-0.3, 0.3), "blade pitch"),
-        Parameter(g, ACCELERATION, 9.81, (1.0, 20.0), "gravitational acceleration"),
     )
     coordinates = (
         Coordinate(beta, ANGLE, (-0.6, 0.6), (-3.0, 3.0), "flapping angle, up from the hub plane"),
     )
     reactions = ()
     singular = ()
+
+    weight = False   # the source neglects the blade's weight (HelicopterBladeWeighted keeps it)
 
     # -- direct form: moments about the hinge on the hinge axis --------------------------------
     def newton_euler(self) -> EquationSet:
@@ -150,7 +159,8 @@ class HelicopterBlade(Problem):
         x_p = sp.cancel(sp.integrate(x * w, (x, 0, L)) / resultant)
         ne = NewtonEuler(coordinates=[beta], ground=f.O,
                          description="sum tau_hinge = dH_hinge/dt on the flap axis -y_b")
-        ne.gravity(-g * f.O.z)
+        if self.weight:
+            ne.gravity(-g * f.O.z)
         ne.force("lift", blade, resultant * f.b.z, at=f.hinge.locate("cp", x_p * f.b.x))
         ne.angular_momentum(blade, -f.b.y, about=f.hinge)
         return ne.equations()
@@ -161,7 +171,8 @@ class HelicopterBlade(Problem):
         lg = Lagrangian(coordinates=[beta], description="T, V of the blade by hand; lift by "
                                                         "virtual work")
         lg.kinetic("T of blade", M * L**3 * (_d(beta)**2 + Omega**2 * sp.cos(beta)**2) / 6)
-        lg.potential("gravity", M * g * L**2 * sp.sin(beta) / 2)
+        if self.weight:
+            lg.potential("gravity", M * g * L**2 * sp.sin(beta) / 2)
         lg.generalized_force("lift", [sp.integrate(lift_per_length() * x, (x, 0, L))])
         return lg.equations()
 
@@ -197,4 +208,21 @@ class HelicopterBlade(Problem):
         ]
 
 
-PROBLEMS = (HelicopterBlade,)
+class HelicopterBladeWeighted(HelicopterBlade):
+    """The richer variant: the blade's weight kept (``V = M g L^2 sin(beta)/2``; module doc)."""
+
+    name = "helicopter_blade_weighted"
+    title = "Helicopter blade flapping, with the blade's weight"
+    source = "002_df41972c66c4514e.txt: handwritten helicopter rotor blade example (weight added)"
+    summary = ("The helicopter blade with its weight, which the source neglects: the next rung "
+               "of the blade's fidelity ladder.")
+    parameters = HelicopterBlade.parameters + (
+        Parameter(g, ACCELERATION, 9.81, (1.0, 20.0), "gravitational acceleration"),
+    )
+    coordinates = (
+        Coordinate(beta, ANGLE, (-0.6, 0.6), (-3.0, 3.0), "flapping angle, up from the hub plane"),
+    )
+    weight = True   # the printed answers (lift, Q) do not involve the weight: inherited
+
+
+PROBLEMS = (HelicopterBlade, HelicopterBladeWeighted)

@@ -119,7 +119,7 @@ Example
 -------
 >>> p = MobileRobot(); p.validate()
 >>> numbers = {s: sp.nsimplify(v) for s, v in p.defaults().items()}
->>> p.model("lagrange").mass_matrix().subs(numbers)
+>>> p.model("lagrange").mass_matrix().subs(numbers).applyfunc(sp.trigsimp)
 Matrix([
 [            140, -35*cos(phi(t))],
 [-35*cos(phi(t)),            95/2]])

@@ -49,6 +49,15 @@ Lagrangian, written independently, with
         + (25/6) m r^2 theta'^2
     V = -M g y - 3 m g (y + 4 r cos(theta)) + k y^2/2
 
+The reactions a second time, independently (``multiplier``): free M from the shaft by ``x``
+(M at ``(x, -(l0 + y))``) and the pendulum from M by a pivot gap ``(p, q)`` (its pin at
+M's pin plus ``(p, q)``), and close them by ``-x = 0`` (multiplier ``F_N``: the shaft pushes M
+along ``-I``), ``-p = 0`` and ``-q = 0`` (multipliers ``F_Rx``, ``F_Ry``: the pair ``F_R`` on
+M, ``-F_R`` on the pendulum does the virtual work ``-F_R . (dp, dq)``)::
+
+    T = M (x'^2 + y'^2)/2 + (3/2) m |v_C|^2 + (25/6) m r^2 theta'^2,
+    C = (x + p + 4 r sin(theta), -(l0 + y) + q - 4 r cos(theta))
+
 The mass matrix ``[[M + 3m, -12 m r sin], [-12 m r sin, 169/3 m r^2]]`` has determinant
 ``m r^2 (169/3 M + 169 m - 144 m sin^2) > 0``: no singular configuration.
 
@@ -84,6 +93,8 @@ __all__ = ["PendulumOnMass", "PROBLEMS", "frames", "pendulum_mass_properties", "
 
 M, m, r, k, g, l0 = sp.symbols("M m r k g l0", positive=True)
 y, theta = coordinate("y"), coordinate("theta")
+# multiplier model only: M off the shaft by x; the pendulum's pivot off M by the gap (p, q)
+x, p, q = coordinate("x"), coordinate("p"), coordinate("q")
 F_N, F_Rx, F_Ry = sp.symbols("F_N F_Rx F_Ry", real=True)
 
 _d = lambda q, n=1: q.diff(t, n)  # noqa: E731  (q', q'')
@@ -145,7 +156,16 @@ class PendulumOnMass(Problem):
         Reaction("F_Rx", FORCE, "along I, pendulum on M at A (-F_Rx I on the pendulum)"),
         Reaction("F_Ry", FORCE, "along J, pendulum on M at A (-F_Ry J on the pendulum)"),
     )
+    extra_coordinates = (
+        Coordinate(x, LENGTH, (-0.05, 0.05), (-0.2, 0.2), "M off the shaft, along I"),
+        Coordinate(p, LENGTH, (-0.05, 0.05), (-0.2, 0.2), "pivot gap along I (pendulum from M)"),
+        Coordinate(q, LENGTH, (-0.05, 0.05), (-0.2, 0.2), "pivot gap along J (pendulum from M)"),
+    )
+    extra_models = ("multiplier",)
     singular = ()
+
+    def coordinate_maps(self) -> dict:
+        return {"multiplier": {y: y, theta: theta, x: 0, p: 0, q: 0}}
 
     # -- direct form (question c) ----------------------------------------------------------
     def newton_euler(self) -> EquationSet:
@@ -164,6 +184,26 @@ class PendulumOnMass(Problem):
         ne.linear_momentum(pend, O.y)
         ne.angular_momentum(pend, O.z, about=f.a)
         return ne.equations()
+
+    # -- the reactions a second time -------------------------------------------------------
+    def multiplier(self) -> EquationSet:
+        """M freed from the shaft by ``x`` and the pendulum from M by a pivot gap ``(p, q)``;
+        ``F_N``, ``F_Rx``, ``F_Ry`` are the multipliers that close them (module doc)."""
+        lg = Lagrangian("multiplier", coordinates=[y, theta, x, p, q],
+                        description="shaft and pivot freed, closed by F_N, F_Rx, F_Ry")
+        s, c = sp.sin(theta), sp.cos(theta)
+        A_M = sp.Matrix([x, -(l0 + y)])                     # M (and its pin)
+        C = A_M + sp.Matrix([p, q]) + 4 * r * sp.Matrix([s, -c])   # pendulum's mass centre
+        lg.kinetic("T of M", M * (_d(A_M).T * _d(A_M))[0, 0] / 2)
+        lg.kinetic("T of pendulum (mass centre)", 3 * m * (_d(C).T * _d(C))[0, 0] / 2)
+        lg.kinetic("T of pendulum (spin about C)", sp.Rational(25, 3) * m * r**2
+                   * _d(theta)**2 / 2)
+        lg.potential("gravity", M * g * A_M[1] + 3 * m * g * C[1])
+        lg.spring("spring", k, y)
+        lg.constraint("F_N", -x)        # shaft on M along -I: gradient -I at M
+        lg.constraint("F_Rx", -p)       # F_R on M, -F_R on the pendulum: work -F_R . d(p, q)
+        lg.constraint("F_Ry", -q)
+        return lg.equations()
 
     # -- indirect form ---------------------------------------------------------------------
     def lagrange(self) -> EquationSet:

@@ -54,7 +54,9 @@ Lagrangian, written independently, ``beta`` prescribed (b)-(d)::
 The normal force twice more, independently of the free-body diagram:
 
 * ``multiplier``: the mass may leave the plane by ``z`` along ``k``; ``z = 0`` with multiplier
-  ``N`` (``N k . dr = N dz``).
+  ``N`` (``N k . dr = N dz``).  The same model frees the rod too: the mass at ``rho e_r``,
+  held by ``l - rho = 0`` with multiplier ``S`` (gradient ``-e_r``: the rod force on the mass
+  towards the pivot, ``-S e_r . dr = -S drho``), so the rod force is derived twice as well.
 * ``contact_velocity`` -- the source's route (d): the mass gets its own angle ``b`` about
   ``Y`` (``T``, ``V`` as above with ``b`` for ``beta``), and the contact is the velocity
   constraint ``(c - l cos(theta)) (b' - beta'(t)) = 0`` -- the normal velocity of the mass
@@ -106,6 +108,7 @@ theta = coordinate("theta")
 beta = coordinate("beta")    # the plane's angle, prescribed in every model
 b = coordinate("b")          # the mass's own angle about Y (the source's route)
 z = coordinate("z")          # the mass's height off the plane
+rho = coordinate("rho")      # the mass's distance from the pivot (rod freed), multiplier only
 N = sp.Symbol("N", real=True)
 
 D = lambda q: q.diff(t)  # noqa: E731
@@ -173,6 +176,8 @@ class PendulumOnRotatingPlane(Problem):
     extra_coordinates = (
         Coordinate(b, ANGLE, (-3.0, 3.0), (-3.0, 3.0), "mass's own angle about Y"),
         Coordinate(z, LENGTH, (-0.05, 0.05), (-0.5, 0.5), "height of the mass off the plane"),
+        Coordinate(rho, LENGTH, (0.1, 0.9), (0.01, 2.0), "distance of the mass from the pivot "
+                   "(rod freed)"),
     )
     reactions = (
         Reaction("N", FORCE, "plane on the mass, along k (the plane's normal)"),
@@ -181,7 +186,7 @@ class PendulumOnRotatingPlane(Problem):
     extra_models = ("multiplier", "contact_velocity")
 
     def coordinate_maps(self) -> dict:
-        return {"multiplier": {theta: theta, z: 0},
+        return {"multiplier": {theta: theta, z: 0, rho: l},
                 "contact_velocity": {theta: theta, b: plane_angle()}}
 
     def newton_euler(self) -> EquationSet:
@@ -206,14 +211,16 @@ class PendulumOnRotatingPlane(Problem):
         return lg.equations()
 
     def multiplier(self) -> EquationSet:
-        """The mass off the plane by ``z``, held on it by ``N``."""
-        r_plane = sp.Matrix([l * sp.cos(theta) - c, l * sp.sin(theta), z])
+        """The mass off the plane by ``z`` and off the rod's length by ``rho``, held by ``N``
+        and ``S``."""
+        r_plane = sp.Matrix([rho * sp.cos(theta) - c, rho * sp.sin(theta), z])
         r = rot_y(beta) * r_plane               # inertial X, Y, Z components
-        lg = Lagrangian("multiplier", coordinates=[theta, z, beta],
-                        description="mass freed from the plane, held by N")
+        lg = Lagrangian("multiplier", coordinates=[theta, z, rho, beta],
+                        description="mass freed from the plane and the rod, held by N and S")
         lg.kinetic("T of mass", m * (D(r).T * D(r))[0, 0] / 2)
         lg.potential("gravity", m * g * r[2])
         lg.constraint("N", z)
+        lg.constraint("S", l - rho)             # gradient -e_r: S pulls towards the pivot
         lg.prescribe(beta, plane_angle())
         return lg.equations()
 

@@ -4,29 +4,35 @@ Source: ``sources/000_203248afac9714e6.txt``, "Example 12: Pair-Share: Restraine
 Pendulum": a bob ``m`` on a rigid massless link of length ``l`` hinged without friction at O,
 restrained by a linear spring ``k`` and a linear dashpot ``c``.
 
-Geometry (the source's figure is missing; this is the one used here)
---------------------------------------------------------------------
-The usual drawing: spring and dashpot horizontal, from the link to a wall; the original
-exercise adds "assume small angular changes so that the spring and damper forces always act
-horizontally" (that sentence is not in the lecture text).  Here the forces are horizontal
-*exactly*: the wall ends of spring and dashpot ride in vertical guides, so both stay
-horizontal, and the spring is unstretched at ``theta = 0``::
+The source's model (the reference here)
+---------------------------------------
+The source's figure is missing; its energies say what the elements are::
+
+      U = m g l (1 - cos th) + k (b th)^2 / 2,      R = c (a th')^2 / 2
+
+the spring stretches by the *arc* ``b th`` swept by its attachment point and the dashpot
+works at that point's *speed along the arc* ``a th'``: both act along the tangent of their
+attachment point's circle (for instance a cord wound on a quadrant of radius ``b``, resp.
+``a``, centred at O and pulled by the element) -- perpendicular to the link, with
+magnitudes ``k b th`` and ``c a th'``.  Those energies give the printed equation exactly,
+``m l^2 th'' + c a^2 th' + m g l sin th + k b^2 th = 0``, and that model is the reference::
 
                O  pivot (frictionless), reaction H i + V j on the link
-          |/|  |\
-          |/|  | \  theta (from the downward vertical, counter-clockwise about k)
-          |/|--/\/\/\--o S     spring k at distance b:  S = b (sin th, -cos th)
-          |/|  |   \
-          |/|--[ c ----o D     dashpot c at distance a: D = a (sin th, -cos th)
-          |/|  |     \
-                      (m)  B   bob at distance l:     B = l (sin th, -cos th)
+               |\
+               | \  theta (from the downward vertical, counter-clockwise about k)
+               |  o S     spring k at distance b, force -k b th A.x (tangent at S)
+               |   \
+               |    o D   dashpot c at distance a, force -c a th' A.x (tangent at D)
+               |     \
+                      (m)  B   bob at distance l:  B = l (sin th, -cos th)
           j
           ^   gravity -g j
           +--> i
 
 Frames.  ``O`` inertial (``i`` right, ``j`` up, ``k`` out of the page).  The link frame
-``A = O.child(rot_z(theta))``: ``A.y = (-sin th, cos th)`` points from the bob to the pivot,
-so ``S = -b A.y``, ``D = -a A.y``, ``B = -l A.y``.
+``A = O.child(rot_z(theta))``: ``A.x = (cos th, sin th)`` is the tangent of the arcs (the
+direction in which S, D, B move as ``th`` grows), ``A.y = (-sin th, cos th)`` points from the
+bob to the pivot, so ``S = -b A.y``, ``D = -a A.y``, ``B = -l A.y``.
 
 Bodies.  The bob is a particle ``m`` at B.  The link is massless; it is kept as a body only
 because it carries the loads (a rigid body of zero mass and inertia).  Link and bob are taken
@@ -34,53 +40,60 @@ as one system, so the force between them does not appear.
 
 Free-body diagram of link + bob::
 
-      spring   -k (b sin th) i           at S    (extension = horizontal travel of S)
-      dashpot  -c (a th' cos th) i       at D    (rate = horizontal velocity of D)
+      spring   -k b th A.x               at S    (extension = arc b th)
+      dashpot  -c a th' A.x              at D    (rate = speed along the arc)
       weight   -m g j                    at B
       pivot    H i + V j                 at O    (unknown reaction on the link)
 
 ``sum F = m a_B`` and ``sum tau_O = dh_O/dt``, with
-``a_B = l th'' (cos th, sin th) + l th'^2 (-sin th, cos th)``::
+``a_B = l th'' (cos th, sin th) + l th'^2 (-sin th, cos th)`` and the moment of a force
+``-F A.x`` at distance ``r`` equal to ``-F r`` (it is perpendicular to the link)::
 
-      i:  H - k b sin th - c a th' cos th = m l (th'' cos th - th'^2 sin th)
-      j:  V - m g                         = m l (th'' sin th + th'^2 cos th)
-      k:  m l^2 th'' + c a^2 th' cos^2 th + k b^2 sin th cos th + m g l sin th = 0
+      i:  H - (k b th + c a th') cos th     = m l (th'' cos th - th'^2 sin th)
+      j:  V - m g - (k b th + c a th') sin th = m l (th'' sin th + th'^2 cos th)
+      k:  m l^2 th'' + c a^2 th' + k b^2 th + m g l sin th = 0
 
 so the pivot reaction, with ``th''`` from the third line, is
-``H = k b sin th + c a th' cos th + m l (th'' cos th - th'^2 sin th)`` and
-``V = m g + m l (th'' sin th + th'^2 cos th)``.
+``H = (k b th + c a th') cos th + m l (th'' cos th - th'^2 sin th)`` and
+``V = m g + (k b th + c a th') sin th + m l (th'' sin th + th'^2 cos th)``.
 
-Lagrangian (written independently)::
+Lagrangian (written independently, the source's own energies)::
 
       T = m (l th')^2 / 2
-      U = m g l (1 - cos th) + k (b sin th)^2 / 2
-      R = c (a th' cos th)^2 / 2
+      U = m g l (1 - cos th) + k (b th)^2 / 2
+      R = c (a th')^2 / 2
 
 The pivot reaction a second time (multiplier model): free the pivot by two coordinates
 ``(u, v)`` (its displacement along ``i`` and ``j``) and close it with the constraints
 ``u = 0`` (multiplier ``H``) and ``v = 0`` (multiplier ``V``).  Then
-``B = (u + l sin th, v - l cos th)``, the spring extension is ``u + b sin th``, the dashpot
-rate ``u' + a th' cos th``.  The virtual work of ``H i + V j`` at the pivot is
-``H du + V dv``: with unit gradients the multipliers are the reaction components.  (The
-mass matrix in ``(th, u, v)`` alone is singular -- the massless link can turn about the bob --
-but the constraints make the augmented system regular.)
+``B = (u + l sin th, v - l cos th)``; the spring's force ``-k b th A.x`` at
+``S = (u + b sin th, v - b cos th)`` does the virtual work ``-k b th (cos th du + sin th dv +
+b dth)``, the dashpot's ``-c a th' (cos th du + sin th dv + a dth)``: generalised forces, not a
+potential (an element that stays tangent to a moving arc is not conservative once the pivot
+moves).  The virtual work of ``H i + V j`` at the pivot is ``H du + V dv``: with unit
+gradients the multipliers are the reaction components.  (The mass matrix in ``(th, u, v)``
+alone is singular -- the massless link can turn about the bob -- but the constraints make the
+augmented system regular.)
 
-Errata
-------
-The source's ``U = m g l - m g l cos th + k (b th)^2/2`` and ``R = c (a th')^2/2`` are the
-small-angle forms of the spring's and dashpot's terms (travel ``b th`` for ``b sin th``, rate
-``a th'`` for ``a th' cos th``), while the weight is kept exact (``sin th``).  The printed
-nonlinear equation ``m l^2 th'' + c a^2 th' + m g l sin th + k b^2 th = 0`` therefore mixes
-orders: with horizontal elements the exact terms are ``c a^2 th' cos^2 th`` and
-``k b^2 sin th cos th``.  It holds only to first order in ``th`` -- which is what the
-printed *linearised* equation ``m l^2 th'' + c a^2 th' + (m g l + k b^2) th = 0`` keeps, and
-that one is right (the library's linearisation of the exact model gives it).  The printed
-nonlinear equation would be exact only for elements that act along the tangent of their
-attachment point's arc (spring travel = arc ``b th``): a test shows that reading too.
+Where the model departs from the source, and the richer variant
+---------------------------------------------------------------
+Nowhere in the equations: the reference is the source's statement.  The source does not say
+how its elements are attached; the usual drawing has them horizontal, from the link to a
+wall, and the original exercise adds "assume small angular changes so that the spring and
+damper forces always act horizontally".  That variant -- elements *exactly* horizontal (their
+wall ends ride in vertical guides) -- is :class:`RestrainedPendulumHorizontal`
+(``restrained_pendulum_horizontal``), the top rung of this scene's fidelity ladder
+(``dualmech fidelity restrained_pendulum``): its exact terms are ``k b^2 sin th cos th`` and
+``c a^2 th' cos^2 th``, which agree with the source's ``k b^2 th`` and ``c a^2 th'`` to first
+order in ``th`` only, so the printed nonlinear equation is not that variant's motion.  The
+printed *linearised* equation ``m l^2 th'' + c a^2 th' + (m g l + k b^2) th = 0`` holds for
+both.
 
 Example
 -------
 >>> p = RestrainedPendulum(); p.validate()
+>>> p.model("lagrange").equations[0]
+a**2*c*Derivative(theta(t), t) + b**2*k*theta(t) + g*l*m*sin(theta(t)) + l**2*m*Derivative(theta(t), (t, 2))
 >>> p.model("lagrange").linearize()[2]
 Matrix([[b**2*k + g*l*m]])
 """
@@ -96,8 +109,8 @@ from dualmech.dimensions import ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MAS
 from dualmech.equations import EquationSet
 from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
 
-__all__ = ["RestrainedPendulum", "PROBLEMS", "hand_reactions", "m", "l", "k", "c", "a", "b",
-           "g", "theta", "u", "v"]
+__all__ = ["RestrainedPendulum", "RestrainedPendulumHorizontal", "PROBLEMS", "hand_reactions",
+           "hand_reactions_horizontal", "m", "l", "k", "c", "a", "b", "g", "theta", "u", "v"]
 
 m, l, k, c, a, b, g = sp.symbols("m l k c a b g", positive=True)
 theta = coordinate("theta")
@@ -108,7 +121,15 @@ DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 def hand_reactions(thdd) -> dict:
-    """``{"H": ..., "V": ...}`` from the free-body diagram, given the true ``theta''``."""
+    """``{"H": ..., "V": ...}`` of the source's model (tangential elements), given ``theta''``."""
+    s, co, thd = sp.sin(theta), sp.cos(theta), D(theta)
+    tangential = k * b * theta + c * a * thd
+    return {"H": tangential * co + m * l * (thdd * co - thd**2 * s),
+            "V": m * g + tangential * s + m * l * (thdd * s + thd**2 * co)}
+
+
+def hand_reactions_horizontal(thdd) -> dict:
+    """``{"H": ..., "V": ...}`` of the horizontal variant, given the true ``theta''``."""
     s, co, thd = sp.sin(theta), sp.cos(theta), D(theta)
     return {"H": k * b * s + c * a * thd * co + m * l * (thdd * co - thd**2 * s),
             "V": m * g + m * l * (thdd * s + thd**2 * co)}
@@ -127,14 +148,15 @@ def _scene() -> SimpleNamespace:
 
 
 class RestrainedPendulum(Problem):
-    """Bob on a massless link, held by a horizontal spring and dashpot (see module doc)."""
+    """Bob on a massless link, held by a spring and a dashpot acting along the arcs of their
+    attachment points -- the source's energies (see the module doc)."""
 
     name = "restrained_pendulum"
     title = "Plane pendulum restrained by a spring and a dashpot"
     source = "000_203248afac9714e6.txt: Example 12"
-    summary = ("Pendulum with a horizontal spring at distance b and dashpot at distance a; "
-               "pivot reaction twice (free-body diagram, multipliers). The printed nonlinear "
-               "equation mixes small-angle spring/dashpot terms with exact gravity.")
+    summary = ("Pendulum with a spring at distance b and a dashpot at distance a acting along "
+               "their arcs (the source's U and R); pivot reaction twice (free-body diagram, "
+               "multipliers). The horizontal-element variant is the next rung of its ladder.")
     parameters = (
         Parameter(m, MASS, 1.0, (0.1, 10.0), "mass of the bob"),
         Parameter(l, LENGTH, 1.0, (0.2, 3.0), "length of the link"),
@@ -165,6 +187,96 @@ class RestrainedPendulum(Problem):
     def newton_euler(self) -> EquationSet:
         """Link + bob: ``sum F = m a_B`` on ``i`` and ``j``, moments about the pivot on ``k``."""
         sc = _scene()
+        O, A = sc.O, sc.A
+        ne = NewtonEuler("newton_euler", coordinates=[theta], ground=O,
+                         description="free-body diagram of link and bob together")
+        ne.gravity(-g * O.y, bodies=[sc.bob])
+        ne.linear_spring("spring", sc.link, k, b * theta, A.x, at=sc.S)     # along the arc
+        ne.linear_damper("dashpot", sc.link, c, a * D(theta), A.x, at=sc.D)
+        ne.reaction("H", sc.link, O.x, at=sc.pivot)
+        ne.reaction("V", sc.link, O.y, at=sc.pivot)
+        system = [sc.link, sc.bob]
+        ne.linear_momentum(system, O.x)
+        ne.linear_momentum(system, O.y)
+        ne.angular_momentum(system, O.z, about=sc.pivot)
+        return ne.equations()
+
+    # -- indirect form --------------------------------------------------------------------
+    def lagrange(self) -> EquationSet:
+        """The source's ``T``, ``U`` and ``R`` (arc-length spring and dashpot)."""
+        lg = Lagrangian("lagrange", coordinates=[theta],
+                        description="the source's T, U, R: spring travel b th, dashpot rate a th'")
+        lg.kinetic("T of bob", m * (l * D(theta))**2 / 2)
+        lg.potential("gravity", m * g * l * (1 - sp.cos(theta)))
+        lg.spring("spring", k, b * theta)
+        lg.damper("dashpot", c, a * D(theta))
+        return lg.equations()
+
+    def multiplier(self) -> EquationSet:
+        """The pivot freed by ``(u, v)`` and held by the multipliers ``H``, ``V``; the
+        tangential elements by their virtual work (module doc)."""
+        lg = Lagrangian("multiplier", coordinates=[theta, u, v],
+                        description="pivot freed, closed again by two multipliers")
+        bob = sp.Matrix([u + l * sp.sin(theta), v - l * sp.cos(theta)])
+        lg.kinetic("T of bob", m * (D(bob).T * D(bob))[0, 0] / 2)
+        lg.potential("gravity", m * g * bob[1])
+        s, co = sp.sin(theta), sp.cos(theta)
+        for key, force, arm in (("spring", k * b * theta, b), ("dashpot", c * a * D(theta), a)):
+            # -F A.x at distance `arm`: virtual work -F (cos th du + sin th dv + arm dth)
+            lg.generalized_force(key, [-force * arm, -force * co, -force * s])
+        lg.constraint("H", u)
+        lg.constraint("V", v)
+        return lg.equations()
+
+    # -- the source's answers -------------------------------------------------------------
+    def published(self) -> list[Published]:
+        sc = _scene()
+        O = sc.O
+        height_B = sc.B.pos_from().dot(O.y) + l     # above the bob's lowest position
+        arc_S = b * theta                           # the spring's travel along its arc
+        speed_D = sc.D.vel(O).dot(sc.A.x)           # the dashpot's rate: speed along its arc
+        M, C, K = self.model("lagrange").linearize()
+        where = "Example 12"
+        return [
+            Published("T", "expression", (m * (l * D(theta))**2 / 2,),
+                      (sc.bob.kinetic_energy(O),), where=where),
+            Published("R", "expression", (c * (a * D(theta))**2 / 2,), (c * speed_D**2 / 2,),
+                      where=where),
+            Published("U", "expression",
+                      (m * g * l - m * g * l * sp.cos(theta) + k * (b * theta)**2 / 2,),
+                      (m * g * height_B + k * arc_S**2 / 2,), where=where),
+            Published("equation of motion", "motion",
+                      (m * l**2 * DD(theta) + c * a**2 * D(theta) + m * g * l * sp.sin(theta)
+                       + k * b**2 * theta,), where=where),
+            Published("linearised equation: M, C, K", "expression",
+                      (m * l**2, c * a**2, m * g * l + k * b**2),
+                      (M[0, 0], C[0, 0], K[0, 0]),
+                      where=where + ", 'Linearize sin th ~ th': the coefficients of th'', "
+                      "th', th"),
+        ]
+
+
+class RestrainedPendulumHorizontal(RestrainedPendulum):
+    """The richer variant: spring and dashpot exactly horizontal (module doc, last section)."""
+
+    name = "restrained_pendulum_horizontal"
+    title = "Plane pendulum restrained by a horizontal spring and dashpot"
+    source = "000_203248afac9714e6.txt: Example 12 (the usual drawing, not the source's energies)"
+    summary = ("Example 12 with the spring and dashpot horizontal, from the link to a wall "
+               "(their wall ends in vertical guides): exact terms k b^2 sin th cos th and "
+               "c a^2 th' cos^2 th; the source's model is its small-angle form.")
+    coordinates = (
+        Coordinate(theta, ANGLE, (-1.4, 1.4), (-3.0, 3.0), "link angle from the downward "
+                   "vertical"),
+    )
+    reactions = (
+        Reaction("H", FORCE, "pivot on link, along i (horizontal)"),
+        Reaction("V", FORCE, "pivot on link, along j (up)"),
+    )
+
+    def newton_euler(self) -> EquationSet:
+        """Link + bob, horizontal spring and dashpot: ``sum F`` on ``i``, ``j``, moments on ``k``."""
+        sc = _scene()
         O = sc.O
         ne = NewtonEuler("newton_euler", coordinates=[theta], ground=O,
                          description="free-body diagram of link and bob together")
@@ -181,9 +293,8 @@ class RestrainedPendulum(Problem):
         ne.angular_momentum(system, O.z, about=sc.pivot)
         return ne.equations()
 
-    # -- indirect form --------------------------------------------------------------------
     def lagrange(self) -> EquationSet:
-        """``T``, ``U`` and ``R`` by hand, horizontal spring and dashpot (module docstring)."""
+        """``T``, ``U`` and ``R`` by hand, horizontal spring and dashpot."""
         lg = Lagrangian("lagrange", coordinates=[theta],
                         description="T, U, R with the spring and dashpot horizontal")
         lg.kinetic("T of bob", m * (l * D(theta))**2 / 2)
@@ -205,39 +316,35 @@ class RestrainedPendulum(Problem):
         lg.constraint("V", v)
         return lg.equations()
 
-    # -- the source's answers -------------------------------------------------------------
     def published(self) -> list[Published]:
+        """The source's answers read for horizontal elements: right to first order only."""
         sc = _scene()
         O = sc.O
-        rate_D = sc.D.vel(O).dot(O.x)
-        x_S = sc.S.pos_from().dot(O.x)
-        height_B = sc.B.pos_from().dot(O.y) + l     # above the bob's lowest position
+        rate_D = sc.D.vel(O).dot(O.x)               # horizontal velocity of the dashpot's end
+        x_S = sc.S.pos_from().dot(O.x)              # horizontal travel of the spring's end
+        height_B = sc.B.pos_from().dot(O.y) + l
         M, C, K = self.model("lagrange").linearize()
-        s, co = sp.sin(theta), sp.cos(theta)
-        where = "Example 12"
+        where = "Example 12, read with horizontal elements"
         return [
             Published("T", "expression", (m * (l * D(theta))**2 / 2,),
                       (sc.bob.kinetic_energy(O),), where=where),
             Published("R", "expression", (c * (a * D(theta))**2 / 2,), (c * rate_D**2 / 2,),
-                      where=where + ": WRONG beyond first order, the dashpot's rate is "
-                      "a th' cos(th), not a th' (small-angle form)"),
+                      where=where + ": WRONG for this reading beyond first order, the "
+                      "dashpot's rate is a th' cos(th)"),
             Published("U", "expression",
-                      (m * g * l - m * g * l * co + k * (b * theta)**2 / 2,),
+                      (m * g * l - m * g * l * sp.cos(theta) + k * (b * theta)**2 / 2,),
                       (m * g * height_B + k * x_S**2 / 2,),
-                      where=where + ": WRONG beyond first order, the spring's travel is "
-                      "b sin(th), not b th (small-angle form)"),
+                      where=where + ": WRONG for this reading beyond first order, the "
+                      "spring's travel is b sin(th)"),
             Published("equation of motion", "motion",
-                      (m * l**2 * DD(theta) + c * a**2 * D(theta) + m * g * l * s
+                      (m * l**2 * DD(theta) + c * a**2 * D(theta) + m * g * l * sp.sin(theta)
                        + k * b**2 * theta,),
-                      where=where + ": WRONG beyond first order, small-angle spring and "
-                      "dashpot terms (k b^2 th, c a^2 th') beside the exact m g l sin(th); "
-                      "exact: k b^2 sin(th) cos(th), c a^2 th' cos^2(th)"),
+                      where=where + ": WRONG for this reading beyond first order; exact: "
+                      "k b^2 sin(th) cos(th), c a^2 th' cos^2(th)"),
             Published("linearised equation: M, C, K", "expression",
                       (m * l**2, c * a**2, m * g * l + k * b**2),
-                      (M[0, 0], C[0, 0], K[0, 0]),
-                      where=where + ", 'Linearize sin th ~ th': the coefficients of th'', "
-                      "th', th"),
+                      (M[0, 0], C[0, 0], K[0, 0]), where=where),
         ]
 
 
-PROBLEMS = (RestrainedPendulum,)
+PROBLEMS = (RestrainedPendulum, RestrainedPendulumHorizontal)

@@ -66,18 +66,21 @@ the singular set declared.  Near it the ``x`` form also loses digits in floating
 (``D = 4 l^2 - (l0 + x)^2`` cancels, relative error ~ ``eps/sin^2(theta)``), so the working
 range of ``theta`` stays at least 0.4 rad away from the fold.
 
-The bar force once more, as a multiplier: free B from the bar (``x`` independent of ``theta``)
-and lift M off the shaft (height ``y``); close both with constraints written as distances with
-unit gradient along the forces::
+Every bar force once more, as a multiplier: free m from the bar OA (polar coordinates
+``(r, theta)`` of A, ``r`` independent), B from the bar AB (``x`` independent of ``theta``) and
+lift M off the shaft (height ``y``); close all three with constraints written as distances
+with unit gradient along the forces::
 
-    T = m l^2 theta'^2/2 + M (x'^2 + y'^2)/2,   V = m g l sin(theta) + k x^2/2 + M g y
-    F_R:  (|AB|^2 - l^2)/(2 l) = (x_B (x_B - 2 l cos(theta)) + y (y - 2 l sin(theta)))/(2 l)
-    N:    y                                         (B = x_B I + y J,  x_B = l0 + x)
+    T = m (r'^2 + r^2 theta'^2)/2 + M (x'^2 + y'^2)/2,   V = m g r sin(theta) + k x^2/2 + M g y
+    F_L:  r - l                                      (gradient i_A at A: OA pushes m out)
+    F_R:  (|AB|^2 - l^2)/(2 l) = (x_B (x_B - 2 r cos(theta)) + y (y - 2 r sin(theta)) + r^2 - l^2)/(2 l)
+    N:    y                                          (B = x_B I + y J,  x_B = l0 + x)
 
-(``|AB|^2 = x_B^2 + y^2 - 2 l (x_B cos(theta) + y sin(theta)) + l^2``; the gradient of the
-first constraint with respect to B is ``(B - A)/l``, the unit vector ``i_R`` on the
+(``|AB|^2 = x_B^2 + y^2 - 2 r (x_B cos(theta) + y sin(theta)) + r^2``; the gradient of the
+``F_R`` constraint with respect to B is ``(B - A)/l``, the unit vector ``i_R`` on the
 constraint, so its multiplier is ``F_R``; the virtual work of the pair ``+-F_R i_R`` on M and
-m is ``F_R d|AB|``.)
+m is ``F_R d|AB|``.  The ``F_L`` constraint's gradient with respect to A is ``i_A``: its
+multiplier is the force of OA on m along ``i_A``, the direct form's ``F_L``.)
 
 Errata found in the printed solution (see :meth:`TwoRodLinkage.published`):
 
@@ -113,12 +116,13 @@ from dualmech.equations import EquationSet
 from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["TwoRodLinkage", "PROBLEMS", "scene", "M", "m", "k", "c", "l", "l0", "g", "theta",
-           "x", "y"]
+           "x", "y", "r"]
 
 M, m, k, c, l, l0, g = sp.symbols("M m k c l l0 g", positive=True)
 theta = coordinate("theta")
 x = coordinate("x")   # the x form's coordinate (and B's freed position in the multiplier model)
 y = coordinate("y")   # height of M off the shaft, multiplier model only
+r = coordinate("r")   # distance of m from O (rod OA freed), multiplier model only
 F_R = sp.Symbol("F_R", real=True)
 
 D = lambda q, n=1: q.diff(t, n)  # noqa: E731  (q', q'')
@@ -167,6 +171,7 @@ class TwoRodLinkage(Problem):
         Coordinate(x, LENGTH, (-2.5, 1.5), (-4.0, 4.0),
                    "displacement of M from the unstretched spring"),
         Coordinate(y, LENGTH, (-0.1, 0.1), (-0.5, 0.5), "height of M off the shaft"),
+        Coordinate(r, LENGTH, (0.5, 2.0), (0.1, 4.0), "distance of m from O (rod OA freed)"),
     )
     reactions = (
         Reaction("F_R", FORCE, "right bar on M, along i_R = cos(theta) I - sin(theta) J"),
@@ -179,7 +184,7 @@ class TwoRodLinkage(Problem):
     def coordinate_maps(self) -> dict:
         x_of_theta = 2 * l * sp.cos(theta) - l0
         return {"lagrange_x": {x: x_of_theta},
-                "multiplier": {theta: theta, x: x_of_theta, y: 0}}
+                "multiplier": {theta: theta, x: x_of_theta, y: 0, r: l}}
 
     # -- direct form -----------------------------------------------------------------------
     def newton_euler(self) -> EquationSet:
@@ -222,17 +227,18 @@ class TwoRodLinkage(Problem):
         return lg.equations()
 
     def multiplier(self) -> EquationSet:
-        """B freed from the bar and M from the shaft; ``F_R`` and ``N`` as multipliers."""
-        lg = Lagrangian("multiplier", coordinates=[theta, x, y],
-                        description="bar AB and shaft as constraints with multipliers")
-        lg.kinetic("T of m", m * l**2 * D(theta)**2 / 2)
+        """Both bars and the shaft as constraints: ``F_L``, ``F_R`` and ``N`` as multipliers."""
+        lg = Lagrangian("multiplier", coordinates=[theta, r, x, y],
+                        description="bars OA, AB and the shaft as constraints with multipliers")
+        lg.kinetic("T of m", m * (D(r)**2 + r**2 * D(theta)**2) / 2)
         lg.kinetic("T of M", M * (D(x)**2 + D(y)**2) / 2)
-        lg.potential("gravity", m * g * l * sp.sin(theta) + M * g * y)
+        lg.potential("gravity", m * g * r * sp.sin(theta) + M * g * y)
         lg.spring("spring", k, x)
         lg.damper("dashpot", c, D(x))
         xB = l0 + x
-        lg.constraint("F_R", (xB * (xB - 2 * l * sp.cos(theta)) + y * (y - 2 * l * sp.sin(theta)))
-                      / (2 * l))
+        lg.constraint("F_L", r - l)
+        lg.constraint("F_R", (xB * (xB - 2 * r * sp.cos(theta)) + y * (y - 2 * r * sp.sin(theta))
+                              + r**2 - l**2) / (2 * l))
         lg.constraint("N", y)
         return lg.equations()
 

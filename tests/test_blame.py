@@ -123,7 +123,14 @@ class FallingContainerDashpotFlipped(FallingContainer):
 
 
 class PendulumOnMassStiffSpring(pm.PendulumOnMass):
-    """``V`` of the spring written ``k y^2`` (the 1/2 dropped); only two derivations: a tie."""
+    """``V`` of the spring written ``k y^2`` (the 1/2 dropped); only two derivations: a tie
+    (the catalogue's multiplier model, a third derivation, is left out here)."""
+
+    extra_models = ()
+    extra_coordinates = ()
+
+    def coordinate_maps(self):
+        return {}
 
     def lagrange(self):
         lg = Lagrangian(coordinates=[pm.y, pm.theta])

@@ -19,7 +19,7 @@ def comparison():
 
 def test_declaration_validates():
     problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange", "moments"]
+    assert problem.model_names == ["newton_euler", "lagrange", "moments", "multiplier"]
     assert problem.dimension_issues() == []
 
 
@@ -85,7 +85,7 @@ def test_theta2_finally_needs_I0_2mb2_and_then_only_its_gravity_term_is_wrong():
 
 def test_comparator_proves_every_derivation_equivalent(comparison):
     assert comparison.equivalent, str(comparison)
-    assert {p.candidate for p in comparison.pairs} == {"newton_euler", "moments"}
+    assert {p.candidate for p in comparison.pairs} == {"newton_euler", "moments", "multiplier"}
     assert all(p.method == "exact" for p in comparison.pairs)
 
 
@@ -108,3 +108,11 @@ EXPECTED = {
 
 def test_published_verdicts(comparison):
     assert {v.label: v.verdict for v in comparison.published} == EXPECTED
+
+
+def test_hinge_force_is_derived_twice_and_agrees(comparison):
+    # the multiplier model frees the hinge by (u, v): R_x, R_y a second time
+    c = comparison
+    (pair,) = [p for p in c.pairs if p.kind == "reactions"]
+    assert pair.equivalent and pair.method == "exact"
+    assert set(pair.reactions) == {"R_x", "R_y"} and c.not_cross_checked == []

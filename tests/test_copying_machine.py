@@ -160,3 +160,19 @@ def test_comparator_judges_the_printed_answers(comparison):
         "equations of motion": "correct",
         "one-coordinate equation": "correct",
     }
+
+
+def test_check_solves_the_static_row_and_shows_y_theta_and_R_O():
+    # hand (module docstring): theta = k2 L y / (k2 L^2 + k1 a^2) from the static row,
+    # m2 y'' = F - b y' - k2 (y - L theta), R_O = k1 k2 a (L - a) y / (k2 L^2 + k1 a^2)
+    c = compare(problem)
+    assert c.equivalent and c.display_notes == []
+    assert set(c.accelerations) == {"y"} and set(c.static) == {"theta"}
+    assert sp.simplify(c.static["theta"] - ON_MANIFOLD) == 0
+    y_dd = (F - b * D(y) - k2 * (y - L * ON_MANIFOLD)) / m2
+    assert sp.simplify(c.accelerations["y"] - y_dd) == 0
+    assert sp.simplify(c.reactions["R_O"] - R_O_HAND) == 0
+    d = c.to_dict()
+    assert set(d["accelerations"]) == {"y"} and set(d["static"]) == {"theta"}
+    assert set(d["reactions"]) == {"R_O"} and d["reactions_not_cross_checked"] == []
+    assert "theta = L*k2*y/(L**2*k2 + a**2*k1)   (static row" in str(c)

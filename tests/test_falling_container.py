@@ -84,8 +84,8 @@ def _on_motion(expr, model="lagrange"):
 
 def test_printed_x_equations_miss_l0_and_the_second_has_the_wrong_mass():
     pubs = {p.label: p for p in problem.published()}
-    (e1,) = pubs["x-equation 1"].printed
-    (e2,) = pubs["x-equation 2"].printed
+    (e1,) = pubs["x-equation 1, x2 from the ground"].printed
+    (e2,) = pubs["x-equation 2, x2 from the ground"].printed
     # hand: true eq 1 is m1 x1'' + c(x1' - x2') + k(x1 - x2 + l0) + m1 g, so printed - true = -k l0
     assert _on_motion(e1) == -k * l0
     # hand: true eq 2 has m2 x2'' and k(x2 - x1 - l0), so printed - true = (m1 - m2) x2'' + k l0
@@ -94,6 +94,17 @@ def test_printed_x_equations_miss_l0_and_the_second_has_the_wrong_mass():
     assert sp.simplify(_on_motion(e1).subs(l0, 0)) == 0
     assert sp.simplify(_on_motion(e2).subs(l0, 0)) != 0
     assert sp.simplify(_on_motion(e2).subs({l0: 0, m1: m2})) == 0
+
+
+def test_printed_x_equations_read_with_the_energys_datum():
+    # x2 measured from the spring's free length (U = k (x1 - x2)^2/2): x2_printed = x2 - l0
+    pubs = {p.label: p for p in problem.published()}
+    (f1,) = pubs["x-equation 1, x2 from the free length"].printed
+    (f2,) = pubs["x-equation 2, x2 from the free length"].printed
+    assert sp.expand(f1 - (m1 * DD(x1) + c * (D(x1) - D(x2)) + k * (x1 - x2 + l0) + m1 * g)) == 0
+    assert _on_motion(f1) == 0
+    # hand: the second keeps only the wrong mass, printed - true = (m1 - m2) x2''
+    assert sp.simplify(_on_motion(f2) - _on_motion((m1 - m2) * DD(x2))) == 0
 
 
 def test_printed_y_equations_hold_in_y_coordinates():
@@ -109,11 +120,16 @@ def test_comparator_agrees_and_judges_the_printed_answers(comparison):
     assert all(p.method == "exact" for p in comparison.pairs)
     verdicts = {v.label: v.verdict for v in comparison.published}
     assert verdicts == {
-        "x-equation 1": "wrong",     # k(x1 - x2) for k(x1 - x2 + l0)
-        "x-equation 2": "wrong",     # m1 x2'' for m2 x2'', and k(x2 - x1) for k(x2 - x1 - l0)
+        # x2 from the ground (the source's words): k(x1 - x2) for k(x1 - x2 + l0)
+        "x-equation 1, x2 from the ground": "wrong",
+        # x2 from the spring's free length (the datum its U implies): right
+        "x-equation 1, x2 from the free length": "correct",
+        # m1 x2'' for m2 x2'' in both readings (and k(x2 - x1) for k(x2 - x1 - l0))
+        "x-equation 2, x2 from the ground": "wrong",
+        "x-equation 2, x2 from the free length": "wrong",
         "y-equation 1": "correct",   # (m1 + m2) y1'' + m2 y2'' + (m1 + m2) g = 0
         "y-equation 2": "correct",   # m2 (y1'' + y2'') + c y2' + k y2 + m2 g = 0
     }
     detail = {v.label: v.detail for v in comparison.published}
-    assert "k*l0" in detail["x-equation 1"]
+    assert "k*l0" in detail["x-equation 1, x2 from the ground"]
     assert comparison.reactions == {"H1": 0, "H2": 0}

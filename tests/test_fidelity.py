@@ -99,3 +99,38 @@ def test_fidelity_command_prints_the_ladder(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "linearised" in out and "RHS [us/call]" in out
     assert (tmp_path / "simple_pendulum_fidelity.png").stat().st_size > 0
+
+
+def test_restrained_pendulum_ladder_shows_what_horizontal_elements_add():
+    # the source's model (elements along the arcs) below the horizontal variant; hand ODEs
+    # (problems/restrained_pendulum.py): m l^2 th'' = -c a^2 th' w(th)^2 - k b^2 s(th) w(th)
+    # - m g l sin th, with (s, w) = (th, 1) along the arcs and (sin th, cos th) horizontal
+    from scipy.integrate import solve_ivp
+    lad = ladder(get("restrained_pendulum"))
+    assert [r.problem for r in lad.rungs] == ["restrained_pendulum_horizontal",
+                                              "restrained_pendulum",
+                                              "restrained_pendulum_horizontal"]
+    source = lad.rungs[1]
+    assert source.label.startswith("source") and "b sin th" in source.neglects
+    m, l, k, c, a, b, g = 1.0, 1.0, 40.0, 2.0, 0.4, 0.6, 9.81      # the declared values
+
+    def ode(horizontal):
+        def f(t, y):
+            s, w = (np.sin(y[0]), np.cos(y[0])) if horizontal else (y[0], 1.0)
+            return [y[1], -(c * a**2 * y[1] * w**2 + k * b**2 * s * w
+                            + m * g * l * np.sin(y[0])) / (m * l**2)]
+        return f
+    y0 = [-1.4 + 0.6 * 2.8, 0.0]        # 60 % into the declared range, at rest
+    te = np.linspace(*lad.span, 201)
+    runs = [solve_ivp(ode(h), lad.span, y0, "DOP853", t_eval=te, rtol=1e-12, atol=1e-13).y
+            for h in (False, True)]
+    gap = np.abs(runs[0][0] - runs[1][0]).max() / 2.8      # theta's declared range is 2.8 wide
+    assert gap > 1e-3                   # a real difference, far above the integration error
+    # both ladder runs at rtol 1e-10 (atol 1e-10 x the range): a few hundred times that
+    assert source.by_coordinate["theta"] == pytest.approx(gap, abs=300 * RTOL)
+
+
+def test_helicopter_ladder_has_the_weight_as_its_top_rung():
+    lad = ladder(get("helicopter_blade"))
+    assert [r.problem for r in lad.rungs][1:] == ["helicopter_blade", "helicopter_blade_weighted"]
+    assert lad.rungs[1].neglects.startswith("the blade's weight") and lad.rungs[1].error_path > 0

@@ -4,8 +4,9 @@ import sympy as sp
 
 from dualmech import t
 from dualmech.compare import compare
-from dualmech.problems.helicopter_blade import (A, L, M, HelicopterBlade, Omega, alpha0, beta, first_order,
-                                       frames, g, lift_per_length, x)
+from dualmech.problems.helicopter_blade import (A, L, M, HelicopterBlade, HelicopterBladeWeighted,
+                                                Omega, alpha0, beta, first_order, frames, g,
+                                                lift_per_length, x)
 
 problem = HelicopterBlade()
 D = lambda q, n=1: q.diff(t, n)  # noqa: E731
@@ -33,13 +34,25 @@ def test_station_velocity_from_the_frames():
     assert [sp.simplify(c) for c in v] == [0, Omega * x * sp.cos(beta), x * D(beta)]
 
 
-def test_equation_of_motion_by_hand():
-    # (M L^3/3)(beta'' + Omega^2 sin cos) + (M g L^2/2) cos(beta) = A L^4 (alpha0 Omega^2 - Omega beta')/4
+@pytest.mark.parametrize("p, weight", [(problem, 0), (HelicopterBladeWeighted(), 1)],
+                         ids=["source", "weighted"])
+def test_equation_of_motion_by_hand(p, weight):
+    # (M L^3/3)(beta'' + Omega^2 sin cos) [+ (M g L^2/2) cos(beta) with the weight]
+    #     = A L^4 (alpha0 Omega^2 - Omega beta')/4
     hand = (M * L**3 / 3 * (D(beta, 2) + Omega**2 * sp.sin(beta) * sp.cos(beta))
-            + M * g * L**2 / 2 * sp.cos(beta) - A * L**4 * (alpha0 * Omega**2 - Omega * D(beta)) / 4)
-    (lag,) = problem.model("lagrange").equations
-    (direct,) = problem.model("newton_euler").equations
+            + weight * M * g * L**2 / 2 * sp.cos(beta)
+            - A * L**4 * (alpha0 * Omega**2 - Omega * D(beta)) / 4)
+    (lag,) = p.model("lagrange").equations
+    (direct,) = p.model("newton_euler").equations
     assert _zero(lag - hand) and _zero(direct + hand)
+
+
+def test_source_model_has_no_weight_and_the_variant_agrees_with_itself():
+    assert g not in problem.parameter_symbols
+    result = compare(HelicopterBladeWeighted())
+    # the printed answers (angle of attack, lift, Q) do not involve the weight: same verdicts
+    assert result.equivalent and [(v.label, v.verdict) for v in result.published] == \
+        [(v.label, v.verdict) for v in compare(problem).published]
 
 
 def test_lift_acts_at_three_quarters_of_the_span():

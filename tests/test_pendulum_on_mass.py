@@ -22,7 +22,7 @@ def comparison():
 
 def test_declaration_validates():
     problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange"]
+    assert problem.model_names == ["newton_euler", "lagrange", "multiplier"]
 
 
 def test_dimension_audit_is_clean():
@@ -120,8 +120,9 @@ def test_comparator_catches_a_flipped_force_or_inertia(ingredient):
 
 def test_comparator_proves_the_derivations_equivalent(comparison):
     assert comparison.equivalent is True
-    (pair,) = comparison.pairs
-    assert pair.candidate == "newton_euler" and pair.method == "exact"
+    motion = {p.candidate: p for p in comparison.pairs if p.kind == "motion"}
+    assert set(motion) == {"newton_euler", "multiplier"}
+    assert all(p.equivalent and p.method == "exact" for p in motion.values())
     assert set(comparison.reactions) == {"F_N", "F_Rx", "F_Ry"}
     assert sp.simplify(comparison.reactions["F_N"] - comparison.reactions["F_Rx"]) == 0
 
@@ -150,3 +151,11 @@ EXPECTED = {
 def test_published_verdicts(comparison):
     verdicts = {v.label: v.verdict for v in comparison.published}
     assert verdicts == EXPECTED
+
+
+def test_shaft_and_pivot_forces_are_derived_twice_and_agree(comparison):
+    # the multiplier model frees the shaft (x) and the pivot (p, q): F_N, F_Rx, F_Ry again
+    c = comparison
+    (pair,) = [p for p in c.pairs if p.kind == "reactions"]
+    assert pair.equivalent and pair.method == "exact" and pair.candidate == "multiplier"
+    assert set(pair.reactions) == {"F_N", "F_Rx", "F_Ry"} and c.not_cross_checked == []

@@ -49,6 +49,13 @@ def test_normal_force_of_the_free_body_diagram_and_both_multipliers_agree(compar
     assert all(n in names for n in ("newton_euler", "multiplier", "contact_velocity"))
 
 
+def test_rod_force_is_derived_twice_and_agrees(comparison):
+    # the multiplier model frees the rod's length too: S by a second derivation
+    (pair,) = [p for p in comparison.pairs if p.kind == "reactions" and "S" in p.reactions]
+    assert pair.equivalent and pair.method == "exact" and pair.candidate == "multiplier"
+    assert comparison.not_cross_checked == []
+
+
 def test_rod_and_normal_force_satisfy_the_free_body_equations_by_hand():
     # hand (module docstring): N = m g cos(beta) + m (beta'' lever + 2 beta' l sin th th')
     bt = plane_angle()

@@ -1,4 +1,5 @@
-"""Restrained plane pendulum of Example 12 (problems/restrained_pendulum.py)."""
+"""Restrained plane pendulum of Example 12 (problems/restrained_pendulum.py): the source's
+model (spring and dashpot along the arcs) and the horizontal variant of its fidelity ladder."""
 import numpy as np
 import pytest
 import sympy as sp
@@ -8,11 +9,14 @@ from dualmech import EquationSet, Lagrangian, t
 from dualmech.compare import compare, compare_models, reaction_pairs
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
-from dualmech.problems.restrained_pendulum import (RestrainedPendulum, a, b, c, g, hand_reactions, k, l,
-                                          m, theta)
+from dualmech.problems.restrained_pendulum import (RestrainedPendulum,
+                                                   RestrainedPendulumHorizontal, a, b, c, g,
+                                                   hand_reactions, hand_reactions_horizontal,
+                                                   k, l, m, theta)
 
 _EPS = np.finfo(float).eps
 problem = RestrainedPendulum()
+horizontal = RestrainedPendulumHorizontal()
 D = lambda q: q.diff(t)  # noqa: E731
 DD = lambda q: q.diff(t, 2)  # noqa: E731
 PRINTED_EOM = (m * l**2 * DD(theta) + c * a**2 * D(theta) + m * g * l * sp.sin(theta)
@@ -32,54 +36,75 @@ def test_declaration_validates():
         assert [u.name for u in problem.model(name).unknowns] == ["H", "V"]
 
 
-def test_exact_equation_is_the_hand_derived_one():
+def test_reference_equation_is_the_printed_one():
+    # the source's U = m g l (1 - cos th) + k (b th)^2/2 and R = c (a th')^2/2 give, by hand,
+    # d/dt(m l^2 th') + c a^2 th' + m g l sin th + k b^2 th = 0 -- the printed equation
+    for name in ("lagrange", "newton_euler"):
+        eqs = problem.model(name)
+        sol = eqs.solve()
+        assert sp.simplify(sol[DD(theta)] + (PRINTED_EOM - m * l**2 * DD(theta))
+                           / (m * l**2)) == 0, name
+
+
+def test_horizontal_variant_equation_is_the_hand_derived_one():
     # m l^2 th'' + c a^2 th' cos^2 th + k b^2 sin th cos th + m g l sin th = 0 (module doc)
-    (eq,) = problem.model("lagrange").equations
+    (eq,) = horizontal.model("lagrange").equations
     s, co = sp.sin(theta), sp.cos(theta)
     hand = (m * l**2 * DD(theta) + c * a**2 * D(theta) * co**2 + k * b**2 * s * co
             + m * g * l * s)
     assert sp.simplify(eq - hand) == 0
 
 
-def test_library_linearisation_gives_the_printed_linear_equation():
-    # printed: m l^2 th'' + c a^2 th' + m g l th + k b^2 th = 0
-    M, C, K = problem.model("lagrange").linearize()
+@pytest.mark.parametrize("p", [problem, horizontal], ids=["source", "horizontal"])
+def test_library_linearisation_gives_the_printed_linear_equation(p):
+    # printed: m l^2 th'' + c a^2 th' + m g l th + k b^2 th = 0, for both readings
+    M, C, K = p.model("lagrange").linearize()
     assert (M[0, 0], C[0, 0], K[0, 0]) == (m * l**2, c * a**2, m * g * l + k * b**2)
-    (w,) = problem.model("lagrange").natural_frequencies()
+    (w,) = p.model("lagrange").natural_frequencies()
     assert sp.simplify(w**2 - (g / l + k * b**2 / (m * l**2))) == 0
 
 
 def test_printed_nonlinear_equation_is_not_the_motion_of_horizontal_elements():
     printed = EquationSet("printed", (theta,), (PRINTED_EOM,))
-    result = compare_models(problem.model("lagrange"), printed)
+    result = compare_models(horizontal.model("lagrange"), printed)
     assert not result.equivalent and result.method == "exact"
 
 
-def test_printed_nonlinear_equation_is_exact_for_tangential_elements():
-    # the other reading: spring and dashpot act along the tangent of their attachment
-    # points' arcs, travel b th and rate a th' (the source's U and R taken literally)
-    lg = Lagrangian("tangential", coordinates=[theta])
-    lg.kinetic("T", m * (l * D(theta))**2 / 2)
-    lg.potential("gravity", m * g * l * (1 - sp.cos(theta)))
-    lg.spring("spring", k, b * theta)
-    lg.damper("dashpot", c, a * D(theta))
+def test_printed_nonlinear_equation_is_the_source_models_motion():
     printed = EquationSet("printed", (theta,), (PRINTED_EOM,))
-    assert compare_models(lg.equations(), printed).equivalent
+    assert compare_models(problem.model("newton_euler"), printed).equivalent
 
 
+def test_horizontal_variant_agrees_and_reads_the_printed_answers_to_first_order():
+    result = compare(horizontal)
+    assert result.equivalent
+    assert {v.label: v.verdict for v in result.published} == {
+        "T": "correct",
+        "R": "wrong",                     # rate a th' cos th, printed a th'
+        "U": "wrong",                     # travel b sin th, printed b th
+        "equation of motion": "wrong",    # small-angle k b^2 th, c a^2 th'
+        "linearised equation: M, C, K": "correct",
+    }
+    (pair,) = [p for p in result.pairs if p.kind == "reactions"]
+    assert pair.equivalent and set(pair.reactions) == {"H", "V"}
+
+
+@pytest.mark.parametrize("p, hand", [(problem, hand_reactions),
+                                     (horizontal, hand_reactions_horizontal)],
+                         ids=["source", "horizontal"])
 @pytest.mark.parametrize("model", ["newton_euler", "multiplier"])
-def test_hand_derived_reactions_satisfy_each_derivation(model):
+def test_hand_derived_reactions_satisfy_each_derivation(model, p, hand):
     # put H, V of the module docstring (written with th'') into the direct / multiplier
     # equations: what is left must hold on the Lagrangian motion, row by row (exact test)
-    eqs = problem.in_reference_coordinates(problem.model(model))
+    eqs = p.in_reference_coordinates(p.model(model))
     assert eqs.is_square
-    values = {sp.Symbol(n, real=True): e for n, e in hand_reactions(DD(theta)).items()}
+    values = {sp.Symbol(n, real=True): e for n, e in hand(DD(theta)).items()}
     rows = [e.subs(values) for e in eqs.equations]
     # a row the hand reactions were read from vanishes identically; the rest must be the motion
     left = [e for e in rows if sp.simplify(e) != 0]
     assert 0 < len(left) < len(rows)
     closed = EquationSet("hand", eqs.coordinates, left)
-    result = compare_models(problem.model("lagrange"), closed, explain=False)
+    result = compare_models(p.model("lagrange"), closed, explain=False)
     assert result.equivalent and result.method == "exact"
 
 
@@ -100,9 +125,9 @@ def test_numeric_reactions_match_the_free_body_diagram(point):
     p = {str(s): val for s, val in point.params.items()}
     (th,), (thd,) = point.q, point.qd
     s, co = np.sin(th), np.cos(th)
-    H_hand = (p["k"] * p["b"] * s + p["c"] * p["a"] * thd * co
-              + p["m"] * p["l"] * (thdd * co - thd**2 * s))
-    V_hand = p["m"] * p["g"] + p["m"] * p["l"] * (thdd * s + thd**2 * co)
+    tangential = p["k"] * p["b"] * th + p["c"] * p["a"] * thd     # module doc, source's model
+    H_hand = tangential * co + p["m"] * p["l"] * (thdd * co - thd**2 * s)
+    V_hand = p["m"] * p["g"] + tangential * s + p["m"] * p["l"] * (thdd * s + thd**2 * co)
     tol = 64 * _EPS * np.linalg.cond(A) * max(1.0, float(np.max(np.abs(rhs))),
                                                abs(H_hand), abs(V_hand))
     assert abs(H - H_hand) <= tol and abs(V - V_hand) <= tol
@@ -130,10 +155,11 @@ def test_a_break_that_leaves_the_motion_alone_shows_in_the_reaction():
 def test_comparator_agrees_and_judges_the_printed_answers(comparison):
     assert comparison.equivalent, str(comparison)
     verdicts = {v.label: v.verdict for v in comparison.published}
+    # the source's own model: every printed answer follows from it
     assert verdicts == {
-        "T": "correct",                 # m (l th')^2 / 2
-        "R": "wrong",                   # rate a th' cos th, printed a th'
-        "U": "wrong",                   # travel b sin th, printed b th
-        "equation of motion": "wrong",  # k b^2 th and c a^2 th' are small-angle terms
+        "T": "correct",                   # m (l th')^2 / 2
+        "R": "correct",                   # dashpot rate a th' along its arc
+        "U": "correct",                   # spring travel b th along its arc
+        "equation of motion": "correct",  # the energies above, by hand (module doc)
         "linearised equation: M, C, K": "correct",
     }

@@ -157,7 +157,8 @@ def test_comparator_agrees_and_judges_the_printed_answers(comparison):
                                                             "multiplier"}
     assert all(p.method == "exact" for p in comparison.pairs)
     assert pairs[("reactions", "multiplier")].equivalent
-    assert set(pairs[("reactions", "multiplier")].reactions) == {"F_R", "N"}
+    assert set(pairs[("reactions", "multiplier")].reactions) == {"F_R", "F_L", "N"}
+    assert comparison.not_cross_checked == []
     assert {v.label: v.verdict for v in comparison.published} == EXPECTED
 
 
@@ -184,3 +185,53 @@ def test_printed_bar_force_in_theta_is_short_of_the_spring_free_length():
     for printed, derived, expected in zip(pub.printed, pub.reference,
                                           (k * l0, -k * l0 * sp.Rational(4, 3))):
         assert at((printed - derived).subs(state)) == at(expected)
+
+
+class _SpuriousRadial(TwoRodLinkage):
+    """The direct form with a spurious ``m l theta'^2`` on m along the rod OA (``i_A``): a
+    student's centripetal term counted as a force.  It changes only ``F_L``."""
+
+    def newton_euler(self):
+        from dualmech import NewtonEuler
+        s = scene()
+        O = s.O
+        ne = NewtonEuler(coordinates=[theta], ground=O)
+        ne.gravity(-g * O.y)
+        ne.linear_spring("spring", s.slider, k, s.x, O.x)
+        ne.linear_damper("dashpot", s.slider, c, s.x.diff(t), O.x)
+        ne.reaction("N", s.slider, O.y)
+        ne.reaction("F_R", s.slider, s.R.x, against=s.bob)
+        ne.reaction("F_L", s.bob, s.A.x)
+        ne.force("spurious", s.bob, m * l * D(theta)**2 * s.A.x)
+        for body in (s.bob, s.slider):
+            ne.linear_momentum(body, O.x)
+            ne.linear_momentum(body, O.y)
+        return ne.equations()
+
+
+def test_spurious_radial_term_in_the_direct_form_is_caught_by_the_second_F_L():
+    broken = compare(_SpuriousRadial())
+    motion = [p for p in broken.pairs if p.kind == "motion"]
+    assert all(p.equivalent for p in motion)            # the motion is untouched ...
+    assert not broken.equivalent                        # ... but F_L now disagrees
+    (pair,) = [p for p in broken.pairs if p.kind == "reactions"]
+    assert not pair.equivalent
+    assert [mm.equation for mm in pair.mismatches] == ["reaction F_L"] * len(pair.mismatches)
+    assert "DIFFERENT" in str(broken) and "all derivations agree" not in str(broken)
+
+
+def test_reaction_only_mismatch_is_explained_with_values_and_the_term():
+    broken = compare(_SpuriousRadial())
+    (pair,) = [p for p in broken.pairs if p.kind == "reactions"]
+    ne = next(mm for mm in pair.mismatches if mm.model == "newton_euler")
+    # a real state, both values of F_L, the row that breaks with the multiplier's F_L ...
+    assert ne.state and "theta" in ne.state and np.isfinite(ne.value) and ne.value != 0
+    assert "F_L = " in ne.reason and "`multiplier` gives" in ne.reason
+    assert "sum F . O.y (m)" in ne.reason
+    # ... whose value is the J part of the spurious term there, m l theta'^2 sin(theta)
+    st = ne.state
+    assert ne.value == pytest.approx(st["m"] * st["l"] * st["theta'"]**2 * np.sin(st["theta"]),
+                                     rel=1e-12)
+    # and symbolically exactly that term (with the multiplier's reactions substituted)
+    assert ne.residual == "l*m*theta'**2*sin(theta)"
+    assert broken.to_dict()["mismatches"][0]["state"]

@@ -14,9 +14,10 @@
 
 Example
 -------
->>> from dualmech.problems import get                                    # doctest: +SKIP
->>> traj = simulate(get("toy_car"), t_span=(0, 2))              # doctest: +SKIP
->>> traj.reactions["F_r"].shape                                 # doctest: +SKIP
+>>> from dualmech.numeric import simulate
+>>> from dualmech.problems import get
+>>> traj = simulate(get("toy_car"), t_span=(0, 2))
+>>> traj.reactions["F_r"].shape
 (200,)
 """
 from importlib import import_module

@@ -22,8 +22,12 @@ A section that does not apply says why (no DAE form, no stable equilibrium, ...)
 
 Example
 -------
->>> from dualmech.problems import get                                         # doctest: +SKIP
->>> print(atlas(get("two_rod_linkage")))                              # doctest: +SKIP
+One section, to keep the example fast (``dualmech atlas NAME`` draws them all):
+
+>>> from dualmech.problems import get
+>>> a = atlas(get("toy_car"), sections=("singularities",), progress=False)
+>>> sorted(a.results)
+['singularities']
 """
 from __future__ import annotations
 

@@ -2,9 +2,11 @@
 
 Example
 -------
->>> fig, axes = panels(2, "a title")                                   # doctest: +SKIP
->>> save(fig, Path("out/example"))                                     # doctest: +SKIP
-[PosixPath('out/example.png'), PosixPath('out/example.svg')]
+>>> import tempfile
+>>> fig, axes = panels(2, "a title")
+>>> with tempfile.TemporaryDirectory() as out:
+...     [p.name for p in save(fig, Path(out) / "example")]
+['example.png', 'example.svg']
 """
 from __future__ import annotations
 

@@ -22,7 +22,7 @@ Example
 >>> parser = argparse.ArgumentParser(prog="dualmech")
 >>> register(parser.add_subparsers(dest="command"))
 >>> args = parser.parse_args(["atlas", "nonexistent_problem"])
->>> args.func(args)                                         # doctest: +SKIP
+>>> args.func(args)
 2
 """
 from __future__ import annotations

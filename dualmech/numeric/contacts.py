@@ -18,9 +18,9 @@ its working range), so a chart never shows a block sliding 85 m down a 2 m wedge
 
 Example
 -------
->>> from dualmech.problems import get                                         # doctest: +SKIP
->>> print(watch(get("toy_car"), (0, 3), y0=[0.3, 2.4, 0.0, 0.0]))     # doctest: +SKIP
-F_r changes sign (+ to -) at t = 0 s ...: the car leaves the track ...
+>>> from dualmech.problems import get
+>>> print(watch(get("toy_car"), (0, 3), y0=[0.3, 2.4, 0.0, 0.0]))     # doctest: +ELLIPSIS
+F_r changes sign (+ to -) from the start (theta = 0.3, phi = 2.4): the car leaves the track ...
 """
 from __future__ import annotations
 

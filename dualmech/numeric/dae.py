@@ -23,10 +23,10 @@ imposes the rod length only through its coordinate map) is made square by the sa
 
 Example
 -------
->>> from dualmech.problems import get                                          # doctest: +SKIP
->>> p = get("pendulum_particle"); eqs = p.model("cartesian")          # doctest: +SKIP
->>> constraints_of(eqs).expressions                                   # doctest: +SKIP
-((-x(t)**2 - y(t)**2)/(2*l),)
+>>> from dualmech.problems import get
+>>> p = get("pendulum_particle"); eqs = p.model("cartesian")
+>>> constraints_of(eqs).expressions
+(-x(t)**2/(2*l) - y(t)**2/(2*l),)
 """
 from __future__ import annotations
 

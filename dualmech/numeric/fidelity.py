@@ -8,7 +8,10 @@ sources offer one:
 * point mass against rigid body -- :class:`dualmech.problems.n_link_pendulum.NLinkPendulum` (masses
   on massless rods) below :class:`~dualmech.problems.n_link_pendulum.NLinkRigidPendulum` (uniform rods);
 * the mobile robot's simplified model, which neglects the pivot reaction ``H`` in the base's
-  balance, below the detailed one (a neglected reaction).
+  balance, below the detailed one (a neglected reaction);
+* a source's own model below the richer variant the catalogue adds to it: the restrained
+  pendulum's arc-length spring and dashpot (Example 12's energies) below horizontal ones,
+  the helicopter blade without its weight (as the source) below the blade with it.
 
 For each rung, :func:`ladder` measures its **derivation time** (building its equations from a
 fresh problem instance), its **right-hand-side cost** (CPU per call of the generated code at
@@ -19,8 +22,10 @@ a rung neglects, with their size along that trajectory.
 
 Example
 -------
->>> from dualmech.problems import get                                         # doctest: +SKIP
->>> print(ladder(get("mobile_robot")))                                # doctest: +SKIP
+>>> from dualmech.problems import get
+>>> lad = ladder(get("simple_pendulum"), duration=1.0)
+>>> [(r.label, r.error_path > 0) for r in lad.rungs]
+[('linearised (small oscillations about [0.0])', True), ('nonlinear', False)]
 """
 from __future__ import annotations
 
@@ -55,6 +60,20 @@ LADDERS: dict = {
                         ("uniform rigid rods", lambda: _problem("n_link_rigid_pendulum", n=3),
                          "", ())],
 }
+LADDERS.update({
+    "restrained_pendulum": [("source: spring and dashpot along their arcs (Example 12's U, R)",
+                             lambda: _problem("restrained_pendulum"), "the elements' turn away "
+                             "from horizontal (travel b th for b sin th, rate a th' for "
+                             "a th' cos th)", ()),
+                            ("spring and dashpot horizontal",
+                             lambda: _problem("restrained_pendulum_horizontal"), "", ())],
+    "helicopter_blade": [("source: weight neglected", lambda: _problem("helicopter_blade"),
+                          "the blade's weight, M g L^2 cos(beta)/2 about the hinge", ()),
+                         ("blade's weight kept", lambda: _problem("helicopter_blade_weighted"),
+                          "", ())],
+})
+LADDERS["restrained_pendulum_horizontal"] = LADDERS["restrained_pendulum"]
+LADDERS["helicopter_blade_weighted"] = LADDERS["helicopter_blade"]
 LADDERS["mobile_robot_simplified"] = LADDERS["mobile_robot"]
 LADDERS["n_link_rigid_pendulum"] = LADDERS["n_link_pendulum"]
 

@@ -21,9 +21,9 @@ against one reference motion.  Reactions come from the formulation itself when i
 
 Example
 -------
->>> from dualmech.problems import get                                     # doctest: +SKIP
->>> [f.name for f in formulations(get("pendulum_particle"))[0]]   # doctest: +SKIP
-['lagrange', 'newton_euler', 'newton_euler_inertial (DAE, index 1)', ...]
+>>> from dualmech.problems import get
+>>> [f.name for f in formulations(get("pendulum_particle"))[0]][:3]
+['lagrange', 'newton_euler', 'newton_euler_inertial (DAE, index 1)']
 """
 from __future__ import annotations
 

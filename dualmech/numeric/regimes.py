@@ -17,9 +17,12 @@
 
 Example
 -------
->>> from dualmech.problems import get                                         # doctest: +SKIP
->>> s = stiffness(get("falling_container"))                           # doctest: +SKIP
->>> print(s)                                                          # doctest: +SKIP
+Two stiffnesses and two methods, to keep the example fast (``dualmech atlas`` sweeps more):
+
+>>> from dualmech.problems import get
+>>> s = stiffness(get("falling_container"), values=(100.0, 1e6), methods=("RK45", "Radau"))
+>>> sorted({(r["value"], r["method"]) for r in s.rows})
+[(100.0, 'RK45'), (100.0, 'Radau'), (1000000.0, 'RK45'), (1000000.0, 'Radau')]
 """
 from __future__ import annotations
 

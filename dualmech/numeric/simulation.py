@@ -9,9 +9,9 @@ that names the argument, what was given and what is allowed.
 
 Example
 -------
->>> from dualmech.problems import get                                    # doctest: +SKIP
->>> traj = simulate(get("toy_car"), t_span=(0, 2))              # doctest: +SKIP
->>> traj.reactions["F_r"].shape                                 # doctest: +SKIP
+>>> from dualmech.problems import get
+>>> traj = simulate(get("toy_car"), t_span=(0, 2))
+>>> traj.reactions["F_r"].shape
 (200,)
 """
 from __future__ import annotations
@@ -54,10 +54,10 @@ def problem_parameters(problem, params: Mapping | None = None, *,
 
     Example
     -------
-    >>> from dualmech.problems import get                                     # doctest: +SKIP
-    >>> problem_parameters(get("toy_car"), {"L": 2})                 # doctest: +SKIP
+    >>> from dualmech.problems import get
+    >>> problem_parameters(get("toy_car"), {"L": 2})
     Traceback (most recent call last):
-    ValueError: `params`: unknown parameter 'L'; did you mean 'R'? ...
+    ValueError: `params`: unknown parameter 'L'. Problem `toy_car` has parameters R, g, m.
     """
     declared = {p.symbol: p for p in problem.parameters}
     by_name = {s.name: s for s in declared}

@@ -25,8 +25,8 @@ continuation along the run).
 
 Example
 -------
->>> from dualmech.problems import get                                       # doctest: +SKIP
->>> [str(s) for s in scan(get("toy_car"))][0]                       # doctest: +SKIP
+>>> from dualmech.problems import get
+>>> [str(p) for p in scan(get("toy_car")).points][0]
 'lagrange: det M = 0 at theta = -1.5708 (kappa ~ d^-2; declared: cos(theta) = 0)'
 """
 from __future__ import annotations

@@ -30,9 +30,18 @@ the legend.
 
 Example
 -------
->>> from dualmech.problems import get                                          # doctest: +SKIP
->>> wp = work_precision(get("pendulum_particle"), tolerances=(1e-4, 1e-8))  # doctest: +SKIP
->>> wp.write(Path("out"))                                             # doctest: +SKIP
+One model, one method, one tolerance, to keep the example fast (``dualmech chart`` sweeps
+them all):
+
+>>> import tempfile
+>>> from dualmech.problems import get
+>>> wp = work_precision(get("simple_pendulum"), duration=1.0, tolerances=(1e-6,), steps=(),
+...                     methods=("DOP853",), models=("lagrange",), progress=False)
+>>> [(r.formulation, r.method, r.success) for r in wp.runs]
+[('lagrange', 'DOP853', True)]
+>>> with tempfile.TemporaryDirectory() as out:
+...     sorted(p.suffix for p in wp.write(Path(out)))
+['.csv', '.json', '.png', '.svg']
 """
 from __future__ import annotations
 

@@ -9,10 +9,13 @@ to fit the scene) and writes both pages (:mod:`.pages`).
 
 Example
 -------
->>> from dualmech.compare import compare                              # doctest: +SKIP
->>> from dualmech.problems import all_problems                                  # doctest: +SKIP
->>> write_report([compare(p) for p in all_problems()], Path("out"), 5.0)  # doctest: +SKIP
-Written(markdown=PosixPath('out/report.md'), html=PosixPath('out/report.html'), ...)
+>>> import tempfile
+>>> from dualmech.compare import compare
+>>> from dualmech.problems import get
+>>> with tempfile.TemporaryDirectory() as out:
+...     w = write_report([compare(get("simple_pendulum"))], Path(out), 1.0)
+...     sorted(p.name for p in Path(out).iterdir())
+['report.html', 'report.md', 'simple_pendulum_reactions.png', 'simple_pendulum_reactions.svg']
 """
 from __future__ import annotations
 

@@ -16,9 +16,11 @@ It returns a :class:`Chart` with the paths and the notes, or the reason it could
 
 Example
 -------
->>> from dualmech.problems import get                                        # doctest: +SKIP
->>> trajectory_chart(get("block_on_wedge"), Path("out"), 5.0).notes   # doctest: +SKIP
-['simulated up to t = 0.49 s: q1 leaves its declared range [0, 2] ...']
+>>> import tempfile
+>>> from dualmech.problems import get
+>>> with tempfile.TemporaryDirectory() as out:
+...     print(trajectory_chart(get("block_on_wedge"), Path(out), 5.0).notes[0])
+simulated for t in [0, 0.49] s; it stops there because q1 leaves its declared range [0, 2] (distance of the block down the slope, relative to the wedge) at t = 0.49 s
 """
 from __future__ import annotations
 

@@ -19,14 +19,15 @@ import sympy as sp
 
 from ..equations import EquationSet, ModelError, Rows
 from ..sources import source_name
-from .display import Budget, OverBudget, dotted, solve_display
-from .explain import Mismatch, explain_model
+from .display import Budget, OverBudget, budget, dotted, solve_display
+from .explain import Mismatch, explain_model, explain_reaction
 from .published import PublishedVerdict, check_published
 from .sampling import Context
 from .verdicts import Judgement, judge
 
 __all__ = ["Comparison", "PairResult", "claims_of", "compare", "compare_models", "compare_reactions",
-           "reaction_pairs", "recover_reactions", "METHOD_NAMES", "method_name"]
+           "reaction_pairs", "recover_reactions", "solve_with_static", "METHOD_NAMES",
+           "method_name"]
 
 METHOD_NAMES = {
     "exact": "exact rational-point test",
@@ -109,6 +110,7 @@ class Comparison:
         self.limits = limits or Budget()
         self.display_notes: list[str] = []
         self._acc = self._reac = None
+        self._static: dict = {}
 
     @property
     def reaction_directions(self) -> dict:
@@ -123,6 +125,27 @@ class Comparison:
         return method_name(self.judgement.method)
 
     @property
+    def reaction_derivations(self) -> dict:
+        """``{declared reaction: [names of the models that derive it]}``."""
+        out = {r.name: [] for r in self.problem.reactions}
+        for name, m in self.judgement.models.items():
+            for u in m.unknowns:
+                if u.name in out:
+                    out[u.name].append(name)
+        return out
+
+    @property
+    def not_cross_checked(self) -> list[str]:
+        """Declared reactions that fewer than two derivations give: their value rests on one
+        free-body diagram alone, so no comparison could have caught a wrong term in it."""
+        return [n for n, held in self.reaction_derivations.items() if len(held) < 2]
+
+    def reaction_count_text(self) -> str:
+        """``"3"``, or ``"3 (1 not cross-checked)"`` -- the summary tables' cell."""
+        n, k = len(self.problem.reactions), len(self.not_cross_checked)
+        return f"{n} ({k} not cross-checked)" if k else str(n)
+
+    @property
     def bound(self) -> float:
         return max((p.bound for p in self.pairs), default=0.0)
 
@@ -135,14 +158,22 @@ class Comparison:
         if self._acc is None:
             ref = self.problem.model(self.problem.reference)
             try:
-                sol = solve_display(ref, self.limits)
+                static, sol = solve_with_static(ref, self.limits)
+                self._static = {q.func.__name__: v for q, v in static.items()}
                 self._acc = {q.func.__name__: sol[a]
-                             for q, a in zip(ref.coordinates, ref.accelerations)}
+                             for q, a in zip(ref.coordinates, ref.accelerations) if a in sol}
             except (OverBudget, ModelError, ValueError, ZeroDivisionError) as exc:
                 self._acc = {}
                 self.display_notes.append(f"accelerations not solved symbolically ({exc}); "
                                           "the equations above are M q'' = f")
         return self._acc
+
+    @property
+    def static(self) -> dict:
+        """``{coordinate: expression}`` of the coordinates fixed by static rows (a massless
+        body's balance, no acceleration in it), solved for display; ``{}`` when none."""
+        self.accelerations
+        return self._static
 
     @property
     def reactions(self) -> dict:
@@ -175,12 +206,22 @@ class Comparison:
             out.append("  accelerations:")
             for k, v in self.accelerations.items():
                 out.append(f"    {k}'' = {dotted(v)}")
+            for k, v in self.static.items():
+                out.append(f"    {k} = {dotted(v)}   (static row: no inertia in {k})")
+        lonely = self.not_cross_checked
         if self.equivalent and self.reactions:
             out.append("  reactions (from the direct form):")
             dirs = self.reaction_directions
             for k, v in self.reactions.items():
                 d = dirs.get(k, "")
-                out.append(f"    {k} = {dotted(v)}" + (f"   [{d}]" if d else ""))
+                out.append(f"    {k} = {dotted(v)}" + (f"   [{d}]" if d else "")
+                           + ("   (NOT CROSS-CHECKED)" if k in lonely else ""))
+        if lonely:
+            held = self.reaction_derivations
+            out.append("  not cross-checked (one derivation only): " + ", ".join(
+                f"{n} ({', '.join(held[n]) or 'no model'})" for n in lonely)
+                + "; a second derivation (a multiplier model or another free-body diagram) "
+                "would catch a wrong term in it")
         for note in self.display_notes:
             out.append(f"  ({note})")
         if self.dimension_issues:
@@ -218,8 +259,11 @@ class Comparison:
             "seconds": self.seconds,
             "eom": [dotted(e) for e in ref.equations],
             "accelerations": {k: dotted(v) for k, v in self.accelerations.items()},
+            "static": {k: dotted(v) for k, v in self.static.items()},
             "reactions": {k: dotted(v) for k, v in self.reactions.items()},
             "reaction_directions": self.reaction_directions,
+            "reaction_derivations": self.reaction_derivations,
+            "reactions_not_cross_checked": self.not_cross_checked,
             "display_notes": list(self.display_notes),
             "published": [v.to_dict() for v in self.published],
             "mismatches": [m.to_dict() for m in self.mismatches],
@@ -250,11 +294,12 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
     the result.  Raises :class:`~dualmech.problem.ProblemError` for a declaration that cannot
     be used (with every mistake listed) and ``ValueError`` for ``points < 1``.
 
-    >>> from dualmech.problems import get                        # doctest: +SKIP
-    >>> c = compare(get("toy_car")); c.equivalent        # doctest: +SKIP
+    >>> from dualmech.problems import get
+    >>> c = compare(get("toy_car")); c.equivalent
     True
     """
     _check_points(points)
+    _check_problem(problem)
     t0 = time.perf_counter()
     problem.validate()
     models = problem.models()
@@ -265,16 +310,40 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
               claims=claims_of(problem))
     pairs = _pairs(j, problem.reference, ctx, seed)
     limits = limits or Budget()
-    if j.equivalent:
+    try:
+        printed = problem.published()
+    except (ValueError, TypeError, ArithmeticError, ModelError, KeyError) as exc:
+        # the printed answers are built from a model that is wrong or singular here
+        printed = None
+        published = [PublishedVerdict(
+            "printed answers", "", "unchecked",
+            f"NOT CHECKED: `published()` failed ({type(exc).__name__}: {exc}); it builds "
+            "them from the models, so fix the models first", "none")]
+    if printed is None:
+        pass
+    elif j.equivalent:
         published = check_published(problem, points=points, seed=seed, context=ctx,
                                     limits=limits, claims=claims_of(problem))
     else:
         published = [PublishedVerdict(p.label, p.where, "unchecked",
                                       "the derivations disagree; fix them before judging "
-                                      "printed answers", "none") for p in problem.published()]
+                                      "printed answers", "none") for p in printed]
     issues = list(problem.dimension_issues()) + _reaction_dimension_issues(problem)
     return Comparison(problem, j, pairs, published, issues, time.perf_counter() - t0, points,
                       limits)
+
+
+def _check_problem(problem) -> None:
+    """A string (a catalogue name) or anything else that is not a problem: a TypeError that
+    shows the fix.  ``compare`` does not look names up itself: the catalogue sits above the
+    verifier in the pipeline, and a name may also be a file or ``module:Class``."""
+    from ..problem import Problem
+    if isinstance(problem, str):
+        raise TypeError(f"`problem` must be a Problem, got the string {problem[:60]!r}; "
+                        f"look it up first: compare(dualmech.problems.get({problem[:60]!r})).")
+    if not isinstance(problem, Problem):
+        raise TypeError(f"`problem` must be a Problem (dualmech.problem.Problem), got "
+                        f"{type(problem).__name__}.")
 
 
 def claims_of(problem) -> dict:
@@ -412,12 +481,11 @@ def _pairs(j: Judgement, reference: str, ctx: Context, seed: int) -> list[PairRe
         for r in bad:
             others = ", ".join(r.agreeing) if r.agreeing else None
             for suspect in r.suspects:
-                rest = [x for x in r.suspects + r.agreeing if x != suspect]
-                mism.append(Mismatch(suspect, f"reaction {r.name}",
-                                     f"{r.name} differs from the value "
-                                     f"{', '.join(f'`{x}`' for x in rest)} give"
-                                     + ("" if len(rest) > 1 else "s")
-                                     + (f" ({others} agree)" if others else "")))
+                rest = tuple(x for x in r.agreeing + r.suspects if x != suspect)
+                mm = explain_reaction(r.name, suspect, rest, j, ctx, seed)
+                if others:
+                    mm.reason += f" ({others} agree)"
+                mism.append(mm)
         ok = motion_ok and not bad
         out.append(PairResult(holders[0], ", ".join(holders[1:]), ok, j.method, j.points,
                               bound if ok else 0.0, j.seconds, mism, "reactions",
@@ -458,7 +526,8 @@ def compare_models(reference: EquationSet, candidate: EquationSet, *, points: in
             not j.fault_of(rname) else explain_model(rname, j, (cname,), ctx, seed)
     elif not j.equivalent:
         mism = [Mismatch(candidate.name, f.model, f.detail or f.kind) for f in j.faults] or \
-            [Mismatch(candidate.name, f"reaction {r.name}", "differs")
+            [Mismatch(candidate.name, f"reaction {r.name}",
+                      f"{r.name} differs from the value `{rname}` gives")
              for r in j.reaction_faults]
     for m in mism:
         if m.model == cname:
@@ -480,8 +549,9 @@ def compare_reactions(reference: EquationSet, first: EquationSet, second: Equati
     wanted = {str(u) for u in names}
     bad = [r for r in j.reaction_faults if r.name in wanted]
     undetermined = [f for f in j.faults if f.kind == "reactions"]
-    mism = [Mismatch(second.name, f"reaction {r.name}",
-                     f"{r.name} differs from the value `{first.name}` gives") for r in bad]
+    mism = [explain_reaction(r.name, second.name, (first.name,), j, ctx, seed) if explain
+            else Mismatch(second.name, f"reaction {r.name}",
+                          f"{r.name} differs from the value `{first.name}` gives") for r in bad]
     mism += [Mismatch(f.model, "reactions", f.detail) for f in undetermined]
     ok = not bad and not undetermined
     return PairResult(first.name, second.name, ok, j.method, j.points,
@@ -516,10 +586,53 @@ def recover_reactions(problem, limits: Budget | None = None) -> dict:
         m = _drop_zero_rows(problem.in_reference_coordinates(m))
         if not m.is_square:
             continue
-        sol = solve_display(m, limits)
+        _, sol = solve_with_static(m, limits)
         for u in m.unknowns:
             out.setdefault(u.name, sol[u])
     return out
+
+
+def solve_with_static(eqs: EquationSet, limits: Budget | None = None) -> tuple[dict, dict]:
+    """``(static, solution)`` of a square ``eqs`` for display.
+
+    ``solution`` maps accelerations and reactions to expressions (as
+    :func:`~dualmech.verify.display.solve_display`).  When the system is singular because
+    some rows hold no acceleration and no reaction (the balance of a massless body) and some
+    coordinates have no inertia, those static rows are solved for those coordinates first
+    (``static``: ``{q(t): expression}``), substituted into the other rows, and the rest is
+    solved; the static coordinates' accelerations are then not in ``solution``.
+
+    >>> from dualmech.problems import get
+    >>> static, sol = solve_with_static(get("copying_machine").model("lagrange"))
+    >>> static
+    {theta(t): L*k2*y(t)/(L**2*k2 + a**2*k1)}
+    """
+    try:
+        return {}, solve_display(eqs, limits)
+    except (ValueError, ZeroDivisionError) as exc:
+        singular = exc
+    A, _ = eqs.matrix()
+    n = len(eqs.coordinates)
+    static_rows = [i for i in range(A.rows) if all(A[i, j] == 0 for j in range(A.cols))]
+    massless = [q for j, q in enumerate(eqs.coordinates)
+                if all(A[i, j] == 0 for i in range(A.rows))]
+    if not static_rows or len(static_rows) != len(massless) or len(massless) == n:
+        raise singular
+    plain = {q: sp.Symbol(f"_{q.func.__name__}_static") for q in massless}
+    rows = [eqs.equations[i].xreplace(plain) for i in static_rows]
+    if any(r.has(sp.Derivative) for r in rows):
+        raise singular
+    with budget((limits or Budget()).remaining()):
+        found = sp.solve(rows, list(plain.values()), dict=True)
+    if len(found) != 1 or set(found[0]) != set(plain.values()):
+        raise ValueError(f"the static rows do not fix {[q.func.__name__ for q in massless]} "
+                         "uniquely; not solved symbolically")
+    static = {q: sp.factor(found[0][plain[q]]) for q in massless}
+    keep = [i for i in range(len(eqs.equations)) if i not in static_rows]
+    reduced = EquationSet(eqs.name, [q for q in eqs.coordinates if q not in static],
+                          [eqs.equations[i].subs(static).doit() for i in keep], eqs.unknowns,
+                          [eqs.labels[i] for i in keep])
+    return static, solve_display(reduced, limits)
 
 
 def _drop_zero_rows(m: EquationSet) -> EquationSet:

@@ -24,7 +24,7 @@ from .coordinates import OwnCoordinates
 from .display import Budget, OverBudget, dotted, solve_display, tidy
 from .sampling import Context, System, solve_model
 
-__all__ = ["Mismatch", "explain_model", "residuals_at"]
+__all__ = ["Mismatch", "explain_model", "explain_reaction", "residuals_at"]
 
 _MAX_TERMS = 40
 
@@ -273,3 +273,92 @@ def _own_residual(own, row, reference, values, limits):
     sol = solve_display(reference, limits)
     accelerations = {a: sol[a] for a in reference.accelerations}
     return dotted(tidy(own.residual(row, accelerations, inverse), limits))
+
+
+def explain_reaction(reaction: str, suspect: str, against: tuple, judgement, ctx: Context,
+                     seed: int = 0, limits: Budget | None = None) -> Mismatch:
+    """Why reaction ``reaction`` of model ``suspect`` differs from the value of ``against``.
+
+    At a real state inside the working ranges (where both models determine the motion and
+    the two values differ) both values are shown; the suspect's equations are then evaluated
+    with the other model's reactions and the common accelerations: the equation that no
+    longer holds is shown term by term, and (lazily, within the display budget) as a symbolic
+    residual -- the term by which the two derivations differ.
+
+    >>> import sympy as sp
+    >>> from dualmech import coordinate, t, EquationSet
+    >>> from dualmech.verify.verdicts import judge
+    >>> x = coordinate("x"); m, g = sp.symbols("m g", positive=True)
+    >>> N = sp.Symbol("N", real=True)
+    >>> a = EquationSet("a", (x,), (m*x.diff(t, 2), N - m*g), (N,), ("along x", "up"))
+    >>> b = EquationSet("b", (x,), (m*x.diff(t, 2), N - 2*m*g), (N,), ("along x", "up"))
+    >>> ctx = Context.for_models(a, b)
+    >>> mm = explain_reaction("N", "b", ("a",), judge({"a": a, "b": b}, context=ctx), ctx)
+    >>> mm.equation, [term for term, _ in mm.terms], mm.residual
+    ('reaction N', ['N', '-2*g*m'], '-g*m')
+    """
+    models = judgement.models
+    label = f"reaction {reaction}"
+    holds = lambda nm: any(u.name == reaction for u in models[nm].unknowns)  # noqa: E731
+    other = next((a for a in against if a in models and holds(a)), None)
+    if other is None or not holds(suspect):
+        return Mismatch(suspect, label, f"{reaction} differs from the other derivations")
+    coords = models[other].coordinates
+    n = len(coords)
+    systems = [System.of(models[other], coords), System.of(models[suspect], coords)]
+    fn = sp.lambdify(ctx.base, systems[0].flat() + systems[1].flat(), modules="mpmath")
+    rng = random.Random(seed + 11)
+    found = None
+    with mpmath.workdps(30):
+        for _ in range(64):
+            point = {s: mpmath.mpf(rng.uniform(*ctx.floats.get(s, (0.5, 2.0))))
+                     for s in ctx.base}
+            try:
+                vals = fn(*[point[s] for s in ctx.base])
+            except (ZeroDivisionError, ValueError, TypeError):
+                continue
+            A1, b1 = systems[0].unflatten(vals[:systems[0].size])
+            A2, b2 = systems[1].unflatten(vals[systems[0].size:])
+            s1 = solve_model(A1, b1, n, models[other].unknowns)
+            s2 = solve_model(A2, b2, n, models[suspect].unknowns)
+            if s1.status != "ok" or s2.status != "ok":
+                continue
+            v1 = next((v for u, v in s1.lam.items() if str(u) == reaction), None)
+            v2 = next((v for u, v in s2.lam.items() if str(u) == reaction), None)
+            if v1 is None or v2 is None or is_zero(v1 - v2, 1 + abs(v1)):
+                continue
+            found = (point, s1, s2, v1, v2, A2, b2)
+            break
+        if found is None:
+            return Mismatch(suspect, label, f"{reaction} differs from the value `{other}` "
+                            "gives (no real state in the working ranges shows it)")
+        point, s1, s2, v1, v2, A2, b2 = found
+        theirs = {str(u): v for u, v in s1.lam.items() if v is not None}
+        lam = [theirs.get(str(u), s2.lam.get(u)) for u in models[suspect].unknowns]
+        x = list(s1.qdd) + [v if v is not None else 0 for v in lam]
+        res = [bi - sum(aij * xj for aij, xj in zip(row, x)) for row, bi in zip(A2, b2)]
+        scale = 1 + max((abs(v) for v in b2), default=0)
+        row = max(range(len(res)), key=lambda i: abs(res[i]))
+        if is_zero(res[row], scale):
+            row = None
+    values = dict(point)
+    values.update({q: v for q, v in zip(ctx.qdd, s1.qdd)})
+    values.update({u: v for u, v in zip(models[suspect].unknowns, lam)})
+    reason = (f"{reaction} = {float(v2):.6g} here, but `{other}` gives {float(v1):.6g}")
+    model = models[suspect]
+    if row is None:
+        return Mismatch(suspect, label, reason)
+    value, terms, state = _terms(model, row, values, _shown(ctx.base, ctx))
+    reason += (f"; with `{other}`'s reactions its equation [{model.labels[row]}] is off by "
+               f"{value:.6g}")
+    return Mismatch(suspect, label, reason, value=value, state=state, terms=terms,
+                    residual=lambda: _reaction_residual(model, models[other], row, limits))
+
+
+def _reaction_residual(suspect, other, row, limits):
+    """Equation ``row`` of ``suspect`` with the accelerations and reactions of ``other``
+    substituted, simplified (display only): the term the two derivations differ by."""
+    sol = solve_display(other, limits)
+    rules = {a: sol[a] for a in other.accelerations}
+    rules.update({u: sol[u] for u in other.unknowns if u in suspect.unknowns})
+    return dotted(tidy(suspect.equations[row].xreplace(rules), limits))

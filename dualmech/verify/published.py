@@ -92,12 +92,24 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
     unknowns = list(dict.fromkeys(u for nm in solvers for u in mapped[nm].unknowns))
     n = len(coords)
     items = []
-    for pub in pubs:
-        es = [_plain(e, coords) for e in _published_exprs(problem, pub)]
-        motion = _motion_system(problem, pub, coords, unknowns) if pub.kind == "motion" \
-            else None
-        items.append((pub, es, motion))
     symbols = tuple(ctx.unknown_symbols(unknowns))
+    faulty: dict = {}     # a printed answer that cannot be evaluated: reported on it alone
+    known = set(ctx.base) | set(ctx.qdd) | set(symbols)
+    for pub in pubs:
+        try:
+            es = [_plain(e, coords) for e in _published_exprs(problem, pub)]
+            motion = _motion_system(problem, pub, coords, unknowns) if pub.kind == "motion" \
+                else None
+        except (ValueError, TypeError, KeyError, ZeroDivisionError) as exc:
+            faulty[pub.label] = f"could not be read: {type(exc).__name__}: {exc}"
+            continue
+        stray = sorted({str(x) for e in es for x in e.free_symbols} - {str(x) for x in known})
+        if stray:
+            faulty[pub.label] = (f"uses undeclared symbol(s) {', '.join(stray)}: declare them "
+                                 "as parameters of the problem or write the answer with its "
+                                 "symbols")
+            continue
+        items.append((pub, es, motion))
     claims = claims or {}
     every = [System.of(mapped[nm], coords) for nm in mapped if nm not in solvers]
     deps = shared_manifold(systems + every, [nm in claims for nm in solvers] +
@@ -115,11 +127,34 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
         for group, dependents in groups:
             if not group:
                 continue
-            g, method = _evaluate(group, systems, solvers, mapped, ctx, symbols, dependents,
-                                  claims, n, points, seed, bad)
-            good = max(good, g)
-    verdicts = []
+            try:
+                g, method = _evaluate(group, systems, solvers, mapped, ctx, symbols,
+                                      dependents, claims, n, points, seed, bad)
+                good = max(good, g)
+                undecided = [it for it in group
+                             if any(isinstance(x, str) and x.startswith("undecid")
+                                    for x in bad.get(it[0].label, ()))]
+                if len(group) == 1 or not undecided:
+                    continue
+                group = undecided   # maybe one answer made the whole group undecidable
+                for it in group:
+                    bad.pop(it[0].label, None)
+            except (ValueError, TypeError, ZeroDivisionError):
+                pass
+            for item in group:      # one answer sank the group: find it, judge the others
+                try:
+                    g, method = _evaluate([item], systems, solvers, mapped, ctx, symbols,
+                                          dependents, claims, n, points, seed, bad)
+                    good = max(good, g)
+                except (ValueError, TypeError, ZeroDivisionError) as exc:
+                    faulty[item[0].label] = (f"could not be evaluated: "
+                                             f"{type(exc).__name__}: {exc}")
+    verdicts = [PublishedVerdict(pub.label, pub.where, "unchecked",
+                                 "NOT CHECKED, the printed answer " + faulty[pub.label], "none")
+                for pub in pubs if pub.label in faulty]
     for pub, es, motion in items:
+        if pub.label in faulty:
+            continue
         if isinstance(motion, str):
             verdicts.append(PublishedVerdict(pub.label, pub.where, "wrong", motion, method))
         elif pub.label not in bad:
@@ -134,7 +169,8 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
                 pub.label, pub.where, "wrong",
                 lambda pub=pub, which=bad[pub.label]: _detail(problem, pub, which, limits),
                 method))
-    return verdicts
+    judged = {v.label: v for v in verdicts}
+    return [judged[pub.label] for pub in pubs if pub.label in judged]
 
 
 def _evaluate(items, systems, solvers, mapped, ctx, symbols, dependents, claims, n, points,

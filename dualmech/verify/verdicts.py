@@ -37,6 +37,7 @@ from typing import Mapping, Sequence
 
 import mpmath
 
+from ..equations import ModelError
 from ..exact import MP_DIGITS, is_zero
 from .errors import Undecidable
 from .sampling import (MAX_ATTEMPTS, Context, Sampler, System, same_values,
@@ -163,6 +164,15 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
         except Undecidable as exc:
             out = Judgement(dict(models), "refused", 0, 0, time.perf_counter() - t0)
             out.refusal = f"the comparator cannot decide {exc.expr}: {exc.why}"
+            return out
+        except ModelError as exc:
+            # a model whose static rows cannot be put on a manifold (e.g. T = 0 leaves no
+            # acceleration anywhere): a fault of the model(s) the message names
+            out = Judgement(dict(models), "exact", 0, 0, time.perf_counter() - t0)
+            named = [nm for nm in names if f"`{nm}`" in str(exc)] or list(names)
+            out.faults = [ModelFault(nm, "undetermined", (), f"cannot be compared: {exc}")
+                          for nm in named]
+            out.odd = named      # the others were not compared with each other: no majority
             return out
         form = sampler.form
         wanted = _points_needed(form, points)
