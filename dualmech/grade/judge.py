@@ -20,12 +20,15 @@ Example
 """
 from __future__ import annotations
 
+import random
 import time
 from fractions import Fraction
 from dataclasses import dataclass, field, replace
 
+import mpmath
 import sympy as sp
 
+from ..exact import MP_DIGITS
 from ..kinematics import t
 from ..verify import linalg as la
 from .answers import Quantity
@@ -38,6 +41,7 @@ from .parser import AnswerError
 from .result import Edit
 
 __all__ = ["Verdict", "Deadline", "AnswerTimeout", "judge_equations", "judge_expression",
+           "says_nothing", "check_real",
            "method_for", "values_at"]
 
 _MAX_FEEDBACK_TERMS = 400
@@ -110,6 +114,82 @@ def values_at(ctx, formulas, method, deadline, need=()) -> list:
     return out
 
 
+def says_nothing(ctx: ProblemContext, formulas: list, method: str, need=(),
+                 deadline: Deadline | None = None) -> list[int]:
+    """Indices of the ``formulas`` that vanish for any motion: at every sampled state with
+    random accelerations and reactions in place of the true ones.
+
+    Exact (``Fraction``) points decide it exactly, with the Schwartz--Zippel bound of the
+    verdicts; a problem without exact points uses its real points at high precision, relative
+    to the size of the terms.  A formula that cannot be evaluated there is left to the
+    verdict.
+    """
+    try:
+        points = ctx.points("exact" if method == "exact" else "mpmath")
+    except GradingUnavailable:
+        return []
+    unknowns = list(ctx.qdd) + [u for u in ctx.reactions]
+    out = []
+    for i, f in enumerate(formulas):
+        empty = True
+        for p in points:
+            if deadline is not None:
+                deadline.check()
+            rng = random.Random(f"{p.seed}|says-nothing")
+            changes = {}
+            for u in unknowns:
+                v = Fraction(rng.randrange(-(1 << 40), 1 << 40))
+                if not p.exact:
+                    with mpmath.workdps(MP_DIGITS):
+                        v = mpmath.mpf(v.numerator) / (1 << 20)
+                changes[u] = v
+            try:
+                with mpmath.workdps(MP_DIGITS):
+                    env = p.env(changes, need=need)
+                    v = f.evaluate(env)
+                    scale = f.term_values(env) if not p.exact else ()
+                    ok = zero(v, scale) if not isinstance(v, list) else False
+            except (ZeroDivisionError, TypeError, ValueError, KeyError, OverflowError):
+                ok = False
+            if not ok:
+                empty = False
+                break
+        if empty:
+            out.append(i)
+    return out
+
+
+def check_real(ctx: ProblemContext, formulas: list, need=()) -> None:
+    """Raise :class:`AnswerError` when a formula is not a finite real number on the motion
+    (``log(-1)``, ``sqrt(-1)``, ``cot(0)``): such an answer is not graded as typed."""
+    try:
+        points = ctx.points("mpmath")
+    except GradingUnavailable:
+        return
+    for p in points:
+        with mpmath.workdps(MP_DIGITS):
+            try:
+                env = p.env(need=need)
+                values = [f.evaluate(env) for f in formulas]
+            except ZeroDivisionError:
+                raise AnswerError("the answer divides by zero on the motion (e.g. `cot(0)`, "
+                                  "`1/sin(0)`, `1/(x - x)`); write it so that it is "
+                                  "defined.") from None
+            except (TypeError, ValueError, KeyError):
+                return      # left to the verdict
+            for v in values:
+                for x in (v if isinstance(v, list) else [v]):
+                    if isinstance(x, mpmath.mpc) and abs(x.imag) > 10 ** (-(MP_DIGITS // 2)) \
+                            * (1 + abs(x.real)):
+                        raise AnswerError("the answer is not a real number on the motion (the "
+                                          "logarithm or a square root of a negative number?); "
+                                          "check the signs inside `log` and `sqrt`.")
+                    if isinstance(x, (mpmath.mpf, mpmath.mpc)) and not mpmath.isfinite(x):
+                        raise AnswerError("the answer is infinite or undefined on the motion "
+                                          "(e.g. `log(0)`, `cot(0)`, `tan(pi/2)`); write it so "
+                                          "that it is defined.")
+
+
 def _is_zero(f: Formula, v, env) -> bool:
     if isinstance(v, list):
         return all(zero(x) for x in v)
@@ -139,6 +219,17 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
             raise AnswerError("an equation cannot be a vector; write one equation per "
                               "component, on separate lines.")
     method = method_for(ctx, formulas)
+    if method == "slow":
+        check_real(ctx, formulas, need_for(ctx, formulas))
+    empty = says_nothing(ctx, formulas, method, need_for(ctx, formulas), deadline)
+    if empty:
+        which = ", ".join(name(i) for i in empty)
+        many = len(empty) > 1
+        return Verdict("wrong", f"{which} hold{'' if many else 's'} for any motion (every state, "
+                       "acceleration and force): "
+                       f"{'they say' if many else 'it says'} nothing about this system; an "
+                       "equation of motion must involve the accelerations on the motion",
+                       dimension_issues=dims, method="exact" if method == "exact" else "slow")
     if method == "slow":
         from .slow import slow_equations
         v = slow_equations(ctx, formulas, single or quantity.coordinate is not None, dims)
@@ -329,6 +420,7 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
             dims.append(f"component {j + 1}: {issue}" if len(refs) > 1 else issue)
     method = method_for(ctx, comps + refs)
     if method == "slow":
+        check_real(ctx, comps, need_for(ctx, comps))
         from .slow import slow_expression
         v = slow_expression(ctx, comps, refs, dims, quantity.description)
         if v.status == "wrong":
