@@ -32,7 +32,7 @@ from ..exact import MP_DIGITS
 from ..kinematics import t
 from ..verify import linalg as la
 from .answers import Quantity
-from .context import GradingUnavailable, ProblemContext, build_seconds, zero
+from .context import GradingUnavailable, Point, ProblemContext, build_seconds, zero
 from .feedback import Diagnosis, best_edit, concrete_state
 from .terms import equation_targets, expression_tables, term_table
 from .audit import dimension_issues, display, expected_dimension
@@ -116,38 +116,41 @@ def values_at(ctx, formulas, method, deadline, need=()) -> list:
 
 def says_nothing(ctx: ProblemContext, formulas: list, method: str, need=(),
                  deadline: Deadline | None = None) -> list[int]:
-    """Indices of the ``formulas`` that vanish for any motion: at every sampled state with
-    random accelerations and reactions in place of the true ones.
+    """Indices of the ``formulas`` that vanish for any motion: at random states with random
+    accelerations and reactions (no point of the motion is needed: a formula that says
+    something about the system is nonzero somewhere off it).
 
-    Exact (``Fraction``) points decide it exactly, with the Schwartz--Zippel bound of the
-    verdicts; a problem without exact points uses its real points at high precision, relative
-    to the size of the terms.  A formula that cannot be evaluated there is left to the
-    verdict.
+    Exact formulas are decided exactly at rational points (Schwartz--Zippel, as the
+    verdicts); others at real points in the declared ranges at high precision, relative to
+    the size of their terms.  A formula that cannot be evaluated there is left to the verdict.
     """
-    try:
-        points = ctx.points("exact" if method == "exact" else "mpmath")
-    except GradingUnavailable:
-        return []
-    unknowns = list(ctx.qdd) + [u for u in ctx.reactions]
+    exact = method == "exact"
+    ranges = ctx.ranges()
+    symbols = list(ctx.base) + list(ctx.qdd) + list(ctx.reactions)
+    envs = []
+    for i in range(2):
+        rng = random.Random(f"{ctx.problem.name}:{ctx.seed}:says-nothing:{i}")
+        values = {}
+        for s in symbols:
+            if exact:
+                values[s] = Fraction(rng.randrange(-(1 << 61), 1 << 61))
+            else:
+                lo, hi = ranges.get(s, (-1.0, 1.0))
+                with mpmath.workdps(MP_DIGITS):
+                    values[s] = mpmath.mpf(rng.uniform(lo, hi))
+        seed = f"{ctx.problem.name}:{ctx.seed}:says-nothing:{i}"
+        envs.append(Point(values, {}, exact, i, seed, ctx.derived_formulas()))
     out = []
     for i, f in enumerate(formulas):
         empty = True
-        for p in points:
+        for p in envs:
             if deadline is not None:
                 deadline.check()
-            rng = random.Random(f"{p.seed}|says-nothing")
-            changes = {}
-            for u in unknowns:
-                v = Fraction(rng.randrange(-(1 << 40), 1 << 40))
-                if not p.exact:
-                    with mpmath.workdps(MP_DIGITS):
-                        v = mpmath.mpf(v.numerator) / (1 << 20)
-                changes[u] = v
             try:
                 with mpmath.workdps(MP_DIGITS):
-                    env = p.env(changes, need=need)
+                    env = p.env(need=need)
                     v = f.evaluate(env)
-                    scale = f.term_values(env) if not p.exact else ()
+                    scale = f.term_values(env) if not exact else ()
                     ok = zero(v, scale) if not isinstance(v, list) else False
             except (ZeroDivisionError, TypeError, ValueError, KeyError, OverflowError):
                 ok = False
@@ -233,11 +236,19 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
     if method == "slow":
         from .slow import slow_equations
         v = slow_equations(ctx, formulas, single or quantity.coordinate is not None, dims)
-        wrong = _off_at_real_points(ctx, formulas, [None] * k) if v.status == "wrong" else []
-        if wrong:
-            fb = _wrong_equations(ctx, formulas, wrong, dims, method, 1, name, deadline,
-                                  need_for(ctx, formulas))
-            v.edits, v.details, v.state = fb.edits, fb.details, fb.state
+        try:
+            wrong = _off_at_real_points(ctx, formulas, [None] * k) if v.status == "wrong" \
+                else []
+        except GradingUnavailable:   # no real points (a static row): the verdict stands alone
+            wrong = []
+        try:
+            if wrong:
+                fb = _wrong_equations(ctx, formulas, wrong, dims, method, 1, name, deadline,
+                                      need_for(ctx, formulas))
+                v.edits, v.details, v.state = fb.edits, fb.details, fb.state
+        except GradingUnavailable:   # no free points (a static row): no explanation
+            v.details = ["(no explanation: this problem's static rows leave no free states "
+                         "to show it at)"]
         return v
     need = need_for(ctx, formulas)
     table = values_at(ctx, formulas, method, deadline, need)
@@ -424,10 +435,13 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
         from .slow import slow_expression
         v = slow_expression(ctx, comps, refs, dims, quantity.description)
         if v.status == "wrong":
-            bad = _off_at_real_points(ctx, comps, refs)
-            fb = _expression_feedback(ctx, comps, refs, quantity, bad, deadline,
-                                      need_for(ctx, comps + refs))
-            v.edits, v.details, v.state = fb
+            try:
+                bad = _off_at_real_points(ctx, comps, refs)
+                fb = _expression_feedback(ctx, comps, refs, quantity, bad, deadline,
+                                          need_for(ctx, comps + refs))
+                v.edits, v.details, v.state = fb
+            except GradingUnavailable:   # no free points (a static row): no explanation
+                pass
         return v
     minus = ("c", Fraction(-1))
     diffs = [Formula(("add", (c.tree, ("mul", (minus, r.tree))))) for c, r in zip(comps, refs)]
