@@ -11,6 +11,9 @@
                    [--workers N | --scheduler ADDRESS] [--no-progress]
     ... --json                                                 JSON instead of text
 
+Every answer is graded in a child process under a 1 s and 256 MB ceiling
+(:mod:`dualmech.grade.sandbox`); one that overruns it is "too costly to grade".
+
 Exit status: 0 the answer is right (a batch: every row was graded), 1 it is wrong, 2 it could
 not be graded as typed, or a usage error (the message says what to fix).
 
