@@ -87,10 +87,28 @@ def grade_rows(rows: Sequence[dict], seconds: float = 1.0, memory_mb: int = 256)
     for row in rows:
         name, quantity = _question(row)
         about = (row.get("about") or "").strip() or None
-        result = grade_bounded(name, row.get("answer", ""), quantity, about=about,
-                               seconds=seconds, memory_mb=memory_mb).to_dict()
+        result = _untrusted_name(name, row) or grade_bounded(
+            name, row.get("answer", ""), quantity, about=about, seconds=seconds,
+            memory_mb=memory_mb).to_dict()
         out.append(_tag(row, result))
     return out
+
+
+def _untrusted_name(name: str, row: dict) -> dict | None:
+    """The ``invalid`` result of a row whose question is not a plain problem name (a CSV row
+    never makes us import a file or module), else ``None``."""
+    from dualmech.problems import is_name, named
+    if is_name(name):
+        return None
+    try:
+        named(name)
+        summary = f"{name!r} is not a problem name."
+    except Exception as exc:
+        summary = str(exc.args[0]) if exc.args else str(exc)
+    return {"problem": name, "quantity": "auto", "kind": "", "answer": row.get("answer", ""),
+            "status": "invalid", "right": False, "summary": summary, "details": [],
+            "edits": [], "dimension_issues": [], "matches": "", "state": {}, "method": "none",
+            "false_right_bound": None, "seconds": 0.0}
 
 
 def warm(names: Iterable[str]) -> None:
@@ -164,12 +182,16 @@ def _run(chunks, workers, scheduler, connect_timeout):
     workers = workers or os.cpu_count() or 1
     with GradingPool(min(workers, len(tagged))) as pool:
         futures = {}
+        done: list = []
         for c in tagged:
             for row in c:
                 name, quantity = _question(row)
                 about = (row.get("about") or "").strip() or None
+                refused = _untrusted_name(name, row)
+                if refused is not None:
+                    done.append(_tag(row, refused))
+                    continue
                 futures[pool.submit(name, row.get("answer", ""), quantity, about)] = row
-        done: list = []
         for f in as_completed(futures):
             done.append(_tag(futures[f], f.result().to_dict()))
             if len(done) >= _CHUNK:
