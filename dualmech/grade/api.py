@@ -92,6 +92,13 @@ class Grader:
             return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
                          _too_costly(answer, f"the {what} allowed", self.limits),
                          seconds=_since(t0, built))
+        except TypeError as exc:
+            if "zoo" not in str(exc) and "nan" not in str(exc):
+                return _internal(self.problem.name, qname, shown, exc, _since(t0, built))
+            return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
+                         "the answer is infinite or undefined (e.g. `tan(pi/2)`, `1/0`); "
+                         "write it so that it is defined on the motion.",
+                         seconds=_since(t0, built))
         except ZeroDivisionError:
             return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
                          "the answer divides by zero where it is evaluated on the motion (a "
@@ -166,6 +173,12 @@ class Grader:
                                               q.basis, [q for q, _ in ctx._extra_coordinates()],
                                               getattr(ctx.problem, "aliases", None))
         return ctx.store[key]
+
+
+def _internal(problem, qname, shown, exc, seconds) -> Grade:
+    return Grade(problem, qname, "", shown[:1000], "invalid",
+                 f"could not grade this answer: internal error ({type(exc).__name__}: {exc}); "
+                 "please report it", seconds=seconds)
 
 
 def _too_costly(answer, ceiling: str, limits: Limits) -> str:
