@@ -20,7 +20,8 @@ import sympy as sp
 from .answers import Quantity, catalogue, find_quantity, linearised_context
 from .context import GradingUnavailable, ProblemContext, build_seconds
 from .formula import Formula, difference
-from .judge import Deadline, judge_equations, judge_expression
+from .cost import costliest
+from .judge import AnswerTimeout, Deadline, judge_equations, judge_expression
 from .judge_energy import judge_force, judge_kinetic, judge_lagrangian, judge_potential
 from .maps import student_map
 from .parser import LIMITS, AnswerError, Limits, parse, split_where
@@ -79,8 +80,30 @@ class Grader:
         shown = answer if isinstance(answer, str) else repr(answer)
         try:
             verdict, qname, kind, ctx = self._grade(answer, quantity, about)
+        except AnswerTimeout:
+            return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
+                         _too_costly(answer, f"{self.limits.seconds:g} s", self.limits),
+                         seconds=_since(t0, built))
         except (AnswerError, UnknownName, GradingUnavailable) as exc:
             return Grade(self.problem.name, qname, "", shown[:1000], "invalid", str(exc),
+                         seconds=_since(t0, built))
+        except (MemoryError, RecursionError, OverflowError) as exc:
+            what = "memory" if isinstance(exc, MemoryError) else "nesting or number size"
+            return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
+                         _too_costly(answer, f"the {what} allowed", self.limits),
+                         seconds=_since(t0, built))
+        except TypeError as exc:
+            if "zoo" not in str(exc) and "nan" not in str(exc):
+                return _internal(self.problem.name, qname, shown, exc, _since(t0, built))
+            return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
+                         "the answer is infinite or undefined (e.g. `tan(pi/2)`, `1/0`); "
+                         "write it so that it is defined on the motion.",
+                         seconds=_since(t0, built))
+        except ZeroDivisionError:
+            return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
+                         "the answer divides by zero where it is evaluated on the motion (a "
+                         "denominator such as `tan(pi/2)`, `1/cos(pi/2)` or `1/(x - x)` "
+                         "vanishes); write it so that it is defined on the motion.",
                          seconds=_since(t0, built))
         except Exception as exc:  # a bug here must not stop a batch; it is reported as such
             return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
@@ -115,6 +138,10 @@ class Grader:
         if own is not None:
             voc = own.vocabulary
         if q.kind in ("equations", "equation"):
+            if any(side is not None and _unwrap(side).op == "vec"
+                   for e in eqs for side in (e.lhs, e.rhs)):
+                raise AnswerError("an equation cannot be a vector; write one equation per "
+                                  "component, on separate lines.")
             formulas = [difference(Formula.from_node(e.lhs, voc, self.limits, e.text),
                                    Formula.from_node(e.rhs, voc, self.limits)
                                    if e.rhs is not None else None) for e in eqs]
@@ -146,6 +173,26 @@ class Grader:
                                               q.basis, [q for q, _ in ctx._extra_coordinates()],
                                               getattr(ctx.problem, "aliases", None))
         return ctx.store[key]
+
+
+def _internal(problem, qname, shown, exc, seconds) -> Grade:
+    return Grade(problem, qname, "", shown[:1000], "invalid",
+                 f"could not grade this answer: internal error ({type(exc).__name__}: {exc}); "
+                 "please report it", seconds=seconds)
+
+
+def _too_costly(answer, ceiling: str, limits: Limits) -> str:
+    culprit = costliest(answer, limits) if isinstance(answer, str) else ""
+    what = f"`{culprit}`" if culprit else "this answer"
+    return (f"too costly to grade: {what} needs more than {ceiling} to evaluate; simplify "
+            "it (smaller multiples of angles, lower powers, fewer nested functions) and "
+            "submit again.")
+
+
+def _unwrap(node):
+    while node.op == "group":
+        node = node.args[0]
+    return node
 
 
 def _since(t0: float, built: float) -> float:

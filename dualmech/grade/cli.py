@@ -11,6 +11,9 @@
                    [--workers N | --scheduler ADDRESS] [--no-progress]
     ... --json                                                 JSON instead of text
 
+Every answer is graded in a child process under a 1 s and 256 MB ceiling
+(:mod:`dualmech.grade.sandbox`); one that overruns it is "too costly to grade".
+
 Exit status: 0 the answer is right (a batch: every row was graded), 1 it is wrong, 2 it could
 not be graded as typed, or a usage error (the message says what to fix).
 
@@ -97,8 +100,8 @@ def handle(args: argparse.Namespace) -> int:
             answer = args.answer
         else:
             return _usage("give the answer with --answer TEXT or --answer-file FILE.")
-        from .api import grade
-        result = grade(args.name, answer, args.quantity, about=args.about)
+        from .sandbox import grade_bounded
+        result = grade_bounded(args.name, answer, args.quantity, about=args.about)
         print(json.dumps(result.to_dict(), indent=2) if args.json else str(result))
         return {"right": EXIT_RIGHT, "wrong": EXIT_WRONG}.get(result.status, EXIT_USAGE)
     except BrokenPipeError:
