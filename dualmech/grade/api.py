@@ -75,7 +75,7 @@ class Grader:
         """Grade ``answer`` (text) as ``quantity`` (default: equations of motion, or one
         equation when a single one is given for several coordinates); never raises for a bad
         answer -- the :class:`~.result.Grade` says what is wrong."""
-        t0, built = time.perf_counter(), build_seconds()
+        t0, built = time.thread_time(), build_seconds()
         qname = quantity or "auto"
         shown = answer if isinstance(answer, str) else repr(answer)
         try:
@@ -196,8 +196,8 @@ def _unwrap(node):
 
 
 def _since(t0: float, built: float) -> float:
-    """Seconds on this answer, leaving out the problem's one-time loading meanwhile."""
-    return time.perf_counter() - t0 - (build_seconds() - built)
+    """CPU seconds on this answer, leaving out the problem's one-time loading meanwhile."""
+    return time.thread_time() - t0 - (build_seconds() - built)
 
 
 def _expression(eqs, q: Quantity, voc, limits) -> Formula:

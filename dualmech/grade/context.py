@@ -92,7 +92,7 @@ _building = threading.local()
 
 
 def build_seconds() -> float:
-    """Seconds this thread has spent building per-problem caches (see :meth:`ProblemContext.memo`);
+    """CPU seconds this thread has spent building per-problem caches (see :meth:`ProblemContext.memo`);
     a per-answer time limit leaves them out."""
     return getattr(_building, "seconds", 0.0)
 
@@ -145,13 +145,13 @@ class ProblemContext:
             return self.store[key]
         depth = getattr(_building, "depth", 0)
         _building.depth = depth + 1
-        t0 = time.perf_counter()
+        t0 = time.thread_time()
         try:
             value = build()
         finally:
             _building.depth = depth
             if depth == 0:
-                _building.seconds = build_seconds() + time.perf_counter() - t0
+                _building.seconds = build_seconds() + time.thread_time() - t0
         self.store[key] = value
         return value
 

@@ -54,16 +54,20 @@ class AnswerTimeout(AnswerError):
 
 
 class Deadline:
-    """A time limit for one answer; :meth:`check` raises :class:`AnswerTimeout` past it."""
+    """A time limit for one answer; :meth:`check` raises :class:`AnswerTimeout` past it.
+
+    The limit is on the CPU time of the grading thread (``time.thread_time``), so a busy
+    machine does not make an ordinary answer "too slow"; the wall clock and memory are
+    bounded by the worker process of :mod:`.sandbox`, which the operating system stops."""
 
     def __init__(self, seconds: float):
         self.seconds = seconds
-        self.start = time.perf_counter()
+        self.start = time.thread_time()
         self.built = build_seconds()
 
     def elapsed(self) -> float:
-        """Seconds spent on this answer, leaving out per-problem caches built meanwhile."""
-        return time.perf_counter() - self.start - (build_seconds() - self.built)
+        """CPU seconds spent on this answer, leaving out per-problem caches built meanwhile."""
+        return time.thread_time() - self.start - (build_seconds() - self.built)
 
     def check(self) -> None:
         if self.elapsed() > self.seconds:

@@ -82,7 +82,7 @@ class Grade:
     sentences (which equation, what it matches); ``edits`` the smallest edit as terms;
     ``dimension_issues`` inconsistent terms (reported first); ``state`` a concrete state where
     answer and truth differ when no small edit explains it; ``method`` names how the verdict was
-    decided; ``seconds`` is the time spent on this answer (a problem's one-time loading -- its
+    decided; ``seconds`` is the CPU time spent on this answer (a problem's one-time loading -- its
     models, sampled points and feedback targets -- is not counted).
     """
 
