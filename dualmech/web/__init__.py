@@ -7,18 +7,18 @@ token that grades a class's CSV in the background, and a JSON API with an OpenAP
 
 Example
 -------
->>> from dualmech.web import preview, ProblemInfo
+>>> from dualmech.web import ProblemInfo
+>>> from dualmech.web.preview import preview
 >>> preview(ProblemInfo.build("simple_pendulum"), "a*theta'' + g*sin(theta) = 0")["ok"]
 True
 """
 from importlib import import_module
 
 _HOME = {"app": ("create_app", "served_problems", "WebLimits"), "server": ("serve",),
-         "catalog": ("ProblemInfo",), "preview": ("preview",), "store": ("Store",)}
+         "catalog": ("ProblemInfo",), "store": ("Store",)}
 _WHERE = {name: module for module, names in _HOME.items() for name in names}
 
-__all__ = ["create_app", "served_problems", "WebLimits", "serve", "ProblemInfo", "preview",
-           "Store"]
+__all__ = ["create_app", "served_problems", "WebLimits", "serve", "ProblemInfo", "Store"]
 
 
 def __getattr__(name):   # imported when first used: `dualmech --help` never loads starlette

@@ -81,7 +81,8 @@ def problem_page(info) -> str:
 <div class="card"><h2>Your answer</h2>
 <form id="answer-form" data-problem="{escape(info.name)}" autocomplete="off">
 <label for="quantity">What you are answering</label>
-<select id="quantity" name="quantity">{options}</select>
+<select id="quantity" name="quantity"><option value="">automatic &#8212; the equations
+of motion, or one equation</option>{options}</select>
 <label for="answer">Answer</label>
 <textarea id="answer" name="answer" maxlength="4000" spellcheck="false"
  placeholder="e.g. {escape(first)}'' + ... = 0 (one equation per line)"></textarea>

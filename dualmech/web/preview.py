@@ -128,13 +128,14 @@ class _Writer:
             return self.name(a[0], a[1])
         if op == "group":
             return _fenced(self.node(a[0]))
-        if op == "neg":
-            return "<mo>&#x2212;</mo>" + self._operand(a[0], ("add", "neg"))
+        if op == "neg" or (op == "mul" and a[0].op == "neg"):
+            return "<mrow><mo>&#x2212;</mo>" + self._operand(_negated(n), ("add", "neg")) + \
+                "</mrow>"
         if op == "add":
             parts = [self.node(a[0])]
             for c in a[1:]:
-                if c.op == "neg":
-                    parts.append("<mo>&#x2212;</mo>" + self._operand(c.args[0], ("add", "neg")))
+                if c.op == "neg" or (c.op == "mul" and c.args[0].op == "neg"):
+                    parts.append("<mo>&#x2212;</mo>" + self._operand(_negated(c), ("add", "neg")))
                 else:
                     parts.append("<mo>+</mo>" + self.node(c))
             return "<mrow>" + "".join(parts) + "</mrow>"
@@ -209,6 +210,14 @@ class _Writer:
                 expr = ref.symbol
             self._symbols[key] = mathml(display_symbols(expr), printer="presentation")
         return self._symbols[key]
+
+
+def _negated(n: Node) -> Node:
+    """``-x`` -> ``x``; ``(-x)*y`` -> ``x*y`` (the sign is written in front of the term)."""
+    if n.op == "neg":
+        return n.args[0]
+    first = n.args[0].args[0]
+    return Node("mul", (first,) + n.args[1:], (first,) + n.args[1:])
 
 
 def _basis(info, quantity: str | None) -> tuple:
