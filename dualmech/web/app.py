@@ -406,6 +406,7 @@ def create_app(problems: Sequence[str] | None = None, *, data: str | Path = "dua
         Route("/", index),
         Route("/problems/{name}", problem_page),
         Route("/static/{file}", static),
+        Route("/favicon.ico", lambda request: Response(status_code=204)),
         Route("/teacher", teacher),
         Route("/teacher/login", login, methods=["POST"]),
         Route("/teacher/batches/{id}", batch_page),

@@ -26,6 +26,8 @@ header.top .brand { font-weight: 700; letter-spacing: .02em; }
 main { max-width: 70rem; margin: 1.5rem auto; padding: 0 1.5rem; }
 h1 { font-size: 1.6rem; margin: .2rem 0; }
 h2 { font-size: 1.15rem; margin: 0 0 .6rem; }
+h2.next { margin-top: 1.1rem; }
+.card.narrow { max-width: 30rem; }
 .source, .muted { color: var(--muted); font-size: .9rem; }
 .grid { display: grid; grid-template-columns: minmax(0, 1fr) minmax(0, 1.15fr); gap: 1.2rem;
         align-items: start; }

@@ -72,12 +72,16 @@ def problem_page(info) -> str:
     table = ("<table><tr><th>name</th><th>unit</th><th>meaning</th></tr>{}</table>")
     body = f"""<h1>{escape(info.title)}</h1>
 <p class="source">Source: {escape(info.source)}</p><p>{escape(info.summary)}</p>
-<div class="grid"><section>
 <div class="card"><h2>The system</h2>{sketch}</div>
+<div class="grid"><section>
 <div class="card"><h2>Coordinates</h2>{table.format(coords)}
-<h2 style="margin-top:1rem">Parameters</h2>{table.format(params)}
-{('<h2 style="margin-top:1rem">Reactions</h2>' + table.format(reactions)) if reactions else ''}
-</div></section><section>
+<h2 class="next">Parameters</h2>{table.format(params)}
+{('<h2 class="next">Reactions</h2>' + table.format(reactions)) if reactions else ''}
+</div>
+<div class="card names"><h2>Names you may use</h2><dl>{names}</dl>
+<p class="muted">Derivatives: <code>{escape(first)}'</code>, <code>{escape(first)}''</code>
+(or <code>{escape(first)}dot</code>, <code>{escape(first)}ddot</code>). Functions: sin cos tan
+sqrt exp log. Powers with <code>^</code>.</p></div></section><section>
 <div class="card"><h2>Your answer</h2>
 <form id="answer-form" data-problem="{escape(info.name)}" autocomplete="off">
 <label for="quantity">What you are answering</label>
@@ -89,10 +93,7 @@ of motion, or one equation</option>{options}</select>
 <div id="preview" class="preview" aria-live="polite"></div>
 <button id="submit" type="submit">Check my answer</button></form>
 <div id="feedback" aria-live="polite"></div></div>
-<div class="card names"><h2>Names you may use</h2><dl>{names}</dl>
-<p class="muted">Derivatives: <code>{escape(first)}'</code>, <code>{escape(first)}''</code>
-(or <code>{escape(first)}dot</code>, <code>{escape(first)}ddot</code>). Functions: sin cos tan
-sqrt exp log. Powers with <code>^</code>.</p></div>
+
 </section></div>"""
     return layout(info.title, body)
 
@@ -156,7 +157,7 @@ def feedback_html(info, g: dict) -> str:
 def login_page(error: str = "") -> str:
     """The teacher's token form."""
     msg = f'<p class="error">{escape(error)}</p>' if error else ""
-    return layout("Teacher", f"""<h1>Teacher</h1><div class="card" style="max-width:30rem">
+    return layout("Teacher", f"""<h1>Teacher</h1><div class="card narrow">
 <p>Enter the token the server printed when it started.</p>{msg}
 <form method="post" action="/teacher/login"><label for="token">Token</label>
 <input id="token" name="token" type="password" autocomplete="off">
