@@ -25,7 +25,7 @@ from collections import OrderedDict
 __all__ = ["RateLimiter", "read_body", "TooLarge", "SecurityHeaders", "RATES"]
 
 #: Default rates: kind -> (requests per second sustained, burst).
-RATES = {"validate": (8.0, 40), "grade": (1.0, 30), "login": (0.1, 5), "upload": (0.2, 5)}
+RATES = {"validate": (5.0, 20), "grade": (1.0, 30), "login": (0.1, 5), "upload": (0.2, 5)}
 
 _CSP = ("default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; "
         "connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'")
