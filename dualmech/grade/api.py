@@ -20,7 +20,8 @@ import sympy as sp
 from .answers import Quantity, catalogue, find_quantity, linearised_context
 from .context import GradingUnavailable, ProblemContext, build_seconds
 from .formula import Formula, difference
-from .judge import Deadline, judge_equations, judge_expression
+from .cost import costliest
+from .judge import AnswerTimeout, Deadline, judge_equations, judge_expression
 from .judge_energy import judge_force, judge_kinetic, judge_lagrangian, judge_potential
 from .parser import LIMITS, AnswerError, Limits, parse
 from .result import Grade
@@ -78,8 +79,23 @@ class Grader:
         shown = answer if isinstance(answer, str) else repr(answer)
         try:
             verdict, qname, kind, ctx = self._grade(answer, quantity, about)
+        except AnswerTimeout:
+            return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
+                         _too_costly(answer, f"{self.limits.seconds:g} s", self.limits),
+                         seconds=_since(t0, built))
         except (AnswerError, UnknownName, GradingUnavailable) as exc:
             return Grade(self.problem.name, qname, "", shown[:1000], "invalid", str(exc),
+                         seconds=_since(t0, built))
+        except (MemoryError, RecursionError, OverflowError) as exc:
+            what = "memory" if isinstance(exc, MemoryError) else "nesting or number size"
+            return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
+                         _too_costly(answer, f"the {what} allowed", self.limits),
+                         seconds=_since(t0, built))
+        except ZeroDivisionError:
+            return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
+                         "the answer divides by zero where it is evaluated on the motion (a "
+                         "denominator such as `tan(pi/2)`, `1/cos(pi/2)` or `1/(x - x)` "
+                         "vanishes); write it so that it is defined on the motion.",
                          seconds=_since(t0, built))
         except Exception as exc:  # a bug here must not stop a batch; it is reported as such
             return Grade(self.problem.name, qname, "", shown[:1000], "invalid",
@@ -136,6 +152,14 @@ class Grader:
             ctx.store[key] = Vocabulary.build(ctx.coordinates, ctx.parameters, ctx.reactions,
                                               q.basis, [q for q, _ in ctx._extra_coordinates()])
         return ctx.store[key]
+
+
+def _too_costly(answer, ceiling: str, limits: Limits) -> str:
+    culprit = costliest(answer, limits) if isinstance(answer, str) else ""
+    what = f"`{culprit}`" if culprit else "this answer"
+    return (f"too costly to grade: {what} needs more than {ceiling} to evaluate; simplify "
+            "it (smaller multiples of angles, lower powers, fewer nested functions) and "
+            "submit again.")
 
 
 def _since(t0: float, built: float) -> float:

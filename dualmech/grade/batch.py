@@ -5,11 +5,12 @@ optionally ``quantity`` and ``about``; ``question`` is a problem name, or ``name
 (``toy_car:F_r``).  An answer may span several lines (quoted, as CSV allows) to give a set of
 equations.
 
-The work is one pure function over chunks of rows, :func:`grade_rows`, mapped by a process
-pool (``workers``) or by ``dask.distributed`` (``scheduler``, the address of a running
-scheduler); rows are grouped by question so each worker builds a problem's points once.  A bad
-row -- an unknown problem, a hostile answer -- gets its own "not graded" result and the batch
-goes on.
+Every answer is graded under a wall-clock and memory ceiling (1 s and 256 MB above the
+worker's size): locally by a :class:`~.sandbox.GradingPool` of ``workers`` processes, which
+stay warm (each loads a problem's points once), or on ``dask.distributed`` (``scheduler``, the
+address of a running scheduler), which maps the pure function :func:`grade_rows` over chunks of
+rows grouped by question.  A bad row -- an unknown problem, a hostile answer, one that overruns
+the ceiling -- gets its own "not graded" result and the batch goes on.
 
 Example
 -------
@@ -22,7 +23,7 @@ from __future__ import annotations
 
 import csv
 import os
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import as_completed
 from pathlib import Path
 from typing import Iterable, Sequence
 
@@ -73,28 +74,22 @@ def _question(row: dict) -> tuple[str, str | None]:
     return name.strip(), quantity
 
 
-def grade_rows(rows: Sequence[dict]) -> list[dict]:
+def grade_rows(rows: Sequence[dict], seconds: float = 1.0, memory_mb: int = 256) -> list[dict]:
     """Grade ``rows`` (dicts with id, question, answer[, quantity, about]); one result dict
     per row: the :class:`~.result.Grade` as JSON plus ``id``, ``question`` and ``line``.
 
-    A pure function of its input (graders are cached per process), so any executor may map it.
+    Each answer is graded under a ``seconds`` wall-clock and ``memory_mb`` memory ceiling
+    (:func:`~.sandbox.grade_bounded`).  A pure function of its input (graders are cached per
+    process), so any executor may map it.
     """
+    from .sandbox import grade_bounded
     out = []
     for row in rows:
         name, quantity = _question(row)
         about = (row.get("about") or "").strip() or None
-        try:
-            grader = Grader.of(name)
-            result = grader.grade(row.get("answer", ""), quantity, about).to_dict()
-        except Exception as exc:  # unknown problem, a problem that fails to build: reported
-            result = {"problem": name, "quantity": quantity or "auto", "kind": "",
-                      "answer": row.get("answer", ""), "status": "invalid", "right": False,
-                      "summary": str(exc), "details": [], "edits": [], "dimension_issues": [],
-                      "matches": "", "state": {}, "method": "none", "false_right_bound": None,
-                      "seconds": 0.0}
-        result.update(id=row.get("id", ""), question=row.get("question", ""),
-                      line=row.get("line"))
-        out.append(result)
+        result = grade_bounded(name, row.get("answer", ""), quantity, about=about,
+                               seconds=seconds, memory_mb=memory_mb).to_dict()
+        out.append(_tag(row, result))
     return out
 
 
@@ -165,23 +160,30 @@ def _run(chunks, workers, scheduler, connect_timeout):
     if scheduler:
         yield from _run_dask(tagged, scheduler, connect_timeout)
         return
+    from .sandbox import GradingPool
     workers = workers or os.cpu_count() or 1
-    if workers == 1 or len(tagged) == 1:
+    with GradingPool(min(workers, len(tagged))) as pool:
+        futures = {}
         for c in tagged:
-            yield _grade_tagged(c)
-        return
-    warm(_question(r)[0] for c in tagged for r in c)   # forked workers inherit the points
-    with ProcessPoolExecutor(max_workers=workers) as pool:
-        futures = [pool.submit(_grade_tagged, c) for c in tagged]
+            for row in c:
+                name, quantity = _question(row)
+                about = (row.get("about") or "").strip() or None
+                futures[pool.submit(name, row.get("answer", ""), quantity, about)] = row
+        done: list = []
         for f in as_completed(futures):
-            yield f.result()
+            done.append(_tag(futures[f], f.result().to_dict()))
+            if len(done) >= _CHUNK:
+                yield done
+                done = []
+        if done:
+            yield done
 
 
-def _grade_tagged(chunk: list[dict]) -> list[dict]:
-    results = grade_rows(chunk)
-    for row, r in zip(chunk, results):
-        r["_index"] = row["_index"]
-    return results
+def _tag(row: dict, result: dict) -> dict:
+    result.update(id=row.get("id", ""), question=row.get("question", ""), line=row.get("line"))
+    if "_index" in row:
+        result["_index"] = row["_index"]
+    return result
 
 
 def _run_dask(chunks, scheduler: str, connect_timeout: float):
@@ -195,7 +197,7 @@ def _run_dask(chunks, scheduler: str, connect_timeout: float):
     except (OSError, TimeoutError) as exc:
         raise BatchError(f"cannot reach the Dask scheduler at {scheduler}: {exc}") from None
     try:
-        futures = client.map(_grade_tagged, chunks, pure=False)
+        futures = client.map(grade_rows, chunks, pure=False)
         for f in dask_completed(futures):
             yield f.result()
     finally:

@@ -97,8 +97,8 @@ def handle(args: argparse.Namespace) -> int:
             answer = args.answer
         else:
             return _usage("give the answer with --answer TEXT or --answer-file FILE.")
-        from .api import grade
-        result = grade(args.name, answer, args.quantity, about=args.about)
+        from .sandbox import grade_bounded
+        result = grade_bounded(args.name, answer, args.quantity, about=args.about)
         print(json.dumps(result.to_dict(), indent=2) if args.json else str(result))
         return {"right": EXIT_RIGHT, "wrong": EXIT_WRONG}.get(result.status, EXIT_USAGE)
     except BrokenPipeError:

@@ -40,13 +40,15 @@ import sympy as sp
 
 from ..exact import MP_DIGITS
 from .parser import LIMITS, AnswerTooLarge, Limits, Node, to_text
+from .cost import check
 from .resolve import resolve
 from .vocabulary import Vocabulary
 
 __all__ = ["Formula", "Env", "difference", "seeded_draw", "tree_to_sympy", "sympy_to_tree"]
 
 _PI = "pi"
-_MAX_MULTIPLE = 24      # largest multiple of an angle evaluated exactly (sin(24 theta))
+_MAX_MULTIPLE = 10 ** 4  # largest multiple of an angle evaluated exactly; answers are bounded
+                        # by the cost model (.cost: degree 4 per unit of a multiple angle)
 _MP_FUNCS = {"sin": mpmath.sin, "cos": mpmath.cos, "tan": mpmath.tan, "cot": mpmath.cot,
              "sec": mpmath.sec, "csc": mpmath.csc, "sqrt": mpmath.sqrt, "exp": mpmath.exp,
              "log": mpmath.log}
@@ -240,6 +242,7 @@ class Formula:
     def from_node(cls, node: Node, vocabulary: Vocabulary, limits: Limits = LIMITS,
                   text: str = "") -> "Formula":
         """Resolve the parser's tree against ``vocabulary`` (raises ``UnknownName``)."""
+        check(node, limits)     # the cost model, before anything is computed
         tree = resolve(node, vocabulary, limits)
         f = cls(tree, text or to_text(node))
         size = _term_degree(tree)
