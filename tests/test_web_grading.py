@@ -126,3 +126,27 @@ def test_an_interrupted_batch_resumes_on_restart(tmp_path):
     reopened = Store(tmp_path)
     assert reopened.unfinished() == [] and len(reopened.results(bid)) == 3
     assert json.loads(json.dumps(reopened.results(bid)[0])) == kept
+
+
+def test_one_hostile_answer_does_not_stall_the_others(tmp_path):
+    # parser limits loosened so that `theta^3000000` reaches the grader: its exact value at a
+    # sampled point has ~180 million bits (tests/test_grade_sandbox.py), far past the 1 s
+    # ceiling; the pool must refuse it alone and grade the others
+    from concurrent.futures import ThreadPoolExecutor
+
+    from dualmech.grade.parser import Limits
+    from dualmech.grade.sandbox import GradingPool
+    pool = GradingPool(2, seconds=1.0, limits=Limits(exponent=10 ** 9, degree=10 ** 12))
+    try:
+        app = create_app(["simple_pendulum"], data=tmp_path, token=TOKEN, pool=pool)
+        with TestClient(app) as c:
+            def post(answer):
+                return c.post("/api/grade", json={"problem": "simple_pendulum",
+                                                  "answer": answer}).json()
+            with ThreadPoolExecutor(4) as ex:
+                got = list(ex.map(post, ["theta''*theta^3000000 = 0", RIGHT, WRONG, RIGHT]))
+    finally:
+        pool.close()
+    assert got[0]["status"] == "invalid"
+    assert got[0]["summary"].startswith("too costly to grade: `theta^3000000`")
+    assert [g["status"] for g in got[1:]] == ["right", "wrong", "right"]

@@ -114,7 +114,11 @@ SCRIPT = r"""
     async function validate() {
       const text = box.value;
       const mine = ++seq;
-      if (!text.trim()) { preview.replaceChildren(el("span", "label", "your answer reads as: (nothing yet)")); return; }
+      if (!text.trim()) {
+        preview.dataset.state = "empty";
+        preview.replaceChildren(el("span", "label", "your answer reads as: (nothing yet)"));
+        return;
+      }
       const {status, data} = await post("/api/validate", {problem: problem, answer: text,
                                                           quantity: quantity.value});
       if (mine !== seq) return;                     // a newer keystroke won
@@ -140,6 +144,7 @@ SCRIPT = r"""
       }
       (data.dimensions || []).forEach(function (d) { out.push(el("div", "warn", "dimensions: " + d)); });
       preview.replaceChildren.apply(preview, out);
+      preview.dataset.state = (status === 200 && data.ok) ? "ok" : "error";
     }
     box.addEventListener("input", function () {
       clearTimeout(timer); timer = setTimeout(validate, 200);
