@@ -300,3 +300,40 @@ def test_serve_command_is_registered_and_checks_its_port(capsys):
     from dualmech.cli import main
     assert main(["serve", "--port", "70000"]) == 2
     assert "`--port` must be 1 to 65535" in capsys.readouterr().err
+
+
+class Recorded:
+    """Stands where the pool goes and answers every submission with one fixed grade."""
+
+    workers = 1
+
+    def __init__(self):
+        self.calls = []
+
+    def submit(self, problem, answer, quantity=None, about=None):
+        from concurrent.futures import Future
+
+        from dualmech.grade.result import Grade
+        self.calls.append((problem, answer, quantity, about))
+        f = Future()
+        f.set_result(Grade(problem, quantity or "auto", "equations", answer, "wrong",
+                           "recorded"))
+        return f
+
+    def close(self):
+        pass
+
+
+def test_the_same_answer_is_graded_once(tmp_path):
+    pool = Recorded()
+    app = create_app(["simple_pendulum"], data=tmp_path, token=TOKEN, pool=pool)
+    with TestClient(app) as c:
+        body = {"problem": "simple_pendulum", "answer": "a*theta''", "quantity": "eom"}
+        first = c.post("/api/grade", json=body).json()
+        second = c.post("/api/grade", json=body).json()
+        other = c.post("/api/grade", json=dict(body, answer="a*theta'' ")).json()
+    assert pool.calls == [("simple_pendulum", "a*theta''", "eom", None),
+                          ("simple_pendulum", "a*theta'' ", "eom", None)]
+    assert first == second and first["summary"] == "recorded"
+    assert other["answer"] == "a*theta'' "
+    assert len(app.state.server.store.answers()) == 3      # every submission is kept

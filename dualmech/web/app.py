@@ -29,6 +29,7 @@ import hmac
 import io
 import json
 import threading
+from collections import OrderedDict
 from pathlib import Path
 from typing import Sequence
 from urllib.parse import parse_qs, unquote
@@ -51,6 +52,8 @@ from .store import Store
 __all__ = ["create_app", "served_problems", "WebLimits"]
 
 _COOKIE = "dualmech_teacher"
+#: Grades kept in memory, so the same answer typed by many students is graded once.
+_REMEMBERED = 4096
 
 
 class WebLimits:
@@ -112,6 +115,21 @@ class _Server:
         self._lock = threading.Lock()
         self.waiting = 0
         self.titles = _titles(served)
+        self.graded: OrderedDict = OrderedDict()    # (problem, answer, quantity, about) -> dict
+
+    def remember(self, key: tuple, result: dict | None = None) -> dict | None:
+        """The grade of an answer already graded (grading is deterministic), or store one;
+        at most :data:`_REMEMBERED` are kept, the least recently used go first."""
+        with self._lock:
+            if result is None:
+                found = self.graded.get(key)
+                if found is not None:
+                    self.graded.move_to_end(key)
+                return found
+            self.graded[key] = result
+            while len(self.graded) > _REMEMBERED:
+                self.graded.popitem(last=False)
+            return result
 
     # -- lifecycle ---------------------------------------------------------------------------
     def start(self) -> None:
@@ -316,16 +334,20 @@ def create_app(problems: Sequence[str] | None = None, *, data: str | Path = "dua
             return _error(503, "the server is busy grading; try again in a few seconds.",
                           {"Retry-After": "5"})
         info = await run_in_threadpool(srv.info, body["problem"])
-        srv.waiting += 1
-        try:
-            future = srv.pool.submit(srv.served[body["problem"]], body["answer"],
-                                     body.get("quantity") or None, body.get("about") or None)
-            grade = await asyncio.wait_for(asyncio.wrap_future(future), srv.limits.seconds)
-        except asyncio.TimeoutError:
-            return _error(503, "grading took too long; try again.")
-        finally:
-            srv.waiting -= 1
-        result = grade.to_dict()
+        key = (body["problem"], body["answer"], body.get("quantity") or None,
+               body.get("about") or None)
+        result = srv.remember(key)
+        if result is None:
+            srv.waiting += 1
+            try:
+                future = srv.pool.submit(srv.served[key[0]], *key[1:])
+                grade = await asyncio.wait_for(asyncio.wrap_future(future), srv.limits.seconds)
+            except asyncio.TimeoutError:
+                return _error(503, "grading took too long; try again.")
+            finally:
+                srv.waiting -= 1
+            result = srv.remember(key, grade.to_dict())
+        result = dict(result)
         result["feedback_html"] = await run_in_threadpool(pages.feedback_html, info, result)
         await run_in_threadpool(srv.store.add_answer,
                                 {k: v for k, v in result.items() if k != "feedback_html"})
