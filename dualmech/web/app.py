@@ -87,7 +87,8 @@ def served_problems(specs: Sequence[str] | None = None) -> dict[str, str]:
         try:
             problem = get(spec)
         except Exception as exc:
-            raise ValueError(f"cannot serve problem {spec!r}: {exc}") from None
+            reason = exc.args[0] if isinstance(exc, KeyError) and exc.args else exc
+            raise ValueError(f"cannot serve problem {spec!r}: {reason}") from None
         out[problem.name] = spec
     return out
 

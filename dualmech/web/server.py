@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import ipaddress
 import secrets
+import socket
 import sys
 from pathlib import Path
 from typing import Sequence
@@ -36,10 +37,22 @@ def serve(host: str = "127.0.0.1", port: int = 8000, problems: Sequence[str] | N
     import uvicorn
 
     from .app import create_app
+    try:
+        Path(data).mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(f"cannot use {data} for the data: {exc.strerror or exc}") from None
+    family = socket.AF_INET6 if ":" in host else socket.AF_INET
+    with socket.socket(family, socket.SOCK_STREAM) as probe:   # a clear error, before starting
+        probe.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        try:
+            probe.bind((host, port))
+        except OSError as exc:
+            raise ValueError(f"cannot listen on {host}:{port}: {exc.strerror or exc}") from None
     token = token or secrets.token_urlsafe(18)
     app = create_app(problems, data=data, token=token, workers=workers)
     shown = f"[{host}]" if ":" in host else host
-    print(f"dualmech: serving {len(app.state.server.served)} problems on "
+    n = len(app.state.server.served)
+    print(f"dualmech: serving {n} problem{'s' if n != 1 else ''} on "
           f"http://{shown}:{port}/  (data in {Path(data).resolve()})", file=out)
     print(f"dualmech: teacher page http://{shown}:{port}/teacher  token: {token}", file=out)
     if not is_loopback(host):
