@@ -19,7 +19,7 @@ Example
 >>> p = preview(info, "a*theta'' + g*a = 0")
 >>> p["ok"], p["dimensions"]
 (True, ["the terms do not share one dimension: `a*theta''` has L T^-2; `a*g` has L^2 T^-2"])
->>> "&#952;&#776;" in preview(info, "theta''")["mathml"] or "θ̈" in preview(info, "theta''")["mathml"]
+>>> "<mi>&#952;&#776;</mi>" in preview(info, "theta''")["mathml"]   # theta, two dots above
 True
 """
 from __future__ import annotations
