@@ -332,7 +332,11 @@ def test_the_same_answer_is_graded_once(tmp_path):
         first = c.post("/api/grade", json=body).json()
         second = c.post("/api/grade", json=body).json()
         other = c.post("/api/grade", json=dict(body, answer="a*theta'' ")).json()
-        assert len(app.state.server.store.answers()) == 3      # every submission is kept
+        kept = app.state.server.store.answers()
+        assert len(kept) == 3                                   # every submission is kept
+        assert {a["question"] for a in kept} == {"simple_pendulum:eom"}
+        c.post("/teacher/login", data={"token": TOKEN})
+        assert "<h3>simple_pendulum:eom</h3><p>0 of 3 right, 3 wrong" in c.get("/teacher").text
     assert pool.calls == [("simple_pendulum", "a*theta''", "eom", None),
                           ("simple_pendulum", "a*theta'' ", "eom", None)]
     assert first == second and first["summary"] == "recorded"

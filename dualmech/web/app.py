@@ -350,8 +350,9 @@ def create_app(problems: Sequence[str] | None = None, *, data: str | Path = "dua
             result = srv.remember(key, grade.to_dict())
         result = dict(result)
         result["feedback_html"] = await run_in_threadpool(pages.feedback_html, info, result)
-        await run_in_threadpool(srv.store.add_answer,
-                                {k: v for k, v in result.items() if k != "feedback_html"})
+        kept = {k: v for k, v in result.items() if k != "feedback_html"}
+        kept["question"] = f"{key[0]}:{key[2]}" if key[2] else key[0]
+        await run_in_threadpool(srv.store.add_answer, kept)
         return JSONResponse(result)
 
     def teacher_only(handler):
