@@ -37,7 +37,7 @@ from .kinematics import t
 __all__ = ["Dimension", "MASS", "LENGTH", "TIME", "ANGLE", "FORCE", "TORQUE", "ENERGY",
            "DIMENSIONLESS", "VELOCITY", "ACCELERATION", "STIFFNESS", "DAMPING",
            "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA", "FREQUENCY",
-           "DimensionIssue", "audit", "dimension_of", "format_dimension"]
+           "DimensionIssue", "audit", "audit_rows", "dimension_of", "dimension_reader", "format_dimension"]
 
 MASS = _dd.mass
 LENGTH = _dd.length
@@ -110,8 +110,56 @@ def _mul(a: Dims, b: Dims, k=1) -> Dims:
                         key=lambda kv: _ORDER.index(kv[0]) if kv[0] in _ORDER else 99))
 
 
-def _pow(a: Dims, k) -> Dims:
-    return tuple((n, e * k) for n, e in a) if k != 0 else ()
+# Inside the audit a dimension is one integer: the base exponents in ``_ORDER``, each times
+# ``_SCALE`` (so halves and thirds of roots stay integral), packed as balanced digits in base
+# ``_BASE``.  A product of dimensions is then the sum of the integers, an integer power a
+# product: no dictionaries or Fractions per node.
+_SCALE = 60
+_BASE = 1 << 24
+_ZERO = 0
+
+
+def _vec(d: Dims) -> int:
+    out = 0
+    for name, e in d:
+        if name not in _ORDER:
+            raise ValueError(f"unknown base dimension {name!r}")
+        scaled = Fraction(e) * _SCALE
+        if scaled.denominator != 1 or abs(scaled) >= _BASE // 2:
+            raise ValueError(f"dimension exponent {e} of {name} is not supported")
+        out += int(scaled) * _BASE ** _ORDER.index(name)
+    return out
+
+
+def _exponents(v: int) -> list:
+    out = []
+    for _ in _ORDER:
+        digit = v % _BASE
+        if digit >= _BASE // 2:
+            digit -= _BASE
+        out.append(digit)
+        v = (v - digit) // _BASE
+    return out
+
+
+def _pairs(v: int) -> Dims:
+    return tuple((name, Fraction(e, _SCALE)) for name, e in zip(_ORDER, _exponents(v))
+                 if e != 0)
+
+
+def _vadd(a: int, b: int, k: int = 1) -> int:
+    return a + k * b
+
+
+def _vscale(a: int, k) -> int:
+    k = Fraction(k)
+    if k.denominator == 1:
+        return a * int(k)
+    return _vec(tuple((name, e * k) for name, e in _pairs(a)))
+
+
+def _vformat(v: int) -> str:
+    return format_dimension(_pairs(v))
 
 
 @dataclass(frozen=True)
@@ -131,16 +179,31 @@ class DimensionIssue:
 
 
 class _Walker:
+    """The audit of one expression tree: each distinct subexpression is visited once (its
+    dimension memoised), so the cost is linear in the size of the shared tree."""
+
     def __init__(self, dims: Mapping):
         self.dims = {}
         for k, v in dims.items():
-            self.dims[k] = reduce(v)
-        self.dims.setdefault(t, reduce(TIME))
+            self.dims[k] = _vec(reduce(v))
+        self.dims.setdefault(t, _vec(reduce(TIME)))
         self.issues: list[DimensionIssue] = []
+        self._memo: dict = {}
+        self._seeded: set = set()
 
-    def __call__(self, e) -> Dims:
+    def forget(self) -> None:
+        """Drop the memo of visited subexpressions (declared symbols stay)."""
+        self._memo = {k: v for k, v in self._memo.items() if k in self._seeded}
+
+    def __call__(self, e) -> tuple:
+        d = self._memo.get(e)
+        if d is None:
+            d = self._memo[e] = self._visit(e)
+        return d
+
+    def _visit(self, e) -> tuple:
         if e.is_Number or e in (sp.pi, sp.E):
-            return ()
+            return _ZERO
         if e in self.dims:
             return self.dims[e]
         if e.is_Symbol or isinstance(e, sp.core.function.AppliedUndef):
@@ -148,38 +211,41 @@ class _Walker:
         if isinstance(e, sp.Derivative):
             d = self(e.expr)
             for var, n in e.variable_count:
-                d = _mul(d, self(var), -n)
+                d = _vadd(d, self(var), -n)
             return d
         if e.is_Add:
             return self._add(e, None)
         if e.is_Mul:
-            d: Dims = ()
+            d = _ZERO
             for a in e.args:
-                d = _mul(d, self(a))
+                d = _vadd(d, self(a))
             return d
         if e.is_Pow:
             base = self(e.base)
             if e.exp.is_Number:
-                return _pow(base, Fraction(str(sp.Rational(e.exp))))
-            if base or self(e.exp):
+                return _vscale(base, Fraction(str(sp.Rational(e.exp))))
+            if base != _ZERO or self(e.exp) != _ZERO:
                 self.issues.append(DimensionIssue(dotted(e), "?", "1", f"`{dotted(e)}`: a symbolic power "
                                                   "needs a dimensionless base and exponent"))
-            return ()
+            return _ZERO
         if isinstance(e, sp.Function):
             for a in e.args:
-                d = self(a)
-                if d:
-                    self.issues.append(DimensionIssue(
-                        dotted(a), format_dimension(d), "1",
-                        f"argument `{dotted(a)}` of {e.func.__name__} has dimension "
-                        f"{format_dimension(d)}; it must be dimensionless"))
-            return ()
+                self._dimensionless_argument(a, e.func.__name__)
+            return _ZERO
         raise TypeError(f"cannot find the dimension of {e!r}")
 
-    def _undeclared(self, e) -> Dims:
+    def _dimensionless_argument(self, a, function: str) -> None:
+        d = self(a)
+        if d != _ZERO:
+            self.issues.append(DimensionIssue(
+                self._show(a), _vformat(d), "1",
+                f"argument `{self._show(a)}` of {function} has dimension "
+                f"{_vformat(d)}; it must be dimensionless"))
+
+    def _undeclared(self, e) -> tuple:
         self.issues.append(DimensionIssue(self._show(e), "?", "?",
                                           f"`{self._show(e)}` has no declared dimension"))
-        return ()
+        return _ZERO
 
     def _show(self, e) -> str:
         return dotted(e)
@@ -187,16 +253,18 @@ class _Walker:
     def _terms(self, e):
         return sp.Add.make_args(e)
 
-    def _add(self, e, expected) -> Dims:
+    def _add(self, e, expected) -> tuple:
         # zero has every dimension: it never conflicts (a reaction that vanishes, say)
         terms = [(a, self(a)) for a in self._terms(e) if a != 0]
         if not terms:
-            return expected if expected is not None else ()
+            return expected if expected is not None else _ZERO
         counts = Counter(d for _, d in terms)
         if expected is None:
+            if len(counts) == 1:
+                return terms[0][1]
             ranked = counts.most_common()
-            if len(ranked) > 1 and ranked[0][1] == ranked[1][1]:
-                listing = "; ".join(f"`{self._show(a)}` has {format_dimension(d)}"
+            if ranked[0][1] == ranked[1][1]:
+                listing = "; ".join(f"`{self._show(a)}` has {_vformat(d)}"
                                     for a, d in terms)
                 self.issues.append(DimensionIssue(self._show(e), "mixed", "one dimension",
                                                   f"terms disagree: {listing}"))
@@ -204,8 +272,8 @@ class _Walker:
             expected = ranked[0][0]
         for a, d in terms:
             if d != expected:
-                self.issues.append(DimensionIssue(self._show(a), format_dimension(d),
-                                                  format_dimension(expected)))
+                self.issues.append(DimensionIssue(self._show(a), _vformat(d),
+                                                  _vformat(expected)))
         return expected
 
 
@@ -219,21 +287,23 @@ class _SeWalker(_Walker):
     def __init__(self, dims: Mapping, names: Mapping):
         super().__init__(dims)
         self.names = names
-        self.se_dims: dict = {}
+        se_dims: dict = {}
         for name, obj in names.items():
             if not name.endswith("()") and obj in self.dims:
-                self.se_dims[se.Symbol(name)] = self.dims[obj]
+                se_dims[se.Symbol(name)] = self.dims[obj]
         for q, d in list(self.dims.items()):
             if not isinstance(q, sp.core.function.AppliedUndef):
                 continue
-            self.se_dims[to_se(q)] = d
+            se_dims[to_se(q)] = d
             if q.args != (t,):
                 continue
             st = state_symbols(q)
             for order, sym in enumerate((st.q, st.qd, st.qdd)):
                 if names.get(sym.name) is sym:   # plain rows: q, q_dot, q_ddot
-                    self.se_dims[se.Symbol(sym.name)] = _mul(d, self.dims[t], -order)
-        self.se_dims[se.Symbol(t.name)] = self.dims[t]
+                    se_dims[se.Symbol(sym.name)] = _vadd(d, self.dims[t], -order)
+        se_dims[se.Symbol(t.name)] = self.dims[t]
+        self._memo.update(se_dims)   # declared symbols are their own memo entries
+        self._seeded = set(se_dims)
 
     def _show(self, e) -> str:
         return dotted(to_sp(e, self.names))
@@ -241,44 +311,36 @@ class _SeWalker(_Walker):
     def _terms(self, e):
         return e.args if e.is_Add else (e,)
 
-    def __call__(self, e) -> Dims:
+    def _visit(self, e) -> tuple:
         if e.is_Number or e == se.pi or e == se.E:
-            return ()
-        d = self.se_dims.get(e)
-        if d is not None:
-            return d
+            return _ZERO
         if e.is_Symbol or isinstance(e, se.FunctionSymbol):
             return self._undeclared(e)
         if e.is_Derivative:
             d = self(e.args[0])
             for var in e.args[1:]:
-                d = _mul(d, self(var), -1)
+                d = _vadd(d, self(var), -1)
             return d
         if e.is_Add:
             return self._add(e, None)
         if e.is_Mul:
-            d = ()
+            d = _ZERO
             for a in e.args:
-                d = _mul(d, self(a))
+                d = _vadd(d, self(a))
             return d
         if e.is_Pow:
             base = self(e.base)
             if isinstance(e.exp, (se.Integer, se.Rational)):
                 p, q = e.exp.get_num_den()
-                return _pow(base, Fraction(int(p), int(q)))
-            if base or self(e.exp):
+                return _vscale(base, Fraction(int(p), int(q)))
+            if base != _ZERO or self(e.exp) != _ZERO:
                 self.issues.append(DimensionIssue(self._show(e), "?", "1", f"`{self._show(e)}`: "
                                                   "a symbolic power needs a dimensionless base "
                                                   "and exponent"))
-            return ()
+            return _ZERO
         for a in e.args:   # a function: every argument dimensionless
-            d = self(a)
-            if d:
-                self.issues.append(DimensionIssue(
-                    self._show(a), format_dimension(d), "1",
-                    f"argument `{self._show(a)}` of {type(e).__name__} has dimension "
-                    f"{format_dimension(d)}; it must be dimensionless"))
-        return ()
+            self._dimensionless_argument(a, type(e).__name__)
+        return _ZERO
 
 
 def audit(expr, dims: Mapping, expected=None, names: Mapping | None = None
@@ -292,8 +354,64 @@ def audit(expr, dims: Mapping, expected=None, names: Mapping | None = None
     """
     w = _SeWalker(dims, names or {}) if isinstance(expr, se.Basic) else _Walker(dims)
     w._add(expr if isinstance(expr, se.Basic) else as_expr(expr),
-           None if expected is None else reduce(expected))
+           None if expected is None else _vec(reduce(expected)))
     return w.issues
+
+
+def audit_rows(rows, dims: Mapping, expected=None, names: Mapping | None = None
+               ) -> list[list[DimensionIssue]]:
+    """:func:`audit` of each of ``rows`` (one derivation's equations), sharing one walk.
+
+    ``expected`` is ``None`` or one Dimension (or ``None``) per row.  A subexpression the rows
+    share is audited once, and an issue inside it is reported on the first row that has it.
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> from dualmech.dimensions import MASS, LENGTH, TIME, audit_rows
+    >>> m, l, x = sp.symbols("m l x")
+    >>> issues = audit_rows([m*l + m*x, m*l + m*x + l], {m: MASS, l: LENGTH, x: LENGTH})
+    >>> [[str(i) for i in row] for row in issues]
+    [[], ['term `l` has dimension L where the rest has M L']]
+    """
+    rows = list(rows)
+    if expected is None:
+        expected = [None] * len(rows)
+    held = bool(rows) and isinstance(rows[0], se.Basic)
+    w = _SeWalker(dims, names or {}) if held else _Walker(dims)
+    out = []
+    for e, x in zip(rows, expected):
+        w.issues = []
+        w._add(e if held else as_expr(e), None if x is None else _vec(reduce(x)))
+        out.append(w.issues)
+    return out
+
+
+def dimension_reader(dims: Mapping, names: Mapping | None = None, held: bool = True):
+    """A function ``expr -> dimension`` like :func:`dimension_of` that shares one walk (and
+    its memo) between calls: for many expressions of one derivation.  ``held`` says whether
+    the expressions are symengine ones (with ``names``) or sympy ones.
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> from dualmech.dimensions import MASS, LENGTH, dimension_reader
+    >>> m, l = sp.symbols("m l")
+    >>> read = dimension_reader({m: MASS, l: LENGTH}, held=False)
+    >>> read(m*l**2), read(l)
+    ((('mass', Fraction(1, 1)), ('length', Fraction(2, 1))), (('length', Fraction(1, 1)),))
+    """
+    w = _SeWalker(dims, names or {}) if held else _Walker(dims)
+
+    def read(expr) -> Dims:
+        w.issues = []
+        d = w(expr if held else as_expr(expr))
+        if w.issues:
+            issues, w.issues = w.issues, []
+            w.forget()   # so that the same expression raises again
+            raise ValueError("; ".join(map(str, issues)))
+        return _pairs(d)
+    return read
 
 
 def dimension_of(expr, dims: Mapping, names: Mapping | None = None) -> Dims:
@@ -303,9 +421,9 @@ def dimension_of(expr, dims: Mapping, names: Mapping | None = None) -> Dims:
         d = w(expr)
         if w.issues:
             raise ValueError("; ".join(map(str, w.issues)))
-        return d
+        return _pairs(d)
     w = _Walker(dims)
     d = w(as_expr(expr))
     if w.issues:
         raise ValueError("; ".join(map(str, w.issues)))
-    return d
+    return _pairs(d)

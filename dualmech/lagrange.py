@@ -112,8 +112,8 @@ class Lagrangian:
     def constraint(self, name: str, g) -> sp.Symbol:
         """Holonomic constraint ``g(q, t) = 0`` with multiplier ``name``; returns the multiplier."""
         lam = sp.Symbol(name, real=True)
-        g = as_expr(g)
-        self._constraints.append((lam, g.diff(t, 2), [g.diff(q) for q in self.coordinates]))
+        # differentiated in symengine by :meth:`equations` (``None``: ``g`` itself is kept)
+        self._constraints.append((lam, as_expr(g), None))
         return lam
 
     def velocity_constraint(self, name: str, coefficients: Sequence, rest=0) -> sp.Symbol:
@@ -141,6 +141,21 @@ class Lagrangian:
         expr = as_expr(expr).xreplace(rules)
         return expr.xreplace(dict(self._prescribed))
 
+    def _constraint_se(self, constraint, free, states, br) -> tuple:
+        """``(multiplier, acceleration level, gradient by coordinate index)`` in symengine.
+
+        A holonomic ``g(q, t)`` (gradient ``None``) is differentiated here, by the chain rule
+        on plain symbols (twice in time, once per free coordinate), not in sympy."""
+        lam, level, grad = constraint
+        if grad is not None:
+            return lam, br.se(level), [br.se(x) for x in grad]
+        g = br.se(level)
+        gradient = [0] * len(self.coordinates)
+        for q, s in zip(free, states):
+            gradient[self.coordinates.index(q)] = g.diff(br.se(s.q))
+        rate = total_derivative(g, states, t, br)
+        return lam, total_derivative(rate, states, t, br), gradient
+
     def equations(self) -> EquationSet:
         """Lagrange's equations, one per free coordinate, plus each constraint's acceleration level.
 
@@ -156,15 +171,17 @@ class Lagrangian:
                  "V": {k: plain(v) for k, v in self._V.items()},
                  "R": {k: plain(v) for k, v in self._R.items()}}
         Q = {k: [plain(x) for x in v] for k, v in self._Q.items()}
-        cons = [(lam, plain(level), [plain(g) for g in grad])
+        cons = [(lam, plain(level), None if grad is None else [plain(g) for g in grad])
                 for lam, level, grad in self._constraints]
         everything = [e for d in terms.values() for e in d.values()] + \
-            [x for v in Q.values() for x in v] + [x for _, lv, gr in cons for x in [lv] + gr]
+            [x for v in Q.values() for x in v] + \
+            [x for _, lv, gr in cons for x in [lv] + (gr or [])]
         states = [state_symbols(q) for q in free]
         try:
             br = Bridge(everything, [t] + [x for s in states for x in (s.q, s.qd, s.qdd)])
         except ValueError as exc:
             raise ModelError(f"`{self.name}`: {exc}") from None
+        cons = [self._constraint_se(c, free, states, br) for c in cons]
         T_se = {k: br.se(v) for k, v in terms["T"].items()}
         contributions = []
         index = {q: j for j, q in enumerate(self.coordinates)}
@@ -181,11 +198,11 @@ class Lagrangian:
             for key, Qk in Q.items():
                 parts[key] = parts.get(key, 0) - br.se(Qk[j])
             for lam, _, grad in cons:
-                parts[f"constraint {lam.name}"] = -br.se(lam) * br.se(grad[j])
+                parts[f"constraint {lam.name}"] = -br.se(lam) * grad[j]
             contributions.append((f"Lagrange, {q.func.__name__}", parts))
         for lam, level, _ in cons:
             contributions.append((f"constraint {lam.name} (acceleration level)",
-                                  {f"constraint {lam.name}": br.se(level)}))
+                                  {f"constraint {lam.name}": level}))
         names = dict(br.by_name)
         eqs = [sum(p.values(), se.Integer(0)) for _, p in contributions]
         return EquationSet(self.name, tuple(free), Rows(eqs, names, free, plain=True),

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ._expr import as_expr
-from .dimensions import ENERGY, Dimension, audit, reduce
+from .dimensions import ENERGY, Dimension, audit_rows, reduce
 from .equations import EquationSet, ModelError, Rows
 from .kinematics import t
 
@@ -333,13 +333,16 @@ class Problem:
             rows = eqs.equations
             held = isinstance(rows, Rows)   # audited in symengine, as the derivation left them
             names = rows.names if held else None
-            for label, e in zip(eqs.labels, rows.se if held else rows):
-                expected = None
+            expected = []
+            for label in eqs.labels:
+                x = None
                 if label.startswith("Lagrange, "):
                     q = next(q for q in eqs.coordinates if q.func.__name__ == label[10:])
-                    expected = ENERGY / dims[q]
-                for issue in audit(e, dims, expected, names=names):
-                    out.append(f"{mname} [{label}]: {issue}")
+                    x = ENERGY / dims[q]
+                expected.append(x)
+            found = audit_rows(rows.se if held else rows, dims, expected, names=names)
+            for label, issues in zip(eqs.labels, found):
+                out += [f"{mname} [{label}]: {issue}" for issue in issues]
         return out
 
     def __repr__(self) -> str:

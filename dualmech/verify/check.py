@@ -17,7 +17,7 @@ from typing import Sequence
 import symengine as se
 import sympy as sp
 
-from ..equations import EquationSet, ModelError
+from ..equations import EquationSet, ModelError, Rows
 from .display import Budget, OverBudget, dotted, solve_display
 from .explain import Mismatch, explain_model
 from .published import PublishedVerdict, check_published
@@ -280,7 +280,7 @@ def _reaction_dimension_issues(problem) -> list[str]:
     In each equation the reaction's coefficient times its declared dimension must have the
     dimension of the rest of the equation; decided from the structure, without solving.
     """
-    from ..dimensions import dimension_of, format_dimension, reduce
+    from ..dimensions import dimension_reader, format_dimension, reduce
     dims = problem.dimensions()
     declared = problem.reaction_info()
     out, seen = [], set()
@@ -297,6 +297,7 @@ def _reaction_dimension_issues(problem) -> list[str]:
         else:
             A, _ = m.matrix()
             us, rows, names = list(m.unknowns), list(m.equations), None
+        dimension_of = dimension_reader(dims, names, held=held is not None)
         for j, u in enumerate(m.unknowns):
             info = declared.get(u.name)
             if info is None or u.name in seen:
@@ -312,8 +313,8 @@ def _reaction_dimension_issues(problem) -> list[str]:
                 if rest == 0:
                     continue
                 try:
-                    dc = dimension_of(coeff, dims, names)
-                    dr = dimension_of(rest, dims, names)
+                    dc = dimension_of(coeff)
+                    dr = dimension_of(rest)
                 except (ValueError, KeyError, TypeError):
                     continue
                 need = tuple(sorted(dict(dr).items()))
@@ -501,7 +502,11 @@ def recover_reactions(problem, limits: Budget | None = None) -> dict:
 
 
 def _drop_zero_rows(m: EquationSet) -> EquationSet:
-    keep = [i for i, e in enumerate(m.equations) if sp.expand(e) != 0]
+    rows = m.equations
+    if isinstance(rows, Rows):   # held in symengine: expand there, never build the sympy form
+        keep = [i for i, e in enumerate(rows.se) if se.expand(e) != 0]
+    else:
+        keep = [i for i, e in enumerate(rows) if sp.expand(e) != 0]
     if len(keep) == len(m.equations):
         return m
     return EquationSet(m.name, m.coordinates, [m.equations[i] for i in keep], m.unknowns,

@@ -14,12 +14,18 @@ import sympy as sp
 
 from .._expr import as_expr
 from ..equations import is_zero_expression
+from .ratfun import NotRational, tidy_rational
 
-__all__ = ["Budget", "OverBudget", "budget", "tidy", "solve_display", "dotted"]
+__all__ = ["Budget", "OverBudget", "budget", "tidy", "solve_display", "largest_coupled_block",
+           "dotted"]
 
 #: Default budget for one displayed expression: operations in, seconds spent.
 MAX_OPS = 600
 SECONDS = 3.0
+#: Largest set of unknowns that one symbolic solve may couple (the irreducible blocks of the
+#: matrix's block-triangular form): a dense 5 x 5 solve is seconds of work and a page of
+#: formula nobody reads; every problem of the catalogue couples at most 4.
+MAX_COUPLED = 4
 
 
 class OverBudget(Exception):
@@ -77,6 +83,10 @@ def tidy(expr, limits: Budget | None = None):
     best = expr
     try:
         with budget(limits.remaining()):
+            try:   # polynomial arithmetic in C (FLINT); sympy's route for anything else
+                return tidy_rational(expr)
+            except (NotRational, ZeroDivisionError):
+                pass
             best = sp.cancel(sp.together(expr))
             if sp.count_ops(best) < limits.max_ops and best.has(sp.sin, sp.cos):
                 num, den = sp.fraction(best)
@@ -111,11 +121,18 @@ def solve_display(eqs, limits: Budget | None = None) -> dict:
     hit = limits.cache.get(key)
     if hit is not None and hit[0] is eqs:
         return hit[1]
+    n = len(eqs.accelerations) + len(eqs.unknowns)
+    if n > 8:   # decided before the matrix is built: its sympy form costs more than a verdict
+        raise OverBudget(f"{n} unknowns")
     A, b = eqs.matrix()
     if A.rows != A.cols:
         raise OverBudget(f"{A.rows} equations for {A.cols} unknowns: not a square system")
+    coupled = largest_coupled_block(A)
+    if coupled > MAX_COUPLED:
+        raise OverBudget(f"{coupled} unknowns are coupled (a symbolic solution would be "
+                         "pages long)")
     ops = sp.count_ops(A) + sp.count_ops(b)
-    if A.cols > 8 or ops > 4 * limits.max_ops:
+    if ops > 4 * limits.max_ops:
         raise OverBudget(f"{A.cols} unknowns, {ops} operations")
     with budget(limits.remaining()):
         sol = A.LUsolve(b, iszerofunc=is_zero_expression)
@@ -123,6 +140,33 @@ def solve_display(eqs, limits: Budget | None = None) -> dict:
     out = {u: tidy(s, limits) for u, s in zip(unknowns, sol)}
     limits.cache[key] = (eqs, out)
     return out
+
+
+def largest_coupled_block(A) -> int:
+    """Size of the largest irreducible diagonal block of the square matrix ``A`` in
+    block-triangular form (structural: from which entries are zero), i.e. the largest set of
+    unknowns a solve must treat together; ``A.rows`` when no permutation gives a zero-free
+    diagonal.
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> a, b, c = sp.symbols("a b c")
+    >>> largest_coupled_block(sp.Matrix([[a, 0, 0], [b, a, c], [c, b, a]]))
+    2
+    """
+    import numpy as np
+    from scipy.sparse import csr_matrix
+    from scipy.sparse.csgraph import connected_components, maximum_bipartite_matching
+    pattern = csr_matrix(np.array([[1 if A[i, j] != 0 else 0 for j in range(A.cols)]
+                                   for i in range(A.rows)], dtype=np.int8))
+    match = maximum_bipartite_matching(pattern, perm_type="column")
+    if A.rows == 0:
+        return 0
+    if (match < 0).any():
+        return A.rows
+    _, labels = connected_components(pattern[:, match], directed=True, connection="strong")
+    return int(np.bincount(labels).max())
 
 
 def dotted(expr, coordinates=None) -> str:

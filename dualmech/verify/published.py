@@ -246,6 +246,7 @@ def _detail(problem, pub, which, limits: Budget) -> str:
             audit(pub.printed[j] - pub.reference[j], dims)
         if issues:
             lines.append(f"{what} is dimensionally inconsistent: " + "; ".join(map(str, issues)))
+        shell = None
         if pub.kind != "expression":
             ref = problem.model(problem.reference)
             near = closest_equation(exprs[j], ref.equations, ref.labels,
@@ -254,7 +255,10 @@ def _detail(problem, pub, which, limits: Budget) -> str:
                 label, alpha, rest = near
                 lines.append(f"{what} is closest to ({alpha}) x [{problem.reference}: {label}];"
                              f" printed minus that = {dotted(rest)}")
-        diff = _on_shell(problem, exprs[j], limits)
+                # the derived row vanishes on the motion: a remainder free of accelerations
+                # and reactions is the printed side's value there, with no solve
+                shell = rest
+        diff = _on_shell(problem, exprs[j], limits, shell)
         if diff is not None and len(diff) < 200:
             if pub.kind != "expression":
                 lines.append(f"{what} does not follow from the equations of motion: on the "
@@ -272,11 +276,14 @@ def closest_equation(expr, equations, labels, parameters, max_terms: int = 40):
     Tries every ratio ``alpha`` of a term of ``expr`` to a term of a derived equation (ratios
     free of the state) and keeps the smallest ``expr - alpha * equation``.  Returns
     ``(label, alpha, remainder)`` or ``None`` when nothing matches or the input is large.
+    Terms are compared as ``{monomial: coefficient}`` tables, so only the best remainder is
+    ever built as an expression.
     """
     E = sp.expand(expr)
     terms_e = sp.Add.make_args(E)
     if len(terms_e) > max_terms:
         return None
+    table_e = _coefficients(E)
     allowed = set(parameters)
     best = None
     for label, R in zip(labels, equations):
@@ -284,27 +291,50 @@ def closest_equation(expr, equations, labels, parameters, max_terms: int = 40):
         terms_r = sp.Add.make_args(R)
         if len(terms_r) > max_terms:
             continue
+        table_r = _coefficients(R)
         ratios = []
         for a in terms_e:
             for b in terms_r:
-                r = sp.cancel(a / b)
+                r = a / b   # monomials: the quotient is already in lowest terms
                 if r.free_symbols <= allowed and r not in ratios and r != 0:
                     ratios.append(r)
         for alpha in ratios[:60]:
-            rest = sp.expand(E - alpha * R)
-            size = len(sp.Add.make_args(rest)) if rest != 0 else 0
+            rest = dict(table_e)
+            for mono, c in table_r.items():
+                k, m = (alpha * mono).as_coeff_Mul()
+                rest[m] = rest.get(m, 0) - k * c
+            size = sum(1 for v in rest.values() if v != 0)
             if best is None or size < best[0]:
-                best = (size, label, alpha, rest)
+                best = (size, label, alpha, R)
     if best is None or best[0] >= len(terms_e):
         return None
-    return best[1], best[2], sp.factor_terms(best[3])
+    size, label, alpha, R = best
+    return label, alpha, sp.factor_terms(sp.expand(E - alpha * R))
 
 
-def _on_shell(problem, expr, limits: Budget) -> str | None:
-    """``expr`` on the motion (accelerations and reactions substituted), for display."""
+def _coefficients(expr) -> dict:
+    """``{monomial: rational coefficient}`` of an expanded sum."""
+    out: dict = {}
+    for term in sp.Add.make_args(expr):
+        k, m = term.as_coeff_Mul()
+        out[m] = out.get(m, 0) + k
+    return out
+
+
+def _on_shell(problem, expr, limits: Budget, same_on_motion=None) -> str | None:
+    """``expr`` on the motion (accelerations and reactions substituted), for display.
+
+    ``same_on_motion`` is an expression known to equal ``expr`` on the motion (``expr``
+    minus a multiple of a derived row); when it is free of accelerations and reactions it is
+    shown instead, and nothing is solved."""
     expr = as_expr(expr)
     ref = problem.model(problem.reference)
     unknowns = {u for m in problem.models().values() for u in m.unknowns}
+    if same_on_motion is not None:
+        other = as_expr(same_on_motion)
+        if not any(other.has(a) for a in ref.accelerations) and \
+                not (other.free_symbols & unknowns):
+            expr = other
     if not any(expr.has(a) for a in ref.accelerations) and not (expr.free_symbols & unknowns):
         try:
             return dotted(tidy(expr, limits))

@@ -1,0 +1,174 @@
+"""Rational functions on FLINT for display: cancel and ``sin^2 + cos^2 = 1`` in C.
+
+:func:`tidy_rational` gives what :func:`dualmech.verify.display.tidy` gives -- the expression
+as one reduced fraction, with ``sin(a)^2 + cos(a)^2 = 1`` applied whichever way makes it
+shortest -- by polynomial arithmetic on ``python-flint``'s ``fmpz_mpoly`` (exact integer
+multivariate polynomials, gcd in C) instead of sympy's ``cancel`` and ``factor_terms`` on
+expression trees, which cost seconds on a double pendulum's reactions.  Every symbol, function
+application and non-integer power of the input is one generator of the polynomial ring; the
+result is the same rational function (display only: no verdict reads it).
+
+Example
+-------
+>>> import sympy as sp
+>>> x, m, g = sp.symbols("x m g")
+>>> tidy_rational((m*g*sp.sin(x)**2 + m*g*sp.cos(x)**2) / (m*sp.cos(x)))
+g/cos(x)
+"""
+from __future__ import annotations
+
+from fractions import Fraction
+
+import sympy as sp
+
+__all__ = ["tidy_rational", "NotRational"]
+
+try:   # python-flint is a dependency; without it the caller keeps sympy's route
+    import flint
+except ImportError:  # pragma: no cover
+    flint = None
+
+
+class NotRational(ValueError):
+    """The expression is not a rational function of its atoms (or flint is missing)."""
+
+
+class _Ring:
+    def __init__(self, atoms: list):
+        self.atoms = atoms
+        self.index = {a: i for i, a in enumerate(atoms)}
+        self.ctx = flint.fmpz_mpoly_ctx.get(tuple(f"v{i}" for i in range(len(atoms))), "lex")
+        self.gens = self.ctx.gens()
+        self.one = self.ctx.from_dict({(0,) * len(atoms): 1})
+        self.zero = self.one - self.one
+
+    def fraction(self, e):
+        """``(numerator, denominator)`` polynomials of the sympy expression ``e``."""
+        if e.is_Integer:
+            return self.one * int(e), self.one
+        if e.is_Rational:
+            return self.one * int(e.p), self.one * int(e.q)
+        if e in self.index:
+            return self.gens[self.index[e]], self.one
+        if e.is_Add:
+            n, d = self.zero, self.one
+            for a in e.args:
+                an, ad = self.fraction(a)
+                if ad == d:
+                    n = n + an
+                else:
+                    g = d.gcd(ad)
+                    n, d = n * (ad / g) + an * (d / g), d * (ad / g)
+            return n, d
+        if e.is_Mul:
+            n, d = self.one, self.one
+            for a in e.args:
+                an, ad = self.fraction(a)
+                n, d = n * an, d * ad
+            return n, d
+        if e.is_Pow and e.exp.is_Integer:
+            bn, bd = self.fraction(e.base)
+            k = int(e.exp)
+            if k < 0:
+                bn, bd, k = bd, bn, -k
+            if bn.is_zero():
+                raise ZeroDivisionError("a zero denominator")
+            return bn ** k, bd ** k
+        raise NotRational(f"not an atom of the ring: {e}")
+
+    def expr(self, p) -> sp.Expr:
+        terms = []
+        for monom, coeff in zip(p.monoms(), p.coeffs()):
+            factors = [sp.Integer(int(coeff))]
+            factors += [self.atoms[i] ** k for i, k in enumerate(monom) if k]
+            terms.append(sp.Mul(*factors))
+        return sp.Add(*terms)
+
+
+def _atoms(e, out: dict) -> None:
+    if e.is_Number:
+        if not e.is_Rational:
+            raise NotRational(f"a float: {e}")
+        return
+    if e.is_Add or e.is_Mul:
+        for a in e.args:
+            _atoms(a, out)
+        return
+    if e.is_Pow and e.exp.is_Integer:
+        _atoms(e.base, out)
+        return
+    if e.is_Symbol or isinstance(e, (sp.Function, sp.Derivative)) or e.is_Pow \
+            or e is sp.pi or e is sp.E:
+        out.setdefault(e, None)
+        return
+    raise NotRational(f"cannot treat {type(e).__name__} as an atom")
+
+
+def _reduce(n, d):
+    g = n.gcd(d)
+    if not g.is_one():
+        n, d = n / g, d / g
+    lead = d.leading_coefficient()
+    if lead < 0:
+        n, d = -n, -d
+    return n, d
+
+
+def _pythagoras(ring: _Ring, p, s: int, c: int):
+    """``p`` with every ``gen_s ** k`` (k >= 2) written through ``1 - gen_c ** 2``."""
+    out = ring.zero
+    base = 1 - ring.gens[c] ** 2
+    for monom, coeff in zip(p.monoms(), p.coeffs()):
+        k = monom[s]
+        rest = list(monom)
+        rest[s] = k % 2
+        term = ring.ctx.from_dict({tuple(rest): int(coeff)})
+        out = out + (term * base ** (k // 2) if k >= 2 else term)
+    return out
+
+
+def _size(n, d) -> int:
+    return len(n.monoms()) + len(d.monoms())
+
+
+def tidy_rational(expr) -> sp.Expr:
+    """``expr`` as one reduced fraction with ``sin^2 + cos^2 = 1`` applied, per angle,
+    whichever way gives fewer terms; the numerator's and denominator's integer content and
+    common monomial pulled out.  Raises :class:`NotRational` when ``expr`` is not a rational
+    function of its atoms (or python-flint is missing)."""
+    if flint is None:
+        raise NotRational("python-flint is not installed")
+    found: dict = {}
+    _atoms(expr, found)
+    atoms = sorted(found, key=sp.default_sort_key)
+    if not atoms:
+        return expr
+    ring = _Ring(atoms)
+    n, d = _reduce(*ring.fraction(expr))
+    if n.is_zero():
+        return sp.Integer(0)
+    by_arg: dict = {}
+    for i, a in enumerate(atoms):
+        if isinstance(a, (sp.sin, sp.cos)):
+            by_arg.setdefault(a.args[0], {})[type(a)] = i
+    for pair in by_arg.values():
+        if len(pair) != 2:
+            continue
+        s, c = pair[sp.sin], pair[sp.cos]
+        best = (n, d)
+        for a, b in ((s, c), (c, s)):
+            cand = _reduce(_pythagoras(ring, n, a, b), _pythagoras(ring, d, a, b))
+            if _size(*cand) < _size(*best):
+                best = cand
+        n, d = best
+    return _display(ring, n) / _display(ring, d)
+
+
+def _display(ring: _Ring, p) -> sp.Expr:
+    """``content * monomial * (primitive rest)`` so that common factors show."""
+    content, prim = p.primitive()
+    if prim.leading_coefficient() < 0 and len(prim.monoms()) > 1:
+        content, prim = -content, -prim
+    mono = prim.term_content()
+    rest = prim / mono
+    return sp.Integer(int(content)) * ring.expr(mono) * ring.expr(rest)
