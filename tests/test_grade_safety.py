@@ -218,3 +218,39 @@ def test_fuzz_whole_grader(batch, grader, guards):   # 300 strings graded end to
 def test_grade_accepts_only_text():
     r = grade("simple_pendulum", 12345)
     assert r.status == "invalid" and "text" in r.summary
+
+
+# the comparator decides these (roots, static rows); correctness, not speed, is tested here
+ROOMY = LIMITS.__class__(seconds=300.0)
+
+
+# -- sampling where the problem lives ----------------------------------------------------------
+X_FORM = ("M*x'' + c*x' - g*m*(l0 + x)/(2*sqrt(4*l^2 - (l0 + x)^2)) + k*x "
+          "+ 2*l^2*m*x''/(8*l^2 - 2*(l0 + x)^2) "
+          "+ 4*l^2*m*(l0 + x)*x'^2/(8*l^2 - 2*(l0 + x)^2)^2 = 0")
+
+
+def test_two_rod_linkage_x_form_is_sampled_in_its_domain():
+    # the project's own lagrange_x equation (problems/two_rod_linkage.py), typed in x: right
+    # only where sqrt(4 l^2 - (l0 + x)^2) = 2 l sin(theta), i.e. on the declared domain
+    # 0 < theta < pi; a point with sin(theta) < 0 would call it wrong
+    g = Grader.of("two_rod_linkage", limits=ROOMY)
+    assert g.grade(X_FORM).status == "right"
+    assert g.grade(X_FORM.replace("+ k*x", "- k*x")).status == "wrong"
+
+
+# -- static rows ----------------------------------------------------------------------------
+COPYING = ("-F + b*y' - k2*(L*theta - y) + m2*y'' = 0; "
+           "L*k2*(L*theta - y) + a^2*k1*theta = 0")
+
+
+def test_copying_machine_static_row_is_graded():
+    # problems/copying_machine.py: a massless bar, so the theta row has no acceleration; the
+    # reference equations are right, a flipped spring sign in that row is wrong, and a
+    # tautology says nothing
+    g = Grader.of("copying_machine", limits=ROOMY)
+    assert g.grade(COPYING).status == "right"
+    assert g.grade(COPYING.replace("+ a^2*k1", "- a^2*k1")).status == "wrong"
+    assert g.grade("L*k2*(L*theta - y) + a^2*k1*theta = 0").status == "right"
+    r = g.grade("0 = 0")
+    assert r.status == "wrong" and "holds for any motion" in r.summary

@@ -126,6 +126,10 @@ class Grader:
             q = find_quantity(ctx, "eom" if len(eqs) > 1 or n == 1 else "equation")
         voc = self._vocabulary(ctx, q)
         if q.kind in ("equations", "equation"):
+            if any(side is not None and _unwrap(side).op == "vec"
+                   for e in eqs for side in (e.lhs, e.rhs)):
+                raise AnswerError("an equation cannot be a vector; write one equation per "
+                                  "component, on separate lines.")
             formulas = [difference(Formula.from_node(e.lhs, voc, self.limits, e.text),
                                    Formula.from_node(e.rhs, voc, self.limits)
                                    if e.rhs is not None else None) for e in eqs]
@@ -160,6 +164,12 @@ def _too_costly(answer, ceiling: str, limits: Limits) -> str:
     return (f"too costly to grade: {what} needs more than {ceiling} to evaluate; simplify "
             "it (smaller multiples of angles, lower powers, fewer nested functions) and "
             "submit again.")
+
+
+def _unwrap(node):
+    while node.op == "group":
+        node = node.args[0]
+    return node
 
 
 def _since(t0: float, built: float) -> float:

@@ -219,7 +219,7 @@ class ProblemContext:
         """``exact`` when every model of the problem evaluates exactly (rational functions of
         the symbols and of sines and cosines of angles), else ``slow`` (answers are then
         decided by :func:`dualmech.compare.compare_models`)."""
-        return "exact" if self._formulas()[1] else "slow"
+        return "exact" if self._formulas()[1] and not self.static_rows() else "slow"
 
     def points(self, method: str) -> list[Point]:
         """The sampled points: ``exact`` (for verdicts) or ``mpmath`` (real states in the
@@ -326,6 +326,21 @@ class ProblemContext:
                 point.values.setdefault(u, v)
         point.systems = {m.name: part for (m, _, _), part in zip(systems, parts)}
         return True
+
+    def static_rows(self) -> bool:
+        """Whether the reference model has static rows (no acceleration in a row, as a
+        massless bar): its accelerations are not determined at free states, so answers are
+        decided by the comparator, which samples the constraint manifold with the unknowns
+        [accelerations of the dynamic coordinates, the static coordinates]."""
+        def build():
+            A, _ = self.reference.matrix()
+            n = len(self.coordinates)
+            return any(all(A[i, j] == 0 for j in range(min(n, A.cols))) for i in range(A.rows))
+        return self.memo("static rows", build)
+
+    def ranges(self) -> dict:
+        """Working ranges (floats) of the parameters, ``t``, coordinates and rates."""
+        return self._ranges()
 
     def _ranges(self) -> dict:
         floats = {t: (0.0, 10.0)}

@@ -39,7 +39,7 @@ import mpmath
 import sympy as sp
 
 from ..exact import MP_DIGITS
-from .parser import LIMITS, AnswerTooLarge, Limits, Node, to_text
+from .parser import LIMITS, AnswerError, AnswerTooLarge, Limits, Node, to_text
 from .cost import check
 from .resolve import resolve
 from .vocabulary import Vocabulary
@@ -243,6 +243,7 @@ class Formula:
                   text: str = "") -> "Formula":
         """Resolve the parser's tree against ``vocabulary`` (raises ``UnknownName``)."""
         check(node, limits)     # the cost model, before anything is computed
+        _vectors_only_outside(node)
         tree = resolve(node, vocabulary, limits)
         f = cls(tree, text or to_text(node))
         size = _term_degree(tree)
@@ -393,6 +394,22 @@ class Formula:
 
     def __repr__(self) -> str:
         return f"Formula({self.text or self.sympy()})"
+
+
+def _vectors_only_outside(node: Node) -> None:
+    """A vector ``[a, b, c]`` may be a whole answer, never a part of a formula."""
+    root = node
+    while root.op == "group":
+        root = root.args[0]
+    stack = list(root.args) if root.op == "vec" else [root]
+    while stack:
+        n = stack.pop()
+        if n.op == "vec":
+            raise AnswerError(f"`{to_text(n)}` is a vector inside a formula; a vector can only "
+                              "be a whole answer, [a, b, c] with scalar components (no "
+                              "vectors in functions, powers, products, sums or other "
+                              "vectors).")
+        stack.extend(n.children)
 
 
 def _term_degree(tree) -> int:

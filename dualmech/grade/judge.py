@@ -20,16 +20,19 @@ Example
 """
 from __future__ import annotations
 
+import random
 import time
 from fractions import Fraction
 from dataclasses import dataclass, field, replace
 
+import mpmath
 import sympy as sp
 
+from ..exact import MP_DIGITS
 from ..kinematics import t
 from ..verify import linalg as la
 from .answers import Quantity
-from .context import GradingUnavailable, ProblemContext, build_seconds, zero
+from .context import GradingUnavailable, Point, ProblemContext, build_seconds, zero
 from .feedback import Diagnosis, best_edit, concrete_state
 from .terms import equation_targets, expression_tables, term_table
 from .audit import dimension_issues, display, expected_dimension
@@ -38,6 +41,7 @@ from .parser import AnswerError
 from .result import Edit
 
 __all__ = ["Verdict", "Deadline", "AnswerTimeout", "judge_equations", "judge_expression",
+           "says_nothing", "check_real",
            "method_for", "values_at"]
 
 _MAX_FEEDBACK_TERMS = 400
@@ -110,6 +114,85 @@ def values_at(ctx, formulas, method, deadline, need=()) -> list:
     return out
 
 
+def says_nothing(ctx: ProblemContext, formulas: list, method: str, need=(),
+                 deadline: Deadline | None = None) -> list[int]:
+    """Indices of the ``formulas`` that vanish for any motion: at random states with random
+    accelerations and reactions (no point of the motion is needed: a formula that says
+    something about the system is nonzero somewhere off it).
+
+    Exact formulas are decided exactly at rational points (Schwartz--Zippel, as the
+    verdicts); others at real points in the declared ranges at high precision, relative to
+    the size of their terms.  A formula that cannot be evaluated there is left to the verdict.
+    """
+    exact = method == "exact"
+    ranges = ctx.ranges()
+    symbols = list(ctx.base) + list(ctx.qdd) + list(ctx.reactions)
+    envs = []
+    for i in range(2):
+        rng = random.Random(f"{ctx.problem.name}:{ctx.seed}:says-nothing:{i}")
+        values = {}
+        for s in symbols:
+            if exact:
+                values[s] = Fraction(rng.randrange(-(1 << 61), 1 << 61))
+            else:
+                lo, hi = ranges.get(s, (-1.0, 1.0))
+                with mpmath.workdps(MP_DIGITS):
+                    values[s] = mpmath.mpf(rng.uniform(lo, hi))
+        seed = f"{ctx.problem.name}:{ctx.seed}:says-nothing:{i}"
+        envs.append(Point(values, {}, exact, i, seed, ctx.derived_formulas()))
+    out = []
+    for i, f in enumerate(formulas):
+        empty = True
+        for p in envs:
+            if deadline is not None:
+                deadline.check()
+            try:
+                with mpmath.workdps(MP_DIGITS):
+                    env = p.env(need=need)
+                    v = f.evaluate(env)
+                    scale = f.term_values(env) if not exact else ()
+                    ok = zero(v, scale) if not isinstance(v, list) else False
+            except (ZeroDivisionError, TypeError, ValueError, KeyError, OverflowError):
+                ok = False
+            if not ok:
+                empty = False
+                break
+        if empty:
+            out.append(i)
+    return out
+
+
+def check_real(ctx: ProblemContext, formulas: list, need=()) -> None:
+    """Raise :class:`AnswerError` when a formula is not a finite real number on the motion
+    (``log(-1)``, ``sqrt(-1)``, ``cot(0)``): such an answer is not graded as typed."""
+    try:
+        points = ctx.points("mpmath")
+    except GradingUnavailable:
+        return
+    for p in points:
+        with mpmath.workdps(MP_DIGITS):
+            try:
+                env = p.env(need=need)
+                values = [f.evaluate(env) for f in formulas]
+            except ZeroDivisionError:
+                raise AnswerError("the answer divides by zero on the motion (e.g. `cot(0)`, "
+                                  "`1/sin(0)`, `1/(x - x)`); write it so that it is "
+                                  "defined.") from None
+            except (TypeError, ValueError, KeyError):
+                return      # left to the verdict
+            for v in values:
+                for x in (v if isinstance(v, list) else [v]):
+                    if isinstance(x, mpmath.mpc) and abs(x.imag) > 10 ** (-(MP_DIGITS // 2)) \
+                            * (1 + abs(x.real)):
+                        raise AnswerError("the answer is not a real number on the motion (the "
+                                          "logarithm or a square root of a negative number?); "
+                                          "check the signs inside `log` and `sqrt`.")
+                    if isinstance(x, (mpmath.mpf, mpmath.mpc)) and not mpmath.isfinite(x):
+                        raise AnswerError("the answer is infinite or undefined on the motion "
+                                          "(e.g. `log(0)`, `cot(0)`, `tan(pi/2)`); write it so "
+                                          "that it is defined.")
+
+
 def _is_zero(f: Formula, v, env) -> bool:
     if isinstance(v, list):
         return all(zero(x) for x in v)
@@ -140,13 +223,32 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
                               "component, on separate lines.")
     method = method_for(ctx, formulas)
     if method == "slow":
+        check_real(ctx, formulas, need_for(ctx, formulas))
+    empty = says_nothing(ctx, formulas, method, need_for(ctx, formulas), deadline)
+    if empty:
+        which = ", ".join(name(i) for i in empty)
+        many = len(empty) > 1
+        return Verdict("wrong", f"{which} hold{'' if many else 's'} for any motion (every state, "
+                       "acceleration and force): "
+                       f"{'they say' if many else 'it says'} nothing about this system; an "
+                       "equation of motion must involve the accelerations on the motion",
+                       dimension_issues=dims, method="exact" if method == "exact" else "slow")
+    if method == "slow":
         from .slow import slow_equations
         v = slow_equations(ctx, formulas, single or quantity.coordinate is not None, dims)
-        wrong = _off_at_real_points(ctx, formulas, [None] * k) if v.status == "wrong" else []
-        if wrong:
-            fb = _wrong_equations(ctx, formulas, wrong, dims, method, 1, name, deadline,
-                                  need_for(ctx, formulas))
-            v.edits, v.details, v.state = fb.edits, fb.details, fb.state
+        try:
+            wrong = _off_at_real_points(ctx, formulas, [None] * k) if v.status == "wrong" \
+                else []
+        except GradingUnavailable:   # no real points (a static row): the verdict stands alone
+            wrong = []
+        try:
+            if wrong:
+                fb = _wrong_equations(ctx, formulas, wrong, dims, method, 1, name, deadline,
+                                      need_for(ctx, formulas))
+                v.edits, v.details, v.state = fb.edits, fb.details, fb.state
+        except GradingUnavailable:   # no free points (a static row): no explanation
+            v.details = ["(no explanation: this problem's static rows leave no free states "
+                         "to show it at)"]
         return v
     need = need_for(ctx, formulas)
     table = values_at(ctx, formulas, method, deadline, need)
@@ -329,13 +431,17 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
             dims.append(f"component {j + 1}: {issue}" if len(refs) > 1 else issue)
     method = method_for(ctx, comps + refs)
     if method == "slow":
+        check_real(ctx, comps, need_for(ctx, comps))
         from .slow import slow_expression
         v = slow_expression(ctx, comps, refs, dims, quantity.description)
         if v.status == "wrong":
-            bad = _off_at_real_points(ctx, comps, refs)
-            fb = _expression_feedback(ctx, comps, refs, quantity, bad, deadline,
-                                      need_for(ctx, comps + refs))
-            v.edits, v.details, v.state = fb
+            try:
+                bad = _off_at_real_points(ctx, comps, refs)
+                fb = _expression_feedback(ctx, comps, refs, quantity, bad, deadline,
+                                          need_for(ctx, comps + refs))
+                v.edits, v.details, v.state = fb
+            except GradingUnavailable:   # no free points (a static row): no explanation
+                pass
         return v
     minus = ("c", Fraction(-1))
     diffs = [Formula(("add", (c.tree, ("mul", (minus, r.tree))))) for c, r in zip(comps, refs)]

@@ -15,12 +15,26 @@ import sympy as sp
 
 from ..compare import compare_models, compare_reactions, method_name
 from ..equations import EquationSet, ModelError, from_plain
+from ..verify.sampling import Context
 from .context import GradingUnavailable, ProblemContext
 from .judge import Verdict
+from .parser import AnswerError
 
 __all__ = ["slow_equations", "slow_expression"]
 
 _POINTS = 4
+
+
+_NONLINEAR = ("the answer uses an acceleration or a reaction non-linearly (inside a function, "
+              "a root, a power or a denominator); write it so that they appear linearly "
+              "(as in an equation of motion), or without them.")
+
+
+def _candidate(name, coordinates, equations, unknowns) -> EquationSet:
+    try:
+        return EquationSet(name, coordinates, equations, unknowns)
+    except ModelError:
+        raise AnswerError(_NONLINEAR) from None
 
 
 def _function_form(ctx: ProblemContext, formula) -> sp.Expr:
@@ -42,13 +56,23 @@ def _model_with(ctx: ProblemContext, reactions) -> EquationSet:
                              f"{', '.join(map(str, reactions))}.")
 
 
-def _decide(reference: EquationSet, candidate: EquationSet, used) -> tuple[bool, str]:
+def _sampling(problem, reference: EquationSet, candidate: EquationSet) -> Context:
+    """The comparator's sampling context with the problem's declared ranges and domains, so
+    that exact points lie where the problem lives (the right branch of every root)."""
+    c = Context.for_models(reference, candidate)
+    return Context(c.coordinates, c.parameters, problem=problem)
+
+
+def _decide(reference: EquationSet, candidate: EquationSet, used,
+            problem=None) -> tuple[bool, str]:
     try:
-        r = compare_models(reference, candidate, points=_POINTS, explain=False)
+        context = _sampling(problem, reference, candidate) if problem is not None else None
+        r = compare_models(reference, candidate, points=_POINTS, explain=False,
+                           context=context)
         ok, method = r.equivalent, r.method
         if ok and used:
             rr = compare_reactions(reference, reference, candidate, used, points=_POINTS,
-                                   explain=False)
+                                   explain=False, context=context)
             ok = rr.equivalent
     except ModelError as exc:
         raise GradingUnavailable(f"the comparator cannot judge this answer: {exc}") from None
@@ -68,14 +92,14 @@ def slow_equations(ctx: ProblemContext, formulas: list, single: bool, dims: list
     used = [r for r in ctx.reactions if any(r in f.symbols for f in formulas)]
     model = _model_with(ctx, used)
     if single:
-        candidate = EquationSet("answer", model.coordinates, model.equations + tuple(eqs),
-                                model.unknowns)
-        ok, method = _decide(model, candidate, [])
+        candidate = _candidate("answer", model.coordinates, model.equations + tuple(eqs),
+                               model.unknowns)
+        ok, method = _decide(model, candidate, [], ctx.problem)
         summary = "the equation follows from the equations of motion" if ok else \
             "the equation does not follow from the equations of motion"
     else:
-        candidate = EquationSet("answer", ctx.coordinates, tuple(eqs), tuple(used))
-        ok, method = _decide(model, candidate, used)
+        candidate = _candidate("answer", ctx.coordinates, tuple(eqs), tuple(used))
+        ok, method = _decide(model, candidate, used, ctx.problem)
         summary = "equivalent to the equations of motion" if ok else \
             "not equivalent to the equations of motion"
     status = "right" if ok and not dims else "wrong"
@@ -89,9 +113,9 @@ def slow_expression(ctx: ProblemContext, comps: list, refs: list, dims: list,
            for c, r in zip(comps, refs)]
     used = [u for u in ctx.reactions if any(u in r.symbols for r in refs)]
     model = _model_with(ctx, used)
-    candidate = EquationSet("answer", model.coordinates, model.equations + tuple(eqs),
-                            model.unknowns)
-    ok, method = _decide(model, candidate, [])
+    candidate = _candidate("answer", model.coordinates, model.equations + tuple(eqs),
+                           model.unknowns)
+    ok, method = _decide(model, candidate, [], ctx.problem)
     status = "right" if ok and not dims else "wrong"
     summary = description if ok else f"{description}: it differs from the right value on the motion"
     return Verdict(status, summary, dimension_issues=dims, method="slow", method_text=method)
