@@ -7,7 +7,7 @@ answers to ``/api/grade`` in a fixed mix.  Prints the p50/p99 latency, the throu
 errors: a non-200 response, a failed request, or a verdict other than the expected one (0
 expected).  The baseline, measured in the same run, is one client alone posting the same mix
 one answer at a time; the ratio says what the class costs each student.  Every answer text is
-made unique (trailing spaces; a different multiple angle for the costly ones), so the server's
+made unique (trailing spaces; a different multiple angle for the too-costly ones), so the server's
 cache of verdicts never answers for the grader.
 
     python bench/web_load.py [--clients 50] [--answers 20] [--workers N]
@@ -45,7 +45,7 @@ MIX = [
     ("toy_car", "x" * 5000, None, "invalid"),
     ("toy_car", "(theta + phi + theta' + phi' + R + g + m)^24 * (theta - phi + theta' - phi' "
      "+ R - g + m)^24 = 0", None, "wrong"),                    # heavy, but within bounds
-    ("toy_car", "sin({n}*theta) = 0", None, "invalid"),   # past the ceiling: worker killed
+    ("toy_car", "sin({n}*theta) = 0", None, "invalid"),   # too costly: the worker is replaced
     ("simple_pendulum", "a*theta'' + g*sin(theta) + <script>alert(1)</script>", None,
      "invalid"),
 ]
@@ -135,8 +135,8 @@ def main(argv=None) -> int:
     ap.add_argument("--workers", type=int, default=None, help="grading processes")
     ap.add_argument("--timeout", type=float, default=600, help="bound on the whole run (s)")
     ap.add_argument("--no-costly", action="store_true",
-                    help="leave out the answers that run past the ceiling (a worker is killed "
-                         "and restarted for each)")
+                    help="leave out the too-costly answers (the pool replaces its worker after "
+                         "each, and the new one loads the problem again)")
     args = ap.parse_args(argv)
     mix = [m for m in MIX if not (args.no_costly and "{n}" in m[1])]
     port = _free_port()
@@ -159,7 +159,7 @@ def main(argv=None) -> int:
     blat = [dt for dt, e in base if dt is not None]
     print(f"web load on loopback: {args.clients} clients x {args.answers} answers "
           f"({len(load)} requests), {os.cpu_count()} cores, mix of {len(mix)} answers "
-          f"(right, wrong, hostile{'' if args.no_costly else ', past the ceiling'})")
+          f"(right, wrong, hostile{'' if args.no_costly else ', too costly'})")
     print(f"  baseline, one client alone: p50 {_pct(blat, .5) * 1e3:7.1f} ms   "
           f"p99 {_pct(blat, .99) * 1e3:7.1f} ms")
     print(f"  under load:                 p50 {_pct(lat, .5) * 1e3:7.1f} ms   "
