@@ -2,15 +2,22 @@
 
 ::
 
-    dualmech list                                  the catalogue
+    dualmech list                                  the catalogue (and registered ones)
     dualmech check NAME [NAME...] | --all          Newton-Euler vs Lagrange, exactly
     dualmech show NAME [--latex] [--model M]       equations of motion and reactions
-    dualmech report [--out DIR]                    everything, written to DIR
+    dualmech report [--out DIR]                    everything, written to DIR (report.html)
     dualmech grade NAME --answer TEXT              a typed answer, checked exactly
     dualmech chart | atlas | fidelity NAME         work-precision, where methods fail, model ladder
+    dualmech new NAME [--out DIR]                  a new problem's skeleton and its test
+
+NAME is a catalogue name, a file ``path.py`` or ``path.py:Class``, ``module:Class``, or a
+problem of a catalogue a course package registers (entry-point group ``dualmech.problems``).
+Every command takes ``--json``.  Progress goes to stderr (a bar on a terminal, plain lines
+otherwise).
 
 Exit status: 0 when every checked pair agrees, 1 when one disagrees (or cannot be built),
-2 for a usage error such as an unknown problem name.
+2 for a usage error such as an unknown problem name.  A closed standard output (``| head``)
+does not change it: the command finishes its work and discards the rest of its output.
 
 Example
 -------
@@ -22,6 +29,7 @@ dualmech ...
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import sys
 import time
@@ -85,20 +93,28 @@ def build_parser() -> argparse.ArgumentParser:
         prog="dualmech",
         description="Every mechanics problem written twice -- Newton-Euler and Lagrange -- "
                     "proved equivalent exactly, with the reaction forces recovered.",
-        epilog="Exit status: 0 all pairs agree, 1 a pair disagrees, 2 usage error.")
+        epilog="NAME is a catalogue name (dualmech list), a file path.py or path.py:Class, "
+               "module:Class, or a problem of a catalogue registered under the entry-point "
+               "group dualmech.problems.  Exit status: 0 all pairs agree, 1 a pair disagrees, "
+               "2 usage error.")
     parser.add_argument("--version", action="version", version=f"dualmech {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     sub.required = True
 
     p = sub.add_parser("list", help="list the problems of the catalogue",
-                       description="List every problem: name, title, source and number of "
-                                   "degrees of freedom (coordinates of the reference model).")
+                       description="List every problem: name, degrees of freedom "
+                                   "(coordinates of the reference model), reactions and title "
+                                   "(--json adds the source and summary), then those of the "
+                                   "catalogues course packages register.")
+    _json_flag(p, "a list of objects: name, title, source, summary, dof, coordinates, "
+                  "reactions, status, catalogue")
     p.set_defaults(func=_cmd_list)
 
     p = sub.add_parser("check", help="prove each problem's models equivalent",
                        description="Compare every model of each problem with its reference "
                                    "model, exactly, and check the source's printed answers.")
-    p.add_argument("names", nargs="*", metavar="NAME", help="problems to check")
+    p.add_argument("names", nargs="*", metavar="NAME",
+                   help="problems to check: catalogue names, path.py[:Class] or module:Class")
     p.add_argument("--all", action="store_true", help="check every problem")
     p.add_argument("--json", action="store_true",
                    help="print JSON: one object for one problem, a list for several")
@@ -110,21 +126,37 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("show", help="print a problem's equations of motion and reactions",
                        description="Print the equations of motion of each model of a "
                                    "problem, then the recovered reaction forces.")
-    p.add_argument("name", metavar="NAME", help="the problem to show")
+    p.add_argument("name", metavar="NAME",
+                   help="the problem to show: a catalogue name, path.py[:Class] or module:Class")
     p.add_argument("--latex", action="store_true", help="LaTeX instead of pretty text")
     p.add_argument("--model", metavar="M", help="show only model M (e.g. lagrange)")
+    _json_flag(p, "models (coordinates, unknowns, labelled equations) and reactions")
     p.set_defaults(func=_cmd_show)
 
-    p = sub.add_parser("report", help="check everything and write a report with charts",
+    p = sub.add_parser("report", help="check everything and write report.html with charts",
                        description="Check every problem, print the summary table and write "
-                                   "DIR/report.md, DIR/<name>.json and "
+                                   "DIR/report.html (open it in a browser: one page, charts "
+                                   "included), DIR/report.md, DIR/<name>.json and "
                                    "DIR/<name>_reactions.png.")
     p.add_argument("--out", metavar="DIR", default="out", type=Path,
                    help="output directory (default: %(default)s)")
     p.add_argument("--duration", metavar="T", default=5.0, type=_duration,
                    help="simulated time for the charts, in seconds (default: %(default)s)")
     _points_seed(p)
+    _json_flag(p, "the summary: one object per problem, and the files written")
     p.set_defaults(func=_cmd_report)
+
+    p = sub.add_parser("new", help="write a new problem's skeleton (both models, a test)",
+                       description="Write DIR/NAME.py -- a working problem with both models "
+                                   "(a pendulum to replace by your system), a sign sketch in "
+                                   "its docstring and TODO comments -- and DIR/test_NAME.py. "
+                                   "`dualmech check DIR/NAME.py` passes as written.")
+    p.add_argument("name", metavar="NAME", help="the problem's name (lower_case_with_underscores)")
+    p.add_argument("--out", metavar="DIR", default=Path("."), type=Path,
+                   help="where to write the two files (default: the current directory)")
+    p.add_argument("--force", action="store_true", help="overwrite existing files")
+    _json_flag(p, "the files written")
+    p.set_defaults(func=_cmd_new)
 
     from .grade.cli import register as _register_grade
     from .numeric.commands import register as _register_numeric
@@ -133,6 +165,10 @@ def build_parser() -> argparse.ArgumentParser:
     _register_numeric(sub)
     _register_web(sub)
     return parser
+
+
+def _json_flag(p: argparse.ArgumentParser, what: str) -> None:
+    p.add_argument("--json", action="store_true", help=f"print JSON: {what}")
 
 
 def _points_seed(p: argparse.ArgumentParser) -> None:
@@ -150,15 +186,35 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version, or argparse's own usage errors
         return int(exc.code or 0) if not isinstance(exc.code, str) else EXIT_USAGE
+    with _guarded_stdout():
+        return _run(args)
+
+
+@contextlib.contextmanager
+def _guarded_stdout():
+    """``sys.stdout`` that survives a closed pipe (``dualmech check X | head -1``): the command
+    finishes, keeps its exit status, and the output nobody reads goes to /dev/null."""
+    from .progress import GuardedStdout
+    try:
+        sys.stdout.fileno()
+    except (AttributeError, OSError, ValueError):  # not a file (a test's capture): as it is
+        yield
+        return
+    real = sys.stdout
+    sys.stdout = guarded = GuardedStdout(real)
+    try:
+        yield
+    finally:
+        guarded.flush()
+        sys.stdout = real
+
+
+def _run(args) -> int:
     try:
         return args.func(args)
     except UsageError as exc:
         print(f"dualmech {args.command}: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
-    except BrokenPipeError:  # e.g. `dualmech report | head`: stop quietly
-        import os
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return EXIT_OK
     except OSError as exc:   # e.g. an unwritable --out, an unreadable input: one line
         where = f"{exc.filename}: " if getattr(exc, "filename", None) else ""
         print(f"dualmech {args.command}: error: {where}{exc.strerror or exc}",
@@ -178,17 +234,18 @@ def _catalogue():
     return problems
 
 
-def _get(name: str, n: int | None = None):
+def _get(spec: str, n: int | None = None):
+    """The problem ``spec`` names: a catalogue name, ``path.py[:Class]``, ``module:Class`` or a
+    registered catalogue's problem (every command goes through here)."""
     cat = _catalogue()
     try:
-        decl = cat.module_of(name)
-    except KeyError as exc:
+        return cat.get(spec, **({"n": n} if n is not None else {}))
+    except KeyError as exc:   # SpecError: what to fix, with close matches
         raise UsageError(exc.args[0] if exc.args else str(exc)) from None
-    if n is not None and not decl.parametric:
-        raise UsageError(f"`--n` sizes a parametric problem; `{name}` has a fixed size.")
-    try:
-        return cat.get(name, **({"n": n} if n is not None else {}))
     except ValueError as exc:
+        if n is not None and "fixed size" in str(exc):
+            raise UsageError(f"`--n` sizes a parametric problem; `{spec}` has a fixed size.") \
+                from None
         raise UsageError(str(exc)) from None
 
 
@@ -267,23 +324,67 @@ def _compare(problem, points: int, seed: int):
 
 
 def _progress(items, what: str):
-    """``items`` with a progress bar on stderr (tqdm) when there are several and it is a tty."""
-    items = list(items)
-    if len(items) < 2:
-        return items
-    from tqdm import tqdm
-    return tqdm(items, desc=what, unit="problem", file=sys.stderr, leave=False,
-                disable=None)
+    """``items`` with progress on stderr: a bar on a terminal, one line per problem otherwise."""
+    from .progress import progress
+    return progress(items, what, unit="problem")
 
 
 # -- commands --------------------------------------------------------------------------
-def _cmd_list(args) -> int:
+#: width the text of ``dualmech list`` fits in
+LIST_WIDTH = 100
+
+
+def _list_rows() -> list[dict]:
+    """One dict per problem: dualmech's catalogue, its out-of-scope systems, then every
+    registered catalogue's problems."""
     cat = _catalogue()
-    rows = [(d.name, d.title, d.source, d.dof, ", ".join(d.reactions) or "-", "modelled")
-            for d in cat.declarations()]
-    rows += [(name, "(not modelled)", source, "-", "-", "out of scope: " + reason)
-             for name, source, reason in cat.OUT_OF_SCOPE]
-    print(_table(("name", "title", "source", "dof", "reactions", "status"), rows))
+    rows = [{"name": d.name, "title": d.title, "source": d.source, "summary": d.summary,
+             "dof": d.dof, "coordinates": list(d.coordinates), "reactions": list(d.reactions),
+             "status": "modelled", "catalogue": "dualmech"} for d in cat.declarations()]
+    rows += [{"name": name, "title": "(not modelled)", "source": source, "summary": reason,
+              "dof": None, "coordinates": [], "reactions": [], "status": "out of scope",
+              "catalogue": "dualmech"} for name, source, reason in cat.OUT_OF_SCOPE]
+    for cname, ep in sorted(getattr(cat, "registered", dict)().items()):
+        try:
+            classes = cat.catalogue_classes(ep)
+        except KeyError as exc:   # a broken course package is named, the rest still listed
+            print(f"dualmech list: {exc.args[0] if exc.args else exc}", file=sys.stderr)
+            continue
+        for c in classes:
+            coords = [getattr(x, "name", str(x)) for x in getattr(c, "coordinates", ())]
+            rows.append({"name": f"{cname}:{c.name or c.__name__}", "title": c.title,
+                         "source": c.source, "summary": getattr(c, "summary", ""),
+                         "dof": getattr(c, "parametric", "") or len(coords),
+                         "coordinates": coords,
+                         "reactions": [r.name for r in getattr(c, "reactions", ())],
+                         "status": "modelled", "catalogue": cname})
+    return rows
+
+
+def _clip(text: str, width: int) -> str:
+    return text if len(text) <= width else text[:max(width - 3, 0)].rstrip() + "..."
+
+
+def _cmd_list(args) -> int:
+    rows = _list_rows()
+    if args.json:
+        print(_json(rows))
+        return EXIT_OK
+    modelled = [r for r in rows if r["status"] == "modelled"]
+    table = [(r["name"], r["dof"], _clip(", ".join(r["reactions"]) or "-", 18), r["title"])
+             for r in modelled]
+    # every column but the title at its natural width; the title gets what is left
+    fixed = [max(len(str(x)) for x in col) for col in zip(("name", "dof", "reactions"),
+                                                          *[row[:3] for row in table])]
+    room = max(LIST_WIDTH - sum(fixed) - 2 * len(fixed), 20)
+    print(_table(("name", "dof", "reactions", "title"),
+                 [row[:3] + (_clip(row[3], room),) for row in table]))
+    skipped = [r for r in rows if r["status"] != "modelled"]
+    if skipped:
+        print("\nnot modelled (dualmech models finitely many coordinates):")
+        for r in skipped:
+            print(_clip(f"  {r['name']}: {r['summary']}", LIST_WIDTH))
+    print("\nsources and summaries: dualmech list --json; one problem: dualmech show NAME")
     return EXIT_OK
 
 
@@ -312,6 +413,8 @@ def _cmd_show(args) -> int:
             raise UsageError(f"problem `{problem.name}` has no model {args.model!r}; it has "
                              f"{', '.join(models)}.")
         models = {args.model: models[args.model]}
+    if args.json:
+        return _show_json(problem, models)
     print(f"{problem.name}: {problem.title}  ({problem.source})")
     for name, eqs in models.items():
         coords = ", ".join(q.func.__name__ for q in eqs.coordinates)
@@ -344,6 +447,34 @@ def _cmd_show(args) -> int:
     return EXIT_OK if c.equivalent else EXIT_DISAGREE
 
 
+def _show_json(problem, models: dict) -> int:
+    """``show --json``: each model's labelled equations, then the recovered reactions (the
+    expressions as ``check --json`` writes them)."""
+    from .verify.display import dotted
+    doc = {"name": problem.name, "title": problem.title, "source": problem.source,
+           "models": {name: {"coordinates": [q.func.__name__ for q in eqs.coordinates],
+                             "unknowns": [str(u) for u in eqs.unknowns],
+                             "equations": [{"label": label, "expression": dotted(e)}
+                                           for label, e in zip(eqs.labels, eqs.equations)]}
+                      for name, eqs in models.items()},
+           "reactions": {}}
+    status = EXIT_OK
+    if problem.reactions:
+        c = _compare(problem, 8, 0)
+        doc["equivalent"] = c.equivalent
+        if isinstance(c, _Failed):
+            doc["error"] = c.to_dict()["error"]
+        info = problem.reaction_info()
+        for rname, expr in c.reactions.items():
+            where = info.get(str(rname))
+            doc["reactions"][str(rname)] = {
+                "expression": dotted(expr),
+                "direction": where.direction if where is not None else ""}
+        status = EXIT_OK if c.equivalent else EXIT_DISAGREE
+    print(_json(doc))
+    return status
+
+
 def _dotted(expr, coordinates):
     """``expr`` with ``q(t), q', q''`` as symbols ``q``, ``qdot``, ``qddot``, which sympy prints
     with dots (``\\dot{q}`` in LaTeX)."""
@@ -361,17 +492,25 @@ def _heading(text: str) -> str:
     return f"== {text} =="
 
 
+def _summary_row(problem, c) -> dict:
+    """The summary of one ``(problem, comparison)``: what a row of the table shows."""
+    d = c.to_dict()
+    published = d.get("published") or []
+    verdicts = [p.get("verdict") for p in published if isinstance(p, dict)]
+    return {"problem": problem.name, "dof": _dof(problem), "equivalent": bool(c.equivalent),
+            "method": d.get("method", "?"), "seconds": float(d.get("seconds", 0.0)),
+            "reactions": len(d.get("reactions") or {}),
+            "published": {v: verdicts.count(v) for v in dict.fromkeys(verdicts)}}
+
+
 def _summary(results, markdown: bool = False) -> str:
     """One row per ``(problem, comparison)``."""
     rows = []
     for problem, c in results:
-        d = c.to_dict()
-        published = d.get("published") or []
-        verdicts = [p.get("verdict") for p in published if isinstance(p, dict)]
-        rows.append((problem.name, _dof(problem), "yes" if c.equivalent else "NO",
-                     d.get("method", "?"), f"{float(d.get('seconds', 0.0)):.2f}",
-                     len(d.get("reactions") or {}),
-                     _verdict_counts(verdicts)))
+        r = _summary_row(problem, c)
+        rows.append((r["problem"], r["dof"], "yes" if r["equivalent"] else "NO", r["method"],
+                     f"{r['seconds']:.2f}", r["reactions"],
+                     _verdict_counts([v for v, n in r["published"].items() for _ in range(n)])))
     return _table(("problem", "dof", "equivalent", "method", "seconds", "reactions",
                    "published answers"), rows, markdown=markdown)
 
@@ -396,12 +535,47 @@ def _cmd_report(args) -> int:
         c = _compare(problem, args.points, args.seed)
         results.append((problem, c))
         (out / f"{problem.name}.json").write_text(_json(c.to_dict()) + "\n")
-    print(_summary(results))
+    if not args.json:
+        print(_summary(results), flush=True)
+    if not sys.stderr.isatty():
+        print(f"report: writing the charts and {out / 'report.html'}", file=sys.stderr,
+              flush=True)
     w = write_report([c for _, c in results], out, args.duration)
-    print(f"\nwrote {w.markdown}, {w.html}, {len(results)} JSON files and "
-          f"{len(w.charts) - len(w.failed)} charts to {out}/")
-    for name, why in w.failed.items():
-        print(f"no chart for {name}: {why}")
+    if args.json:
+        print(_json({"problems": [_summary_row(p, c) for p, c in results],
+                     "files": {"html": str(w.html), "markdown": str(w.markdown),
+                               "json": [str(out / f"{p.name}.json") for p, _ in results],
+                               "charts": [str(x) for ch in w.charts.values()
+                                          for x in getattr(ch, "paths", [])]},
+                     "no_chart": dict(w.failed)}))
+    else:
+        print(f"\nwrote {w.html} (open it in a browser), {w.markdown}, {len(results)} JSON "
+              f"files and {len(w.charts) - len(w.failed)} charts to {out}/")
+        for name, why in w.failed.items():
+            print(f"no chart for {name}: {why}")
     return EXIT_OK if all(c.equivalent for _, c in results) else EXIT_DISAGREE
 
 
+def _cmd_new(args) -> int:
+    from .skeleton import SkeletonError, write_skeleton
+    try:
+        problem, test = write_skeleton(args.name, args.out, force=args.force)
+    except SkeletonError as exc:
+        raise UsageError(str(exc)) from None
+    if args.json:
+        print(_json({"problem": str(problem), "test": str(test)}))
+        return EXIT_OK
+    print(f"wrote {problem} and {test}\n\n"
+          f"It is a working pendulum; make it your system:\n"
+          f"  1. draw your sign sketch in the docstring of {problem.name}: positive directions "
+          f"of every coordinate and force;\n"
+          f"  2. declare your parameters, coordinates and reactions (dimensions, defaults, "
+          f"ranges);\n"
+          f"  3. write newton_euler() from the free-body diagram and lagrange() from T and V, "
+          f"independently;\n"
+          f"  4. replace the hand result in {test.name} by yours.\n"
+          f"Every TODO comment marks a place to fill in.  Then:\n"
+          f"  dualmech check {problem}\n"
+          f"  dualmech show {problem}\n"
+          f"  python -m pytest {test}")
+    return EXIT_OK

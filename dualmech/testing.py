@@ -7,7 +7,9 @@ solve's own error bound (``eps * cond(A)``), not from a round number.
 
 Example
 -------
-A property test of a problem in four lines::
+A property test of a problem in four lines (the problem is built once, outside the test: built
+inside, its models would be derived again at every example, and shrinking a failure would take
+minutes)::
 
     from hypothesis import given
     from dualmech.testing import points, assert_same_motion

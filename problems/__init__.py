@@ -4,7 +4,9 @@ Every module of this package (names not starting with ``_``) defines one or more
 :class:`dualmech.problem.Problem` subclasses and lists them in ``PROBLEMS``.  The catalogue is
 found by reading the modules' *declarations* (their source text, parsed with :mod:`ast`):
 listing it imports nothing, so ``dualmech list`` never builds a model.  :func:`all_problems`
-imports the modules and gives instances; :func:`get` finds one problem by name.
+imports the modules and gives instances; :func:`get` (or :func:`load`) finds one problem by
+name -- or from a *spec*: a file ``path.py[:Class]``, ``module:Class``, or a catalogue a course
+package registers under the entry-point group ``dualmech.problems`` (see :mod:`._loader`).
 
 A problem class declares, as literals, ``name``, ``title``, ``source`` (and optionally
 ``summary``), ``coordinates = (Coordinate(...), ...)`` and ``reactions = (Reaction("F", ...),
@@ -21,7 +23,12 @@ import importlib
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["Declaration", "OUT_OF_SCOPE", "declarations", "all_problems", "get", "module_of"]
+from ._loader import GROUP, SpecError, canonical, catalogue_classes, registered
+from ._loader import resolve as _resolve
+
+__all__ = ["Declaration", "OUT_OF_SCOPE", "declarations", "all_problems", "get", "load",
+           "named", "is_name", "resolve", "module_of", "SpecError", "canonical", "registered", "catalogue_classes",
+           "GROUP"]
 
 _HERE = Path(__file__).resolve().parent
 
@@ -158,6 +165,65 @@ def all_problems() -> list:
     return [_class(d)() for d in declarations()]
 
 
-def get(name: str, **options):
-    """The problem called ``name`` (``options`` go to a parametric problem, e.g. ``n=10``)."""
-    return _class(module_of(name))(**options)
+def _class_named(name: str):
+    """The class of catalogue problem ``name`` (``KeyError`` with close matches)."""
+    return _class(module_of(name))
+
+
+def resolve(spec: str):
+    """The problem class ``spec`` names: a catalogue name, ``path.py[:Class]``,
+    ``module:Class``, or a registered catalogue's problem (``catalogue:problem`` or its name).
+
+    >>> resolve("toy_car").__name__
+    'ToyCar'
+    """
+    return _resolve(spec, _class_named)
+
+
+def load(spec: str, **options):
+    """An instance of the problem ``spec`` names (see :func:`resolve`); ``options`` go to a
+    parametric problem, e.g. ``n=10``.  Raises :class:`SpecError` (a ``KeyError``) when
+    ``spec`` names nothing, ``ValueError`` for options a fixed-size problem does not take.
+
+    >>> load("simple_pendulum").name
+    'simple_pendulum'
+    >>> load("n_link_pendulum", n=2).name
+    'n_link_pendulum'
+    """
+    cls = resolve(spec)
+    if options and not getattr(cls, "parametric", ""):
+        raise ValueError(f"`{getattr(cls, 'name', '') or cls.__name__}` has a fixed size; it "
+                         f"takes no {', '.join(options)}.")
+    try:
+        return cls(**options)
+    except TypeError as exc:
+        raise ValueError(f"{cls.__name__}: {exc}") from None
+
+
+def get(spec: str, **options):
+    """The problem ``spec`` names (the same as :func:`load`): a catalogue name such as
+    ``"toy_car"``, a file ``path.py[:Class]``, ``module:Class``, or a registered catalogue's
+    problem; ``options`` go to a parametric problem, e.g. ``n=10``."""
+    return load(spec, **options)
+
+
+def is_name(spec: str) -> bool:
+    """Whether ``spec`` is a plain problem name (``toy_car``), which :func:`get` resolves in
+    the catalogues only -- never by importing a file or a module that the text names.
+
+    >>> is_name("toy_car"), is_name("/tmp/x.py"), is_name("os:path")
+    (True, False, False)
+    """
+    import re
+    return isinstance(spec, str) and re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]{0,99}", spec) \
+        is not None
+
+
+def named(name: str, **options):
+    """The catalogue (or registered catalogue) problem called ``name``; for names from
+    untrusted text (a CSV, a web form): a path or ``module:Class`` is refused, never
+    imported.  Raises :class:`SpecError` (a ``KeyError``)."""
+    if not is_name(name):
+        raise SpecError(f"{str(name)[:80]!r} is not a problem name: here a problem is named "
+                        "by its catalogue name (dualmech list), not by a file or module.")
+    return load(name, **options)

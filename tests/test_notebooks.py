@@ -23,6 +23,7 @@ EXPECTED = {
     "pendulum_on_mass": ["all derivations agree", "WRONG:", "1 % at amplitude"],
     "mobile_robot": ["all derivations agree", "the pivot reaction H (max |H|"],
     "pendulum_dae": ["all derivations agree", "|g| ~ t^", "largest difference"],
+    "kane_toy_car": ["all derivations agree", "`kane` disagrees with", "cos(theta(t))**2"],
 }
 
 

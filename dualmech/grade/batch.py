@@ -87,8 +87,21 @@ def grade_rows(rows: Sequence[dict], seconds: float = 1.0, memory_mb: int = 256)
     for row in rows:
         name, quantity = _question(row)
         about = (row.get("about") or "").strip() or None
-        result = grade_bounded(name, row.get("answer", ""), quantity, about=about,
-                               seconds=seconds, memory_mb=memory_mb).to_dict()
+        from dualmech.problems import is_name, named
+        if is_name(name):
+            result = grade_bounded(name, row.get("answer", ""), quantity, about=about,
+                                   seconds=seconds, memory_mb=memory_mb).to_dict()
+        else:
+            try:   # a CSV row never makes us import a file or module: named() refuses it
+                named(name)
+                reason = f"{name!r} is not a problem name."
+            except Exception as exc:
+                reason = exc.args[0] if isinstance(exc, KeyError) and exc.args else str(exc)
+            result = {"problem": name, "quantity": quantity or "auto", "kind": "",
+                      "answer": row.get("answer", ""), "status": "invalid", "right": False,
+                      "summary": reason, "details": [], "edits": [], "dimension_issues": [],
+                      "matches": "", "state": {}, "method": "none", "false_right_bound": None,
+                      "seconds": 0.0}
         out.append(_tag(row, result))
     return out
 

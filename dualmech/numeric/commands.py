@@ -5,11 +5,16 @@
     dualmech chart NAME [NAME...] | --all [--out DIR] [--quick]   work-precision diagrams
     dualmech atlas NAME [--out DIR] [--section S ...]              where methods fail
     dualmech fidelity NAME [--out DIR]                             the fidelity ladder
+    ... --json                                                     JSON instead of text
+
+NAME is anything :func:`dualmech.problems.get` takes: a catalogue name, ``path.py[:Class]``
+or ``module:Class``.
 
 :func:`register` adds them to an :mod:`argparse` sub-parser set; each handler returns an exit
 status -- 0 done, 1 a problem could not be charted (the others were), 2 a usage error (an
 unknown problem, an unwritable directory, a section that does not exist) -- and prints
-errors as one line on stderr, never a traceback.  Progress bars go to stderr.
+errors as one line on stderr, never a traceback.  Progress goes to stderr (a bar on a
+terminal, one line per problem otherwise).
 
 Example
 -------
@@ -77,6 +82,13 @@ def register(subparsers) -> None:
 def _out(p) -> None:
     p.add_argument("--out", metavar="DIR", type=Path, default=Path("out"),
                    help="output directory (default: %(default)s)")
+    p.add_argument("--json", action="store_true",
+                   help="print JSON (the results and the files written) instead of text")
+
+
+def _print_json(obj) -> None:
+    import json
+    print(json.dumps(obj, indent=1, default=str))
 
 
 def _positive(text: str) -> float:
@@ -114,12 +126,12 @@ def _guard(handler):
 
 
 def _problem(name: str):
+    """The problem ``name`` names: a catalogue name, ``path.py[:Class]`` or ``module:Class``."""
     from dualmech import problems
     try:
-        problems.module_of(name)
-    except KeyError as exc:
+        return problems.get(name)
+    except KeyError as exc:   # SpecError: what to fix, with close matches
         raise _Usage(exc.args[0] if exc.args else str(exc)) from None
-    return problems.get(name)
 
 
 def _writable(out: Path) -> Path:
@@ -132,8 +144,7 @@ def _writable(out: Path) -> Path:
 
 
 def _chart(args) -> int:
-    from tqdm import tqdm
-
+    from ..progress import progress
     from .workprecision import STEPS, TOLERANCES, work_precision
     if args.all and args.names:
         raise _Usage("give problem names or --all, not both.")
@@ -145,10 +156,8 @@ def _chart(args) -> int:
     out = _writable(args.out)
     tolerances = (1e-3, 1e-6, 1e-9) if args.quick else TOLERANCES
     steps = (32, 256) if args.quick else STEPS
-    failed = []
-    bar = tqdm(chosen, desc="charting", unit="problem", file=sys.stderr, leave=False,
-               disable=len(chosen) < 2)
-    for p in bar:
+    failed, done = [], []
+    for p in progress(chosen, "charting"):
         try:
             wp = work_precision(p, duration=args.duration, tolerances=tolerances, steps=steps)
             paths = wp.write(out)
@@ -157,9 +166,14 @@ def _chart(args) -> int:
         except Exception as exc:  # noqa: BLE001 - one problem's failure does not stop --all
             failed.append(f"{p.name}: {type(exc).__name__}: {exc}")
             continue
+        if args.json:
+            done.append({**wp.to_dict(), "files": [str(x) for x in paths]})
+            continue
         print(f"{p.name}: {len(wp.runs)} runs over t in [0, {wp.span[1]:.3g}] s"
               + (f" ({wp.span_note})" if wp.span_note else "") + "; wrote "
               + ", ".join(str(x) for x in paths))
+    if args.json:
+        _print_json(done[0] if len(done) == 1 and not args.all and not failed else done)
     for line in failed:
         print(f"dualmech chart: no chart for {line}", file=sys.stderr)
     return EXIT_FAILED if failed else EXIT_OK
@@ -173,8 +187,11 @@ def _atlas(args) -> int:
     p = _problem(args.name)
     out = _writable(args.out)
     result = atlas(p, sections=tuple(args.sections or SECTIONS))
-    print(result)
     paths = result.write(out)
+    if args.json:
+        _print_json({**result.to_dict(), "files": [str(x) for x in paths]})
+        return EXIT_OK
+    print(result)
     print(f"\nwrote {', '.join(str(x) for x in paths)}")
     return EXIT_OK
 
@@ -188,7 +205,10 @@ def _fidelity(args) -> int:
                      "n_link_pendulum or a pendulum.")
     out = _writable(args.out)
     result = ladder(p)
-    print(result)
     paths = result.write(out)
+    if args.json:
+        _print_json({**result.to_dict(), "files": [str(x) for x in paths]})
+        return EXIT_OK
+    print(result)
     print(f"\nwrote {', '.join(str(x) for x in paths)}")
     return EXIT_OK

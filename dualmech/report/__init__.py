@@ -16,7 +16,6 @@ Written(markdown=PosixPath('out/report.md'), html=PosixPath('out/report.html'), 
 """
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Sequence
@@ -48,16 +47,15 @@ def write_report(comparisons: Sequence, out_dir: Path, duration: float = 5.0,
     ``duration`` is the longest simulated span in seconds; each chart stops earlier where
     its scene ends.  Raises ``OSError`` when ``out_dir`` cannot be written.
     """
-    from tqdm import tqdm
     if not duration > 0:
         raise ValueError(f"`duration` must be positive, got {duration!r}.")
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     comparisons = list(comparisons)
     charts = {}
-    bar = tqdm(comparisons, desc="charts", unit="problem", file=sys.stderr, leave=False,
-               disable=not progress or len(comparisons) < 2)
-    for c in bar:
+    from ..progress import progress as _progress   # a bar on a terminal, lines otherwise
+    for c in _progress(comparisons, "charts", quiet=not progress,
+                       label=lambda c: c.problem.name):
         charts[c.problem.name] = trajectory_chart(c.problem, out, duration)
     md = out / "report.md"
     md.write_text(markdown_page(comparisons, charts, duration))

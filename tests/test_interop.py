@@ -1,0 +1,141 @@
+"""sympy.physics.mechanics interop: Kane, Lagrange and System models checked against the
+catalogue's own derivations, a wrong one named, and the export used by simulation users.
+
+The toy car (MIT 2.003J quiz 1, ``problems/toy_car.py``) is built here a third way, with
+sympy's KanesMethod: track frame ``A`` tilted by ``phi`` about ``N.x``, car frame ``B`` turned
+by ``theta`` about ``A.y``, car at ``-R B.z``, weight ``-m g N.z``; speeds ``u = (theta',
+phi')``.  Its mass matrix is ``diag(m R^2, m R^2 cos^2 theta)`` (the source's Lagrangian)."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import sympy as sp
+import sympy.physics.mechanics as me
+
+from dualmech.equations import ModelError
+from dualmech.interop import (check_mechanics, from_mechanics, lagranges_method, to_mechanics,
+                              with_derivation)
+from dualmech.problems import get
+
+TOY_CAR = get("toy_car")
+PENDULUM = get("simple_pendulum")
+
+
+def kane_toy_car(gravity_sign: int = 1, *, formed: bool = True):
+    theta, phi = me.dynamicsymbols("theta phi")
+    u1, u2 = me.dynamicsymbols("u1 u2")
+    m, R, g = sp.symbols("m R g")
+    N = me.ReferenceFrame("N")
+    A = N.orientnew("A", "Axis", (phi, N.x))
+    B = A.orientnew("B", "Axis", (theta, A.y))
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    P = O.locatenew("P", -R * B.z)
+    A.set_ang_vel(N, u2 * N.x)
+    B.set_ang_vel(A, u1 * A.y)
+    P.v2pt_theory(O, N, B)
+    car = me.Particle("car", P, m)
+    km = me.KanesMethod(N, q_ind=[theta, phi], u_ind=[u1, u2],
+                        kd_eqs=[theta.diff() - u1, phi.diff() - u2])
+    if formed:
+        km.kanes_equations([car], [(P, -gravity_sign * m * g * N.z)])
+    return km, car, P, N
+
+
+def test_a_kane_toy_car_agrees_with_every_hand_derivation():
+    km, *_ = kane_toy_car()
+    c = check_mechanics(TOY_CAR, km, name="kane")
+    assert c.equivalent, str(c)
+    assert "kane" in c.to_dict()["models"]
+    eqs = from_mechanics(km, TOY_CAR, name="kane")
+    m, R = sp.Symbol("m", positive=True), sp.Symbol("R", positive=True)
+    theta = TOY_CAR.coordinate_functions[0]
+    # the source's mass matrix diag(m R^2, m R^2 cos^2 theta)
+    assert sp.simplify(eqs.mass_matrix() - sp.diag(m * R**2, m * R**2 * sp.cos(theta)**2)) \
+        == sp.zeros(2, 2)
+    assert eqs.coordinates == TOY_CAR.model("lagrange").coordinates
+
+
+def test_a_wrong_kane_model_is_named_as_the_odd_one():
+    km, *_ = kane_toy_car(gravity_sign=-1)          # gravity pointing up: a sign slip
+    c = check_mechanics(TOY_CAR, km, name="kane")
+    assert not c.equivalent
+    assert c.to_dict()["odd"] == ["kane"]            # the four hand derivations outvote it
+
+
+def test_a_system_is_formed_and_checked():
+    km, car, P, N = kane_toy_car(formed=False)
+    theta, phi = km.q
+    u1, u2 = km.u
+    m, g = sp.symbols("m g")
+    system = me.System(N, me.Point("O"))
+    system.q_ind = [theta, phi]
+    system.u_ind = [u1, u2]
+    system.kdes = [theta.diff() - u1, phi.diff() - u2]
+    system.add_bodies(car)
+    system.add_loads(me.Force(P, -m * g * N.z))
+    assert check_mechanics(TOY_CAR, system, name="system").equivalent
+
+
+def test_a_lagranges_method_with_a_multiplier_recovers_the_tension():
+    """The pendulum freed from its string (coordinates theta, r; constraint a - r = 0):
+    sympy's multiplier is the tension, M (g cos theta + a theta'^2) by hand."""
+    th, r = me.dynamicsymbols("theta r")
+    M, a, g = sp.symbols("M a g")
+    L = M * (r.diff()**2 + r**2 * th.diff()**2) / 2 + M * g * r * sp.cos(th)
+    lm = me.LagrangesMethod(L, [th, r], hol_coneqs=[a - r])
+    lm.form_lagranges_equations()
+    eqs = from_mechanics(lm, PENDULUM, name="sympy_multiplier", reactions={"lam1": "T"})
+    assert [str(u) for u in eqs.unknowns] == ["T"]
+    problem = with_derivation(PENDULUM, eqs,
+                              coordinate_map=PENDULUM.coordinate_maps()["multiplier"])
+    from dualmech.compare import compare
+    c = compare(problem)
+    assert c.equivalent, str(c)
+    theta = PENDULUM.coordinate_functions[0]
+    Mp, ap, gp = PENDULUM.parameter_symbols
+    hand = Mp * (gp * sp.cos(theta) + ap * theta.diff()**2)
+    assert sp.simplify(c.reactions["T"] - hand) == 0
+
+
+def test_unmatched_names_are_refused_with_what_to_pass():
+    th = me.dynamicsymbols("q1")
+    M, l, g = sp.symbols("M l g")
+    lm = me.LagrangesMethod(M * l**2 * th.diff()**2 / 2 + M * g * l * sp.cos(th), [th])
+    with pytest.raises(ModelError, match=r"coordinate `q1`.*coordinates=\{'q1'"):
+        from_mechanics(lm, PENDULUM)
+    with pytest.raises(ModelError, match=r"symbol\(s\) l .*symbols=\{'l'"):
+        from_mechanics(lm, PENDULUM, coordinates={"q1": PENDULUM.coordinate_functions[0]})
+    theta = PENDULUM.coordinate_functions[0]
+    a = PENDULUM.parameter_symbols[1]
+    assert check_mechanics(PENDULUM, lm, coordinates={"q1": theta}, symbols={"l": a}).equivalent
+    with pytest.raises(TypeError, match="KanesMethod, a LagrangesMethod or a System"):
+        from_mechanics("not a model", PENDULUM)
+
+
+def test_export_round_trip_and_state_space_form():
+    """to_mechanics' state-space form integrates like the problem's own right-hand side, and
+    lagranges_method of the source's Lagrangian comes back equivalent."""
+    form = to_mechanics(TOY_CAR)
+    assert [str(q) for q in form.q] == ["theta(t)", "phi(t)"]
+    values = {s: v for s, v in form.constants.items()}
+    theta, phi = form.q
+    ut, up = form.u
+    state = {theta: 0.3, phi: -0.7, ut: 0.5, up: 1.1}
+    rhs = form.rhs().subs(values).subs(state)
+    m, R, g = 0.2, 0.5, 9.81
+    # by hand from T, V of the source: theta'' = -phi'^2 sin cos - g/R sin(theta) cos(phi);
+    # phi'' = 2 phi' theta' tan(theta) - g sin(phi) / (R cos(theta))
+    th, ph, wt, wp = 0.3, -0.7, 0.5, 1.1
+    expected = [wt, wp, -wp**2 * np.sin(th) * np.cos(th) - g / R * np.sin(th) * np.cos(ph),
+                2 * wp * wt * np.tan(th) - g * np.sin(ph) / (R * np.cos(th))]
+    assert np.allclose([float(x) for x in rhs], expected, rtol=1e-12, atol=0)
+    assert m == values[TOY_CAR.parameter_symbols[0]]
+    th_d, ph_d = TOY_CAR.coordinate_functions
+    ms, Rs, gs = TOY_CAR.parameter_symbols
+    L = ms * Rs**2 * (th_d.diff()**2 + ph_d.diff()**2 * sp.cos(th_d)**2) / 2 \
+        + ms * gs * Rs * sp.cos(th_d) * sp.cos(ph_d)
+    lm = lagranges_method(TOY_CAR, L)
+    assert check_mechanics(TOY_CAR, lm, name="exported").equivalent
+    with pytest.raises(ModelError, match="unknown reactions"):
+        to_mechanics(TOY_CAR, "newton_euler")
