@@ -2,7 +2,7 @@
 
 ::
 
-    dualmech serve [--host 127.0.0.1] [--port 8000] [--problems NAME ...] [--token T]
+    dualmech serve [--host 127.0.0.1] [--port 8000] [--problems NAME|FILE ...] [--token T]
                    [--data DIR] [--workers N]
 
 Example
@@ -44,8 +44,9 @@ def register(subparsers) -> argparse.ArgumentParser:
     p.add_argument("--host", default="127.0.0.1",
                    help="address to listen on (default: %(default)s, this machine only)")
     p.add_argument("--port", type=_port, default=8000, help="port (default: %(default)s)")
-    p.add_argument("--problems", nargs="+", metavar="NAME",
-                   help="the problems to serve (default: the whole catalogue)")
+    p.add_argument("--problems", nargs="+", metavar="NAME|FILE",
+                   help="the problems to serve: catalogue names or problem files (default: "
+                        "the whole catalogue); clients can only name these")
     p.add_argument("--token", help="the teacher's token (default: a random one, printed)")
     p.add_argument("--data", type=Path, default=Path("dualmech-data"), metavar="DIR",
                    help="where batches and results are kept (default: %(default)s)")
