@@ -120,6 +120,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="print JSON: one object for one problem, a list for several")
     p.add_argument("--n", metavar="N", type=_positive_int, default=None,
                    help="size of a parametric problem (e.g. n_link_pendulum --n 10)")
+    p.add_argument("--jobs", "-j", metavar="J", type=_positive_int, default=None,
+                   help="problems checked at once, in worker processes (default: one per "
+                        "CPU when several problems are checked)")
     _points_seed(p)
     p.set_defaults(func=_cmd_check)
 
@@ -388,11 +391,57 @@ def _cmd_list(args) -> int:
     return EXIT_OK
 
 
+class _Checked:
+    """A comparison done in a worker process, as the parent prints it."""
+
+    def __init__(self, text: str, data: dict, equivalent: bool):
+        self.text, self.data, self.equivalent = text, data, equivalent
+
+    def __str__(self) -> str:
+        return self.text
+
+    def to_dict(self) -> dict:
+        return self.data
+
+
+_CHOSEN: list = []   # the problems of a parallel check, inherited by forked workers
+
+
+def _check_in_worker(i: int, points: int, seed: int) -> _Checked:
+    c = _compare(_CHOSEN[i], points, seed)
+    return _Checked(str(c), c.to_dict(), bool(c.equivalent))
+
+
+def _compared(chosen: list, points: int, seed: int, jobs: int | None):
+    """``compare`` of each problem, in order; several at once in forked worker processes
+    (each problem's check is independent) when there are several problems and CPUs."""
+    import os
+    jobs = jobs or min(len(chosen), os.cpu_count() or 1)
+    fork = None
+    if jobs > 1 and len(chosen) > 1:
+        import multiprocessing
+        if "fork" in multiprocessing.get_all_start_methods():
+            fork = multiprocessing.get_context("fork")
+    if fork is None:
+        for problem in _progress(chosen, "checking"):
+            yield problem, _compare(problem, points, seed)
+        return
+    from concurrent.futures import ProcessPoolExecutor
+    _CHOSEN[:] = chosen
+    try:
+        with ProcessPoolExecutor(max_workers=jobs, mp_context=fork) as pool:
+            futures = [pool.submit(_check_in_worker, i, points, seed)
+                       for i in range(len(chosen))]
+            for problem, future in zip(_progress(chosen, "checking"), futures):
+                yield problem, future.result()
+    finally:
+        _CHOSEN.clear()
+
+
 def _cmd_check(args) -> int:
     chosen = _selected(args)
     results = []
-    for problem in _progress(chosen, "checking"):
-        c = _compare(problem, args.points, args.seed)
+    for problem, c in _compared(chosen, args.points, args.seed, args.jobs):
         results.append((problem, c))
         if not args.json:
             print(c)

@@ -174,7 +174,10 @@ class Problem:
     ``coordinates``, ``reactions``, ``singular`` (expressions whose zeros are the singular set,
     e.g. ``cos(theta)``), ``reference`` (the model the others are compared with, default
     ``"lagrange"``).  Each model is a method listed in ``model_names`` (default: the methods
-    among ``newton_euler``, ``lagrange`` and those in ``extra_models``).
+    among ``newton_euler``, ``lagrange`` and those in ``extra_models``).  ``aliases`` maps
+    names students use to the source's symbols (``{"l": "a"}`` where the source writes ``a``
+    for a length students call ``l``); the grader accepts an alias only when no symbol of the
+    problem has that name.
     """
 
     name: str = ""
@@ -187,6 +190,7 @@ class Problem:
     singular: tuple = ()
     reference: str = "lagrange"
     extra_models: tuple = ()
+    aliases: dict = {}
 
     # -- to be provided by subclasses --------------------------------------------------
     def coordinate_maps(self) -> dict:

@@ -95,6 +95,7 @@ class SimplePendulum(Problem):
     """Bob ``M`` on a massless string of length ``a`` (see module doc)."""
 
     name = "simple_pendulum"
+    aliases = {"l": "a", "m": "M"}   # the string's length and the bob's mass as taught
     title = "Simple pendulum"
     source = "002_df41972c66c4514e.txt: section 2.2, Lagrange's equation for a simple pendulum"
     summary = ("One angle; the string's tension from the free-body diagram and again as the "

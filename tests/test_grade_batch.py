@@ -149,7 +149,7 @@ def test_report_groups_mistakes_by_the_wrong_term(tmp_path):
     paths = write_report(results, tmp_path / "out")
     md = paths["markdown"].read_text()
     assert "1 of 3 right, 1 not graded." in md and "## By student" in md
-    assert "| the term `-R*m*theta'**2` has the wrong sign" in md
+    assert "| the term `-R*m*theta'^2` has the wrong sign" in md
     data = json.loads(paths["json"].read_text())
     assert len(data["results"]) == len(ROWS) and "simple_pendulum" in data["summary"]
 

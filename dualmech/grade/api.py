@@ -23,7 +23,8 @@ from .formula import Formula, difference
 from .cost import costliest
 from .judge import AnswerTimeout, Deadline, judge_equations, judge_expression
 from .judge_energy import judge_force, judge_kinetic, judge_lagrangian, judge_potential
-from .parser import LIMITS, AnswerError, Limits, parse
+from .maps import student_map
+from .parser import LIMITS, AnswerError, Limits, parse, split_where
 from .result import Grade
 from .vocabulary import UnknownName, Vocabulary
 
@@ -114,6 +115,7 @@ class Grader:
     def _grade(self, answer, quantity, about):
         deadline = Deadline(self.limits.seconds)
         ctx = self.context
+        answer, maps = split_where(answer, self.limits)
         eqs = parse(answer, self.limits)
         n = len(ctx.states)
         if quantity is None:
@@ -125,6 +127,9 @@ class Grader:
             ctx = linearised_context(ctx, about)
             q = find_quantity(ctx, "eom" if len(eqs) > 1 or n == 1 else "equation")
         voc = self._vocabulary(ctx, q)
+        own = student_map(ctx, maps, voc, self.limits) if maps else None
+        if own is not None:
+            voc = own.vocabulary
         if q.kind in ("equations", "equation"):
             if any(side is not None and _unwrap(side).op == "vec"
                    for e in eqs for side in (e.lhs, e.rhs)):
@@ -133,9 +138,13 @@ class Grader:
             formulas = [difference(Formula.from_node(e.lhs, voc, self.limits, e.text),
                                    Formula.from_node(e.rhs, voc, self.limits)
                                    if e.rhs is not None else None) for e in eqs]
+            if own is not None:
+                formulas = [own.rewrite(f, ctx) for f in formulas]
             v = judge_equations(ctx, formulas, q, deadline, single=q.kind == "equation")
             return v, asked, q.kind, ctx
         f = _expression(eqs, q, voc, self.limits)
+        if own is not None:
+            f = own.rewrite(f, ctx)
         if q.kind == "expression":
             return judge_expression(ctx, f, q, deadline, _components(ctx, f, q)), q.name, \
                 q.kind, ctx
@@ -154,7 +163,8 @@ class Grader:
         key = ("vocabulary", q.basis)
         if key not in ctx.store:
             ctx.store[key] = Vocabulary.build(ctx.coordinates, ctx.parameters, ctx.reactions,
-                                              q.basis, [q for q, _ in ctx._extra_coordinates()])
+                                              q.basis, [q for q, _ in ctx._extra_coordinates()],
+                                              getattr(ctx.problem, "aliases", None))
         return ctx.store[key]
 
 

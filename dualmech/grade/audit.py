@@ -9,12 +9,15 @@ Example
 """
 from __future__ import annotations
 
+import re
+
 from sympy.printing.str import StrPrinter
 
 from ..dimensions import format_dimension, reduce
 from .formula import Formula, tree_to_sympy
 
-__all__ = ["display", "dimension_issues", "expected_dimension", "reduced", "Dims"]
+__all__ = ["display", "dimension_issues", "expected_dimension", "reduced", "Dims",
+           "notation_of", "restyle", "label_words", "NOTATIONS"]
 
 Dims = tuple
 
@@ -31,9 +34,84 @@ class _PrimePrinter(StrPrinter):
 
 
 def display(expr, names: dict | None = None) -> str:
-    """``expr`` as text, with ``names`` (symbol -> text) for the coordinates' derivatives."""
-    s = _PrimePrinter(names or {}).doprint(expr)
-    return s
+    """``expr`` as text, with ``names`` (symbol -> text) for the coordinates' derivatives,
+    powers written ``^`` as students type them."""
+    return _PrimePrinter(names or {}).doprint(expr).replace("**", "^")
+
+
+#: How a student may write the rates of ``theta``: first and second derivative.
+NOTATIONS = {
+    "primes": ("{q}'", "{q}''"),
+    "dot": ("{q}dot", "{q}ddot"),
+    "_dot": ("{q}_dot", "{q}_ddot"),
+    "_d": ("{q}_d", "{q}_dd"),
+    "d": ("d{q}", "dd{q}"),
+    "latex": ("\\dot{{{q}}}", "\\ddot{{{q}}}"),
+    "unicode": ("{q}\u0307", "{q}\u0308"),
+}
+
+
+def notation_of(text: str, coordinates) -> str:
+    """The way ``text`` writes rates (a key of :data:`NOTATIONS`; ``primes`` when it writes
+    none or several ways).
+
+    >>> notation_of("m*l^2*thetaddot + m*g*l*sin(theta)", ["theta"])
+    'dot'
+    """
+    found = []
+    for q in coordinates:
+        e = re.escape(q)
+        checks = [("primes", e + r"'"), ("latex", r"\\d+dot\{\\?" + e),
+                  ("_dot", e + r"_d+ot\b"), ("dot", e + r"d+ot\b"), ("_d", e + r"_d+\b"),
+                  ("unicode", e + "[\u0307\u0308]"), ("d", r"\bd+" + e + r"\b")]
+        for key, pattern in checks:
+            if re.search(pattern, text):
+                found.append(key)
+                break
+    return found[0] if found and len(set(found)) == 1 else "primes"
+
+
+def restyle(text: str, coordinates, notation: str = "primes") -> str:
+    """``text`` as :func:`display` writes it (``theta'``, ``theta''``) in ``notation``.
+
+    >>> restyle("2*theta'*phi''", ["theta", "phi"], "dot")
+    '2*thetadot*phiddot'
+    """
+    if notation == "primes" or notation not in NOTATIONS or not text:
+        return text
+    one, two = NOTATIONS[notation]
+    for q in sorted(coordinates, key=len, reverse=True):
+        text = re.sub(r"(?<![A-Za-z0-9_])" + re.escape(q) + "''", two.format(q=q).replace(
+            "\\", "\\\\"), text)
+        text = re.sub(r"(?<![A-Za-z0-9_])" + re.escape(q) + "'", one.format(q=q).replace(
+            "\\", "\\\\"), text)
+    return text
+
+
+_LABEL = re.compile(r"sum (F|tau_(\w+)) \. (\w+)\.(\w+) \((.+)\)$")
+
+
+def label_words(label: str) -> str:
+    """A model row's label in words a student reads, without the model's name.
+
+    >>> label_words("Lagrange, theta"), label_words("sum F . O.y (m2)")
+    ('the theta equation (Lagrange)', 'the force balance on m2 along y')
+    >>> label_words("sum tau_G . b.x (body)")
+    'the moment balance about G on body along b.x'
+    """
+    if label.startswith("Lagrange, "):
+        return f"the {label[10:]} equation (Lagrange)"
+    if label.startswith("linearised, "):
+        return f"the linearised {label[12:]} equation"
+    m = _LABEL.match(label)
+    if m:
+        kind, point, frame, axis, bodies = m.groups()
+        along = axis if frame in ("O", "N", "E") else f"{frame}.{axis}"
+        what = "the force balance" if kind == "F" else f"the moment balance about {point}"
+        return f"{what} on {bodies} along {along}"
+    if " minus (" in label:
+        return "a combination of balances that eliminates the reactions"
+    return "a correct equation of the problem"
 
 
 def dimension_issues(tree, dims: dict, names: dict, expected: Dims | None = None) -> list[str]:

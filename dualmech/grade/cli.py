@@ -113,16 +113,25 @@ def _usage(message: str) -> int:
 def _list(args) -> int:
     from .api import Grader
     from .parser import AnswerError
+    from .vocabulary import symbol_table
     try:
-        quantities = Grader.of(args.name).quantities()
+        grader = Grader.of(args.name)
+        quantities = grader.quantities()
+        names = symbol_table(grader.context)
     except AnswerError as exc:
         return _usage(str(exc))
     if args.json:
-        print(json.dumps(quantities, indent=2))
+        print(json.dumps({"quantities": quantities, "names": names}, indent=2))
     else:
         width = max(len(n) for n in quantities)
         for n, d in quantities.items():
             print(f"{n.ljust(width)}  {d}")
+        print("\nnames an answer may use (also accepted; unit; meaning):")
+        width = max(len(r["name"]) for r in names)
+        for r in names:
+            also = ", ".join(r["aliases"])
+            print(f"  {r['name'].ljust(width)}  {r['kind']:10s} {also + ';' if also else ''} "
+                  f"{r['unit']}; {r['description']}")
     return EXIT_RIGHT
 
 

@@ -126,7 +126,8 @@ class ProblemContext:
             tuple(s.qd for s in self.states)
         self._extra = self._extra_coordinates()
         self.vocabulary = Vocabulary.build(self.coordinates, self.parameters, self.reactions,
-                                           extra_coordinates=[q for q, _ in self._extra])
+                                           extra_coordinates=[q for q, _ in self._extra],
+                                           aliases=getattr(problem, "aliases", None))
         self.dims = self._dimensions()
         self.names = {}
         for q in list(self.coordinates) + [q for q, _ in self._extra]:

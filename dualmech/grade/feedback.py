@@ -85,18 +85,72 @@ def _best(expr, targets, ctx, scale, equation, mode, parts=None) -> Diagnosis | 
     mine = term_table(expr, ctx, mode=mode, parts=parts)
     if mine is None or not mine.terms:
         return None
-    best = None
+    ranked = []
     for index, tab in enumerate(targets):
         for c in _scales(mine, tab) if scale else [Fraction(1)]:
-            rank = (_count(mine, tab, c), c != 1, index)
-            if best is None or rank < best[0]:
-                best = (rank, tab, c)
-    if best is None:
+            ranked.append((_count(mine, tab, c), c != 1, index, tab, c))
+    if not ranked:
         return None
-    (size, _, _), tab, c = best
+    ranked.sort(key=lambda r: r[:3])
+    # the few closest by single terms, ranked again with the written groups (a group the
+    # student dropped, wrote extra or flipped is one edit, as they wrote it)
+    cut = ranked[0][0] + 2
+    best = None
+    for size, other, index, tab, c in ranked[:12]:
+        if size > cut:
+            break
+        plan = _plan(mine, tab, c, ctx, parts)
+        rank = (_plan_size(mine, tab, c, plan), other, index)
+        if best is None or rank < best[0]:
+            best = (rank, tab, c, plan)
+    (size, _, _), tab, c, plan = best
     if size == 0 or size > min(MAX_EDITS, max(len(mine.terms) - 1, 1)):
         return None
-    return _describe(mine, tab, c, ctx, equation)
+    if len(mine.terms) > 1 and set(mine.terms) <= set(_differences(mine, tab, c)):
+        return None     # every term the student wrote changes: a rewrite, not an edit
+    return _describe(mine, tab, c, ctx, equation, plan)
+
+
+def _differences(mine: TermTable, tab: TermTable, c) -> dict:
+    """``{key: right - have}`` (values) of the state parts whose coefficients differ."""
+    out = {}
+    for k in set(mine.terms) | set(tab.terms):
+        a = mine.terms[k][1] if k in mine.terms else 0
+        b = tab.terms[k][1] * c if k in tab.terms else 0
+        if not zero(a - b, [a, b]):
+            out[k] = b - a
+    return out
+
+
+def _plan(mine: TermTable, tab: TermTable, c, ctx, parts) -> list:
+    """Edits of whole written groups: ``[(kind, written term, keys)]`` -- a group of the
+    target missing (``kind`` ``missing``), a group of the answer extra (``extra``) or with
+    the wrong sign (``sign``) -- each covering keys whose differences it explains exactly."""
+    diff = _differences(mine, tab, c)
+    if len(diff) < 2:
+        return []
+    out, covered = [], set()
+
+    def fits(vals, factor):
+        return all(k in diff and k not in covered and
+                   zero(diff[k] - factor * v, [diff[k], v]) for k, v in vals.items())
+    for g, vals in tab.groups(ctx):
+        if fits(vals, c):
+            out.append(("missing", g, set(vals)))
+            covered |= set(vals)
+    mine_groups = mine.groups(ctx, parts) if parts is not None else []
+    for g, vals in mine_groups:
+        for kind, factor in (("extra", -1), ("sign", -2)):
+            if fits(vals, factor):
+                out.append((kind, g, set(vals)))
+                covered |= set(vals)
+                break
+    return out
+
+
+def _plan_size(mine, tab, c, plan) -> int:
+    covered = set().union(*(keys for _, _, keys in plan)) if plan else set()
+    return len(plan) + _count(mine, tab, c, covered)
 
 
 def _scales(mine: TermTable, tab: TermTable) -> list:
@@ -113,11 +167,12 @@ def _scales(mine: TermTable, tab: TermTable) -> list:
     return out or [Fraction(1)]
 
 
-def _count(mine: TermTable, tab: TermTable, c) -> int:
-    """Edits needed: each differing term, a wrong term with the right coefficient once."""
+def _count(mine: TermTable, tab: TermTable, c, skip=frozenset()) -> int:
+    """Edits needed: each differing term, a wrong term with the right coefficient once
+    (``skip``: keys already explained)."""
     n = 0
     extra, missing = [], []
-    for k in set(mine.terms) | set(tab.terms):
+    for k in (set(mine.terms) | set(tab.terms)) - set(skip):
         a = mine.terms[k][1] if k in mine.terms else 0
         b = tab.terms[k][1] * c if k in tab.terms else 0
         if not zero(a - b, [a, b]):
@@ -135,7 +190,7 @@ def _count(mine: TermTable, tab: TermTable, c) -> int:
     return n
 
 
-def _describe(mine: TermTable, tab: TermTable, c, ctx, equation) -> Diagnosis:
+def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Diagnosis:
     shared = [k for k in mine.terms if k in tab.terms
               and zero(mine.terms[k][1] - c * tab.terms[k][1], [1])]
     if c == 1 or not shared:
@@ -145,8 +200,29 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation) -> Diagnosis:
     names = ctx.names
     swaps = swap_pairs(ctx)
     edits, missing, extra = [], [], []
+    covered = set()
+    for kind, g, keys in plan:
+        covered |= keys
+        if kind == "missing":
+            right = c_sym * g if c_sym != 1 else g
+            edits.append(Edit("missing", equation, "", display(right, names),
+                              category(sp.expand(right), ctx)))
+        elif kind == "extra":
+            edits.append(Edit("extra", equation, display(g, names), "",
+                              category(sp.expand(g), ctx)))
+        else:
+            edits.append(Edit("sign", equation, display(g, names), display(-g, names),
+                              category(sp.expand(g), ctx)))
     for k in list(mine.terms) + [k for k in tab.terms if k not in mine.terms]:
+        if k in covered:
+            continue
         a = mine.terms.get(k)
+        if a is None and k in mine.hidden and k in tab.terms:   # written terms that cancel
+            bv = tab.terms[k][1] * c
+            sub = _written_term(mine.hidden[k], bv, k, ctx, equation, swaps)
+            if sub is not None:
+                edits.append(sub)
+                continue
         b = tab.terms.get(k)
         av = a[1] if a else 0
         bv = b[1] * c if b else 0
@@ -271,6 +347,12 @@ def _monomials(have_c, right_c, key, ctx, equation, swaps=()) -> list | None:
         return [moved]
     extra = [x for x in changed if r.get(x, 0) == 0]
     missing = [x for x in changed if h.get(x, 0) == 0]
+    if len(changed) >= 2 and len(missing) == len(changed):   # one term, a sum coefficient
+        right = sp.factor(sum(r[x] * x for x in missing)) * key
+        return [Edit("missing", equation, "", display(right, ctx.names), category(right, ctx))]
+    if len(changed) >= 2 and len(extra) == len(changed):
+        have = sp.factor(sum(h[x] * x for x in extra)) * key
+        return [Edit("extra", equation, display(have, ctx.names), "", category(have, ctx))]
     if len(extra) == 1 and len(missing) == 1 and len(changed) == 2:
         have, right = h[extra[0]] * extra[0] * key, r[missing[0]] * missing[0] * key
         return [Edit("coefficient", equation, display(have, ctx.names),
@@ -373,10 +455,12 @@ def category(term, ctx: ProblemContext) -> str:
 
 
 def concrete_state(ctx: ProblemContext, answer: Formula, truth: Formula | None,
-                   need=()) -> tuple[dict, float, float]:
+                   need=(), coordinates: tuple | None = None) -> tuple[dict, float, float]:
     """A real state in the declared ranges (on the motion): ``(state, answer, truth)`` values.
 
-    ``truth`` None means the answer should vanish there (an equation).
+    ``truth`` None means the answer should vanish there (an equation).  ``coordinates``
+    (names of another model's coordinates) gives the state in those instead of the
+    reference's.
     """
     point = ctx.points("mpmath")[0]
     env = point.env(need=need)
@@ -386,9 +470,19 @@ def concrete_state(ctx: ProblemContext, answer: Formula, truth: Formula | None,
     state = {}
     for s in ctx.parameters:
         state[str(s)] = float(point.values[s])
-    for s in ctx.states:
-        state[s.name] = float(point.values[s.q])
-        state[s.name + "'"] = float(point.values[s.qd])
+    if coordinates is not None:
+        derived = {sym.name: sym for sym in ctx.derived_formulas()}
+        with mpmath.workdps(MP_DIGITS):
+            full = point.env(need=list(ctx.derived_formulas())).values
+        for name in coordinates:
+            for key, sym_name in ((name, name), (name + "'", name + "_dot")):
+                sym = derived.get(sym_name)
+                if sym is not None and sym in full:
+                    state[key] = _real(full[sym])
+    else:
+        for s in ctx.states:
+            state[s.name] = float(point.values[s.q])
+            state[s.name + "'"] = float(point.values[s.qd])
     if any(answer.symbols & {t}) or (truth is not None and t in truth.symbols):
         state["t"] = float(point.values[t])
     return state, _real(a), _real(b)

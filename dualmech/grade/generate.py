@@ -29,7 +29,7 @@ from ..dimensions import DAMPING, LENGTH, TORSIONAL_DAMPING
 from .context import ProblemContext
 from .audit import reduced
 
-__all__ = ["Sample", "write", "correct_answers", "wrong_answers", "CannotWrite"]
+__all__ = ["Sample", "write", "correct_answers", "wrong_answers", "names_mistake", "CannotWrite"]
 
 _FUNCTIONS = (sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc, sp.exp, sp.log)
 _MAX_TERMS = 40
@@ -44,9 +44,12 @@ class Sample:
     """One answer: its ``text``, the ``quantity`` it answers, whether it is ``right``.
 
     Wrong samples name the ``mistake`` (``sign``, ``missing``, ``coefficient``, ``swap``,
-    ``damping``, ``reaction``) and the ``term`` concerned as the correct answer has it (for
-    ``sign``/``missing``/``damping``) or as the wrong answer has it (``coefficient``, ``swap``,
-    with ``correct`` the term it replaced); ``equation`` is its index in the answer.
+    ``damping``, ``group`` -- several terms written as one group dropped --, ``factor sign``
+    -- a sign flipped inside a factor --, ``like-term sign`` -- one of several terms with the
+    same state part flipped) and the ``term`` concerned as the correct answer has it (for
+    the signs, ``missing``, ``group`` and ``damping``) or as the wrong answer has it
+    (``coefficient``, ``swap``, with ``correct`` the term it replaced); ``equation`` is its
+    index in the answer.
     """
 
     text: str
@@ -245,7 +248,159 @@ def wrong_answers(ctx: ProblemContext) -> list[Sample]:
         out.append(Sample(write(form - 2 * term, ctx), u.name, False, f"reaction {u.name}",
                           "sign", term))
         break
+    out += _written_mistakes(ctx)
+    out += _mapped_mistakes(ctx)
     return [s for s in out if _writable(s)]
+
+
+def _mapped_mistakes(ctx) -> list[Sample]:
+    """A wrong sign in a row of a model written in other coordinates than the reference's
+    (falling_container's ``y1, y2``): the answer is in those coordinates, and so must be the
+    diagnosis."""
+    from .terms import state_symbols
+    derived = set(ctx.derived_formulas())
+    reference = {s.name for s in ctx.states}
+    for name, m in ctx.problem.models().items():
+        names = {q.func.__name__ for q in m.coordinates}
+        if names <= reference or len(names) != len(reference):
+            continue    # the same coordinates, or constrained ones (a multiplier model)
+        for e in m.equations:
+            row = sp.expand(m.to_plain(e))
+            if not _exact(row):
+                continue    # decided by the comparator (sqrt, ...): no term edits
+            if not row.free_symbols & derived or row.free_symbols - derived - \
+                    set(ctx.parameters) - set(ctx.reactions) - {sp.Symbol("t")} - \
+                    state_symbols(ctx):
+                continue
+            for term in sp.Add.make_args(row):
+                if term.free_symbols & derived and not any(
+                        s.name.endswith("_ddot") for s in term.free_symbols):
+                    return [Sample(write(row - 2 * term, ctx), "equation", False,
+                                   f"sign error in {', '.join(sorted(names))}",
+                                   "sign (own coordinates)", term)]
+    return []
+
+
+def _exact(expr) -> bool:
+    from .formula import Formula
+    try:
+        return Formula.from_sympy(expr).exact
+    except TypeError:
+        return False
+
+
+def _written_mistakes(ctx) -> list[Sample]:
+    """Mistakes in one row as a model writes it (its grouping of forces), one of each kind:
+    a written group of several terms dropped (``m*L*(cos(phi)*phi'' - sin(phi)*phi'^2)``), a
+    sign flipped inside a factor (``(A + B)*w1*w2`` for ``(A - B)*w1*w2``), and one of two
+    written terms with the same state part flipped (``2*k*a^2*sin(theta)`` beside
+    ``-m*g*l*sin(theta)``).  Each answer is that single equation."""
+    from .terms import state_symbols
+    states = state_symbols(ctx)
+    acc = set(ctx.qdd)
+    found: dict = {}
+    names = [ctx.reference.name] + [n for n in ctx.models if n != ctx.reference.name]
+    written = [ctx.plain(e) for name in names
+               for e in ctx.models.get(name, ctx.reference).equations]
+    for row in written + _rows(ctx):
+        args = sp.Add.make_args(row)
+        if not 3 <= len(args) <= 12 or \
+                len(sp.Add.make_args(sp.expand(row))) > _MAX_TERMS:
+            continue
+        for a in args:
+            rest = row - a
+            if not sp.expand(rest).free_symbols & acc or not a.free_symbols & states \
+                    or not _natural(a, rest, row, ctx):
+                continue
+            inner = [f for f in sp.Mul.make_args(a) if f.is_Add]
+            size = len(sp.Add.make_args(sp.expand(a)))
+            if "group" not in found and inner and 2 <= size <= 4:
+                found["group"] = Sample(write(rest, ctx), "equation", False,
+                                        "group of terms dropped", "group", a)
+            if "factor sign" not in found and len(inner) == 1 and \
+                    len(inner[0].args) >= 2 and size >= 2:
+                piece = inner[0].args[-1]
+                others = sp.Mul(*[f for f in sp.Mul.make_args(a) if f is not inner[0]])
+                new = sp.Mul(others, inner[0] - 2 * piece, evaluate=False)
+                found["factor sign"] = Sample(
+                    write(rest, ctx) + " + " + _grouped(new, ctx), "equation", False,
+                    "sign inside a factor", "factor sign", sp.expand(others * piece))
+            if "like-term sign" not in found and size == 1 and not a.free_symbols & acc:
+                key = _state_part(a, states)
+                if any(b != a and len(sp.Add.make_args(sp.expand(b))) == 1 and
+                       _state_part(sp.expand(b), states) == key for b in args):
+                    found["like-term sign"] = Sample(
+                        write(rest - a, ctx), "equation", False, "one of like terms "
+                        "flipped", "like-term sign", a)
+        if len(found) == 3:
+            return list(found.values())
+    return list(found.values())
+
+
+def _natural(a, rest, row, ctx) -> bool:
+    """A written term as a person writes it: its expanded terms neither cancel nor merge
+    with the rest of the row's, nor collapse by ``sin^2 + cos^2 = 1``."""
+    from .terms import term_table
+    n = len(sp.Add.make_args(sp.expand(a)))
+    if n + len(sp.Add.make_args(sp.expand(rest))) != len(sp.Add.make_args(sp.expand(row))):
+        return False
+    if n < 2:
+        return True
+    written, reduced_ = (term_table(a, ctx, mode=m) for m in ("written", "pythagoras"))
+    return written is not None and reduced_ is not None and \
+        len(written.terms) == len(reduced_.terms) == len(term_table(a, ctx).terms)
+
+
+def _grouped(expr, ctx) -> str:
+    """A product with a sum factor, written with the parentheses the student would type."""
+    return "(" + write(expr, ctx) + ")" if not expr.is_Mul else \
+        "*".join("(" + write(f, ctx) + ")" for f in expr.args)
+
+
+def _state_part(term, states):
+    return sp.Mul(*[f for f in sp.Mul.make_args(term) if f.free_symbols & states])
+
+
+def names_mistake(ctx: ProblemContext, sample: Sample, edits: list) -> bool:
+    """Whether ``edits`` (of a :class:`~.result.Grade`) are exactly the mistake ``sample``
+    was made with: the right kind, the right term or terms, the right equation, nothing else.
+
+    Terms are compared by their exact difference after expansion, so a term named as the
+    student grouped it (``(A + B)*w1*w2`` where ``(A - B)*w1*w2`` belongs) counts the same as
+    the expanded one (``B*w1*w2`` with the wrong sign).
+    """
+    if not edits or sample.right:
+        return False
+    multi = sample.quantity == "eom" and len(ctx.states) > 1
+    want = sample.equation if multi else None
+    if any(e.equation != want for e in edits):
+        return False
+    try:
+        val = [(_read(ctx, e.term), _read(ctx, e.correct)) for e in edits]
+    except Exception:  # an edit the parser cannot read back does not name anything
+        return False
+    kinds = {e.kind for e in edits}
+    m, T = sample.mistake, sp.expand(sample.term)
+    if m in ("missing", "group", "damping"):
+        return kinds == {"missing"} and (len(edits) == 1 or m == "damping") and \
+            sp.expand(sum(c for _, c in val) - T) == 0
+    if len(edits) != 1:
+        return False
+    have, right = val[0]
+    if m in ("sign", "factor sign", "like-term sign", "sign (own coordinates)"):
+        return edits[0].kind == "sign" and sp.expand(right - have - 2 * T) == 0
+    if m in ("coefficient", "swap"):
+        return edits[0].kind in ("coefficient", "swap") and \
+            sp.expand(right - have - (sample.correct - sample.term)) == 0
+    return False
+
+
+def _read(ctx, text: str):
+    from .formula import Formula
+    from .parser import parse
+    if not text:
+        return sp.Integer(0)
+    return Formula.from_node(parse(text)[0].lhs, ctx.vocabulary).sympy()
 
 
 def _swap(ctx, rows, small):

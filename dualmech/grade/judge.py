@@ -34,8 +34,10 @@ from ..verify import linalg as la
 from .answers import Quantity
 from .context import GradingUnavailable, Point, ProblemContext, build_seconds, zero
 from .feedback import Diagnosis, best_edit, concrete_state
-from .terms import equation_targets, expression_tables, term_table
-from .audit import dimension_issues, display, expected_dimension
+from .notation import coordinate_names, for_student
+from .terms import answer_coordinates, equation_targets, expression_tables, term_table
+from .audit import (dimension_issues, display, expected_dimension, label_words, notation_of,
+                    restyle)
 from .formula import Formula
 from .parser import AnswerError
 from .result import Edit
@@ -361,12 +363,11 @@ def _lagrange_coordinates(ctx, labels) -> list:
 
 
 def _words(model: str, labels: list) -> str:
+    """Rows of a model in words a student reads (no model or label names)."""
     def one(lb):
         if lb.startswith("Lagrange, "):
             return f"the equation of {lb[10:]} (Lagrange)"
-        if lb.startswith("linearised, "):
-            return f"the linearised equation of {lb[12:]}"
-        return f"{model} [{lb}]"
+        return label_words(lb)
     if len(labels) == 1:
         return one(labels[0])
     return "a combination of " + " and ".join(one(lb) for lb in labels)
@@ -375,18 +376,26 @@ def _words(model: str, labels: list) -> str:
 def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline, need):
     edits, details, state = [], [], {}
     k = len(formulas)
+    coords = coordinate_names(ctx)
     for i in wrong:
         deadline.check()
         d = None
+        own = answer_coordinates(ctx, formulas[i].symbols)
         if formulas[i].expanded_size() <= _MAX_FEEDBACK_TERMS:
-            d = best_edit(formulas[i].sympy(), lambda mode: equation_targets(ctx, mode), ctx,
+            d = best_edit(formulas[i].sympy(),
+                          lambda mode: equation_targets(ctx, mode, own), ctx,
                           equation=i if k > 1 else None, parts=formulas[i].written_terms())
         if d is not None:
-            edits += d.edits
-            details.append(f"{name(i)} is closest to {_target_words(d, ctx)}")
+            target = _target_words(d, ctx)
+            where = _equation_name(d) if k > 1 else ""
+            edits += for_student(ctx, d.edits, formulas[i].text,
+                                 f"{name(i)} ({where})" if where else "")
+            details.append(f"{name(i)} is closest to {target}")
         elif not state:
             try:
-                state, value, _ = concrete_state(ctx, formulas[i], None, need)
+                state, value, _ = concrete_state(ctx, formulas[i], None, need, own)
+                style = notation_of(formulas[i].text, coords)
+                state = {restyle(key, coords, style): v for key, v in state.items()}
                 details.append(f"no small edit explains {name(i)}: on the motion, at the "
                                f"state below, its two sides differ by {value:.6g} (they must "
                                "be equal)")
@@ -402,10 +411,20 @@ def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline,
                    degree=degree)
 
 
+def _equation_name(d) -> str:
+    """``the theta equation`` when the closest target is a coordinate's Lagrange row."""
+    _, _, label = d.label.partition(": ")
+    if label.startswith("Lagrange, "):
+        return f"the {label[10:]} equation"
+    return ""
+
+
 def _target_words(d, ctx) -> str:
-    model, _, label = d.label.partition(": ")
+    """The closest correct equation in words: ``the theta equation (Lagrange)``, ``the force
+    balance on m2 along y``, times a factor if the answer is scaled."""
+    _, _, label = d.label.partition(": ")
     scale = "" if d.scale == 1 else f", times {display(d.scale, ctx.names)}"
-    return f"{model} [{label}]{scale}"
+    return f"{label_words(label)}{scale}"
 
 
 # -- expressions --------------------------------------------------------------------------------
@@ -498,7 +517,8 @@ def _expression_feedback(ctx, comps, refs, quantity, bad_j, deadline, need):
                 if d is not None:
                     break
         if d is not None:
-            edits += [replace(e, part="component") if where is not None else e for e in d.edits]
+            mine = for_student(ctx, d.edits, comps[j].text)
+            edits += [replace(e, part="component") if where is not None else e for e in mine]
         elif not state:
             what = f"component {j + 1}" if len(refs) > 1 else "it"
             try:

@@ -37,7 +37,8 @@ from fractions import Fraction
 from lark import Lark, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedToken
 
-__all__ = ["Limits", "LIMITS", "Node", "Equation", "AnswerError", "AnswerSyntaxError",
+__all__ = ["split_where",
+           "Limits", "LIMITS", "Node", "Equation", "AnswerError", "AnswerSyntaxError",
            "AnswerTooLarge", "parse", "FUNCTIONS", "GREEK"]
 
 
@@ -502,3 +503,47 @@ def _context(text: str, exc) -> str:
     col = max(getattr(exc, "column", 1) - 1, 0)
     snippet = line[max(col - 20, 0): col + 20]
     return f": ...{snippet}..." if snippet else ""
+
+
+_WHERE = re.compile(r"(?<![A-Za-z0-9_])where(?![A-Za-z0-9_])", re.I)
+
+
+def split_where(text: str, limits: Limits = LIMITS) -> tuple[str, list[Equation]]:
+    """``answer; where x = 2*l*cos(theta) - l0`` -> ``(answer, [the map's equations])``.
+
+    The student's own coordinates, each ``name = expression`` (separated by ``;``, ``,``,
+    ``and`` or new lines), read by the same grammar as the answer (:func:`parse`); ``[]``
+    when the answer states no map.
+
+    >>> answer, maps = split_where("M*x'' + k*x = 0; where x = 2*l*cos(theta) - l0")
+    >>> answer, [m.text for m in maps]
+    ("M*x'' + k*x = 0", ['x = 2*l*cos(theta) - l0'])
+    """
+    if not isinstance(text, str) or not _WHERE.search(text):
+        return text, []
+    answer, clause = _WHERE.split(text, maxsplit=1)
+    if _WHERE.search(clause):
+        raise AnswerSyntaxError("write `where` once, then every map: `where x = ..., y = ...`.")
+    answer = answer.rstrip().rstrip(";,").rstrip()
+    parts, depth, cur = [], 0, ""
+    for ch in re.sub(r"(?<![A-Za-z0-9_])and(?![A-Za-z0-9_])", ";", clause):
+        depth += ch in "([{"
+        depth -= ch in ")]}"
+        if ch in ",;\n" and depth == 0:
+            parts.append(cur)
+            cur = ""
+        else:
+            cur += ch
+    parts.append(cur)
+    maps = []
+    for part in (p for p in parts if p.strip()):
+        eqs = parse(part, limits)
+        if len(eqs) != 1 or eqs[0].rhs is None or eqs[0].lhs.op != "name" or \
+                eqs[0].lhs.args[1]:
+            raise AnswerSyntaxError(f"after `where`, write each coordinate as `name = "
+                                    f"expression` (got `{part.strip()}`).")
+        maps.append(eqs[0])
+    if not answer.strip() or not maps:
+        raise AnswerSyntaxError("write the answer, then `where x = ...` for your own "
+                                "coordinates.")
+    return answer, maps

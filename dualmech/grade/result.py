@@ -28,7 +28,9 @@ class Edit:
     linearised equation), ``swap`` (``detail`` names the
     two symbols), ``factor`` (the whole answer is off by ``detail``).  ``equation`` is the
     0-based index of the equation (or, with ``part="component"``, of the vector component)
-    in the answer; ``None`` for a single expression.
+    in the answer; ``None`` for a single expression.  ``where`` names that equation for a
+    student (``the theta equation``); ``term_html`` and ``correct_html`` are the terms as
+    MathML for web pages.
     """
 
     kind: str
@@ -38,9 +40,14 @@ class Edit:
     category: str = ""
     detail: str = ""
     part: str = "equation"
+    where: str = ""
+    term_html: str = ""
+    correct_html: str = ""
 
     def sentence(self) -> str:
         where = f"{self.part} {self.equation + 1}: " if self.equation is not None else ""
+        if self.where:
+            where = f"{self.where}: "
         cat = f" ({self.category})" if self.category else ""
         if self.kind == "missing":
             return f"{where}the term `{self.correct}` is missing{cat}"
@@ -63,7 +70,8 @@ class Edit:
     def to_dict(self) -> dict:
         return {"kind": self.kind, self.part: self.equation, "term": self.term,
                 "correct": self.correct, "category": self.category, "detail": self.detail,
-                "sentence": self.sentence()}
+                "where": self.where, "term_html": self.term_html,
+                "correct_html": self.correct_html, "sentence": self.sentence()}
 
 
 @dataclass

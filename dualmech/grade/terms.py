@@ -9,7 +9,7 @@ Coefficients are compared exactly, by value at one of the context's random point
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import sympy as sp
 
@@ -18,7 +18,7 @@ from .context import ProblemContext, zero
 from .formula import Formula
 
 __all__ = ["TermTable", "term_table", "equation_targets", "expression_tables",
-           "coefficient_env", "state_symbols", "MODES"]
+           "coefficient_env", "state_symbols", "MODES", "answer_coordinates"]
 
 _MAX_TERMS = 60
 
@@ -32,6 +32,35 @@ class TermTable:
     label: str
     expr: object
     terms: dict
+    #: keys whose written terms cancel (``P*x1/a - P*x1/a``), with those written terms
+    hidden: dict = field(default_factory=dict)
+    #: the mode the table was built in
+    mode: str = "trig"
+    _groups: list | None = None
+
+    def groups(self, ctx: ProblemContext, parts: list | None = None) -> list:
+        """``[(written term, {key: value})]`` of the written terms (``parts``, default the
+        top-level terms of :attr:`expr`) that expand to two or more state parts: the groups
+        a person writes (``m*L*(cos(phi)*phi'' - sin(phi)*phi'^2)``)."""
+        if self._groups is None:
+            out = []
+            for p in parts if parts is not None else sp.Add.make_args(self.expr):
+                self._add_group(out, p, ctx)
+                if parts is not None and p.is_Mul:   # a term inside the student's factor
+                    sums = [f for f in p.args if f.is_Add]
+                    if len(sums) == 1 and len(sums[0].args) <= 8:
+                        others = sp.Mul(*[f for f in p.args if f is not sums[0]])
+                        for piece in sums[0].args:
+                            self._add_group(out, sp.Mul(others, piece), ctx)
+            self._groups = out
+        return self._groups
+
+    def _add_group(self, out, p, ctx) -> None:
+        if len(sp.Add.make_args(sp.expand(p))) < 2:
+            return
+        tab = term_table(p, ctx, mode=self.mode)
+        if tab is not None and len(tab.terms) >= 2 and not tab.hidden:
+            out.append((p, {k: v[1] for k, v in tab.terms.items()}))
 
 
 def state_symbols(ctx: ProblemContext) -> set:
@@ -108,36 +137,71 @@ def term_table(expr, ctx: ProblemContext, label: str = "", mode: str = "trig",
             local[k] = local.get(k, 0) + sp.Mul(*coeff)
         for k, c in local.items():
             terms.setdefault(k, []).append(c)
-    out = {}
+    out, hidden = {}, {}
     for k, cs in terms.items():
         try:
             vals = [Formula.from_sympy(c).evaluate(env) for c in cs]
         except (TypeError, ZeroDivisionError, KeyError):
             return None
         v = sum(vals, 0)
+        written = [(c, x) for c, x in zip(cs, vals) if not zero(x, [1])]
         if not zero(v, [1]):
-            out[k] = (sp.Add(*cs), v, [(c, x) for c, x in zip(cs, vals) if not zero(x, [1])])
-    return TermTable(label, expr, out)
+            out[k] = (sp.Add(*cs), v, written)
+        elif len(written) >= 2:
+            hidden[k] = (sp.Integer(0), 0, written)
+    return TermTable(label, expr, out, hidden, mode)
 
 
 def coefficient_env(ctx: ProblemContext):
     return ctx.memo("coefficient_env", lambda: ctx.points(ctx.method)[0].env())
 
 
-def equation_targets(ctx: ProblemContext, mode: str = "trig") -> list[TermTable]:
+def equation_targets(ctx: ProblemContext, mode: str = "trig",
+                     coordinates: tuple | None = None) -> list[TermTable]:
     """Correct equations to compare a wrong one with (cached per context and mode): the
-    reference model's rows first, then every other model's, then simple eliminations."""
+    reference model's rows first, then every other model's, then simple eliminations.
+
+    ``coordinates`` (names, as :func:`answer_coordinates` gives them) asks for the rows of
+    the models written in those coordinates instead, in those coordinates (falling_container's
+    ``y1, y2``), so that an answer in them is diagnosed in them."""
     def build():
         out = []
-        names = [ctx.reference.name] + [n for n in ctx.models if n != ctx.reference.name]
-        for name in names:
-            m = ctx.models.get(name, ctx.reference)
-            for label, e in zip(m.labels, m.equations):
-                tab = term_table(ctx.plain(e), ctx, f"{name}: {label}", mode)
+        if coordinates is None:
+            names = [ctx.reference.name] + [n for n in ctx.models if n != ctx.reference.name]
+            rows = [(name, m.labels, [ctx.plain(e) for e in m.equations]) for name, m in
+                    ((n, ctx.models.get(n, ctx.reference)) for n in names)]
+        else:
+            rows = []
+            for name, m in ctx.problem.models().items():
+                if tuple(q.func.__name__ for q in m.coordinates) == coordinates:
+                    rows.append((name, m.labels, [m.to_plain(e) for e in m.equations]))
+        for name, labels, equations in rows:
+            for label, e in zip(labels, equations):
+                tab = term_table(e, ctx, f"{name}: {label}", mode)
                 if tab is not None and tab.terms:
                     out.append(tab)
         return out + _eliminations(ctx, out, mode)
-    return ctx.memo(("equation_targets", mode), build)
+    return ctx.memo(("equation_targets", mode, coordinates), build)
+
+
+def answer_coordinates(ctx: ProblemContext, symbols: set) -> tuple | None:
+    """The coordinates (names) of a model the answer is written in, when it uses another
+    model's coordinates and none of the reference's; None for the reference coordinates."""
+    reference = set()
+    for s in ctx.states:
+        reference |= {s.q, s.qd, s.qdd}
+    derived = set(ctx.derived_formulas())
+    if not symbols & derived or symbols & reference:
+        return None
+    for m in ctx.problem.models().values():
+        names = tuple(q.func.__name__ for q in m.coordinates)
+        own = set()
+        for q in m.coordinates:
+            own |= {sym for sym in derived | reference if sym.name in
+                    (q.func.__name__, q.func.__name__ + "_dot", q.func.__name__ + "_ddot")}
+        if symbols & (derived | reference) <= own:
+            return names
+    return None
 
 
 def _eliminations(ctx, rows: list, mode: str) -> list:

@@ -35,7 +35,7 @@ from ..equations import state_symbols
 from ..kinematics import t as TIME
 from .parser import GREEK
 
-__all__ = ["Ref", "Vocabulary", "UnknownName"]
+__all__ = ["Ref", "Vocabulary", "UnknownName", "symbol_table"]
 
 _LETTER = {v: k for k, v in GREEK.items() if not k.startswith("var")}  # θ -> theta
 _SHORT = {"theta": "th", "phi": "ph", "psi": "ps", "omega": "w"}
@@ -96,8 +96,10 @@ class Vocabulary:
     @classmethod
     def build(cls, coordinates: Sequence = (), parameters: Sequence = (),
               reactions: Sequence = (), basis: Sequence[str] = (),
-              extra_coordinates: Sequence = ()) -> "Vocabulary":
-        """Vocabulary of coordinates ``q(t)``, parameter and reaction symbols, basis names."""
+              extra_coordinates: Sequence = (), aliases: dict | None = None) -> "Vocabulary":
+        """Vocabulary of coordinates ``q(t)``, parameter and reaction symbols, basis names;
+        ``aliases`` (``{"l": "a"}``) are extra names a problem declares for its symbols,
+        accepted only where they do not clash with a name of the problem."""
         v = cls()
         clash: set = set()
         for q in list(coordinates) + list(extra_coordinates):
@@ -127,6 +129,12 @@ class Vocabulary:
         for name in ("pi", "π"):
             if name not in v.table:
                 v.table[name] = Ref("constant", sp.pi)
+        for alias, target in (aliases or {}).items():
+            ref = v.table.get(str(target))
+            if ref is not None and ref.kind != "basis" and alias not in v.table and \
+                    str(alias).isidentifier():
+                v.table[alias] = ref
+                v.aliases.setdefault(str(target), []).append(alias)
         for alias in clash:
             owner = v._owners.get(alias)
             if owner is not None:
@@ -232,3 +240,61 @@ class Vocabulary:
                          f"d{q}, dd{q}, \\dot{{{q}}})")
         parts.append("time: t")
         return "The problem's names are: " + "; ".join(parts) + "."
+
+
+def symbol_table(ctx) -> list[dict]:
+    """Every name an answer to the problem of ``ctx`` (a grading context) may use: ``name``,
+    ``kind``, other accepted spellings (``aliases``), SI ``unit`` and ``description``.
+    Coordinates that a model keeps constant (a multiplier model's ``rho = R``) are internal
+    and left out.
+
+    >>> from dualmech.grade import Grader
+    >>> rows = symbol_table(Grader.of("simple_pendulum").context)
+    >>> [(r["name"], r["aliases"], r["unit"]) for r in rows if r["name"] == "a"]
+    [('a', ['l'], 'm')]
+    >>> [(r["name"], r["unit"]) for r in rows if r["kind"] == "reaction"]
+    [('T', 'kg m s^-2')]
+    """
+    voc, problem = ctx.vocabulary, ctx.problem
+    units = {str(sym): _si(dim) for sym, dim in ctx.dims.items()}
+    internal = set()
+    try:
+        maps = problem.coordinate_maps()
+    except Exception:   # a problem without maps has no internal coordinates
+        maps = {}
+    reference = {state_symbols(q).q for q in ctx.coordinates}
+    for mapping in maps.values():
+        for q, expr in mapping.items():
+            expr = sp.sympify(expr, strict=True)
+            if not expr.atoms(sp.Function) and q.func.__name__ not in reference:
+                internal.add(q.func.__name__)
+    described = {str(p.symbol): p.description for p in problem.parameters}
+    for c in problem.coordinates:
+        described[c.name] = c.description
+    for name, info in problem.reaction_info().items():
+        described[name] = f"reaction ({info.direction})" if getattr(info, "direction", "") \
+            else "reaction"
+    rows = []
+    for kind in ("coordinate", "parameter", "reaction"):
+        for n in voc.canonical.get(kind, []):
+            if n in internal:
+                continue
+            also = [a for a in voc.aliases.get(n, []) if voc.table.get(a) is not None]
+            rows.append({"name": n, "kind": kind, "aliases": also,
+                         "unit": units.get(n, ""), "description": described.get(n, "")})
+    return rows
+
+
+_SI = {"mass": "kg", "length": "m", "time": "s", "current": "A", "temperature": "K",
+       "amount_of_substance": "mol", "luminous_intensity": "cd"}
+
+
+def _si(dim) -> str:
+    """A reduced dimension (``(("length", 1), ("time", -2))``) in SI units: ``m s^-2``."""
+    if not dim:
+        return "1"
+    parts = []
+    for name, e in sorted(dim, key=lambda ne: list(_SI).index(ne[0]) if ne[0] in _SI else 9):
+        unit = _SI.get(name, name)
+        parts.append(unit if e == 1 else f"{unit}^{e}")
+    return " ".join(parts)

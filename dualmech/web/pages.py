@@ -1,8 +1,9 @@
 """The HTML of the pages: every piece of text from a student, a CSV or a problem is escaped.
 
 Pages are plain HTML5 with MathML (browsers render it with no script), one stylesheet and one
-script served by the app (:mod:`.assets`).  Feedback terms are typeset with
-:func:`.preview.term_mathml`, in the student's own notation.
+script served by the app (:mod:`.assets`).  Feedback terms are the grader's own MathML
+(``term_html``/``correct_html`` of each edit), or typeset with :func:`.preview.term_mathml`
+when a grade has none, in the student's own notation.
 
 Example
 -------
@@ -110,8 +111,11 @@ def _term(info, text: str, typeset: str | None) -> str:
 def _edit(info, e: dict) -> str:
     part = "component" if "component" in e else "equation"
     where = f"{part} {e[part] + 1}: " if isinstance(e.get(part), int) else ""
+    if e.get("where"):
+        where = f"{e['where']}: "
     cat = f" ({escape(e['category'])})" if e.get("category") else ""
-    term = lambda key: _term(info, e.get(key, ""), e.get(f"{key}_mathml"))  # noqa: E731
+    # the grader's own MathML of the term when it gives one, else typeset here
+    term = lambda key: _term(info, e.get(key, ""), e.get(f"{key}_html"))  # noqa: E731
     kind = e.get("kind")
     if kind == "missing":
         text = f"the term {term('correct')} is missing{cat}"

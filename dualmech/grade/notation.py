@@ -1,0 +1,103 @@
+"""Feedback as the student wrote the answer: their notation for rates (primes, dots, ``_d``,
+``\\dot{}``), the aliases they used (``l`` for the source's ``a``), and every term as MathML for
+web pages (:mod:`dualmech.report.mathml`).
+
+Example
+-------
+>>> from dualmech.grade import grade
+>>> r = grade("toy_car", "R*thetaddot + R*phidot^2*sin(theta)*cos(theta) - g*sin(theta)*cos(phi)")
+>>> r.edits[0].term, r.edits[0].term_html.startswith("<math")
+('-g*sin(theta)*cos(phi)', True)
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+import sympy as sp
+
+from ..kinematics import t
+from .audit import notation_of, restyle
+from .context import ProblemContext
+from .formula import Formula
+
+__all__ = ["for_student", "coordinate_names"]
+
+
+def coordinate_names(ctx: ProblemContext) -> list[str]:
+    """Names of every coordinate an answer may use (the reference's and the maps')."""
+    return [name for name, _ in _coordinate_states(ctx)]
+
+
+def _coordinate_states(ctx: ProblemContext) -> list:
+    """``[(name, (q, q', q'') plain symbols)]`` of the reference and the mapped coordinates."""
+    def build():
+        out = [(s.name, (s.q, s.qd, s.qdd)) for s in ctx.states]
+        derived = {sym.name: sym for sym in ctx.derived_formulas()}
+        for name, sym in derived.items():
+            if not name.endswith("_dot") and not name.endswith("_ddot"):
+                out.append((name, (sym, derived.get(name + "_dot"),
+                                   derived.get(name + "_ddot"))))
+        return out
+    return ctx.memo("coordinate_states", build)
+
+
+def for_student(ctx: ProblemContext, edits: list, text: str = "", where: str = "") -> list:
+    """``edits`` in the notation of the answer ``text`` (``thetadot`` if the student wrote
+    dots, ...), named ``where`` (``the theta equation``), with each term as MathML."""
+    coords = coordinate_names(ctx)
+    style = notation_of(text, coords) if text else "primes"
+    used = _aliases_used(ctx, text)
+
+    def mine(s):
+        s = restyle(s, coords, style)
+        for target, alias in used.items():
+            s = re.sub(r"(?<![A-Za-z0-9_'])" + re.escape(target) + r"(?![A-Za-z0-9_])",
+                       alias, s)
+        return s
+    out = []
+    for e in edits:
+        out.append(replace(e, term=mine(e.term), correct=mine(e.correct),
+                           detail=mine(e.detail),
+                           where=where or e.where,
+                           term_html=_mathml(ctx, e.term), correct_html=_mathml(ctx, e.correct)))
+    return out
+
+
+def _aliases_used(ctx: ProblemContext, text: str) -> dict:
+    """``{symbol: alias}`` of the problem's declared aliases the answer uses instead of the
+    symbol's own name (``l`` for ``a``)."""
+    out = {}
+    for alias, target in (getattr(ctx.problem, "aliases", None) or {}).items():
+        word = r"(?<![A-Za-z0-9_])%s(?![A-Za-z0-9_])"
+        if ctx.vocabulary.table.get(alias) is not None and \
+                re.search(word % re.escape(alias), text) and \
+                not re.search(word % re.escape(str(target)), text):
+            out[str(target)] = alias
+    return out
+
+
+def _mathml(ctx: ProblemContext, text: str) -> str:
+    """MathML of a term the feedback wrote (read back by the answer parser), or ''."""
+    if not text:
+        return ""
+    from ..report.mathml import expression
+    from .parser import parse
+    try:
+        expr = Formula.from_node(parse(text)[0].lhs, ctx.vocabulary).sympy()
+    except Exception:   # a display aid only: a term the parser cannot read has no MathML
+        return ""
+    return expression(expr.xreplace(_functions(ctx)))
+
+
+def _functions(ctx: ProblemContext) -> dict:
+    """Plain state symbols -> ``q(t)`` and its derivatives (for typesetting with dots)."""
+    def build():
+        rules = {}
+        for name, syms in _coordinate_states(ctx):
+            q = sp.Function(name)(t)
+            for order, sym in enumerate(syms):
+                if sym is not None:
+                    rules[sym] = q.diff(t, order) if order else q
+        return rules
+    return ctx.memo("functions", build)
