@@ -54,9 +54,12 @@ def test_grade_right_and_wrong_with_typeset_feedback(client):
     assert g["status"] == "wrong"
     assert [(e["kind"], e["term"], e["correct"]) for e in g["edits"]] == \
         [("sign", "-g*sin(theta)", "g*sin(theta)")]
-    # the term typeset as the student wrote it: minus g sin(theta), theta as a Greek letter
-    assert "<mo>&#x2212;</mo><mrow><mi>g</mi>" in g["feedback_html"]
-    assert "<mi>&#952;</mi>" in g["feedback_html"]
+    # the term and its correction typeset inline, as the student wrote them: minus g
+    # sin(theta), theta as a Greek letter
+    html = g["feedback_html"]
+    assert html.count('<math xmlns="http://www.w3.org/1998/Math/MathML" display="inline">') == 2
+    assert "<mo>-</mo><mi>g</mi>" in html and html.count("<mi>&#952;</mi>") == 2
+    assert 'display="block"' not in html
 
 
 def test_grade_a_named_quantity(client):

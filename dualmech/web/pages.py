@@ -100,8 +100,8 @@ of motion, or one equation</option>{options}</select>
 
 
 def _term(info, text: str, typeset: str | None) -> str:
-    if typeset:
-        return typeset
+    if typeset:   # the grader's MathML, set inline in the sentence
+        return typeset.replace('display="block"', 'display="inline"', 1)
     if info is None:
         return f"<code>{escape(text)}</code>"
     from .preview import term_mathml
