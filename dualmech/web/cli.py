@@ -52,6 +52,9 @@ def register(subparsers) -> argparse.ArgumentParser:
                    help="where batches and results are kept (default: %(default)s)")
     p.add_argument("--workers", type=int, default=None, metavar="N",
                    help="grading processes (default: every core)")
+    p.add_argument("--json", action="store_true",
+                   help="print the address, the teacher's token and the problems as one JSON "
+                        "line at start")
     p.set_defaults(func=handle)
     return p
 
@@ -71,7 +74,7 @@ def handle(args: argparse.Namespace) -> int:
     from .server import serve
     try:
         serve(args.host, args.port, args.problems, token=args.token, data=args.data,
-              workers=args.workers)
+              workers=args.workers, as_json=args.json)
     except ValueError as exc:
         print(f"dualmech serve: error: {exc}", file=sys.stderr)
         return 2

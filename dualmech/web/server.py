@@ -29,7 +29,7 @@ def is_loopback(host: str) -> bool:
 
 def serve(host: str = "127.0.0.1", port: int = 8000, problems: Sequence[str] | None = None,
           *, token: str | None = None, data: str | Path = "dualmech-data",
-          workers: int | None = None, out=sys.stdout) -> None:
+          workers: int | None = None, out=sys.stdout, as_json: bool = False) -> None:
     """Serve the pages and the API until interrupted (see :func:`.app.create_app`).
 
     ``token`` is the teacher's; a random one is made and printed when none is given.
@@ -52,6 +52,17 @@ def serve(host: str = "127.0.0.1", port: int = 8000, problems: Sequence[str] | N
     app = create_app(problems, data=data, token=token, workers=workers)
     shown = f"[{host}]" if ":" in host else host
     n = len(app.state.server.served)
+    if as_json:
+        import json
+        print(json.dumps({"url": f"http://{shown}:{port}/", "teacher":
+                          f"http://{shown}:{port}/teacher", "token": token,
+                          "problems": list(app.state.server.served),
+                          "data": str(Path(data).resolve()),
+                          "loopback": is_loopback(host)}), file=out)
+        out.flush()
+        uvicorn.run(app, host=host, port=port, log_level="warning", timeout_keep_alive=5,
+                    limit_concurrency=1000, h11_max_incomplete_event_size=16 * 1024)
+        return
     print(f"dualmech: serving {n} problem{'s' if n != 1 else ''} on "
           f"http://{shown}:{port}/  (data in {Path(data).resolve()})", file=out)
     print(f"dualmech: teacher page http://{shown}:{port}/teacher  token: {token}", file=out)
