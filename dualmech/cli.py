@@ -169,8 +169,10 @@ def build_parser() -> argparse.ArgumentParser:
 
     from .grade.cli import register as _register_grade
     from .numeric.commands import register as _register_numeric
+    from .web.cli import register as _register_web
     _register_grade(sub)
     _register_numeric(sub)
+    _register_web(sub)
     return parser
 
 
