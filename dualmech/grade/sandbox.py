@@ -102,8 +102,10 @@ def _invalid(problem, quantity, answer, summary: str) -> Grade:
     return Grade(str(problem), quantity or "auto", "", shown[:1000], "invalid", summary)
 
 
-def _grade_here(grader, problem, answer, quantity, about, memory_mb) -> Grade:
-    """Grade with the memory ceiling lowered for just this answer."""
+def _grade_here(grader, problem, answer, quantity, about, memory_mb) -> tuple[Grade, bool]:
+    """Grade with the memory ceiling lowered for just this answer; ``(grade, healthy)``,
+    ``healthy`` false when the ceiling was hit mid-computation (caches may then hold a
+    half-built entry)."""
     restore = _limit_memory(memory_mb)
     try:
         result = grader.grade(answer, quantity, about)
@@ -112,8 +114,8 @@ def _grade_here(grader, problem, answer, quantity, about, memory_mb) -> Grade:
     finally:
         restore()
     if result is None:
-        result = too_costly(problem, answer, quantity, f"more than {memory_mb} MB")
-    return result
+        return too_costly(problem, answer, quantity, f"more than {memory_mb} MB"), False
+    return result, True
 
 
 def _serve(conn) -> None:
@@ -137,9 +139,9 @@ def _serve(conn) -> None:
             conn.send(("done", _invalid(problem, quantity, answer, text)))
             continue
         conn.send(("start",))
-        result = _grade_here(grader, problem, answer, quantity, about, memory_mb)
-        conn.send(("done", result))
-        if result.status == "invalid" and result.summary.startswith("too costly"):
+        result, healthy = _grade_here(grader, problem, answer, quantity, about, memory_mb)
+        conn.send(("done", result, healthy))
+        if not healthy:
             return   # caches may hold a half-built entry: the parent starts a fresh worker
 
 
@@ -305,7 +307,9 @@ class GradingPool:
             return _discard(worker), too_costly(problem, answer, quantity,
                                                 f"{self.seconds:g} s or {self.memory_mb} MB",
                                                 self.limits)
-        if not worker.proc.is_alive() or message[1].summary.startswith("too costly"):
+        # a refusal by the cost model left the worker as it was: keep it warm
+        healthy = message[2] if len(message) > 2 else True
+        if not healthy or not worker.proc.is_alive():
             worker = _discard(worker)
         return worker, message[1]
 
@@ -414,7 +418,7 @@ def _grade_forked(problem, answer, quantity, about, seconds, memory_mb) -> Grade
         code = 0
         try:
             os.close(read)
-            result = _grade_here(grader, problem, answer, quantity, about, memory_mb)
+            result, _ = _grade_here(grader, problem, answer, quantity, about, memory_mb)
             data = pickle.dumps(result)
             view = memoryview(data)
             while view:
