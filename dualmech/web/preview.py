@@ -29,14 +29,13 @@ import html
 from fractions import Fraction
 
 import sympy as sp
-from sympy.printing.mathml import mathml
 
 from dualmech.grade.audit import dimension_issues
 from dualmech.grade.formula import Formula, difference
 from dualmech.grade.parser import LIMITS, AnswerError, Limits, Node, parse
 from dualmech.grade.vocabulary import UnknownName
 from dualmech.kinematics import t
-from dualmech.report.mathml import display_symbols
+from dualmech import notation
 
 __all__ = ["preview", "term_mathml", "PREVIEW_CHARS"]
 
@@ -208,7 +207,7 @@ class _Writer:
                     sp.Function(ref.base)(t)
             else:
                 expr = ref.symbol
-            self._symbols[key] = mathml(display_symbols(expr), printer="presentation")
+            self._symbols[key] = notation.mathml(expr)
         return self._symbols[key]
 
 
