@@ -1,6 +1,6 @@
 """Feedback as the student wrote the answer: their notation for rates (primes, dots, ``_d``,
 ``\\dot{}``), the aliases they used (``l`` for the source's ``a``), and every term as MathML for
-web pages (:mod:`dualmech.report.mathml`).
+web pages (:func:`dualmech.notation.mathml`).
 
 Example
 -------
@@ -81,13 +81,15 @@ def _mathml(ctx: ProblemContext, text: str) -> str:
     """MathML of a term the feedback wrote (read back by the answer parser), or ''."""
     if not text:
         return ""
-    from ..report.mathml import expression
+    from .. import notation
     from .parser import parse
     try:
         expr = Formula.from_node(parse(text)[0].lhs, ctx.vocabulary).sympy()
     except Exception:   # a display aid only: a term the parser cannot read has no MathML
         return ""
-    return expression(expr.xreplace(_functions(ctx)))
+    body = notation.mathml(expr.xreplace(_functions(ctx)))
+    return (f'<math xmlns="http://www.w3.org/1998/Math/MathML" display="block">'
+            f"<mrow>{body}</mrow></math>")
 
 
 def _functions(ctx: ProblemContext) -> dict:
