@@ -65,7 +65,8 @@ class _Hog:
 
 
 def test_memory_ceiling_stops_an_allocation():
-    g = _grade_here(_Hog(), "p", "x", None, None, 256)
+    g, healthy = _grade_here(_Hog(), "p", "x", None, None, 256)
+    assert not healthy                  # the worker that hit the ceiling is retired
     assert g.status == "invalid" and g.summary.startswith("too costly to grade")
     assert "256 MB" in g.summary
     big = bytearray(300 * 2 ** 20)      # the ceiling was lifted again afterwards

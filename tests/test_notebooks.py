@@ -48,7 +48,8 @@ def test_every_family_has_a_notebook():
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])
-def test_notebook_runs_and_shows_its_findings(path):
+def test_notebook_runs_and_shows_its_findings(path, monkeypatch):
+    monkeypatch.delenv("MPLBACKEND", raising=False)   # the kernel draws inline, as in Jupyter
     book = nbformat.read(path, as_version=4)
     client = nbclient.NotebookClient(book, timeout=120, kernel_name="python3",
                                      resources={"metadata": {"path": str(path.parent.parent)}})

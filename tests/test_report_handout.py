@@ -2,8 +2,9 @@
 them; summary linked to sections; sources named by course; one caption per chart; charts
 that have nothing to show say so.
 
-Hand facts: restrained_pendulum's printed dissipation function R is wrong (the source's own
-text; the report finds it, tests/test_restrained_pendulum.py); the block on the wedge's
+Hand facts: read with a horizontal spring and dashpot (restrained_pendulum_horizontal, a rung
+above the source's own arc-length model), the source's printed U, R and equation of motion are
+wrong -- right only to first order in theta (tests/test_restrained_pendulum.py); the block on the wedge's
 equation along the incline is m (q1'' + cos(alpha) q2'' - g sin(alpha)) = 0 once
 sin^2 + cos^2 = 1 is used; the wheel on its pivot in steady motion has no vertical
 acceleration, so the floor carries its weight: F_z = m g = 2 kg * 9.81 m/s^2 = 19.62 N.
@@ -20,7 +21,7 @@ from dualmech.report import write_report
 from dualmech.report.charts import trajectory_chart
 from dualmech.report.pages import _shortest
 
-NAMES = ("restrained_pendulum", "block_on_wedge")
+NAMES = ("restrained_pendulum_horizontal", "block_on_wedge")
 
 
 @pytest.fixture(scope="module")
