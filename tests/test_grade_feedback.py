@@ -135,6 +135,30 @@ def test_a_map_the_student_states():
     assert grade("simple_pendulum", "M*s'' + M*g*sin(s/a) = 0 where s = a*theta").right
     r = grade("simple_pendulum", "a*s'' - g*a*sin(s/a) = 0; where s = a*theta")
     assert r.status == "wrong" and [e.kind for e in r.edits] == ["sign"], str(r)
+    # named in the student's coordinate, as they wrote it (the map is affine: inverted exactly)
+    (e,) = r.edits
+    assert e.term == "-a*g*sin(s/a)" and e.correct == "a*g*sin(s/a)", str(r)
+    assert "theta" not in e.sentence(), e.sentence()
+    # dimensions audited in the student's coordinate (s is a length by its map)
+    r = grade("simple_pendulum", "M*a*s'' + g*a*s = 0; where s = a*theta")
+    assert any("M*a*s''" in d and "L^2 M T^-2" in d for d in r.dimension_issues), str(r)
+    assert "theta" not in str(r), str(r)
+    assert set(r.state) >= {"s", "s'"} and "theta" not in r.state, r.state
+
+
+def test_relative_coordinates_the_student_states_are_diagnosed_in_them():
+    # falling_container with u = x2 - x1 (hand derivation from problems/falling_container.py's
+    # Lagrangian in x1, x2): m1 x1'' - c u' - k (u - l0) + m1 g = 0 and
+    # m2 (x1'' + u'') + c u' + k (u - l0) + m2 g = 0.  The damper's sign flipped in the first.
+    second = "m2*(x1''+u'') + c*u' + k*(u-l0) + m2*g = 0"
+    assert grade("falling_container", f"m1*x1'' - c*u' - k*(u - l0) + m1*g = 0; {second}; "
+                 "where u = x2 - x1").right
+    r = grade("falling_container", f"m1*x1'' + c*u' - k*(u - l0) + m1*g = 0; {second}; "
+              "where u = x2 - x1")
+    assert r.status == "wrong" and len(r.edits) == 1, str(r)
+    (e,) = r.edits
+    assert (e.kind, e.term, e.correct) == ("sign", "c*u'", "-c*u'"), str(r)
+    assert "x2" not in str(r), str(r)
 
 
 def test_a_map_that_is_not_invertible_is_refused_with_the_reason():

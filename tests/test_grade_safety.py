@@ -236,7 +236,11 @@ def test_two_rod_linkage_x_form_is_sampled_in_its_domain():
     # 0 < theta < pi; a point with sin(theta) < 0 would call it wrong
     g = Grader.of("two_rod_linkage", limits=ROOMY)
     assert g.grade(X_FORM).status == "right"
-    assert g.grade(X_FORM.replace("+ k*x", "- k*x")).status == "wrong"
+    r = g.grade(X_FORM.replace("+ k*x", "- k*x"))
+    assert r.status == "wrong"
+    # and diagnosed in x, against the lagrange_x row, though the student scaled the
+    # denominators their own way (8 l^2 - 2 (l0 + x)^2 where the model has 4 l^2 - ...)
+    assert [(e.kind, e.term, e.correct) for e in r.edits] == [("sign", "-k*x", "k*x")], str(r)
 
 
 # -- static rows ----------------------------------------------------------------------------

@@ -225,7 +225,8 @@ class Formula:
     symbols it uses).  :meth:`evaluate` gives its value at an :class:`Env`.
     """
 
-    __slots__ = ("tree", "exact", "degree", "symbols", "_fn", "_sympy", "text", "_parts")
+    __slots__ = ("tree", "exact", "degree", "symbols", "_fn", "_sympy", "text", "_parts",
+                 "student")
 
     def __init__(self, tree, text: str = ""):
         self.tree = tree
@@ -234,6 +235,9 @@ class Formula:
         self.exact = True
         self._sympy = None
         self._parts = None
+        #: ``(formula as written, StudentMap)`` when this formula is the student's answer
+        #: rewritten from their own coordinates (:mod:`.maps`), else None
+        self.student = None
         self.degree = sum(self._scan(tree))
         self._fn = self._compile(tree)
 

@@ -213,7 +213,9 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
     name = (lambda i: f"equation {i + 1}") if k > 1 else (lambda i: "the equation")
     dims = []
     for i, f in enumerate(formulas):
-        for issue in dimension_issues(f.tree, ctx.dims, ctx.names):
+        written, smap = f.student or (f, None)
+        seen = smap.view(ctx) if smap is not None else ctx
+        for issue in dimension_issues(written.tree, seen.dims, seen.names):
             dims.append(f"{name(i)}: {issue}" if k > 1 else issue)
     unknowns = set(ctx.qdd) | set(ctx.reactions) | {
         s for s in ctx.derived_formulas() if s.name.endswith("_ddot")}
@@ -385,19 +387,33 @@ def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline,
         deadline.check()
         d = None
         own = answer_coordinates(ctx, formulas[i].symbols)
-        if formulas[i].expanded_size() <= _MAX_FEEDBACK_TERMS:
-            d = best_edit(formulas[i].sympy(),
-                          lambda mode: equation_targets(ctx, mode, own), ctx,
-                          equation=i if k > 1 else None, parts=formulas[i].written_terms())
+        mine, seen = formulas[i], ctx
+        written, smap = formulas[i].student or (None, None)
+        if written is not None and smap.inverse(ctx, written.symbols) is not None:
+            # the student's own coordinates (``where s = a*theta``): diagnosed in them
+            mine, seen = written, smap.view(ctx)
+
+            def targets(mode, smap=smap, symbols=written.symbols):
+                return smap.targets(ctx, symbols, mode)
+        else:
+            def targets(mode, own=own):
+                return equation_targets(ctx, mode, own)
+        if mine.expanded_size() <= _MAX_FEEDBACK_TERMS:
+            d = best_edit(mine.sympy(), targets, seen,
+                          equation=i if k > 1 else None, parts=mine.written_terms())
         if d is not None:
             target = _target_words(d, ctx)
+            if seen is not ctx:
+                target += f", written in {', '.join(smap.names)}"
             where = _equation_name(d) if k > 1 else ""
-            edits += for_student(ctx, d.edits, formulas[i].text,
+            edits += for_student(seen, d.edits, formulas[i].text,
                                  f"{name(i)} ({where})" if where else "")
             details.append(f"{name(i)} is closest to {target}")
         elif not state:
             try:
                 state, value, _ = concrete_state(ctx, formulas[i], None, need, own)
+                if written is not None:
+                    state = smap.state(ctx, state, written.symbols)
                 style = notation_of(formulas[i].text, coords)
                 state = {restyle(key, coords, style): v for key, v in state.items()}
                 details.append(f"no small edit explains {name(i)}: on the motion, at the "

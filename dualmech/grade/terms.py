@@ -132,7 +132,12 @@ def term_table(expr, ctx: ProblemContext, label: str = "", mode: str = "trig",
                 continue
             coeff, key = [], []
             for f in sp.Mul.make_args(term):
-                (key if f.free_symbols & states else coeff).append(f)
+                if f.free_symbols & states:
+                    c, f = _canonical_factor(f, states)
+                    coeff.append(c)
+                    key.append(f)
+                else:
+                    coeff.append(f)
             k = sp.Mul(*key)
             local[k] = local.get(k, 0) + sp.Mul(*coeff)
         for k, c in local.items():
@@ -150,6 +155,33 @@ def term_table(expr, ctx: ProblemContext, label: str = "", mode: str = "trig",
         elif len(written) >= 2:
             hidden[k] = (sp.Integer(0), 0, written)
     return TermTable(label, expr, out, hidden, mode)
+
+
+def _canonical_factor(f, states):
+    """``(c, g)`` with ``f = c*g``: a power of a sum of state terms (``1/(4*l**2 - (l0 +
+    x)**2)``, ``sqrt(...)``) made canonical, so that the same factor written with another
+    scale or sign (``2*l**2 - ...``, ``-(x**2 + ...)``) is the same state part; the scale goes
+    to the coefficient.  A sum under an integer power is made monic in the state symbols (its
+    leading coefficient, a parameter expression, leaves it); under any other power only its
+    positive numeric content leaves it (no sign, so that no root of a negative number is
+    taken)."""
+    base, exp = f.as_base_exp()
+    if not base.is_Add:
+        return sp.Integer(1), f
+    content, prim = base.as_content_primitive()
+    if exp.is_Integer:
+        syms = sorted(base.free_symbols & states, key=str)
+        try:
+            lead = sp.Poly(prim, *syms).LC()
+        except sp.PolynomialError:
+            lead = sp.Integer(1)
+        if lead.free_symbols & states or lead == 0:
+            lead = sp.Integer(1)
+        content = content * lead
+        prim = sp.expand(prim / lead)
+    if content == 1:
+        return sp.Integer(1), f
+    return content ** exp, prim ** exp
 
 
 def coefficient_env(ctx: ProblemContext):
