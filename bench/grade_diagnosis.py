@@ -37,10 +37,6 @@ def main() -> None:
         g = Grader.of(name)
         try:
             ctx = g.context
-            if ctx.method != "exact":
-                skipped.append(f"{name} (decided by the comparator: no term edits)")
-                continue
-            ctx.points("exact")
         except GradingUnavailable as exc:
             skipped.append(f"{name} ({exc})")
             continue

@@ -254,7 +254,13 @@ def test_copying_machine_static_row_is_graded():
     # tautology says nothing
     g = Grader.of("copying_machine", limits=ROOMY)
     assert g.grade(COPYING).status == "right"
-    assert g.grade(COPYING.replace("+ a^2*k1", "- a^2*k1")).status == "wrong"
+    r = g.grade(COPYING.replace("+ a^2*k1", "- a^2*k1"))
+    assert r.status == "wrong"
+    # explained equation by equation: the static row's flipped spring is named, the right
+    # first equation is left alone
+    assert [(e.kind, e.term, e.correct) for e in r.edits] == [
+        ("sign", "-a^2*k1*theta", "a^2*k1*theta")], str(r)
+    assert "equation 1" not in str(r), str(r)
     assert g.grade("L*k2*(L*theta - y) + a^2*k1*theta = 0").status == "right"
     r = g.grade("0 = 0")
     assert r.status == "wrong" and "holds for any motion" in r.summary

@@ -183,7 +183,9 @@ def _reaction_forms(ctx) -> list:
             coeff = sp.diff(e, u)
             if u in done or coeff.free_symbols & react or coeff == 0:
                 continue
-            form = sp.expand(-(e - coeff * u) / coeff)
+            # as a person writes it: sin^2 + cos^2 of one angle read as 1 (a row as the
+            # derivation leaves it may carry them, wheel_on_pivot's spin and precession)
+            form = sp.expand(sp.trigsimp(-(e - coeff * u) / sp.trigsimp(coeff)))
             if len(sp.Add.make_args(form)) >= 2:
                 out.append((u, form))
                 done.add(u)

@@ -247,8 +247,14 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
         try:
             wrong = _off_at_real_points(ctx, formulas, [None] * k) if v.status == "wrong" \
                 else []
-        except GradingUnavailable:   # no real points (a static row): the verdict stands alone
-            wrong = []
+        except GradingUnavailable:      # (before ValueError: it is one)
+            # no free real states (a static row ties the coordinates): each equation of a
+            # wrong set is asked on its own whether it follows from the motion
+            wrong = [0] if k == 1 else [
+                i for i, f in enumerate(formulas)
+                if slow_equations(ctx, [f], True, []).status != "right"]
+        except (TypeError, ValueError, ZeroDivisionError):
+            wrong = list(range(k))
         try:
             if wrong:
                 fb = _wrong_equations(ctx, formulas, wrong, dims, method, 1, name, deadline,
@@ -475,7 +481,10 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
         v = slow_expression(ctx, comps, refs, dims, quantity.description)
         if v.status == "wrong":
             try:
-                bad = _off_at_real_points(ctx, comps, refs)
+                try:
+                    bad = _off_at_real_points(ctx, comps, refs)
+                except (GradingUnavailable, TypeError, ValueError, ZeroDivisionError):
+                    bad = list(range(len(comps)))
                 fb = _expression_feedback(ctx, comps, refs, quantity, bad, deadline,
                                           need_for(ctx, comps + refs))
                 v.edits, v.details, v.state = fb
@@ -555,10 +564,7 @@ def _off_at_real_points(ctx, formulas, refs) -> list[int]:
     points -- only to choose what to explain after the comparator's verdict."""
     import mpmath
     from ..exact import MP_DIGITS
-    try:
-        points = ctx.points("mpmath")
-    except (GradingUnavailable, TypeError, ValueError, ZeroDivisionError):
-        return list(range(len(formulas)))
+    points = ctx.points("mpmath")       # GradingUnavailable: the caller decides
     out = []
     with mpmath.workdps(MP_DIGITS):
         for i, (f, r) in enumerate(zip(formulas, refs)):
@@ -633,12 +639,14 @@ def _solved_rows(ctx, unknown) -> list:
     kind = set(ctx.reactions) if unknown in ctx.reactions else set(ctx.qdd)
     for m in ctx.models.values():
         for e in m.equations:
-            e = ctx.plain(e)
+            e = sp.expand(ctx.plain(e))    # reactions that cancel in the row are not in it
             others = (e.free_symbols & kind) - {unknown}
             if unknown in e.free_symbols and not others:
                 coeff = sp.diff(e, unknown)
                 if not coeff.free_symbols & kind:
-                    out.append(sp.expand(-(e - coeff * unknown) / coeff))
+                    # sin^2 + cos^2 of one angle read as 1, as a person writes the form
+                    out.append(sp.expand(sp.trigsimp(-(e - coeff * unknown)
+                                                     / sp.trigsimp(coeff))))
     return out[:6]
 
 

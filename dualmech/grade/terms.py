@@ -9,13 +9,15 @@ Coefficients are compared exactly, by value at one of the context's random point
 """
 from __future__ import annotations
 
+import random
 from dataclasses import dataclass, field
+from fractions import Fraction
 
 import sympy as sp
 
 from ..kinematics import t
-from .context import ProblemContext, zero
-from .formula import Formula
+from .context import GradingUnavailable, ProblemContext, zero
+from .formula import Env, Formula, seeded_draw
 
 __all__ = ["TermTable", "term_table", "equation_targets", "expression_tables",
            "coefficient_env", "state_symbols", "MODES", "answer_coordinates"]
@@ -185,7 +187,18 @@ def _canonical_factor(f, states):
 
 
 def coefficient_env(ctx: ProblemContext):
-    return ctx.memo("coefficient_env", lambda: ctx.points(ctx.method)[0].env())
+    """Where coefficients (free of the state) are compared: the parameters of the context's
+    first point, or -- a problem whose static rows leave no free states -- parameters drawn
+    for this alone (deterministic per problem)."""
+    def build():
+        try:
+            return ctx.points(ctx.method)[0].env()
+        except GradingUnavailable:
+            rng = random.Random(f"{ctx.problem.name}:coefficients")
+            values = {p: Fraction(rng.randrange(2, 1 << 20), rng.randrange(1, 1 << 10))
+                      for p in ctx.parameters}
+            return Env(values, True, draw=seeded_draw(f"{ctx.problem.name}:coefficients"))
+    return ctx.memo("coefficient_env", build)
 
 
 def equation_targets(ctx: ProblemContext, mode: str = "trig",
