@@ -34,10 +34,9 @@ from ..verify import linalg as la
 from .answers import Quantity
 from .context import GradingUnavailable, Point, ProblemContext, build_seconds, zero
 from .feedback import Diagnosis, best_edit, concrete_state
-from .notation import coordinate_names, for_student
+from .notation import for_student, in_their_words
 from .terms import answer_coordinates, equation_targets, expression_tables, term_table
-from .audit import (dimension_issues, display, expected_dimension, label_words, notation_of,
-                    restyle)
+from .audit import dimension_issues, display, expected_dimension, label_words
 from .formula import Formula
 from .parser import AnswerError
 from .result import Edit
@@ -215,8 +214,9 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
     for i, f in enumerate(formulas):
         written, smap = f.student or (f, None)
         seen = smap.view(ctx) if smap is not None else ctx
+        mine = in_their_words(seen, f.text)
         for issue in dimension_issues(written.tree, seen.dims, seen.names):
-            dims.append(f"{name(i)}: {issue}" if k > 1 else issue)
+            dims.append(mine(f"{name(i)}: {issue}" if k > 1 else issue))
     unknowns = set(ctx.qdd) | set(ctx.reactions) | {
         s for s in ctx.derived_formulas() if s.name.endswith("_ddot")}
     for i, f in enumerate(formulas):
@@ -388,7 +388,6 @@ def _words(model: str, labels: list) -> str:
 def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline, need):
     edits, details, state = [], [], {}
     k = len(formulas)
-    coords = coordinate_names(ctx)
     for i in wrong:
         deadline.check()
         d = None
@@ -420,8 +419,8 @@ def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline,
                 state, value, _ = concrete_state(ctx, formulas[i], None, need, own)
                 if written is not None:
                     state = smap.state(ctx, state, written.symbols)
-                style = notation_of(formulas[i].text, coords)
-                state = {restyle(key, coords, style): v for key, v in state.items()}
+                mine = in_their_words(seen, formulas[i].text)
+                state = {mine(key): v for key, v in state.items()}
                 details.append(f"no small edit explains {name(i)}: on the motion, at the "
                                f"state below, its two sides differ by {value:.6g} (they must "
                                "be equal)")
@@ -472,7 +471,8 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
     dims = []
     for j, (c, r) in enumerate(zip(comps, refs)):
         expected = expected_dimension(r, ctx.dims)
-        for issue in dimension_issues(c.tree, ctx.dims, ctx.names, expected):
+        mine = in_their_words(ctx, c.text)
+        for issue in map(mine, dimension_issues(c.tree, ctx.dims, ctx.names, expected)):
             dims.append(f"component {j + 1}: {issue}" if len(refs) > 1 else issue)
     method = method_for(ctx, comps + refs)
     if method == "slow":
@@ -552,6 +552,8 @@ def _expression_feedback(ctx, comps, refs, quantity, bad_j, deadline, need):
             what = f"component {j + 1}" if len(refs) > 1 else "it"
             try:
                 state, a, b = concrete_state(ctx, comps[j], refs[j], need)
+                mine = in_their_words(ctx, comps[j].text)
+                state = {mine(key): v for key, v in state.items()}
                 details.append(f"no small edit explains {what}: at the state below the "
                                f"answer is {a:.6g}, the right value {b:.6g}")
             except (GradingUnavailable, TypeError, ValueError, ZeroDivisionError):

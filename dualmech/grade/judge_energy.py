@@ -26,6 +26,7 @@ from .energies import LagrangeParts, euler_lagrange
 from .feedback import best_edit, concrete_state
 from .terms import term_table
 from .audit import dimension_issues, reduced
+from .notation import in_their_words
 from .formula import Formula
 from .judge import Deadline, Verdict, factor_edit, method_for
 from .parser import AnswerError
@@ -58,7 +59,8 @@ def _check_symbols(ctx, f: Formula, quantity: Quantity, velocities: bool = True)
 
 
 def _energy_dims(ctx, f: Formula) -> list:
-    return dimension_issues(f.tree, ctx.dims, ctx.names, reduced(ENERGY))
+    mine = in_their_words(ctx, f.text)
+    return [mine(s) for s in dimension_issues(f.tree, ctx.dims, ctx.names, reduced(ENERGY))]
 
 
 def _edits(ctx, f: Formula, target, deadline):
@@ -280,7 +282,8 @@ def judge_force(ctx: ProblemContext, comps: list, quantity: Quantity,
     for f, j in zip(comps, js):
         expected = reduced(ENERGY)
         expected = tuple(sorted(_sub(expected, ctx.dims[ctx.states[j].q]).items()))
-        dims += dimension_issues(f.tree, ctx.dims, ctx.names, expected)
+        dims += map(in_their_words(ctx, f.text),
+                    dimension_issues(f.tree, ctx.dims, ctx.names, expected))
     drives, optional = parts.keys("drive"), parts.keys("velocity", "potential")
     method = _exact(ctx, comps + [x for k in drives + optional for x in parts.formulas[k]])
     envs = [p.env() for p in ctx.points(method)]

@@ -21,7 +21,7 @@ from .audit import notation_of, restyle
 from .context import ProblemContext
 from .formula import Formula
 
-__all__ = ["for_student", "coordinate_names"]
+__all__ = ["for_student", "coordinate_names", "in_their_words"]
 
 
 def coordinate_names(ctx: ProblemContext) -> list[str]:
@@ -45,6 +45,27 @@ def _coordinate_states(ctx: ProblemContext) -> list:
 def for_student(ctx: ProblemContext, edits: list, text: str = "", where: str = "") -> list:
     """``edits`` in the notation of the answer ``text`` (``thetadot`` if the student wrote
     dots, ...), named ``where`` (``the theta equation``), with each term as MathML."""
+    mine = in_their_words(ctx, text)
+    out = []
+    for e in edits:
+        out.append(replace(e, term=mine(e.term), correct=mine(e.correct),
+                           detail=mine(e.detail),
+                           where=where or e.where,
+                           term_html=_mathml(ctx, e.term), correct_html=_mathml(ctx, e.correct)))
+    return out
+
+
+def in_their_words(ctx: ProblemContext, text: str):
+    """A function turning feedback text (terms written ``theta'``, ``^``, the problem's own
+    symbols) into the notation of the answer ``text``: its way of writing rates and the
+    aliases it used.
+
+    >>> from dualmech.grade.context import ProblemContext
+    >>> from dualmech.problems import get
+    >>> ctx = ProblemContext.of(get("simple_pendulum"))
+    >>> in_their_words(ctx, "l*thetaddot + g*sin(theta) = 0")("`a*theta''` has L")
+    '`l*thetaddot` has L'
+    """
     coords = coordinate_names(ctx)
     style = notation_of(text, coords) if text else "primes"
     used = _aliases_used(ctx, text)
@@ -55,13 +76,7 @@ def for_student(ctx: ProblemContext, edits: list, text: str = "", where: str = "
             s = re.sub(r"(?<![A-Za-z0-9_'])" + re.escape(target) + r"(?![A-Za-z0-9_])",
                        alias, s)
         return s
-    out = []
-    for e in edits:
-        out.append(replace(e, term=mine(e.term), correct=mine(e.correct),
-                           detail=mine(e.detail),
-                           where=where or e.where,
-                           term_html=_mathml(ctx, e.term), correct_html=_mathml(ctx, e.correct)))
-    return out
+    return mine
 
 
 def _aliases_used(ctx: ProblemContext, text: str) -> dict:

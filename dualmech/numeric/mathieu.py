@@ -20,7 +20,6 @@ from __future__ import annotations
 from typing import Callable
 
 import numpy as np
-from scipy.optimize import brentq
 
 __all__ = ["trace", "boundary", "SERIES", "series", "stable", "draw_chart"]
 

@@ -17,7 +17,6 @@ g/cos(x)
 """
 from __future__ import annotations
 
-from fractions import Fraction
 
 import sympy as sp
 
