@@ -93,7 +93,27 @@ def catalogue(ctx: ProblemContext) -> dict[str, Quantity]:
     return ctx.memo("catalogue", lambda: _catalogue(ctx))
 
 
+def _standard(ctx: ProblemContext) -> dict[str, Quantity]:
+    """The quantities every problem has (equations, accelerations, reactions, energies,
+    generalised forces) -- without reading the printed answers, which costs more than
+    grading an answer; a printed answer never takes one of these names."""
+    return ctx.memo("standard quantities", lambda: _standard_quantities(ctx))
+
+
 def _catalogue(ctx: ProblemContext) -> dict[str, Quantity]:
+    cat = dict(_standard(ctx))
+    names = set(cat)
+    for extra in (_published(ctx), _declared(ctx)):
+        for name, q in extra.items():   # never hide a reaction, an energy, ...
+            if name in names:
+                name = f"{name} (printed)" if q.description.startswith("printed") else \
+                    f"{name} (declared)"
+                q = Quantity(name, q.kind, q.description, q.reference, q.basis)
+            cat[name] = q
+    return cat
+
+
+def _standard_quantities(ctx: ProblemContext) -> dict[str, Quantity]:
     cat: dict[str, Quantity] = {}
     acc = frozenset(ctx.qdd) | frozenset(ctx.reactions)
     cat["eom"] = Quantity("eom", "equations", "the equations of motion (a set)")
@@ -127,13 +147,6 @@ def _catalogue(ctx: ProblemContext) -> dict[str, Quantity]:
                             ", ".join(f"Q_{s.name}" for s in ctx.states) + "]", forbid=acc)
     cat["linearised"] = Quantity("linearised", "equations",
                                  "the equations linearised about an equilibrium (`about`)")
-    for extra in (_published(ctx), _declared(ctx)):
-        for name, q in extra.items():   # never hide a reaction, an energy, ...
-            if name in cat:
-                name = f"{name} (printed)" if q.description.startswith("printed") else \
-                    f"{name} (declared)"
-                q = Quantity(name, q.kind, q.description, q.reference, q.basis)
-            cat[name] = q
     return cat
 
 
@@ -176,9 +189,14 @@ def _declared(ctx) -> dict:
 def find_quantity(ctx: ProblemContext, name: str) -> Quantity:
     """The quantity called ``name`` (exact, alias, or a coordinate's acceleration written any
     accepted way, e.g. ``thetaddot``); :class:`UnknownQuantity` lists the choices."""
-    cat = catalogue(ctx)
     name = name.strip()
-    for key in (name, _ALIASES.get(name), _ALIASES.get(name.lower())):
+    keys = (name, _ALIASES.get(name), _ALIASES.get(name.lower()))
+    standard = _standard(ctx)
+    for key in keys:
+        if key and key in standard:
+            return standard[key]
+    cat = catalogue(ctx)
+    for key in keys:
         if key and key in cat:
             return cat[key]
     if name.startswith(("equation:", "eom:")):

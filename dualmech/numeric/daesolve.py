@@ -30,12 +30,13 @@ are counted one by one.
 
 Example
 -------
->>> from dualmech.problems import get                                           # doctest: +SKIP
->>> from dualmech.numeric.formulations import formulations                      # doctest: +SKIP
->>> f = {g.name: g for g in formulations(get("pendulum_particle"),
-...      stabilisations=("ggl",))[0]}["cartesian (DAE, GGL index 2)"]           # doctest: +SKIP
->>> f.run("IDA", (0, 1), [0, 1], rtol=1e-8).success                             # doctest: +SKIP
-True
+>>> from dualmech.problems import get
+>>> from dualmech.numeric.formulations import formulations
+>>> forms, _ = formulations(get("pendulum_particle"), stabilisations=("ggl",))
+>>> f = {g.name: g for g in forms}["cartesian (DAE, GGL index 2)"]
+>>> r = f.run("IDA", (0, 1), [0, 0.5, 1], rtol=1e-8)
+>>> r.success, r.y.shape, r.steps > 10
+(True, (4, 3), True)
 """
 from __future__ import annotations
 
