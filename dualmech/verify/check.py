@@ -323,7 +323,8 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
         pass
     elif j.equivalent:
         published = check_published(problem, points=points, seed=seed, context=ctx,
-                                    limits=limits, claims=claims_of(problem))
+                                    limits=limits, claims=claims_of(problem),
+                                    printed=printed)
     else:
         published = [PublishedVerdict(p.label, p.where, "unchecked",
                                       "the derivations disagree; fix them before judging "

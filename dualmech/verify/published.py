@@ -71,14 +71,15 @@ class PublishedVerdict:
 
 
 def check_published(problem, points: int = 8, seed: int = 0, context: Context | None = None,
-                    limits: Budget | None = None, claims: dict | None = None
-                    ) -> list[PublishedVerdict]:
+                    limits: Budget | None = None, claims: dict | None = None,
+                    printed: list | None = None) -> list[PublishedVerdict]:
     """Verdict on every printed answer of ``problem`` (see :class:`dualmech.problem.Published`).
 
     ``limits`` is the display budget for explaining wrong answers (when first read);
-    ``claims`` as for :func:`~dualmech.verify.verdicts.judge`."""
+    ``claims`` as for :func:`~dualmech.verify.verdicts.judge`; ``printed`` the answers when
+    the caller has already built them (``problem.published()`` by default)."""
     limits = limits or Budget()
-    pubs = problem.published()
+    pubs = problem.published() if printed is None else printed
     if not pubs:
         return []
     models = problem.models()
