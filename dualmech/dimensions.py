@@ -1,7 +1,11 @@
 """Physical dimensions of symbols and a term-by-term audit of expressions.
 
-Dimensions are :class:`sympy.physics.units.Dimension` objects, reduced to base exponents with
-sympy's SI dimension system; angles count as dimensionless (radians).
+A :class:`Dimension` is an immutable product of powers of the base dimensions (mass, length,
+time, angle, current, temperature, amount of substance, luminous intensity), with rational
+exponents; problems combine the named ones (:data:`MASS`, :data:`FORCE`, ...) with ``*``, ``/``
+and ``**``.  :func:`reduce` turns one into base exponents; angles count as dimensionless there
+(radians).  A sympy ``sympy.physics.units.Dimension`` is accepted wherever a dimension is taken
+and converted (:func:`as_dimension`); sympy's units package is imported only then.
 
 Example
 -------
@@ -18,6 +22,7 @@ Example
 """
 from __future__ import annotations
 
+import numbers
 from collections import Counter
 from dataclasses import dataclass
 from fractions import Fraction
@@ -25,9 +30,6 @@ from typing import Mapping
 
 import symengine as se
 import sympy as sp
-from sympy.physics.units import Dimension
-from sympy.physics.units.definitions import dimension_definitions as _dd
-from sympy.physics.units.systems.si import dimsys_SI
 
 from ._algebra import to_se, to_sp
 from ._expr import as_expr, dotted
@@ -37,13 +39,201 @@ from .kinematics import t
 __all__ = ["Dimension", "MASS", "LENGTH", "TIME", "ANGLE", "FORCE", "TORQUE", "ENERGY",
            "DIMENSIONLESS", "VELOCITY", "ACCELERATION", "STIFFNESS", "DAMPING",
            "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA", "FREQUENCY",
-           "DimensionIssue", "audit", "audit_rows", "dimension_of", "dimension_reader", "format_dimension"]
+           "DimensionIssue", "as_dimension", "audit", "audit_rows", "dimension_of",
+           "dimension_reader", "format_dimension", "reduce"]
 
-MASS = _dd.mass
-LENGTH = _dd.length
-TIME = _dd.time
-ANGLE = _dd.angle
-DIMENSIONLESS = Dimension(1)
+#: the base dimensions, in the order :class:`Dimension` keeps them (sympy's SI names)
+BASES = ("mass", "length", "time", "angle", "current", "temperature", "amount_of_substance",
+         "luminous_intensity")
+_SYMBOLS = ("M", "L", "T", "angle", "I", "Theta", "N", "J")
+
+
+def _exponent(k, what: str) -> Fraction:
+    """``k`` as an exact Fraction: an int, a Fraction, any rational number (sympy's too) or
+    a float that is a simple fraction (``0.5``)."""
+    if isinstance(k, bool):
+        raise TypeError(f"{what} must be a rational number, got {k!r}.")
+    if isinstance(k, numbers.Rational):
+        return Fraction(int(k.numerator), int(k.denominator))
+    if isinstance(k, float):
+        f = Fraction(k)
+        if f.denominator <= 1000:
+            return f
+        raise TypeError(f"{what} must be a rational number, got the float {k!r}: write it "
+                        "as a Fraction.")
+    if getattr(k, "is_Rational", False):   # symengine's Integer and Rational
+        return Fraction(str(k))
+    raise TypeError(f"{what} must be a rational number, got {k!r} ({type(k).__name__}).")
+
+
+class Dimension:
+    """A physical dimension: rational powers of the base dimensions in :data:`BASES`.
+
+    Immutable and hashable; ``*``, ``/`` and ``**`` (rational exponents) combine dimensions,
+    a plain number counts as dimensionless, and two dimensions are equal when their base
+    exponents are.  Adding dimensions is an error: quantities of one dimension add, the
+    dimension stays.  ``str`` gives ``M L T^-2``; :func:`reduce` the exponents angle aside.
+
+    Example
+    -------
+    >>> from dualmech.dimensions import Dimension, MASS, LENGTH, TIME
+    >>> force = MASS * LENGTH / TIME**2
+    >>> force
+    Dimension(mass=1, length=1, time=-2)
+    >>> print(force, force**Fraction(1, 2))
+    M L T^-2 M^1/2 L^1/2 T^-1
+    >>> force == Dimension(mass=1, length=1, time=-2), force / force == Dimension()
+    (True, True)
+    """
+
+    __slots__ = ("_exps", "_hash")
+
+    def __init__(self, mass=0, length=0, time=0, angle=0, current=0, temperature=0,
+                 amount_of_substance=0, luminous_intensity=0):
+        exps = tuple(_exponent(e, f"the exponent of {name}") for name, e in zip(BASES, (
+            mass, length, time, angle, current, temperature, amount_of_substance,
+            luminous_intensity)))
+        object.__setattr__(self, "_exps", exps)
+        object.__setattr__(self, "_hash", hash(exps))
+
+    @classmethod
+    def _of(cls, exps: tuple) -> "Dimension":
+        d = object.__new__(cls)
+        object.__setattr__(d, "_exps", exps)
+        object.__setattr__(d, "_hash", hash(exps))
+        return d
+
+    @property
+    def exponents(self) -> dict:
+        """The nonzero base exponents, ``{"mass": Fraction(1), ...}`` in :data:`BASES` order."""
+        return {name: e for name, e in zip(BASES, self._exps) if e}
+
+    def power(self, base: str) -> Fraction:
+        """The exponent of ``base`` (a name in :data:`BASES`), 0 when absent."""
+        try:
+            return self._exps[BASES.index(base)]
+        except ValueError:
+            raise ValueError(f"`base` must be one of {', '.join(BASES)}; got {base!r}.") \
+                from None
+
+    # algebra ---------------------------------------------------------------------------
+    def __mul__(self, other):
+        other = _operand(other, "*")
+        return Dimension._of(tuple(a + b for a, b in zip(self._exps, other._exps)))
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other):
+        other = _operand(other, "/")
+        return Dimension._of(tuple(a - b for a, b in zip(self._exps, other._exps)))
+
+    def __rtruediv__(self, other):
+        return _operand(other, "/") / self
+
+    def __pow__(self, k):
+        k = _exponent(k, "a dimension's power")
+        return Dimension._of(tuple(e * k for e in self._exps))
+
+    def _no_sum(self, other):
+        raise TypeError(f"dimensions do not add: `{self} + {other}`; quantities of one "
+                        "dimension add and keep it, dimensions only multiply, divide and "
+                        "take powers.")
+
+    __add__ = __radd__ = __sub__ = __rsub__ = _no_sum
+
+    def __neg__(self):
+        raise TypeError(f"a dimension has no sign: `-{self}`.")
+
+    def __setattr__(self, name, value):
+        raise AttributeError("a Dimension is immutable.")
+
+    def __delattr__(self, name):
+        raise AttributeError("a Dimension is immutable.")
+
+    def __eq__(self, other):
+        if isinstance(other, Dimension):
+            return self._exps == other._exps
+        return NotImplemented
+
+    def __hash__(self):
+        return self._hash
+
+    def __reduce__(self):
+        return (Dimension._of, (self._exps,))
+
+    def __repr__(self):
+        args = ", ".join(f"{name}={_number(e)}" for name, e in zip(BASES, self._exps) if e)
+        return f"Dimension({args})"
+
+    def __str__(self):
+        parts = [s if e == 1 else f"{s}^{e}" for s, e in zip(_SYMBOLS, self._exps) if e]
+        return " ".join(parts) or "1"
+
+
+def _number(e: Fraction) -> str:
+    return str(e.numerator) if e.denominator == 1 else f"Fraction({e.numerator}, {e.denominator})"
+
+
+def _operand(other, op: str):
+    """The other side of ``op`` as a Dimension: a Dimension, a sympy one, or a number (which
+    is dimensionless); a ``TypeError`` for anything else."""
+    if isinstance(other, Dimension):
+        return other
+    if _is_sympy_dimension(other):
+        return _from_sympy(other)
+    if isinstance(other, numbers.Number) and not isinstance(other, bool):
+        return DIMENSIONLESS
+    raise TypeError(f"a dimension {op} a dimension or a number makes sense, not {other!r} "
+                    f"({type(other).__name__}).")
+
+
+def _is_sympy_dimension(d) -> bool:
+    """Whether ``d`` is a ``sympy.physics.units.Dimension`` (without importing that package)."""
+    return type(d).__module__.startswith("sympy.physics.units") and type(d).__name__ == \
+        "Dimension"
+
+
+_FROM_SYMPY: dict = {}   # sympy Dimension -> ours (both immutable)
+
+
+def _from_sympy(d) -> Dimension:
+    hit = _FROM_SYMPY.get(d)
+    if hit is None:
+        from sympy.physics.units.systems.si import dimsys_SI
+        exps = dict.fromkeys(BASES, Fraction(0))
+        for base, e in dimsys_SI.get_dimensional_dependencies(d).items():
+            name = str(getattr(base, "name", base))
+            if name not in exps:
+                raise ValueError(f"the sympy dimension {d} has the base {name!r}, which is "
+                                 f"not one of {', '.join(BASES)}.")
+            exps[name] = Fraction(str(e))
+        hit = _FROM_SYMPY[d] = Dimension._of(tuple(exps.values()))
+    return hit
+
+
+def as_dimension(d) -> Dimension:
+    """``d`` as a :class:`Dimension`: a Dimension as it is, a sympy
+    ``sympy.physics.units.Dimension`` converted; a ``TypeError`` for anything else.
+
+    Example
+    -------
+    >>> from sympy.physics.units.definitions import dimension_definitions as dd
+    >>> as_dimension(dd.force)
+    Dimension(mass=1, length=1, time=-2)
+    """
+    if isinstance(d, Dimension):
+        return d
+    if _is_sympy_dimension(d):
+        return _from_sympy(d)
+    raise TypeError(f"a dimension must be a dualmech.dimensions.Dimension (or a sympy "
+                    f"Dimension), got {d!r} ({type(d).__name__}).")
+
+
+MASS = Dimension(mass=1)
+LENGTH = Dimension(length=1)
+TIME = Dimension(time=1)
+ANGLE = Dimension(angle=1)
+DIMENSIONLESS = Dimension()
 FORCE = MASS * LENGTH / TIME**2
 TORQUE = FORCE * LENGTH
 ENERGY = FORCE * LENGTH
@@ -59,35 +249,24 @@ FREQUENCY = 1 / TIME
 _ORDER = ("mass", "length", "time", "current", "temperature", "amount_of_substance",
           "luminous_intensity")
 _SHORT = {"mass": "M", "length": "L", "time": "T"}
+_ANGLE = BASES.index("angle")
 
-Dims = tuple  # sorted ((base, Fraction exponent), ...)
+Dims = tuple  # ((base, Fraction exponent), ...) in _ORDER, angle dropped
 
 
 def reduce(dim) -> Dims:
-    """Base exponents of ``dim`` as a hashable tuple; angle is dropped (radians)."""
+    """Base exponents of ``dim`` as a hashable tuple; angle is dropped (radians).
+
+    ``dim`` is a :class:`Dimension`, a sympy Dimension, or a tuple this function returned.
+
+    >>> reduce(FORCE / ANGLE)
+    (('mass', Fraction(1, 1)), ('length', Fraction(1, 1)), ('time', Fraction(-2, 1)))
+    """
     if isinstance(dim, tuple):
         return dim
-    if not isinstance(dim, Dimension):
-        raise TypeError(f"a dimension must be a sympy Dimension, got {dim!r}.")
-    hit = _REDUCED.get(dim)
-    if hit is None:
-        hit = _REDUCED[dim] = _reduce(dim)
-    return hit
-
-
-_REDUCED: dict = {}   # Dimension -> its base exponents (Dimensions are immutable)
-
-
-def _reduce(dim) -> Dims:
-    deps = dimsys_SI.get_dimensional_dependencies(dim)
-    out = {}
-    for base, e in deps.items():
-        name = str(base.name) if hasattr(base, "name") else str(base)
-        if name == "angle":
-            continue
-        out[name] = Fraction(int(sp.Rational(e).p), int(sp.Rational(e).q))
-    return tuple(sorted(((k, v) for k, v in out.items() if v != 0),
-                        key=lambda kv: _ORDER.index(kv[0]) if kv[0] in _ORDER else 99))
+    dim = as_dimension(dim)
+    return tuple((name, e) for i, (name, e) in enumerate(zip(BASES, dim._exps))
+                 if e and i != _ANGLE)
 
 
 def format_dimension(d) -> str:

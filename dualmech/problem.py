@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ._expr import as_expr
-from .dimensions import ENERGY, Dimension, audit_rows, reduce
+from .dimensions import ENERGY, Dimension, as_dimension, audit_rows, reduce
 from .equations import EquationSet, ModelError, Rows
 from .kinematics import t
 
@@ -66,6 +66,7 @@ class Parameter:
             raise TypeError(f"parameter `{self.symbol}`: the default must be a number, got "
                             f"{self.default!r}.")
         _check_range(f"parameter `{self.symbol}`", self.range)
+        _own_dimension(self)
 
 
 @dataclass(frozen=True)
@@ -92,6 +93,7 @@ class Coordinate:
         if self.domain is not None:
             _check_range(f"coordinate `{self.function.func.__name__}` domain", self.domain,
                          finite=False)
+        _own_dimension(self)
 
     @property
     def name(self) -> str:
@@ -105,6 +107,19 @@ class Reaction:
     name: str
     dimension: Dimension
     direction: str
+
+    def __post_init__(self):
+        _own_dimension(self)
+
+
+def _own_dimension(declared) -> None:
+    """A sympy Dimension declared for a quantity, converted to ours (what is no dimension is
+    left for :meth:`Problem.validate` to report)."""
+    try:
+        dimension = as_dimension(declared.dimension)
+    except (TypeError, ValueError):
+        return
+    object.__setattr__(declared, "dimension", dimension)
 
 
 @dataclass(frozen=True)
@@ -293,7 +308,7 @@ class Problem:
                 errors.append(f"parameter `{p.symbol}`: default {p.default} is outside {p.range}")
             try:
                 reduce(p.dimension)
-            except TypeError as exc:
+            except (TypeError, ValueError) as exc:
                 errors.append(f"parameter `{p.symbol}`: {exc}")
         for c in self.all_coordinates():
             if not c.range[0] < c.range[1]:

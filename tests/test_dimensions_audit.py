@@ -1,4 +1,7 @@
-"""The dimension audit against sympy's own dimension algebra, and on shared rows."""
+"""The dimension audit against sympy's own dimension algebra, and on shared rows.
+
+The reference exponents come from ``sympy.physics.units`` (its Dimension algebra and SI
+dimension system), independent of dualmech's own :class:`~dualmech.dimensions.Dimension`."""
 from __future__ import annotations
 
 from fractions import Fraction
@@ -6,6 +9,7 @@ from fractions import Fraction
 import sympy as sp
 import symengine as se
 from hypothesis import given, settings, strategies as st
+from sympy.physics.units.definitions import dimension_definitions as dd
 from sympy.physics.units.systems.si import dimsys_SI
 
 from dualmech.dimensions import (ACCELERATION, FORCE, LENGTH, MASS, TIME, audit, audit_rows,
@@ -13,6 +17,7 @@ from dualmech.dimensions import (ACCELERATION, FORCE, LENGTH, MASS, TIME, audit,
 
 m, l, g, k = sp.symbols("m l g k")
 DIMS = {m: MASS, l: LENGTH, g: ACCELERATION, k: FORCE / LENGTH}
+SYMPY_DIMS = {m: dd.mass, l: dd.length, g: dd.acceleration, k: dd.force / dd.length}
 SYMBOLS = list(DIMS)
 
 
@@ -20,7 +25,7 @@ def _reference(powers) -> dict:
     """Base exponents of a monomial by sympy's Dimension algebra (independent of the audit)."""
     dim = sp.Integer(1)
     for s, p in powers:
-        dim = dim * DIMS[s] ** p
+        dim = dim * SYMPY_DIMS[s] ** p
     deps = dimsys_SI.get_dimensional_dependencies(dim)
     return {str(b.name) if hasattr(b, "name") else str(b): Fraction(str(e))
             for b, e in deps.items() if e != 0}
@@ -40,6 +45,8 @@ def test_monomials_match_sympys_dimension_algebra(powers):
     got_se = {name: e for name, e in dimension_of(se.sympify(expr), DIMS,
                                                   names={str(s): s for s in SYMBOLS})}
     assert got_se == want
+    # and the same with the symbols declared in sympy's dimensions
+    assert {name: e for name, e in dimension_of(expr, SYMPY_DIMS)} == want
 
 
 def test_a_wrong_term_is_named_and_a_shared_subexpression_once():

@@ -202,5 +202,5 @@ def _dim(tree, dims, names, issues) -> Dims | None:
 
 
 def reduced(dim) -> Dims:
-    """A sympy Dimension as the sorted tuple this module uses."""
+    """A Dimension (ours or sympy's) as the sorted tuple this module uses."""
     return tuple(sorted(reduce(dim)))

@@ -265,11 +265,9 @@ def linearisation(problem, levels: Sequence[float] = (0.01, 0.1), params: Mappin
         j = next((i for i, e in enumerate(errs) if e > lv), None)
         marks[lv] = None if j in (None, 0) else \
             float(brentq(lambda a: np.log(error(a) / lv), amps[j - 1], amps[j], xtol=1e-12))
-    unit = "rad" if info.dimension is not None and str(info.dimension).endswith("angle") \
-        else ""
     from .units import unit as unit_of
     return Linearisation(problem.name, [round(float(x), 9) for x in q_eq], w,
-                         [round(float(x), 6) + 0.0 for x in mode], info.name, unit or unit_of(info.dimension),
+                         [round(float(x), 6) + 0.0 for x in mode], info.name, unit_of(info.dimension),
                          amps, errs, marks, te)
 
 

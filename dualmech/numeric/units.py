@@ -8,8 +8,8 @@ Example
 """
 from __future__ import annotations
 
-from ..dimensions import (ACCELERATION, ANGLE, DAMPING, ENERGY, FORCE,
-                          FREQUENCY, INERTIA, LENGTH, MASS, STIFFNESS, TIME, VELOCITY, reduce)
+from ..dimensions import (ACCELERATION, ANGLE, DAMPING, ENERGY, FORCE, FREQUENCY, INERTIA,
+                          LENGTH, MASS, STIFFNESS, TIME, VELOCITY, as_dimension, reduce)
 
 __all__ = ["unit", "rate_unit", "work_conjugate_unit"]
 
@@ -21,19 +21,15 @@ _BASE = {"mass": "kg", "length": "m", "time": "s"}
 
 
 def _angle_power(dimension) -> int:
-    """Power of ``angle`` in ``dimension`` (sympy keeps it; :func:`reduce` drops it)."""
-    from sympy.physics.units.systems.si import dimsys_SI
-    deps = dimsys_SI.get_dimensional_dependencies(dimension)
-    for base, e in deps.items():
-        if str(getattr(base, "name", base)) == "angle":
-            return int(e)
-    return 0
+    """Power of ``angle`` in ``dimension`` (a Dimension keeps it; :func:`reduce` drops it)."""
+    return int(as_dimension(dimension).power("angle"))
 
 
 def unit(dimension) -> str:
     """The SI unit of ``dimension`` (``"rad"`` for angles, ``"1"`` for pure numbers)."""
     if dimension is None:
         return "?"
+    dimension = as_dimension(dimension)
     angle = _angle_power(dimension)
     base = reduce(dimension)
     if not base:
@@ -59,13 +55,14 @@ def unit(dimension) -> str:
 
 def rate_unit(dimension) -> str:
     """Unit of the rate of a quantity of ``dimension`` (``m/s``, ``rad/s``)."""
-    return unit(dimension / TIME) if dimension is not None else "?"
+    return unit(as_dimension(dimension) / TIME) if dimension is not None else "?"
 
 
 def work_conjugate_unit(dimension) -> str:
     """Unit of the coordinate conjugate to a force-like ``dimension`` (``N`` -> ``m``)."""
     if dimension is None:
         return "?"
+    dimension = as_dimension(dimension)
     if reduce(dimension) == reduce(ENERGY) and not _angle_power(dimension):
         return unit(ANGLE)  # a torque does work on an angle
     return unit(ENERGY / dimension)

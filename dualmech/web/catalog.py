@@ -34,8 +34,9 @@ def unit(dimension) -> str:
     >>> unit(FORCE), unit(ANGLE)
     ('kg m s⁻²', 'rad')
     """
-    from dualmech.dimensions import reduce
-    if "angle" in str(dimension) and not reduce(dimension):
+    from dualmech.dimensions import as_dimension, reduce
+    dimension = as_dimension(dimension)
+    if dimension.power("angle") and not reduce(dimension):
         return "rad"
     exps = dict(reduce(dimension))
     parts = []
