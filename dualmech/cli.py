@@ -503,9 +503,13 @@ def _cmd_show(args) -> int:
     return EXIT_OK if c.equivalent else EXIT_DISAGREE
 
 
+#: :data:`dualmech.notation.NOTATIONS`, written out so that building the parser (``--help``,
+#: ``list``) does not import sympy; tests/test_cli.py checks that the two agree
+_NOTATIONS = ("dots", "primes")
+
+
 def _notation_option(p) -> None:
-    from .notation import NOTATIONS
-    p.add_argument("--notation", choices=NOTATIONS, default="dots",
+    p.add_argument("--notation", choices=_NOTATIONS, default="dots",
                    help="rates as dots over the letter (θ̇, \\dot{\\theta}) or primes "
                         "(θ′); default: %(default)s")
 

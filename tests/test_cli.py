@@ -112,6 +112,22 @@ def test_help_lists_the_commands(capsys):
         assert command in out
 
 
+@pytest.mark.parametrize("argv", [["--help"], ["list"], ["grade", "--help"]],
+                         ids=["help", "list", "grade-help"])
+def test_commands_that_need_no_algebra_start_without_sympy(argv):
+    code = ("import sys; from dualmech.cli import main; status = main(sys.argv[1:]); "
+            "heavy = sorted(m for m in ('sympy', 'symengine', 'numpy', 'scipy', 'matplotlib', "
+            "'lark') if m in sys.modules); print(status, heavy, file=sys.stderr)")
+    done = subprocess.run([sys.executable, "-c", code, *argv], capture_output=True,
+                          text=True, timeout=120)
+    assert done.stderr.strip().splitlines()[-1] == "0 []"
+
+
+def test_the_parsers_notations_are_those_of_the_notation_module():
+    from dualmech import cli, notation
+    assert cli._NOTATIONS == notation.NOTATIONS
+
+
 @pytest.mark.parametrize("argv", [[], ["frobnicate"], ["check", "--points", "0"],
                                   ["show"]], ids=["nothing", "unknown-command", "zero-points",
                                                   "show-without-name"])
