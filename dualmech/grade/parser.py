@@ -37,6 +37,8 @@ from fractions import Fraction
 from lark import Lark, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedToken
 
+from .lalr import lalr_parser
+
 __all__ = ["split_where",
            "Limits", "LIMITS", "Node", "Equation", "AnswerError", "AnswerSyntaxError",
            "AnswerTooLarge", "parse", "FUNCTIONS", "GREEK"]
@@ -398,10 +400,11 @@ _PARSERS: dict = {}
 
 
 def _parser(limits: Limits) -> Lark:
-    """One LALR parser per set of limits; its reductions build the tree (no second pass)."""
+    """One LALR parser per set of limits; its reductions build the tree (no second pass).
+    The tables are shared by all of them and kept between runs (:mod:`.lalr`)."""
     if limits not in _PARSERS:
-        _PARSERS[limits] = Lark(_GRAMMAR, parser="lalr", lexer="contextual",
-                                maybe_placeholders=False, transformer=_Build(limits))
+        _PARSERS[limits] = lalr_parser(_GRAMMAR, _Build(limits), lexer="contextual",
+                                       maybe_placeholders=False)
     return _PARSERS[limits]
 
 

@@ -8,7 +8,8 @@ generated again.  Files are written to a temporary name and renamed, so concurre
 never import a half-written module.
 
 The directory is ``$DUALMECH_CACHE_DIR`` if set, else ``$XDG_CACHE_HOME/dualmech``, else
-``~/.cache/dualmech``; it is created private to the user (mode 0700).  Set
+``~/.cache/dualmech`` (:func:`dualmech.caches.cache_dir`); it is created private to the user
+(mode 0700).  Set
 ``DUALMECH_CACHE_DIR=off`` to keep generated code in memory only.  Anyone who can write to the
 directory can change what runs, as with any directory of Python modules: keep it private.
 """
@@ -24,21 +25,11 @@ from typing import Callable, Sequence
 
 import sympy as sp
 
+from ..caches import cache_dir
+
 __all__ = ["cache_dir", "digest", "load_module", "private_dir"]
 
-ENV = "DUALMECH_CACHE_DIR"
 _MEMORY: dict = {}
-
-
-def cache_dir() -> Path | None:
-    """Where generated modules are kept (``None`` when disk caching is off)."""
-    env = os.environ.get(ENV, "").strip()
-    if env.lower() in ("off", "0", "none", "false"):
-        return None
-    if env:
-        return Path(env).expanduser()
-    base = os.environ.get("XDG_CACHE_HOME", "").strip()
-    return (Path(base) if base else Path.home() / ".cache") / "dualmech"
 
 
 def digest(*parts) -> str:
