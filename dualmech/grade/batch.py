@@ -28,8 +28,9 @@ from pathlib import Path
 from typing import Iterable, Sequence
 
 from .api import Grader
+from .parser import LIMITS, Limits
 
-__all__ = ["read_csv", "grade_rows", "grade_batch", "BatchError", "warm"]
+__all__ = ["read_csv", "grade_rows", "grade_batch", "BatchError", "warm", "warm_targets"]
 
 _CHUNK = 20
 _REQUIRED = ("id", "question", "answer")
@@ -111,21 +112,26 @@ def _untrusted_name(name: str, row: dict) -> dict | None:
             "false_right_bound": None, "seconds": 0.0}
 
 
-def warm(names: Iterable[str]) -> None:
-    """Build each problem's grader, points and feedback targets now (so forked workers share
-    them)."""
-    from .terms import MODES, equation_targets
+def warm(names: Iterable[str], limits: Limits = LIMITS) -> None:
+    """Build each problem's grader (the one :meth:`Grader.of` gives for ``limits``), its
+    quantities, points and feedback targets now (so forked workers share them)."""
     for name in sorted(set(names)):
         try:
-            g = Grader.of(name)
-            ctx = g.context
+            g = Grader.of(name, limits=limits)
             g.quantities()
-            if ctx.method == "exact":
-                ctx.points("exact")
-                for mode in MODES:
-                    equation_targets(ctx, mode)
+            warm_targets(g.context)
         except Exception:  # reported row by row when graded
             continue
+
+
+def warm_targets(ctx) -> None:
+    """Build the exact points of ``ctx`` and its equations' feedback targets in every mode
+    (what explaining a wrong equation reads) now."""
+    from .terms import MODES, equation_targets
+    if ctx.method == "exact":
+        ctx.points("exact")
+        for mode in MODES:
+            equation_targets(ctx, mode)
 
 
 def _chunks(rows: Sequence[dict], size: int) -> list[list[dict]]:

@@ -81,15 +81,17 @@ def _limit_memory(memory_mb: int):
 
 
 def _load(problem: str, quantity, about, limits: Limits, loaded: set):
-    """The warm grader of ``problem``: models, points and feedback targets built now."""
+    """The warm grader of ``problem``: models, points, feedback targets and what the
+    ``quantity`` asked needs, built now (the printed answers only when it is one of them)."""
     from .api import Grader
     grader = Grader.of(problem, limits=limits)
     key = (problem, quantity, about, limits)
     if key not in loaded:
-        from .batch import warm
-        warm([problem])
-        grader.quantities()
-        try:   # the quantity's own targets (reference forms, feedback) are built lazily
+        from .batch import warm_targets
+        ctx = grader.context   # a problem whose models cannot be built fails here
+        try:
+            warm_targets(ctx)
+            # the quantity's own targets (reference forms, feedback) are built lazily
             grader.grade("0", quantity, about)
         except Exception:
             pass
