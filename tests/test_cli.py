@@ -305,6 +305,24 @@ def test_python_dash_m_dualmech_runs(tmp_path):
     assert "known problems" in done.stderr
 
 
+@pytest.mark.parametrize("answer, status, first", [
+    ("a*theta'' + g*sin(theta) = 0", 0, "RIGHT"), ("a*theta'' - g*sin(theta) = 0", 1, "WRONG")],
+    ids=["right", "wrong"])
+def test_the_command_keeps_its_output_and_status_past_its_fast_exit(answer, status, first,
+                                                                     tmp_path):
+    # command() leaves the objects to the operating system at exit: the whole output is
+    # still written, atexit handlers still run, and the exit status is the command's
+    code = ("import atexit, sys; from dualmech.cli import command; "
+            f"atexit.register(lambda: open({str(tmp_path / 'ran')!r}, 'w').close()); "
+            "sys.argv[1:] = ['grade', 'simple_pendulum', '--json', '--answer', "
+            f"{answer!r}]; raise SystemExit(command())")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == status, done.stderr
+    assert json.loads(done.stdout)["status"] == first.lower()
+    assert (tmp_path / "ran").exists()
+
+
 # -- the README stays true ---------------------------------------------------------------------
 README = Path(__file__).resolve().parent.parent / "README.md"
 
