@@ -27,8 +27,6 @@ Example
 from __future__ import annotations
 
 import atexit
-import concurrent.futures
-import multiprocessing
 import os
 import pickle
 import queue
@@ -165,6 +163,7 @@ def too_costly(problem, answer, quantity, ceiling: str, limits: Limits = LIMITS)
 
 # -- the parent side --------------------------------------------------------------------------
 def _context():
+    import multiprocessing   # here: one answer graded in a forked child needs no pool
     methods = multiprocessing.get_all_start_methods()
     if "forkserver" in methods:
         ctx = multiprocessing.get_context("forkserver")
@@ -237,6 +236,7 @@ class GradingPool:
 
         Thread-safe.
         """
+        import concurrent.futures
         future: concurrent.futures.Future = concurrent.futures.Future()
         with self._lock:
             if self._closed:
