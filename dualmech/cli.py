@@ -201,18 +201,15 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 def command() -> int:
     """The ``dualmech`` program (and ``python -m dualmech``): :func:`main` on ``sys.argv``,
-    then an exit that leaves the process's objects to the operating system.
-
-    Once the command is done, everything it built is garbage, and the interpreter's shutdown
-    would free it object by object -- sympy's classes, caches and expressions, some 0.15 s,
-    a quarter of a one-answer ``dualmech grade``.  ``gc.freeze()`` puts the objects alive now
-    out of the collector's reach, so that shutdown skips them; ``atexit`` handlers, thread
-    joins and the flushing of open files happen as before.  Not for :func:`main` called
-    inside a longer-lived process (frozen objects are never collected).
+    with the start-up and the exit of a process that ends with the command
+    (:mod:`dualmech.startup`: big modules load with the garbage collector paused, and
+    shutdown leaves the objects to the operating system instead of freeing them one by one).
+    :func:`main` called inside a longer-lived process keeps the default collector.
     """
+    from . import startup
+    startup.as_program()
     status = main()
-    import gc
-    gc.freeze()
+    startup.leave()
     return status
 
 
@@ -462,6 +459,8 @@ def _compared(chosen: list, points: int, seed: int, jobs: int | None):
 
 
 def _cmd_check(args) -> int:
+    from .startup import load
+    load("dualmech.compare")   # sympy, symengine and the comparator (see dualmech.startup)
     chosen = _selected(args)
     results = []
     for problem, c in _compared(chosen, args.points, args.seed, args.jobs):
@@ -478,6 +477,8 @@ def _cmd_check(args) -> int:
 
 
 def _cmd_show(args) -> int:
+    from .startup import load
+    load("dualmech.compare", "dualmech.notation")   # see dualmech.startup
     problem = _get(args.name)
     models = problem.models()
     if args.model is not None:

@@ -305,6 +305,16 @@ def test_python_dash_m_dualmech_runs(tmp_path):
     assert "known problems" in done.stderr
 
 
+def test_main_in_process_leaves_the_garbage_collector_alone(capsys):
+    # only the program (cli.command) pauses and freezes the collector; tests, notebooks and
+    # the web server call main() and live on
+    import gc
+    frozen = gc.get_freeze_count()
+    assert main(["grade", "simple_pendulum", "--answer", "a*theta'' + g*sin(theta) = 0"]) == 0
+    assert main(["show", "simple_pendulum"]) == 0
+    assert gc.isenabled() and gc.get_freeze_count() == frozen
+
+
 @pytest.mark.parametrize("answer, status, first", [
     ("a*theta'' + g*sin(theta) = 0", 0, "RIGHT"), ("a*theta'' - g*sin(theta) = 0", 1, "WRONG")],
     ids=["right", "wrong"])
