@@ -36,7 +36,7 @@ from ._expr import as_expr, dotted
 from .equations import state_symbols
 from .kinematics import t
 
-__all__ = ["Dimension", "MASS", "LENGTH", "TIME", "ANGLE", "FORCE", "TORQUE", "ENERGY",
+__all__ = ["BASES", "Dimension", "MASS", "LENGTH", "TIME", "ANGLE", "FORCE", "TORQUE", "ENERGY",
            "DIMENSIONLESS", "VELOCITY", "ACCELERATION", "STIFFNESS", "DAMPING",
            "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA", "FREQUENCY",
            "DimensionIssue", "as_dimension", "audit", "audit_rows", "dimension_of",
@@ -279,14 +279,6 @@ def format_dimension(d) -> str:
         s = _SHORT.get(name, name)
         parts.append(s if e == 1 else f"{s}^{e}")
     return " ".join(parts)
-
-
-def _mul(a: Dims, b: Dims, k=1) -> Dims:
-    out = dict(a)
-    for name, e in b:
-        out[name] = out.get(name, 0) + k * e
-    return tuple(sorted(((n, e) for n, e in out.items() if e != 0),
-                        key=lambda kv: _ORDER.index(kv[0]) if kv[0] in _ORDER else 99))
 
 
 # Inside the audit a dimension is one integer: the base exponents in ``_ORDER``, each times
