@@ -114,7 +114,11 @@ def _untrusted_name(name: str, row: dict) -> dict | None:
 def warm(names: Iterable[str]) -> None:
     """Build each problem's grader, points and feedback targets now (so forked workers share
     them)."""
+    from .answers import catalogue
+    from .judge import expression_targets
     from .terms import MODES, equation_targets
+    if isinstance(names, str):
+        names = [names]
     for name in sorted(set(names)):
         try:
             g = Grader.of(name)
@@ -124,6 +128,13 @@ def warm(names: Iterable[str]) -> None:
                 ctx.points("exact")
                 for mode in MODES:
                     equation_targets(ctx, mode)
+            # the correct forms of each reaction and acceleration read off single rows
+            # (the whole system's symbolic solution, stage 1, is left to first use: it can
+            # take seconds and is needed only when no single row explains a wrong answer)
+            for q in catalogue(ctx).values():
+                if len(q.reference) == 1 and (q.reference[0] in set(ctx.reactions) or
+                                              q.reference[0] in set(ctx.qdd)):
+                    expression_targets(ctx, q, 0)
         except Exception:  # reported row by row when graded
             continue
 
