@@ -39,6 +39,16 @@ def test_dimensions_of_every_derived_equation(comparisons, name):
 
 
 @pytest.mark.parametrize("name", NAMES)
+def test_every_reaction_is_derived_twice_and_compared(comparisons, name):
+    # each declared reaction is an unknown of two derivations at least, so a wrong term in
+    # one of them is a disagreement, never a lonely value
+    c = comparisons[name]
+    assert c.not_cross_checked == [], str(c)
+    compared = {r for p in c.pairs if p.kind == "reactions" for r in p.reactions}
+    assert compared == {r.name for r in c.problem.reactions}
+
+
+@pytest.mark.parametrize("name", NAMES)
 def test_every_problem_has_published_answers_checked(comparisons, name):
     problem = comparisons[name].problem
     verdicts = comparisons[name].published
