@@ -124,6 +124,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="problems checked at once, in worker processes (default: one per "
                         "CPU when several problems are checked)")
     _points_seed(p)
+    _notation_option(p)
     p.set_defaults(func=_cmd_check)
 
     p = sub.add_parser("show", help="print a problem's equations of motion and reactions",
@@ -152,6 +153,7 @@ def build_parser() -> argparse.ArgumentParser:
                         "to hand out, printed answers judged and corrections hidden "
                         "(default: %(default)s)")
     _points_seed(p)
+    _notation_option(p)
     _json_flag(p, "the summary: one object per problem, and the files written")
     p.set_defaults(func=_cmd_report)
 
@@ -413,12 +415,19 @@ class _Checked:
 _CHOSEN: list = []   # the problems of a parallel check, inherited by forked workers
 
 
-def _check_in_worker(i: int, points: int, seed: int) -> _Checked:
+def _text(c, notation: str = "dots") -> str:
+    """The readable report of a comparison in ``notation`` (a stand-in's ``str()``)."""
+    text = getattr(c, "text", None)
+    return text(notation) if callable(text) else str(c)
+
+
+def _check_in_worker(i: int, points: int, seed: int, notation: str) -> _Checked:
     c = _compare(_CHOSEN[i], points, seed)
-    return _Checked(str(c), c.to_dict(), bool(c.equivalent))
+    return _Checked(_text(c, notation), c.to_dict(), bool(c.equivalent))
 
 
-def _compared(chosen: list, points: int, seed: int, jobs: int | None):
+def _compared(chosen: list, points: int, seed: int, jobs: int | None,
+              notation: str = "dots"):
     """``compare`` of each problem, in order; several at once in forked worker processes
     (each problem's check is independent) when there are several problems and CPUs."""
     import os
@@ -436,7 +445,7 @@ def _compared(chosen: list, points: int, seed: int, jobs: int | None):
     _CHOSEN[:] = chosen
     try:
         with ProcessPoolExecutor(max_workers=jobs, mp_context=fork) as pool:
-            futures = [pool.submit(_check_in_worker, i, points, seed)
+            futures = [pool.submit(_check_in_worker, i, points, seed, notation)
                        for i in range(len(chosen))]
             for problem, future in zip(_progress(chosen, "checking"), futures):
                 yield problem, future.result()
@@ -447,10 +456,10 @@ def _compared(chosen: list, points: int, seed: int, jobs: int | None):
 def _cmd_check(args) -> int:
     chosen = _selected(args)
     results = []
-    for problem, c in _compared(chosen, args.points, args.seed, args.jobs):
+    for problem, c in _compared(chosen, args.points, args.seed, args.jobs, args.notation):
         results.append((problem, c))
         if not args.json:
-            print(c)
+            print(_text(c, args.notation))
             print()
     if args.json:
         dicts = [c.to_dict() for _, c in results]
@@ -603,7 +612,7 @@ def _cmd_report(args) -> int:
         print(f"report: writing the charts and {out / 'report.html'}", file=sys.stderr,
               flush=True)
     w = write_report([c for _, c in results], out, args.duration,
-                     audience=args.audience)
+                     audience=args.audience, notation=args.notation)
     if args.json:
         print(_json({"problems": [_summary_row(p, c) for p, c in results],
                      "files": {"html": str(w.html), "markdown": str(w.markdown),
