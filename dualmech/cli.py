@@ -106,8 +106,8 @@ def build_parser() -> argparse.ArgumentParser:
                                    "(coordinates of the reference model), reactions and title "
                                    "(--json adds the source and summary), then those of the "
                                    "catalogues course packages register.")
-    _json_flag(p, "a list of objects: name, title, source, summary, dof, coordinates, "
-                  "reactions, status, catalogue")
+    _json_flag(p, "a list of objects: name, title, source (named by course), source_file, "
+                  "summary, dof, coordinates, reactions, status, catalogue")
     p.set_defaults(func=_cmd_list)
 
     p = sub.add_parser("check", help="prove each problem's models equivalent",
@@ -320,8 +320,9 @@ class _Failed:
 
     def to_dict(self) -> dict:
         p = self.problem
-        return {"name": p.name, "title": p.title, "source": p.source, "equivalent": False,
-                "method": "error", "seconds": self.seconds,
+        from .sources import source_fields
+        return {"name": p.name, "title": p.title, **source_fields(p.source),
+                "equivalent": False, "method": "error", "seconds": self.seconds,
                 "error": f"{type(self.error).__name__}: {self.error}"}
 
 
@@ -348,11 +349,12 @@ LIST_WIDTH = 100
 def _list_rows() -> list[dict]:
     """One dict per problem: dualmech's catalogue, its out-of-scope systems, then every
     registered catalogue's problems."""
+    from .sources import source_fields
     cat = _catalogue()
-    rows = [{"name": d.name, "title": d.title, "source": d.source, "summary": d.summary,
+    rows = [{"name": d.name, "title": d.title, **source_fields(d.source), "summary": d.summary,
              "dof": d.dof, "coordinates": list(d.coordinates), "reactions": list(d.reactions),
              "status": "modelled", "catalogue": "dualmech"} for d in cat.declarations()]
-    rows += [{"name": name, "title": "(not modelled)", "source": source, "summary": reason,
+    rows += [{"name": name, "title": "(not modelled)", **source_fields(source), "summary": reason,
               "dof": None, "coordinates": [], "reactions": [], "status": "out of scope",
               "catalogue": "dualmech"} for name, source, reason in cat.OUT_OF_SCOPE]
     for cname, ep in sorted(getattr(cat, "registered", dict)().items()):
@@ -364,7 +366,8 @@ def _list_rows() -> list[dict]:
         for c in classes:
             coords = [getattr(x, "name", str(x)) for x in getattr(c, "coordinates", ())]
             rows.append({"name": f"{cname}:{c.name or c.__name__}", "title": c.title,
-                         "source": c.source, "summary": getattr(c, "summary", ""),
+                         **source_fields(c.source or ""),
+                         "summary": getattr(c, "summary", ""),
                          "dof": getattr(c, "parametric", "") or len(coords),
                          "coordinates": coords,
                          "reactions": [r.name for r in getattr(c, "reactions", ())],
@@ -524,7 +527,8 @@ def _show_json(problem, models: dict) -> int:
     expressions as ``check --json`` writes them)."""
     from .notation import machine
     from .verify.display import dotted
-    doc = {"name": problem.name, "title": problem.title, "source": problem.source,
+    from .sources import source_fields
+    doc = {"name": problem.name, "title": problem.title, **source_fields(problem.source),
            "models": {name: {"coordinates": [q.func.__name__ for q in eqs.coordinates],
                              "unknowns": [str(u) for u in eqs.unknowns],
                              "equations": [{"label": label, "expression": dotted(e),

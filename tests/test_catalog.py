@@ -129,3 +129,20 @@ def test_report_pages_are_in_textbook_notation(comparisons, name, tmp_path):
     if any(v.verdict == "wrong" for v in c.published):   # the why column is typeset
         why = re.findall(r'<td class="wrong">WRONG</td><td>(.*?)</td></tr>', page)
         assert why and all("<math" in w for w in why if "closest to" in w or "equals" in w)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_report_names_sources_by_course(comparisons, name, tmp_path):
+    """No page a person reads shows the archive's hashed file names; the JSON written beside
+    the report keeps the file as ``source_file``."""
+    c = comparisons[name]
+    hashed = re.compile(r"\d{3}_[0-9a-f]{16}")
+    for audience in ("teachers", "students"):
+        shown = (markdown_page([c], {}, 1.0, audience) + html_page([c], {}, tmp_path, 1.0,
+                                                                    audience) + c.text())
+        assert not hashed.search(shown)
+        assert source_name(c.problem.source) in html.unescape(shown)
+    d = c.to_dict()
+    file = c.problem.source.partition(": ")[0]
+    assert d["source"] == source_name(c.problem.source)
+    assert d["source_file"] == (file if hashed.fullmatch(file.removesuffix(".txt")) else None)

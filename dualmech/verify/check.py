@@ -18,7 +18,7 @@ import symengine as se
 import sympy as sp
 
 from ..equations import EquationSet, ModelError, Rows
-from ..sources import source_name
+from ..sources import source_fields, source_name
 from .display import Budget, OverBudget, budget, dotted, solve_display
 from .explain import Mismatch, explain_model, explain_reaction
 from .published import PublishedVerdict, check_published
@@ -277,7 +277,7 @@ class Comparison:
         pr = self.problem
         ref = pr.model(pr.reference)
         return {
-            "name": pr.name, "title": pr.title, "source": pr.source,
+            "name": pr.name, "title": pr.title, **source_fields(pr.source),
             "coordinates": [q.func.__name__ for q in ref.coordinates],
             "parameters": [str(p.symbol) for p in pr.parameters],
             "equivalent": self.equivalent, "method": self.method,
