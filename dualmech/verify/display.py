@@ -127,7 +127,9 @@ def solve_display(eqs, limits: Budget | None = None) -> dict:
     A, b = eqs.matrix()
     if A.rows != A.cols:
         raise OverBudget(f"{A.rows} equations for {A.cols} unknowns: not a square system")
-    coupled = largest_coupled_block(A)
+    # (a system of at most MAX_COUPLED unknowns cannot couple more: no structural analysis,
+    # nor its scipy import, for the common small system)
+    coupled = largest_coupled_block(A) if A.cols > MAX_COUPLED else A.cols
     if coupled > MAX_COUPLED:
         raise OverBudget(f"{coupled} unknowns are coupled (a symbolic solution would be "
                          "pages long)")
