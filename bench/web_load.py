@@ -110,9 +110,13 @@ def _client(url: str, address: str, n: int, offset: int, out: list, deadline: fl
 
 
 def _run(url: str, clients: int, answers: int, deadline: float,
-         mix: list) -> tuple[list, float]:
+         mix: list, block: int = 0) -> tuple[list, float]:
+    """``clients`` threads on the loopback addresses ``127.0.<block>.2``, ``.3``, ...: each
+    run of the script (warm-up, baseline, load) on its own block, so that the per-client rate
+    limit counts each simulated student once, not the warm-up and the baseline as well."""
     results: list = [[] for _ in range(clients)]
-    threads = [threading.Thread(target=_client, args=(url, f"127.0.0.{2 + i % 250}", answers,
+    threads = [threading.Thread(target=_client, args=(url, f"127.0.{block}.{2 + i % 250}",
+                                                      answers,
                                                       i, results[i], deadline, mix))
                for i in range(clients)]
     t0 = time.perf_counter()
@@ -145,8 +149,8 @@ def main(argv=None) -> int:
         proc = _start(port, data, args.workers)
         try:
             deadline = time.monotonic() + args.timeout
-            warm, _ = _run(url, 1, len(mix), deadline, mix)          # loads both problems
-            base, _ = _run(url, 1, len(mix), deadline, mix)          # one client alone
+            warm, _ = _run(url, 1, len(mix), deadline, mix, 1)       # loads both problems
+            base, _ = _run(url, 1, len(mix), deadline, mix, 2)       # one client alone
             load, wall = _run(url, args.clients, args.answers, deadline, mix)
         finally:
             proc.terminate()

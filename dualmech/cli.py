@@ -106,8 +106,8 @@ def build_parser() -> argparse.ArgumentParser:
                                    "(coordinates of the reference model), reactions and title "
                                    "(--json adds the source and summary), then those of the "
                                    "catalogues course packages register.")
-    _json_flag(p, "a list of objects: name, title, source, summary, dof, coordinates, "
-                  "reactions, status, catalogue")
+    _json_flag(p, "a list of objects: name, title, source (named by course), source_file, "
+                  "summary, dof, coordinates, reactions, status, catalogue")
     p.set_defaults(func=_cmd_list)
 
     p = sub.add_parser("check", help="prove each problem's models equivalent",
@@ -124,6 +124,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="problems checked at once, in worker processes (default: one per "
                         "CPU when several problems are checked)")
     _points_seed(p)
+    _notation_option(p)
     p.set_defaults(func=_cmd_check)
 
     p = sub.add_parser("show", help="print a problem's equations of motion and reactions",
@@ -152,6 +153,7 @@ def build_parser() -> argparse.ArgumentParser:
                         "to hand out, printed answers judged and corrections hidden "
                         "(default: %(default)s)")
     _points_seed(p)
+    _notation_option(p)
     _json_flag(p, "the summary: one object per problem, and the files written")
     p.set_defaults(func=_cmd_report)
 
@@ -332,8 +334,9 @@ class _Failed:
 
     def to_dict(self) -> dict:
         p = self.problem
-        return {"name": p.name, "title": p.title, "source": p.source, "equivalent": False,
-                "method": "error", "seconds": self.seconds,
+        from .sources import source_fields
+        return {"name": p.name, "title": p.title, **source_fields(p.source),
+                "equivalent": False, "method": "error", "seconds": self.seconds,
                 "error": f"{type(self.error).__name__}: {self.error}"}
 
 
@@ -360,11 +363,12 @@ LIST_WIDTH = 100
 def _list_rows() -> list[dict]:
     """One dict per problem: dualmech's catalogue, its out-of-scope systems, then every
     registered catalogue's problems."""
+    from .sources import source_fields
     cat = _catalogue()
-    rows = [{"name": d.name, "title": d.title, "source": d.source, "summary": d.summary,
+    rows = [{"name": d.name, "title": d.title, **source_fields(d.source), "summary": d.summary,
              "dof": d.dof, "coordinates": list(d.coordinates), "reactions": list(d.reactions),
              "status": "modelled", "catalogue": "dualmech"} for d in cat.declarations()]
-    rows += [{"name": name, "title": "(not modelled)", "source": source, "summary": reason,
+    rows += [{"name": name, "title": "(not modelled)", **source_fields(source), "summary": reason,
               "dof": None, "coordinates": [], "reactions": [], "status": "out of scope",
               "catalogue": "dualmech"} for name, source, reason in cat.OUT_OF_SCOPE]
     for cname, ep in sorted(getattr(cat, "registered", dict)().items()):
@@ -376,7 +380,8 @@ def _list_rows() -> list[dict]:
         for c in classes:
             coords = [getattr(x, "name", str(x)) for x in getattr(c, "coordinates", ())]
             rows.append({"name": f"{cname}:{c.name or c.__name__}", "title": c.title,
-                         "source": c.source, "summary": getattr(c, "summary", ""),
+                         **source_fields(c.source or ""),
+                         "summary": getattr(c, "summary", ""),
                          "dof": getattr(c, "parametric", "") or len(coords),
                          "coordinates": coords,
                          "reactions": [r.name for r in getattr(c, "reactions", ())],
@@ -427,12 +432,19 @@ class _Checked:
 _CHOSEN: list = []   # the problems of a parallel check, inherited by forked workers
 
 
-def _check_in_worker(i: int, points: int, seed: int) -> _Checked:
+def _text(c, notation: str = "dots") -> str:
+    """The readable report of a comparison in ``notation`` (a stand-in's ``str()``)."""
+    text = getattr(c, "text", None)
+    return text(notation) if callable(text) else str(c)
+
+
+def _check_in_worker(i: int, points: int, seed: int, notation: str) -> _Checked:
     c = _compare(_CHOSEN[i], points, seed)
-    return _Checked(str(c), c.to_dict(), bool(c.equivalent))
+    return _Checked(_text(c, notation), c.to_dict(), bool(c.equivalent))
 
 
-def _compared(chosen: list, points: int, seed: int, jobs: int | None):
+def _compared(chosen: list, points: int, seed: int, jobs: int | None,
+              notation: str = "dots"):
     """``compare`` of each problem, in order; several at once in forked worker processes
     (each problem's check is independent) when there are several problems and CPUs."""
     import os
@@ -450,7 +462,7 @@ def _compared(chosen: list, points: int, seed: int, jobs: int | None):
     _CHOSEN[:] = chosen
     try:
         with ProcessPoolExecutor(max_workers=jobs, mp_context=fork) as pool:
-            futures = [pool.submit(_check_in_worker, i, points, seed)
+            futures = [pool.submit(_check_in_worker, i, points, seed, notation)
                        for i in range(len(chosen))]
             for problem, future in zip(_progress(chosen, "checking"), futures):
                 yield problem, future.result()
@@ -463,10 +475,10 @@ def _cmd_check(args) -> int:
     load("dualmech.compare")   # sympy, symengine and the comparator (see dualmech.startup)
     chosen = _selected(args)
     results = []
-    for problem, c in _compared(chosen, args.points, args.seed, args.jobs):
+    for problem, c in _compared(chosen, args.points, args.seed, args.jobs, args.notation):
         results.append((problem, c))
         if not args.json:
-            print(c)
+            print(_text(c, args.notation))
             print()
     if args.json:
         dicts = [c.to_dict() for _, c in results]
@@ -537,7 +549,8 @@ def _show_json(problem, models: dict) -> int:
     expressions as ``check --json`` writes them)."""
     from .notation import machine
     from .verify.display import dotted
-    doc = {"name": problem.name, "title": problem.title, "source": problem.source,
+    from .sources import source_fields
+    doc = {"name": problem.name, "title": problem.title, **source_fields(problem.source),
            "models": {name: {"coordinates": [q.func.__name__ for q in eqs.coordinates],
                              "unknowns": [str(u) for u in eqs.unknowns],
                              "equations": [{"label": label, "expression": dotted(e),
@@ -625,7 +638,7 @@ def _cmd_report(args) -> int:
         print(f"report: writing the charts and {out / 'report.html'}", file=sys.stderr,
               flush=True)
     w = write_report([c for _, c in results], out, args.duration,
-                     audience=args.audience)
+                     audience=args.audience, notation=args.notation)
     if args.json:
         print(_json({"problems": [_summary_row(p, c) for p, c in results],
                      "files": {"html": str(w.html), "markdown": str(w.markdown),

@@ -39,7 +39,7 @@ from .kinematics import t
 __all__ = ["BASES", "Dimension", "MASS", "LENGTH", "TIME", "ANGLE", "FORCE", "TORQUE", "ENERGY",
            "DIMENSIONLESS", "VELOCITY", "ACCELERATION", "STIFFNESS", "DAMPING",
            "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA", "FREQUENCY",
-           "DimensionIssue", "as_dimension", "audit", "audit_rows", "dimension_of",
+           "DimensionIssue", "quoted", "as_dimension", "audit", "audit_rows", "dimension_of",
            "dimension_reader", "format_dimension", "reduce"]
 
 #: the base dimensions, in the order :class:`Dimension` keeps them (sympy's SI names)
@@ -335,18 +335,31 @@ def _vformat(v: int) -> str:
 
 @dataclass(frozen=True)
 class DimensionIssue:
-    """One inconsistency: ``term`` has ``found`` where ``expected`` was required."""
+    """One inconsistency: ``term`` has ``found`` where ``expected`` was required.
+
+    ``parts`` is the sentence that says so, text and sympy expressions (a page typesets the
+    expressions, :func:`dualmech.notation.sentence` writes them in textbook text); ``str()``
+    writes each expression as plain text between backticks.
+    """
 
     term: str
     found: str
     expected: str
-    context: str = ""
+    parts: tuple = ()
+
+    def sentence(self) -> tuple:
+        """The sentence as text and expressions."""
+        return self.parts or (f"term `{self.term}` has dimension {self.found} where the "
+                              f"rest has {self.expected}",)
 
     def __str__(self) -> str:
-        if self.context:
-            return self.context
-        return (f"term `{self.term}` has dimension {self.found} where the rest has "
-                f"{self.expected}")
+        return quoted(self.sentence())
+
+
+def quoted(sentence) -> str:
+    """A sentence (text and expressions) as plain text, each expression between backticks:
+    the form of :meth:`DimensionIssue.__str__` and :meth:`Problem.dimension_issues`."""
+    return "".join(x if isinstance(x, str) else f"`{dotted(x)}`" for x in sentence)
 
 
 class _Walker:
@@ -396,8 +409,7 @@ class _Walker:
             if e.exp.is_Number:
                 return _vscale(base, Fraction(str(sp.Rational(e.exp))))
             if base != _ZERO or self(e.exp) != _ZERO:
-                self.issues.append(DimensionIssue(dotted(e), "?", "1", f"`{dotted(e)}`: a symbolic power "
-                                                  "needs a dimensionless base and exponent"))
+                self._symbolic_power(e)
             return _ZERO
         if isinstance(e, sp.Function):
             for a in e.args:
@@ -405,21 +417,30 @@ class _Walker:
             return _ZERO
         raise TypeError(f"cannot find the dimension of {e!r}")
 
+    def _issue(self, e, found: str, expected: str, *parts) -> None:
+        self.issues.append(DimensionIssue(self._show(e), found, expected, parts))
+
+    def _symbolic_power(self, e) -> None:
+        self._issue(e, "?", "1", self._sympy(e), ": a symbolic power needs a dimensionless "
+                    "base and exponent")
+
     def _dimensionless_argument(self, a, function: str) -> None:
         d = self(a)
         if d != _ZERO:
-            self.issues.append(DimensionIssue(
-                self._show(a), _vformat(d), "1",
-                f"argument `{self._show(a)}` of {function} has dimension "
-                f"{_vformat(d)}; it must be dimensionless"))
+            self._issue(a, _vformat(d), "1", "argument ", self._sympy(a),
+                        f" of {function} has dimension {_vformat(d)}; it must be "
+                        "dimensionless")
 
     def _undeclared(self, e) -> tuple:
-        self.issues.append(DimensionIssue(self._show(e), "?", "?",
-                                          f"`{self._show(e)}` has no declared dimension"))
+        self._issue(e, "?", "?", self._sympy(e), " has no declared dimension")
         return _ZERO
 
+    def _sympy(self, e):
+        """``e`` as a sympy expression (what an issue's sentence holds)."""
+        return e
+
     def _show(self, e) -> str:
-        return dotted(e)
+        return dotted(self._sympy(e))
 
     def _terms(self, e):
         return sp.Add.make_args(e)
@@ -435,16 +456,17 @@ class _Walker:
                 return terms[0][1]
             ranked = counts.most_common()
             if ranked[0][1] == ranked[1][1]:
-                listing = "; ".join(f"`{self._show(a)}` has {_vformat(d)}"
-                                    for a, d in terms)
-                self.issues.append(DimensionIssue(self._show(e), "mixed", "one dimension",
-                                                  f"terms disagree: {listing}"))
+                listing: list = ["terms disagree: "]
+                for i, (a, d) in enumerate(terms):
+                    listing += (["; "] if i else []) + [self._sympy(a), f" has {_vformat(d)}"]
+                self._issue(e, "mixed", "one dimension", *listing)
                 return ranked[0][0]
             expected = ranked[0][0]
         for a, d in terms:
             if d != expected:
-                self.issues.append(DimensionIssue(self._show(a), _vformat(d),
-                                                  _vformat(expected)))
+                self._issue(a, _vformat(d), _vformat(expected), "term ", self._sympy(a),
+                            f" has dimension {_vformat(d)} where the rest has "
+                            f"{_vformat(expected)}")
         return expected
 
 
@@ -458,6 +480,7 @@ class _SeWalker(_Walker):
     def __init__(self, dims: Mapping, names: Mapping):
         super().__init__(dims)
         self.names = names
+        self._rates: dict = {}   # plain state symbol -> the rate it stands for (display)
         se_dims: dict = {}
         for name, obj in names.items():
             if not name.endswith("()") and obj in self.dims:
@@ -472,12 +495,13 @@ class _SeWalker(_Walker):
             for order, sym in enumerate((st.q, st.qd, st.qdd)):
                 if names.get(sym.name) is sym:   # plain rows: q, q_dot, q_ddot
                     se_dims[se.Symbol(sym.name)] = _vadd(d, self.dims[t], -order)
+                    self._rates[sym] = q.diff(t, order) if order else q
         se_dims[se.Symbol(t.name)] = self.dims[t]
         self._memo.update(se_dims)   # declared symbols are their own memo entries
         self._seeded = set(se_dims)
 
-    def _show(self, e) -> str:
-        return dotted(to_sp(e, self.names))
+    def _sympy(self, e):
+        return to_sp(e, self.names).xreplace(self._rates)
 
     def _terms(self, e):
         return e.args if e.is_Add else (e,)
@@ -505,9 +529,7 @@ class _SeWalker(_Walker):
                 p, q = e.exp.get_num_den()
                 return _vscale(base, Fraction(int(p), int(q)))
             if base != _ZERO or self(e.exp) != _ZERO:
-                self.issues.append(DimensionIssue(self._show(e), "?", "1", f"`{self._show(e)}`: "
-                                                  "a symbolic power needs a dimensionless base "
-                                                  "and exponent"))
+                self._symbolic_power(e)
             return _ZERO
         for a in e.args:   # a function: every argument dimensionless
             self._dimensionless_argument(a, type(e).__name__)

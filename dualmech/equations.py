@@ -223,11 +223,11 @@ class EquationSet:
 
     @property
     def accelerations(self) -> tuple:
-        return tuple(q.diff(t, 2) for q in self.coordinates)
+        return _rates(tuple(self.coordinates))[1]
 
     @property
     def velocities(self) -> tuple:
-        return tuple(q.diff(t) for q in self.coordinates)
+        return _rates(tuple(self.coordinates))[0]
 
     @property
     def n(self) -> int:
@@ -592,6 +592,19 @@ def _latex_text(label: str) -> str:
 
 _ZERO = se.Integer(0)
 _RULES: dict = {}
+
+
+_RATES: dict = {}
+
+
+def _rates(coordinates: tuple) -> tuple[tuple, tuple]:
+    """``(velocities, accelerations)`` of ``coordinates`` (built once: sympy's ``diff`` is
+    not free, and these are asked for on every solve and display)."""
+    hit = _RATES.get(coordinates)
+    if hit is None:
+        hit = _RATES[coordinates] = (tuple(q.diff(t) for q in coordinates),
+                                     tuple(q.diff(t, 2) for q in coordinates))
+    return hit
 
 
 def _rules(coordinates) -> tuple[dict, dict, dict]:

@@ -192,7 +192,8 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
         raise ModelError(f"symbol(s) {', '.join(sorted(missing))} of the "
                          f"{type(method).__name__} are not parameters of `{problem.name}` (it "
                          f"has {', '.join(params)}); pass symbols={{'{sorted(missing)[0]}': "
-                         "...}}.")
+                         "...} naming the problem's symbol it stands for, or declare it as a "
+                         "parameter of the problem.")
     rule[tt] = T_DUALMECH
     equations = tuple(sp.sympify(r).xreplace(rule) for r in rows)
     return EquationSet(name, tuple(qmap.values()), equations,

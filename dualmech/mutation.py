@@ -11,7 +11,13 @@ as disagreeing and name an equation (or the reaction that differs).  Mutants tha
 dropped term that was zero, a swap of two parameters that enter symmetrically) cannot be caught
 by any comparator; neither can one whose every equation is a constant (state-independent)
 multiple of the original's -- e.g. doubling the car's mass, which scales out of its motion.
-Both are detected exactly and reported apart, not counted.  The sign of an
+Both are detected exactly and reported apart, not counted.  Neither is a survivor that the
+comparator, judging it against its own unbroken model, finds *equivalent*: the same motion,
+the same reactions and the same value of every one of them -- e.g. the flipped or doubled
+constraint of a multiplier that vanishes identically (``-N`` and ``2 N`` are ``N`` when
+``N = 0``).  Such a mutant claims nothing false, so no comparator could catch it; it is
+reported apart too.  Only a mutant that got past the full comparison is tested for this, so
+no caught mutant is ever reclassified.  The sign of an
 *unknown* reaction is not flipped: ``R d`` and ``-R d`` with ``R`` unknown are the same model
 with the unknown renamed, so the motion cannot change (the sign of a recovered reaction is
 checked against the published answers instead).
@@ -62,13 +68,14 @@ class MutationReport:
     survived: list = field(default_factory=list)    # mutant descriptions
     why: dict = field(default_factory=dict)         # survivor -> why it survived
     identical: list = field(default_factory=list)   # mutants equal to their original
+    equivalent: list = field(default_factory=list)  # same motion and reactions as the original
     errored: list = field(default_factory=list)     # (mutant description, the error raised)
     undetermined: list = field(default_factory=list)  # (mutant description, why no verdict)
 
     @property
     def total(self) -> int:
-        """Mutants with a verdict: caught or survived (errored, undetermined and identical
-        ones are reported apart and not counted)."""
+        """Mutants with a verdict: caught or survived (errored, undetermined, identical and
+        equivalent ones are reported apart and not counted)."""
         return len(self.killed) + len(self.survived)
 
     @property
@@ -80,6 +87,7 @@ class MutationReport:
         rate = f"{100 * self.kill_rate:.0f} %" if self.total else "no verdict"
         lines = [f"{self.problem}: {len(self.killed)}/{self.total} mutants caught "
                  f"({rate}), {len(self.identical)} identical to the original, "
+                 f"{len(self.equivalent)} equivalent (same motion and reactions), "
                  f"{len(self.errored)} errored, {len(self.undetermined)} undetermined "
                  "(none of those counted)"]
         for d in self.survived:
@@ -90,6 +98,8 @@ class MutationReport:
             lines.append(f"  ERRORED: {d}: {why}")
         for d, why in self.undetermined:
             lines.append(f"  UNDETERMINED: {d}: {why}")
+        for d in self.equivalent:
+            lines.append(f"  EQUIVALENT: {d}")
         return "\n".join(lines)
 
 
@@ -201,21 +211,48 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
                       if mut.model in r.suspects]
         if named:
             report.killed.append((mut.description, named))
+            continue
+        alone = _against_original(models[mut.model], candidate, ctx, points, seed,
+                                  claims.get(mut.model))
+        if _equivalent(alone, models[mut.model], candidate):
+            report.equivalent.append(mut.description)
         else:
             report.survived.append(mut.description)
-            report.why[mut.description] = _why_survived(mut, models[mut.model], candidate,
-                                                        ctx, points, seed)
+            report.why[mut.description] = _why_survived(alone, candidate)
     return report
 
 
-def _why_survived(mut, original: EquationSet, candidate: EquationSet, ctx, points, seed) -> str:
-    """Why a mutant got through: it changes only reactions that no second model derives."""
-    if not candidate.unknowns:
-        return "the comparator did not notice it: a gap in the checks"
+def _against_original(original: EquationSet, candidate: EquationSet, ctx, points, seed,
+                      claim=None):
+    """The mutant judged against its own unbroken model alone (``None`` if that raises)."""
     renamed = EquationSet("original", original.coordinates, original.equations,
                           original.unknowns, original.labels)
-    j = judge({"original": renamed, "mutant": candidate}, context=ctx, points=points,
-              seed=seed)
+    claims = {"original": claim, "mutant": claim} if claim is not None else None
+    try:
+        return judge({"original": renamed, "mutant": candidate}, context=ctx, points=points,
+                     seed=seed, claims=claims)
+    except (ModelError, ValueError, TypeError, ArithmeticError):
+        return None
+
+
+def _equivalent(j, original: EquationSet, candidate: EquationSet) -> bool:
+    """Exactly: does the mutant give the motion and every reaction of its original?
+
+    It must derive the same reactions (a dropped one is a loss, not an equivalence), and the
+    comparator must reach a verdict at sampled states: then the two agree in everything a
+    comparison of derivations can see, and the mutant claims nothing false.
+    """
+    if j is None or j.refusal or j.points == 0:
+        return False
+    if {u.name for u in candidate.unknowns} != {u.name for u in original.unknowns}:
+        return False
+    return j.equivalent
+
+
+def _why_survived(j, candidate: EquationSet) -> str:
+    """Why a mutant got through: it changes only reactions that no second model derives."""
+    if not candidate.unknowns or j is None:
+        return "the comparator did not notice it: a gap in the checks"
     if not j.faults and j.reaction_faults:
         names = ", ".join(r.name for r in j.reaction_faults)
         return (f"it leaves the motion unchanged and changes only the reaction(s) {names}, "

@@ -9,12 +9,18 @@ format          ``theta``             ``theta'``                   ``theta''``
 ==============  ====================  ===========================  ===================
 pretty (dots)   ``θ``                 ``θ̇``                        ``θ̈``
 pretty (primes) ``θ``                 ``θ′``                       ``θ′′``
+textbook line   ``θ``                 ``θ̇`` or ``θ′``              ``θ̈`` or ``θ′′``
 LaTeX (dots)    ``\\theta``            ``\\dot{\\theta}``             ``\\ddot{\\theta}``
 LaTeX (primes)  ``\\theta``            ``\\theta'``                  ``\\theta''``
 plain text      ``theta``             ``theta'``                   ``theta''``
 machine         ``theta``             ``theta_d``                  ``theta_dd``
 MathML          a theta               a theta, dot above           two dots above
 ==============  ====================  ===========================  ===================
+
+The textbook line (:func:`plain`) is what a page of prose or a terminal shows in one line:
+the pretty letters, powers as ``^`` and products as spaces (``m l θ̇^2 + sin(θ)``), no Python
+syntax.  A *sentence* -- the explanations dualmech writes -- is a tuple of text and expressions
+(:func:`sentence`), so each output typesets its expressions its own way.
 
 The LaTeX is the one ``sympy.physics.vector.vlatex`` writes for dynamic symbols (Greek names as
 ``\\theta``, trailing digits as subscripts: ``\\dot{\\theta}_{1}``); the machine form is a name the
@@ -33,6 +39,10 @@ Example
 '\\\\ddot{\\\\theta}'
 >>> pretty(th.diff(t, 2))
 'θ̈'
+>>> plain(e), plain(e, "primes")
+('l m θ̇^2 + sin(θ)', 'l m θ′^2 + sin(θ)')
+>>> sentence(("on the motion it equals ", e, ", not 0"))
+'on the motion it equals l m θ̇^2 + sin(θ), not 0'
 """
 from __future__ import annotations
 
@@ -51,7 +61,7 @@ from ._expr import as_expr
 from .kinematics import t
 
 __all__ = ["NOTATIONS", "check_notation", "pretty", "latex", "text", "machine",
-           "mathml", "symbol_text"]
+           "mathml", "plain", "sentence", "symbol_text"]
 
 #: the two ways of writing rates: dots over the letter, or primes after it
 NOTATIONS = ("dots", "primes")
@@ -165,6 +175,29 @@ class _Str(StrPrinter):
         return super()._print_Function(e) if r is None else self._name(r)
 
 
+class _Plain(StrPrinter):
+    """One-line textbook text: :func:`_unicode` names; ``*`` and ``**`` marked so that
+    :func:`plain` turns them into spaces and ``^`` (a name never holds the marks)."""
+    _default_settings = dict(StrPrinter._default_settings, coordinates=None,
+                             notation="dots")
+
+    def _name(self, name: str, order: int = 0) -> str:
+        return _unicode(name, order, self._settings["notation"]).replace("*", "\u2217")
+
+    def _print_Symbol(self, e):
+        return self._name(e.name)
+
+    _print_Dummy = _print_Symbol
+
+    def _print_Derivative(self, e):
+        r = _rate(self, e)
+        return super()._print_Derivative(e) if r is None else self._name(*r)
+
+    def _print_Function(self, e):
+        r = _rate(self, e)
+        return super()._print_Function(e) if r is None else self._name(*r)
+
+
 class _Named(StrPrinter):
     """Only for :func:`_rate`'s settings lookup."""
     _default_settings = dict(StrPrinter._default_settings, coordinates=None)
@@ -219,6 +252,26 @@ def text(expr, coordinates: Iterable | None = None) -> str:
 def machine(expr, coordinates: Iterable | None = None) -> str:
     """One-line text a parser reads: ``theta_d``, ``theta_dd`` for the rates, ``**`` powers."""
     return _Str(dict(_settings(coordinates), machine=True)).doprint(as_expr(expr))
+
+
+def plain(expr, notation: str = "dots", coordinates: Iterable | None = None) -> str:
+    """One line of textbook text: ``m l θ̇^2 + sin(θ)`` (``θ′`` with ``"primes"``).
+
+    Letters as :func:`pretty` writes them (Greek, subscript digits), powers as ``^``, products
+    as a space; nothing of Python's syntax (``**``, ``*``, ``Derivative``, ``(t)``).
+    """
+    check_notation(notation)
+    out = _Plain(dict(_settings(coordinates), notation=notation)).doprint(as_expr(expr))
+    return out.replace("**", "^").replace("*", " ").replace("\u2217", "*")
+
+
+def sentence(parts, notation: str = "dots", coordinates: Iterable | None = None) -> str:
+    """A sentence -- a tuple of text and expressions -- as one line of textbook text, each
+    expression written by :func:`plain`.  A plain string is returned as it is."""
+    if isinstance(parts, str):
+        return parts
+    return "".join(x if isinstance(x, str) else plain(x, notation, coordinates)
+                   for x in parts)
 
 
 def mathml(expr, notation: str = "dots", coordinates: Iterable | None = None) -> str:

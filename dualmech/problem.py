@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from ._expr import as_expr
-from .dimensions import ENERGY, Dimension, as_dimension, audit_rows, reduce
+from .dimensions import ENERGY, Dimension, as_dimension, audit_rows, quoted, reduce
 from .equations import EquationSet, ModelError, Rows
 from .kinematics import t
 
@@ -345,7 +345,14 @@ class Problem:
                                f"{len(errors)} mistake(s):\n  - " + "\n  - ".join(errors))
 
     def dimension_issues(self) -> list[str]:
-        """Dimensional inconsistencies of every derived equation (empty when all consistent)."""
+        """Dimensional inconsistencies of every derived equation (empty when all consistent),
+        as plain text; :meth:`dimension_audit` gives the same sentences with their terms as
+        expressions."""
+        return [quoted(s) for s in self.dimension_audit()]
+
+    def dimension_audit(self) -> list[tuple]:
+        """Dimensional inconsistencies of every derived equation, each a sentence: a tuple of
+        text and the sympy expressions of the terms it names (empty when all consistent)."""
         dims = self.dimensions()
         out = []
         for mname, eqs in self.models().items():
@@ -361,7 +368,7 @@ class Problem:
                 expected.append(x)
             found = audit_rows(rows.se if held else rows, dims, expected, names=names)
             for label, issues in zip(eqs.labels, found):
-                out += [f"{mname} [{label}]: {issue}" for issue in issues]
+                out += [(f"{mname} [{label}]: ",) + issue.sentence() for issue in issues]
         return out
 
     def __repr__(self) -> str:

@@ -3,7 +3,9 @@
 A problem's ``source`` reads ``"<file>: <where in it>"`` with the archive's hashed file name
 (``001_9d08622cf8d659c2.txt: 2.003J spring 2011, quiz 1``); a handout names the course and
 the problem instead (``MIT 2.003J, Spring 2011: quiz 1``).  Sources that do not start with a
-known file are returned unchanged.
+known file are returned unchanged.  Every place a person reads a source uses
+:func:`source_name`; JSON carries the name as ``source`` and the file, for programs, as
+``source_file`` (:func:`source_fields`).
 
 Example
 -------
@@ -11,10 +13,17 @@ Example
 'MIT 2.003J Dynamics and Control I, Spring 2011: quiz 1'
 >>> source_name("by hand")
 'by hand'
+>>> source_file("001_9d08622cf8d659c2.txt: 2.003J spring 2011, quiz 1"), source_file("by hand")
+('001_9d08622cf8d659c2.txt', None)
 """
 from __future__ import annotations
 
-__all__ = ["COURSES", "source_name", "course_of"]
+import re
+
+__all__ = ["COURSES", "source_name", "source_file", "source_fields", "course_of"]
+
+#: a file name that opens a source: ``notes.pdf: Example 3`` (no spaces, an extension)
+_FILE = re.compile(r"[\w.-]+\.[A-Za-z0-9]{1,5}")
 
 #: file -> (course, prefixes of the "where" part that repeat the course and are dropped)
 COURSES: dict[str, tuple[str, tuple[str, ...]]] = {
@@ -47,3 +56,15 @@ def source_name(source: str) -> str:
     if not course:
         return source
     return f"{course}: {where}" if where else course
+
+
+def source_file(source: str) -> str | None:
+    """The file a problem's ``source`` names first (``000_203248afac9714e6.txt``), or
+    ``None`` when it opens with no file name (``"textbook: Landau & Lifshitz"``)."""
+    file, sep, _ = source.partition(": ")
+    return file if file in COURSES or (sep and _FILE.fullmatch(file)) else None
+
+
+def source_fields(source: str) -> dict:
+    """``{"source": <named by course>, "source_file": <file or None>}``: the two JSON fields."""
+    return {"source": source_name(source), "source_file": source_file(source)}

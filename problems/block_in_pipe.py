@@ -40,13 +40,20 @@ Lagrangian, written independently (the source's)::
     th:  m y^2 th'' + 2 m y y' th' + m g y sin th = 0
     y :  m y'' - m y th'^2 - m g cos th + k (y - y0) + d y' = 0
 
-The normal force once more, independently (:func:`multiplier_model`): free the block from the
-pipe's axis with an offset ``w`` along ``e_th`` (``r = y e_r + w e_th``), held by ``w = 0``
-with multiplier ``N``: the pair ``N e_th`` on the block and ``-N e_th`` on the pipe at the
-block does virtual work ``N dw``.  It gives ``N = 0`` as well (pinned in the tests).  It is
-not registered among the problem's models: a reaction that vanishes identically cannot be
-told from its negative or its double, so the mutants "flip/double the constraint" of that
-model would be the same model and no comparator could catch them.
+The normal force once more, independently (``multiplier``, :func:`multiplier_model`): free
+the block from the pipe's axis with an offset ``w`` along ``e_th`` (``r = y e_r + w e_th``),
+held by ``w = 0`` with multiplier ``N``: the pair ``N e_th`` on the block and ``-N e_th`` on
+the pipe at the block does virtual work ``N dw``::
+
+    r' = (y' - w th') e_r + (y th' + w') e_th
+    w :  m (w'' - w th'^2 + 2 y' th' + y th'') + m g sin th = N     (on w = 0: the block's e_th
+                                                                     equation above)
+
+so ``N`` is derived twice, and both derivations give ``N = 0``.  A reaction that vanishes
+identically cannot be told from its negative or its double: the mutants "flip/double the
+constraint ``N``" of this model give the same motion and the same ``N`` as the model itself,
+and the mutation score reports them apart as *equivalent* (:mod:`dualmech.mutation`).  A
+wrong term that makes either derivation's ``N`` non-zero is caught (pinned in the tests).
 
 Equilibrium (derived by the library in the tests): ``th = 0``, ``y = y0 + m g/k``; small
 oscillations ``omega^2 = k/m`` (along the pipe) and ``g/(y0 + m g/k)`` (swing).
@@ -97,7 +104,8 @@ def frames() -> SimpleNamespace:
 def multiplier_model() -> EquationSet:
     """The block off the pipe's axis by ``w``, held on it by the multiplier ``N`` (module doc).
 
-    In ``(theta, y, w)``; :meth:`BlockInPipe.coordinate_maps` gives the map (``w = 0``).
+    In ``(theta, y, w)``; :meth:`BlockInPipe.coordinate_maps` gives the map (``w = 0``).  The
+    problem's ``multiplier`` model.
     """
     s, c = sp.sin(theta), sp.cos(theta)
     e_r, e_th = sp.Matrix([s, -c]), sp.Matrix([c, s])
@@ -120,7 +128,7 @@ class BlockInPipe(Problem):
     title = "Block in a pivoting pipe with spring and damper"
     source = "003_d6818267b4d96a20.txt: lecture 18, Block in a pipe I/II (Oppgave 3)"
     summary = ("Polar coordinates of a block in a massless swinging pipe; the pipe's normal "
-               "force vanishes identically, from the free-body diagrams and the multiplier.")
+               "force vanishes identically, from the free-body diagrams and from a multiplier.")
     parameters = (
         Parameter(m, MASS, 0.5, (0.05, 5.0), "mass of the block"),
         Parameter(k, STIFFNESS, 40.0, (1.0, 500.0), "spring constant"),
@@ -132,8 +140,13 @@ class BlockInPipe(Problem):
         Coordinate(theta, ANGLE, (-2.5, 2.5), (-4.0, 4.0), "pipe angle from the downward vertical"),
         Coordinate(y, LENGTH, (0.1, 2.5), (-3.0, 3.0), "distance of the block from O"),
     )
+    extra_coordinates = (
+        Coordinate(w, LENGTH, (-0.3, 0.3), (-3.0, 3.0), "offset of the block off the pipe's "
+                   "axis, along e_th (0: held by N)"),
+    )
     reactions = (Reaction("N", FORCE, "pipe on the block, along e_th = P.x"),)
     singular = (y,)
+    extra_models = ("multiplier",)
 
     def coordinate_maps(self) -> dict:
         return {"multiplier": {theta: theta, y: y, w: 0}}
@@ -160,6 +173,10 @@ class BlockInPipe(Problem):
         lg.spring("spring", k, y - y0)
         lg.generalized_force("damper", [0, -d * D(y)])
         return lg.equations()
+
+    def multiplier(self) -> EquationSet:
+        """The block freed from the pipe's axis by ``w``; ``N`` its multiplier (module doc)."""
+        return multiplier_model()
 
     def published(self) -> list[Published]:
         f = frames()

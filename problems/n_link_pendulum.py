@@ -2,7 +2,9 @@ r"""Planar n-link pendulum: a chain of n point masses on massless rods, or of n 
 
 A parametric problem for scaling: ``NLinkPendulum(n)`` (point masses, the default of
 ``dualmech check n_link_pendulum --n 10``) and ``NLinkRigidPendulum(n)`` (uniform rigid links).
-Written both ways like every problem, with the rod forces as reactions.
+Written both ways like every problem, with the rod forces as reactions, and each reaction
+derived a second time as a multiplier of a maximal-coordinate model (``cartesian=True``, the
+default).
 
 Sign convention (absolute angles from the downward vertical, counter-clockwise positive)::
 
@@ -38,6 +40,28 @@ the middle, ``I_i = m_i l_i^2 / 12``; joint ``i`` (top of rod ``i``) carries the
 (x, y) and Euler's equation about the centre for each rod, ``3n`` equations for ``n``
 accelerations and ``2n`` joint forces.  Lagrange: ``T = sum (m_i v_Ci^2 + I_i theta_i'^2)/2``
 written by hand.
+
+The joint forces once more (``cartesian=True``, model ``multiplier``): each rod free in the
+plane, its centre at ``(xc_i, yc_i)`` and its angle ``theta_i``, the joints closed again by
+constraints.  Rod ``i``'s top and bottom are ``(xc_i, yc_i) -/+ (l_i/2)(sin theta_i,
+-cos theta_i)``; joint ``i`` puts the top of rod ``i`` on the bottom of rod ``i-1`` (on O for
+``i = 1``)::
+
+    g_Xi = xc_i - (l_i/2) sin theta_i - xc_{i-1} - (l_{i-1}/2) sin theta_{i-1} = 0
+    g_Yi = yc_i + (l_i/2) cos theta_i - yc_{i-1} + (l_{i-1}/2) cos theta_{i-1} = 0
+    T = sum (m_i (xc_i'^2 + yc_i'^2) + (m_i l_i^2/12) theta_i'^2)/2,   V = g sum m_i yc_i
+
+``X_i`` on rod ``i`` at its top and ``-X_i`` on rod ``i-1`` at its bottom do the virtual work
+``X_i dg_Xi``: the multipliers of ``g_Xi``, ``g_Yi`` are the joint forces ``X_i``, ``Y_i`` of the
+direct form, sign and all.  Lagrange's equations are then each rod's free body::
+
+    xc_i:     m_i xc_i''  = X_i - X_{i+1}
+    yc_i:     m_i yc_i''  = -m_i g + Y_i - Y_{i+1}
+    theta_i:  I_i theta_i'' = -(l_i/2) ((X_i + X_{i+1}) cos theta_i + (Y_i + Y_{i+1}) sin theta_i)
+
+(``X_{n+1} = Y_{n+1} = 0``): ``5n`` equations with the constraints' acceleration level, for
+``3n`` accelerations and ``2n`` forces.  Mapped back (``xc_i = sum_{j<i} l_j sin theta_j +
+(l_i/2) sin theta_i``, likewise ``yc_i``), every joint force is derived twice.
 """
 from __future__ import annotations
 
@@ -174,13 +198,33 @@ class NLinkRigidPendulum(_Chain):
     source = "dualmech: parametric scaling problem (after 002's compound double pendulum)"
     parametric = "n"
     summary = ("A chain of n uniform rods: Newton-Euler with the joint forces per rod, against "
-               "the Lagrangian written by hand.")
+               "the Lagrangian written by hand; the joint forces again as multipliers of the "
+               "rods freed in the plane.")
 
-    def __init__(self, n: int = 3):
-        super().__init__(n, cartesian=False)
+    def __init__(self, n: int = 3, cartesian: bool = True):
+        super().__init__(n, cartesian)
         self.reactions = tuple(
             Reaction(f"{a}{i + 1}", FORCE, f"joint {i + 1} on rod {i + 1}, along {a.lower()}")
             for i in range(n) for a in "XY")
+        self.extra_models = ("multiplier",) if cartesian else ()
+        if cartesian:
+            self.xc = tuple(coordinate(f"xc{i + 1}") for i in range(n))
+            self.yc = tuple(coordinate(f"yc{i + 1}") for i in range(n))
+            self.extra_coordinates = tuple(
+                Coordinate(c, LENGTH, (-3.0, 3.0), (-3.0, 3.0),
+                           f"{c.func.__name__[:2]} of the centre of rod {c.func.__name__[2:]}")
+                for c in self.xc + self.yc)
+
+    def coordinate_maps(self) -> dict:
+        if not self.cartesian:
+            return {}
+        rules, X, Y = {}, 0, 0          # X, Y: the joint above rod i
+        for i, q in enumerate(self.q):
+            half = self.l[i] / 2
+            rules[q] = q
+            rules[self.xc[i]], rules[self.yc[i]] = X + half * sp.sin(q), Y - half * sp.cos(q)
+            X, Y = X + self.l[i] * sp.sin(q), Y - self.l[i] * sp.cos(q)
+        return {"multiplier": rules}
 
     def newton_euler(self) -> EquationSet:
         O, links, joints = self._frames()
@@ -216,6 +260,23 @@ class NLinkRigidPendulum(_Chain):
             vx += l * _d(q) * sp.cos(q)
             vy += l * _d(q) * sp.sin(q)
             height -= l * sp.cos(q)
+        return lg.equations()
+
+    def multiplier(self) -> EquationSet:
+        """Each rod free in the plane; the joints closed by the multipliers ``X_i``, ``Y_i``."""
+        coords = [c for i in range(self.n) for c in (self.xc[i], self.yc[i], self.q[i])]
+        lg = Lagrangian("multiplier", coordinates=coords,
+                        description="rods free in the plane, joined by multipliers X_i, Y_i")
+        bottom = (0, 0)                 # of the rod above (O for the first)
+        for i, q in enumerate(self.q):
+            x, y, l, m = self.xc[i], self.yc[i], self.l[i], self.m[i]
+            lg.kinetic(f"T of rod {i + 1}", m * (_d(x)**2 + _d(y)**2) / 2
+                       + m * l**2 / 12 * _d(q)**2 / 2)
+            lg.potential(f"gravity on rod {i + 1}", m * g * y)
+            top = (x - l / 2 * sp.sin(q), y + l / 2 * sp.cos(q))
+            lg.constraint(f"X{i + 1}", top[0] - bottom[0])
+            lg.constraint(f"Y{i + 1}", top[1] - bottom[1])
+            bottom = (x + l / 2 * sp.sin(q), y - l / 2 * sp.cos(q))
         return lg.equations()
 
 

@@ -72,6 +72,33 @@ The slip rate and the height are the contact point's displacement along ``j`` an
 the multipliers are ``F_y`` and ``F_z`` (radial friction, zero by the closure, does no work
 here either).  The map back is ``psi = -(l/a) phi``, ``eps = 0``.
 
+The pivot force once more (``pivot_multiplier``), independently: free the pivot O as well,
+to move by ``u_x i + u_y j + u_z k`` (so the pivot is a ball joint that lets go; the axle
+keeps the azimuth ``phi`` and tilt ``eps``, the wheel its spin ``psi``).  Positions in inertial
+components (``i = (cos phi, sin phi, 0)``, ``j = (-sin phi, cos phi, 0)``), differentiated
+as they stand; the wheel's rate ``w`` on its axis ``n`` and across it::
+
+    r_O = u_x i + u_y j + u_z k,   n = cos eps i + sin eps k,   b = -sin eps i + cos eps k
+    r_G = r_O + l n,   r_C = r_G - a b (the rim's lowest point),   w = phi' k - eps' j + psi' n
+    T = m |r_G'|^2/2 + (m a^2/2)(w . n)^2/2 + (m a^2/4)(|w|^2 - (w . n)^2)/2
+    V = m g (u_z + l sin eps),   Q = (tau, 0, 0, 0, 0, 0)   (drive about K on the axle)
+    pivot:    u_x = 0 (R_x),   u_y = 0 (R_y),   u_z = 0 (R_z)
+    contact:  r_C . k + a = u_z + l sin eps - a cos eps + a = 0                       (F_z)
+    rolling:  v_C . j = u_y' + (u_x + l cos eps + a sin eps) phi' + a psi' = 0       (F_y)
+
+with ``v_C = r_G' + w x (-a b)`` the wheel's material point at C.  ``R . dr_O = R_x du_x +
+R_y du_y + R_z du_z`` on ``u = 0``, so the pivot's multipliers are ``R``'s components on
+``i, j, k``.  On the motion (``u = 0``, ``eps = 0``, ``r_G' = l phi' j``)::
+
+    u_x:  -m l phi'^2 = R_x           (the centripetal force, all through the axle)
+    u_y:   m l phi'' = R_y + F_y      (F_y: the rolling constraint has u_y' in it)
+    u_z:   m g       = R_z + F_z
+
+which with ``F_y``, ``F_z`` from the ``phi``, ``psi``, ``eps`` rows is ``R`` above: the pivot
+force is derived twice (and the contact force three times).  The radial friction is no
+constraint here (the contact may slip along ``i``), which is the closure ``F_x = 0`` of the
+direct forms.  The map back adds ``u_x = u_y = u_z = 0``.
+
 Errata (see :meth:`WheelOnPivot.published`)
 -------------------------------------------
 * (a), first line of ``L_O``: ``L_G`` is copied as ``(1/4) m a^2 Omega (-(l/a) i + k)``; it is
@@ -105,6 +132,7 @@ m, a, l, g = sp.symbols("m a l g", positive=True)
 tau = sp.Symbol("tau", real=True)
 phi = coordinate("phi")
 psi, eps = coordinate("psi"), coordinate("eps")
+u_x, u_y, u_z = coordinate("u_x"), coordinate("u_y"), coordinate("u_z")
 F_x, F_y, F_z = sp.symbols("F_x F_y F_z", real=True)
 
 D = lambda q: q.diff(t)  # noqa: E731
@@ -151,7 +179,8 @@ class WheelOnPivot(Problem):
     title = "Wheel rolling round a pivot (steady motion, contact force)"
     source = "004_f75aa9bb64d0737a.txt: question 2 (a), (b)"
     summary = ("Precession angle as the free coordinate (J phi'' = tau: steady iff tau = 0); "
-               "contact force from H_O, from Newton-Euler and from multipliers.")
+               "contact force from H_O, from Newton-Euler and from multipliers; pivot force "
+               "from Newton-Euler and from the pivot freed.")
     parameters = (
         Parameter(m, MASS, 2.0, (0.1, 10.0), "mass of the wheel"),
         Parameter(a, LENGTH, 0.3, (0.05, 1.0), "radius of the wheel"),
@@ -165,6 +194,9 @@ class WheelOnPivot(Problem):
     extra_coordinates = (
         Coordinate(psi, ANGLE, (-3.0, 3.0), (-30.0, 30.0), "spin of the wheel about its axle"),
         Coordinate(eps, ANGLE, (-0.2, 0.2), (-1.0, 1.0), "tilt of the axle (G raised)"),
+        Coordinate(u_x, LENGTH, (-0.1, 0.1), (-1.0, 1.0), "pivot O freed: displacement along i"),
+        Coordinate(u_y, LENGTH, (-0.1, 0.1), (-1.0, 1.0), "pivot O freed: displacement along j"),
+        Coordinate(u_z, LENGTH, (-0.1, 0.1), (-1.0, 1.0), "pivot O freed: displacement along k"),
     )
     reactions = (
         Reaction("F_x", FORCE, "plane on the wheel at C, along i (radial; 0 by the closure)"),
@@ -174,10 +206,12 @@ class WheelOnPivot(Problem):
         Reaction("R_y", FORCE, "pivot on the axle at O, along j"),
         Reaction("R_z", FORCE, "pivot on the axle at O, along k"),
     )
-    extra_models = ("angular_momentum", "multiplier")
+    extra_models = ("angular_momentum", "multiplier", "pivot_multiplier")
 
     def coordinate_maps(self) -> dict:
-        return {"multiplier": {phi: phi, psi: -l / a * phi, eps: 0}}
+        return {"multiplier": {phi: phi, psi: -l / a * phi, eps: 0},
+                "pivot_multiplier": {phi: phi, psi: -l / a * phi, eps: 0,
+                                     u_x: 0, u_y: 0, u_z: 0}}
 
     def newton_euler(self) -> EquationSet:
         """``sum F = m a_G`` and Euler about G on ``i, j, k``; closure ``F_x = 0``."""
@@ -217,6 +251,43 @@ class WheelOnPivot(Problem):
         lg.generalized_force("drive", [tau, 0, 0])
         lg.velocity_constraint("F_y", [l * ce + a * se, a, 0])
         lg.constraint("F_z", a + l * se - a * ce)
+        return lg.equations()
+
+    def pivot_multiplier(self) -> EquationSet:
+        """The pivot freed by ``(u_x, u_y, u_z)`` too; ``R`` and ``F_y``, ``F_z`` restored by
+        multipliers.  Vectors in inertial components, differentiated as they stand."""
+        cp, sp_ = sp.cos(phi), sp.sin(phi)
+        se, ce = sp.sin(eps), sp.cos(eps)
+        i, j, k = sp.Matrix([cp, sp_, 0]), sp.Matrix([-sp_, cp, 0]), sp.Matrix([0, 0, 1])
+        n = ce * i + se * k                   # along the axle, O -> G
+        b = -se * i + ce * k                  # up in the wheel's plane
+        r_G = u_x * i + u_y * j + u_z * k + l * n
+        v_G = r_G.diff(t)
+        w = D(phi) * k - D(eps) * j + D(psi) * n
+        v_C = v_G + w.cross(-a * b)           # the wheel's material point at C
+        # |r_G'|^2, w . n and |w|^2 from their components on i, j, k, each with
+        # sin^2 + cos^2 = 1 used (the azimuth phi drops out of them, as it must)
+        unit = {sp.sin(x)**2: 1 - sp.cos(x)**2 for x in (phi, eps)}
+        tidy = lambda e: sp.expand(sp.expand(e).xreplace(unit))  # noqa: E731
+        on_ijk = lambda v: [tidy(v.dot(e)) for e in (i, j, k)]  # noqa: E731
+        speed2 = sum(c**2 for c in on_ijk(v_G))
+        spin = tidy(w.dot(n))
+        turn2 = sum(c**2 for c in on_ijk(w))
+        coords = [phi, psi, eps, u_x, u_y, u_z]
+        lg = Lagrangian("pivot_multiplier", coordinates=coords,
+                        description="pivot and contact freed; multipliers R_x, R_y, R_z, "
+                        "F_y, F_z")
+        lg.kinetic("T of wheel, translation", m * speed2 / 2)
+        lg.kinetic("T of wheel, rotation", m * a**2 / 2 * spin**2 / 2
+                   + m * a**2 / 4 * (turn2 - spin**2) / 2)
+        lg.potential("gravity", m * g * r_G.dot(k))
+        lg.generalized_force("drive", [tau, 0, 0, 0, 0, 0])
+        lg.constraint("R_x", u_x)
+        lg.constraint("R_y", u_y)
+        lg.constraint("R_z", u_z)
+        lg.constraint("F_z", (r_G - a * b).dot(k) + a)
+        slip = v_C.dot(j)                     # linear in the rates: its gradient is exact
+        lg.velocity_constraint("F_y", [tidy(slip.diff(D(q))) for q in coords])
         return lg.equations()
 
     def published(self) -> list[Published]:

@@ -19,6 +19,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
+import re
 
 import pytest
 import sympy as sp
@@ -199,8 +200,10 @@ def compared(cls):
 
 
 def assert_readable(c) -> None:
-    """No self-contradicting line and the notation people read (``x'``, not Derivative)."""
+    """No self-contradicting line and the notation people read (``ẋ``, not Derivative or
+    Python's ``**`` and ``*``; ``x'`` in JSON)."""
     text = str(c)
+    assert not re.search(r"\*\*|[\w)]\*[\w(]|\w_d?dot\b", text), text
     for mm in c.mismatches:
         residual = mm.residual.strip()
         assert residual != "0", f"{mm.model} [{mm.equation}] differs with a residual of 0"
@@ -300,6 +303,26 @@ def test_cart_pendulum_dashpot_residuals_are_simplified():
 
 def test_cart_pendulum_report_uses_primes_not_derivative():
     assert_readable(compared(CartPendulumDashpotOnX))
+
+
+def test_check_text_of_a_disagreement_is_in_textbook_notation():
+    """``dualmech check``'s text: residuals, terms, states and the dimension audit in the
+    textbook's letters.  By hand (as above): residuals c_t x' and -c_t theta'; c_t is a
+    torsional dashpot (N m s = M L^2 T^-1), so c_t x' has M L^3 T^-2 in a force equation."""
+    c = compared(CartPendulumDashpotOnX)
+    dots, primes = c.text(), c.text("primes")
+    assert "residual after the best combination: c\u209c x\u0307" in dots
+    assert "residual after the best combination: -c\u209c \u03b8\u0307" in dots
+    assert "residual after the best combination: -c\u209c \u03b8\u2032" in primes
+    assert ("lagrange [Lagrange, x]: term c\u209c x\u0307 has dimension M L^3 T^-2 where the "
+            "rest has M L T^-2") in dots
+    state = re.search(r"at (.*): residual", dots).group(1)
+    assert "\u03b8\u0307=" in state and "theta" not in state
+    s = mismatches_of(c, "lagrange")["Lagrange, x"].state    # the dashpot's term, valued
+    value = s["c_t"] * s["x'"]
+    assert f"{value:+.6g}  c\u209c x\u0307\n" in dots
+    assert c.mismatches[0].to_dict()["residual"] == "c_t*x'"   # JSON keeps its plain form
+    assert str(c) == dots and "\u2032" not in dots and "\u0307" not in primes
 
 
 def test_falling_container_direct_model_in_other_coordinates_is_the_odd_one():

@@ -1,9 +1,13 @@
-"""Block in a pipe (problems/block_in_pipe.py): the vanishing normal force, equilibrium, modes."""
+"""Block in a pipe (problems/block_in_pipe.py): the vanishing normal force, derived twice and
+compared, equilibrium, modes."""
 import pytest
 import sympy as sp
 
+from dualmech import Lagrangian, t
 from dualmech.compare import compare, compare_models
-from dualmech.problems.block_in_pipe import BlockInPipe, g, k, m, multiplier_model, theta, y, y0
+from dualmech.mutation import mutation_report
+from dualmech.problems.block_in_pipe import (BlockInPipe, d, g, k, m, multiplier_model, theta, w,
+                                             y, y0)
 
 problem = BlockInPipe()
 N = sp.Symbol("N", real=True)
@@ -16,7 +20,7 @@ def comparison():
 
 def test_declaration_validates():
     problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange"]
+    assert problem.model_names == ["newton_euler", "lagrange", "multiplier"]
     assert problem.dimension_issues() == []
 
 
@@ -30,6 +34,60 @@ def test_multiplier_of_the_axis_constraint_is_zero_too():
     assert mapped.is_square and mapped.unknowns == (N,)
     assert compare_models(problem.model("lagrange"), mapped, explain=False).equivalent
     assert sp.simplify(mapped.reactions_solved()[N]) == 0
+
+
+def test_N_is_derived_twice_and_compared(comparison):
+    assert comparison.reaction_derivations == {"N": ["newton_euler", "multiplier"]}
+    assert comparison.not_cross_checked == []
+    (pair,) = [p for p in comparison.pairs if p.kind == "reactions"]
+    assert pair.reactions == ("N",) and pair.equivalent and pair.method == "exact"
+    assert {pair.reference, pair.candidate} == {"newton_euler", "multiplier"}
+    assert "NOT CROSS-CHECKED" not in str(comparison)
+
+
+class _SpuriousTangential(BlockInPipe):
+    """The multiplier model with a stray force ``c m g`` along ``e_th`` put on the offset ``w``
+    only (a student's generalised force computed for the wrong coordinate).  On ``w = 0`` it
+    leaves the motion alone and moves the multiplier to ``N = -c m g``."""
+
+    def multiplier(self):
+        s, c = sp.sin(theta), sp.cos(theta)
+        e_r, e_th = sp.Matrix([s, -c]), sp.Matrix([c, s])
+        r = y * e_r + w * e_th
+        v = r.diff(t)
+        lg = Lagrangian("multiplier", coordinates=[theta, y, w])
+        lg.kinetic("T of block", m * (v.T * v)[0, 0] / 2)
+        lg.potential("gravity", m * g * r[1])
+        lg.spring("spring", k, y - y0)
+        damper = -d * y.diff(t) * e_r
+        lg.generalized_force("damper", [damper.dot(r.diff(q)) for q in (theta, y, w)])
+        lg.generalized_force("stray", [0, 0, sp.Rational(3, 7) * m * g])
+        lg.constraint("N", w)
+        return lg.equations()
+
+
+def test_a_wrong_N_in_the_multiplier_model_is_a_named_disagreement():
+    broken = compare(_SpuriousTangential())
+    assert all(p.equivalent for p in broken.pairs if p.kind == "motion")   # motion untouched
+    assert not broken.equivalent
+    (pair,) = [p for p in broken.pairs if p.kind == "reactions"]
+    assert not pair.equivalent and pair.mismatches
+    assert {mm.equation for mm in pair.mismatches} == {"reaction N"}
+    assert "DIFFERENT" in str(broken) and "all derivations agree" not in str(broken)
+    # the stray force's value, exactly: the broken model's N is -3/7 m g at any state
+    mapped = broken.problem.in_reference_coordinates(broken.problem.model("multiplier"))
+    assert sp.simplify(mapped.reactions_solved()[N] + sp.Rational(3, 7) * m * g) == 0
+
+
+def test_mutants_of_the_vanishing_multiplier_are_equivalent_not_survivors():
+    report = mutation_report(problem)
+    assert report.kill_rate == 1.0 and report.total >= 30, str(report)
+    # -N and 2 N are N when N = 0: the same motion and the same reaction, counted apart
+    assert sorted(report.equivalent) == ["multiplier: double `constraint N`",
+                                         "multiplier: flip the sign of `constraint N`"]
+    # dropping the constraint loses N: a catch, never an equivalence
+    killed = dict(report.killed)
+    assert killed["multiplier: drop `constraint N`"] == ["multiplier: reactions"]
 
 
 def test_equilibrium_and_small_oscillations_derived_by_the_library():

@@ -171,7 +171,46 @@ def test_list_json_carries_source_and_summary(capsys, tiny_catalogue):
     rows = json.loads(out)
     assert [r["name"] for r in rows] == ["spring_on_floor", "wrong_spring"]
     assert rows[0]["source"] == "test: by hand" and rows[0]["dof"] == 1
+    assert rows[0]["source_file"] is None            # "test" is not a file name
     assert rows[0]["status"] == "modelled" and rows[0]["coordinates"] == ["x"]
+
+
+#: the archive's file names: ``000_203248afac9714e6.txt``
+HASHED = re.compile(r"\d{3}_[0-9a-f]{16}")
+
+
+def test_sources_are_named_by_course_with_the_file_beside_them(capsys):
+    """Over the whole catalogue: what a person reads names the course and the problem; the
+    file stays in JSON as ``source_file``.  By hand from sources/README.md: 001 is MIT 2.003J
+    (Spring 2011), 000 the lecture notes on Lagrange's method."""
+    out = run(capsys, "list")[1]
+    assert not HASHED.search(out)
+    rows = json.loads(run(capsys, "list", "--json")[1])
+    declared = {d.name: d.source for d in problems.declarations()}
+    declared.update({name: source for name, source, _ in problems.OUT_OF_SCOPE})
+    assert {r["name"] for r in rows} == set(declared)
+    for r in rows:
+        assert not HASHED.search(r["source"] + r["summary"] + r["title"]), r
+        file = declared[r["name"]].partition(": ")[0]
+        if HASHED.match(file):
+            assert r["source_file"] == file and r["source"].endswith(
+                declared[r["name"]].partition(": ")[2].split(", ")[-1])
+        else:
+            assert r["source_file"] is None and r["source"] == declared[r["name"]]
+    toy = next(r for r in rows if r["name"] == "toy_car")
+    assert toy["source"] == "MIT 2.003J Dynamics and Control I, Spring 2011: quiz 1"
+    assert toy["source_file"] == "001_9d08622cf8d659c2.txt"
+    assert next(r for r in rows if r["name"] == "shaft_torsion")["source"].startswith(
+        "Exam \"Dynamics and Stability\"")
+    shown = json.loads(run(capsys, "show", "simple_pendulum", "--json")[1])
+    checked = json.loads(run(capsys, "check", "simple_pendulum", "--json")[1])
+    for doc in (shown, checked):
+        assert doc["source"] == ("Cambridge 3C5 Dynamics, Lagrangian mechanics: section 2.2, "
+                                 "Lagrange's equation for a simple pendulum")
+        assert doc["source_file"] == "002_df41972c66c4514e.txt"
+    for argv in (("show", "simple_pendulum"), ("check", "simple_pendulum")):
+        out = run(capsys, *argv)[1]
+        assert "Cambridge 3C5" in out and not HASHED.search(out)
 
 
 def test_list_of_the_real_catalogue_fits_100_columns(capsys):

@@ -175,4 +175,4 @@ def test_check_solves_the_static_row_and_shows_y_theta_and_R_O():
     d = c.to_dict()
     assert set(d["accelerations"]) == {"y"} and set(d["static"]) == {"theta"}
     assert set(d["reactions"]) == {"R_O"} and d["reactions_not_cross_checked"] == []
-    assert "theta = L*k2*y/(L**2*k2 + a**2*k1)   (static row" in str(c)
+    assert "θ = L k₂ y/(L^2 k₂ + a^2 k₁)   (static row: no inertia in θ)" in str(c)

@@ -65,3 +65,27 @@ def test_a_wrong_term_is_named_and_a_shared_subexpression_once():
 def test_function_arguments_must_be_dimensionless():
     assert [str(i) for i in audit(sp.sin(l) * m * g, DIMS)] == \
         ["argument `l` of sin has dimension L; it must be dimensionless"]
+
+
+def test_an_issue_names_its_terms_as_expressions_in_every_notation():
+    """The sentence holds the terms themselves, so a page typesets them and text writes them
+    in the textbook's notation (a derivation held in symengine: tests/test_blame.py)."""
+    from dualmech import coordinate, t
+    from dualmech.dimensions import ANGLE
+    from dualmech.notation import sentence
+    x, th = coordinate("x"), coordinate("theta")
+    c_t = sp.Symbol("c_t")      # a torsional dashpot: N m s = M L^2 T^-1
+    dims = {m: MASS, l: LENGTH, g: ACCELERATION, k: FORCE / LENGTH, x: LENGTH, th: ANGLE,
+            c_t: FORCE * LENGTH * TIME / ANGLE}
+    row = m * x.diff(t, 2) + k * x + c_t * x.diff(t)      # c_t x' is M L^3 T^-2, not a force
+    [issue] = audit(row, dims)
+    assert issue.sentence() == ("term ", c_t * x.diff(t), " has dimension M L^3 T^-2 where "
+                                "the rest has M L T^-2")
+    assert str(issue) == "term `c_t*x'` has dimension M L^3 T^-2 where the rest has M L T^-2"
+    assert sentence(issue.sentence()) == ("term c\u209c x\u0307 has dimension M L^3 T^-2 where "
+                                          "the rest has M L T^-2")
+    assert sentence(issue.sentence(), "primes") == ("term c\u209c x\u2032 has dimension "
+                                                    "M L^3 T^-2 where the rest has M L T^-2")
+    [tie] = audit(m * g + m * l * th.diff(t), dims)        # M L T^-2 against M L T^-1
+    assert {p for p in tie.sentence() if not isinstance(p, str)} == {m * g, m * l * th.diff(t)}
+    assert tie.sentence()[0] == "terms disagree: "

@@ -1,11 +1,13 @@
 """An honest mutation score (dualmech.mutation): what raises or gets no verdict is reported
-apart, `points` is validated, one derivation alone is refused, and `_identical` never calls
-a mutant identical without evaluating it."""
+apart, `points` is validated, one derivation alone is refused, `_identical` never calls
+a mutant identical without evaluating it, and a survivor is called equivalent only when it
+gives its original's motion and every one of its reactions."""
 import pytest
 import sympy as sp
 
 from dualmech import EquationSet, coordinate, t
-from dualmech.mutation import MutationReport, _identical, mutation_report
+from dualmech.mutation import (MutationReport, _against_original, _equivalent, _identical,
+                               _in_ref, mutation_report)
 from dualmech.problems import get
 
 
@@ -65,3 +67,34 @@ def test_mutants_that_raise_are_counted_apart(monkeypatch):
     assert len(r.errored) == 1 and "cannot take" in r.errored[0][1]
     assert r.errored[0][0] not in [d for d, _ in r.killed]
     assert r.kill_rate == 1.0
+
+
+def test_equivalent_mutants_are_reported_apart_and_not_counted():
+    r = MutationReport("x", killed=[("a", ["m: differs"])],
+                       equivalent=["m: flip the sign of `constraint N`"])
+    assert r.total == 1 and r.kill_rate == 1.0
+    text = str(r)
+    assert "1/1 mutants caught" in text and "1 equivalent (same motion and reactions)" in text
+    assert "EQUIVALENT: m: flip the sign of `constraint N`" in text
+
+
+def _against_itself(problem, model: str, edit):
+    from dualmech.verify.check import claims_of
+    from dualmech.verify.sampling import Context
+    original = problem.in_reference_coordinates(problem.model(model))
+    mutant = _in_ref(problem, edit(problem.model(model)), problem.model(model))
+    ctx = Context(problem.model(problem.reference).coordinates, problem.parameter_symbols,
+                  problem)
+    j = _against_original(original, mutant, ctx, 3, 0, claims_of(problem).get(model))
+    return _equivalent(j, original, mutant)
+
+
+def test_a_flipped_multiplier_is_equivalent_only_where_it_vanishes():
+    # block_in_pipe: N = 0 identically, so -N is N; restrained_pendulum: H is not zero, so
+    # the flipped constraint gives another H -- a wrong model, never an equivalent one
+    flip = lambda name: lambda m: m.flipped(f"constraint {name}")  # noqa: E731
+    assert _against_itself(get("block_in_pipe"), "multiplier", flip("N")) is True
+    assert _against_itself(get("restrained_pendulum"), "multiplier", flip("H")) is False
+    # a dropped multiplier loses the reaction: not equivalent either, even where it is zero
+    drop = lambda m: m.without("constraint N")  # noqa: E731
+    assert _against_itself(get("block_in_pipe"), "multiplier", drop) is False

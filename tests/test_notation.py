@@ -55,6 +55,34 @@ def test_plain_text_uses_primes():
     assert notation.text(m * th.diff(t, 2) + th.diff(t)**2) == "m*theta'' + theta'**2"
 
 
+def test_textbook_line_has_no_python_syntax():
+    """One line a teacher writes on the board: powers as ^, products as spaces, the letters
+    of :func:`pretty` (Greek, subscript digits), rates as dots or primes."""
+    e = m * l**2 * th.diff(t, 2) + m * g * l * sp.sin(th) - q1.diff(t)**2 / (2 * l)
+    assert notation.plain(e) == "g l m sin(\u03b8) + l^2 m \u03b8\u0308 - q\u0307\u2081^2/(2 l)"
+    assert notation.plain(e, "primes") == ("g l m sin(\u03b8) + l^2 m \u03b8\u2032\u2032 "
+                                           "- q\u2081\u2032^2/(2 l)")
+    omega, c_t = sp.symbols("omega c_t")
+    assert notation.plain((omega * t)**sp.Rational(3, 2) * c_t * x) == \
+        "c\u209c (\u03c9 t)^(3/2) x_B"
+    assert notation.plain(sp.Symbol("N1") / sp.sqrt(m)) == "N\u2081/sqrt(m)"
+    f = sp.Function("f")(t)
+    assert notation.plain(th.diff(t) - f, coordinates=[th]) == "-f(t) + \u03b8\u0307"
+    assert notation.sentence(("equals ", th.diff(t)**2, ", not 0"), "primes") == \
+        "equals \u03b8\u2032^2, not 0"
+
+
+def test_check_text_follows_the_notation(capsys):
+    # hand: theta'' = -g sin(theta)/a for the simple pendulum, T = M (a theta'^2 + g cos theta)
+    assert main(["check", "simple_pendulum", "--notation", "primes"]) == 0
+    out = capsys.readouterr().out
+    assert "\u03b8\u2032\u2032 = -g sin(\u03b8)/a" in out
+    assert "T = M (a \u03b8\u2032^2 + g cos(\u03b8))" in out
+    assert main(["check", "simple_pendulum"]) == 0
+    out = capsys.readouterr().out
+    assert "\u03b8\u0308 = -g sin(\u03b8)/a" in out and "**" not in out
+
+
 def test_pretty_uses_dots_or_primes_and_never_function_notation():
     e = sp.Eq(m * l * th.diff(t, 2) + q1.diff(t)**2 * sp.sin(th), 0, evaluate=False)
     dots = notation.pretty(e)

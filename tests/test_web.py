@@ -55,7 +55,9 @@ def test_problem_page_shows_source_sketch_names_with_units_and_quantities(client
     assert r.status_code == 200
     page = r.text
     assert "<h1>Simple pendulum</h1>" in page
-    assert "002_df41972c66c4514e.txt: section 2.2" in page          # the source
+    # the source, named by course (never the archive's hashed file name)
+    assert "Source: Cambridge 3C5 Dynamics, Lagrangian mechanics: section 2.2" in page
+    assert "002_df41972c66c4514e" not in page
     assert 'class="sketch"' in page and "pivot" in page             # the module's sketch
     # theta is an angle (rad); a is a length (m); g an acceleration (m s^-2): problem module
     assert re.search(r"<code>theta</code></td><td>rad</td>", page)

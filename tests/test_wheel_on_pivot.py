@@ -1,8 +1,9 @@
-"""Wheel rolling round a pivot (problems/wheel_on_pivot.py): steady motion and contact force."""
+"""Wheel rolling round a pivot (problems/wheel_on_pivot.py): steady motion, contact force and
+pivot force, each derived at least twice."""
 import pytest
 import sympy as sp
 
-from dualmech import t
+from dualmech import NewtonEuler, t
 from dualmech.compare import compare
 from dualmech.problems.wheel_on_pivot import WheelOnPivot, a, direct_form, frames, g, l, m, phi, tau
 
@@ -20,7 +21,8 @@ def comparison():
 
 def test_declaration_validates():
     problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange", "angular_momentum", "multiplier"]
+    assert problem.model_names == ["newton_euler", "lagrange", "angular_momentum", "multiplier",
+                                   "pivot_multiplier"]
     assert problem.dimension_issues() == []
 
 
@@ -76,6 +78,66 @@ def test_all_three_routes_give_the_same_contact_force(comparison):
     assert pairs and all(p.equivalent and p.method == "exact" for p in pairs)
     names = " ".join(f"{p.reference} {p.candidate} {' '.join(p.reactions)}" for p in pairs)
     assert all(n in names for n in ("angular_momentum", "multiplier", "F_y", "F_z"))
+
+
+def test_freed_pivot_gives_the_hand_pivot_and_contact_forces():
+    # hand (module docstring): the u_x, u_y, u_z rows on the motion are -m l W^2 = R_x,
+    # m l phi'' = R_y + F_y, m g = R_z + F_z; with phi'' = tau/J and F from the other rows
+    model = problem.in_reference_coordinates(problem.model("pivot_multiplier"))
+    assert {u.name for u in model.unknowns} == {"R_x", "R_y", "R_z", "F_y", "F_z"}
+    hand = {"F_y": -m * l * tau / J / 2, "F_z": m * g + m * a * W**2 / 2,
+            "R_x": -m * l * W**2, "R_y": 3 * m * l * tau / J / 2, "R_z": -m * a * W**2 / 2}
+    got = _solved(model)
+    assert {k: sp.simplify(v - hand[k]) for k, v in got.items()} == {k: 0 for k in hand}
+
+
+def test_pivot_force_is_derived_twice_and_compared(comparison):
+    held = comparison.reaction_derivations
+    assert {k: held[k] for k in ("R_x", "R_y", "R_z")} == {
+        r: ["newton_euler", "pivot_multiplier"] for r in ("R_x", "R_y", "R_z")}
+    assert comparison.not_cross_checked == [] and "NOT CROSS-CHECKED" not in str(comparison)
+    (pair,) = [p for p in comparison.pairs if p.kind == "reactions" and "R_x" in p.reactions]
+    assert pair.reactions == ("R_x", "R_y", "R_z")
+    assert pair.equivalent and pair.method == "exact" and pair.bound < 1e-60
+    assert {pair.reference, pair.candidate} == {"newton_euler", "pivot_multiplier"}
+
+
+class _PivotForceOnThePivot(WheelOnPivot):
+    """The direct form with ``R_x`` drawn the wrong way: the axle's pull on the pivot (along
+    ``-i``) taken for the pivot's force on the axle, the other components right.  Renaming an
+    unknown cannot change the motion; only the second derivation of ``R`` can see it."""
+
+    def newton_euler(self):
+        f = frames()
+        ne = NewtonEuler("newton_euler", coordinates=[phi], ground=f.O)
+        ne.gravity(-g * f.O.z)
+        ne.torque("drive", f.wheel, tau * f.O.z)
+        F = ne.reaction_vector("F", f.wheel, f.A, at=f.C)
+        ne.reaction("R_x", f.wheel, -f.A.x, at=f.o)          # the sign error
+        ne.reaction("R_y", f.wheel, f.A.y, at=f.o)
+        ne.reaction("R_z", f.wheel, f.A.z, at=f.o)
+        ne.equation("closure: F_x = 0", {"closure F_x": F.dot(f.A.x)})
+        for axis in (f.A.x, f.A.y, f.A.z):
+            ne.linear_momentum(f.wheel, axis)
+        for axis in (f.A.x, f.A.y, f.A.z):
+            ne.angular_momentum(f.wheel, axis)
+        return ne.equations()
+
+
+def test_a_sign_error_in_the_direct_pivot_force_is_caught_naming_R_x():
+    broken = compare(_PivotForceOnThePivot())
+    assert all(p.equivalent for p in broken.pairs if p.kind == "motion")   # motion untouched
+    assert not broken.equivalent
+    bad = [p for p in broken.pairs if p.kind == "reactions" and not p.equivalent]
+    assert [p.reactions for p in bad] == [("R_x", "R_y", "R_z")]
+    assert {mm.equation for mm in bad[0].mismatches} == {"reaction R_x"}
+    assert "DIFFERENT" in str(broken) and "all derivations agree" not in str(broken)
+    # the contact force, which the sign error does not touch, still agrees three ways
+    assert all(p.equivalent for p in broken.pairs if p.kind == "reactions"
+               and "R_x" not in p.reactions)
+    # the broken R_x is the right one negated: +m l W^2
+    ne = broken.problem.model("newton_euler")
+    assert sp.simplify(_solved(ne)["R_x"] - m * l * W**2) == 0
 
 
 EXPECTED = {

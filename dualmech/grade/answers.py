@@ -190,13 +190,11 @@ def find_quantity(ctx: ProblemContext, name: str) -> Quantity:
     """The quantity called ``name`` (exact, alias, or a coordinate's acceleration written any
     accepted way, e.g. ``thetaddot``); :class:`UnknownQuantity` lists the choices."""
     name = name.strip()
-    keys = (name, _ALIASES.get(name), _ALIASES.get(name.lower()))
     standard = _standard(ctx)
-    for key in keys:
-        if key and key in standard:
-            return standard[key]
-    cat = catalogue(ctx)
-    for key in keys:
+    if name in standard:        # no printed answer takes a standard name
+        return standard[name]
+    cat = catalogue(ctx)        # a printed label (``U``) before an alias (``U`` for PE)
+    for key in (name, _ALIASES.get(name), _ALIASES.get(name.lower())):
         if key and key in cat:
             return cat[key]
     if name.startswith(("equation:", "eom:")):

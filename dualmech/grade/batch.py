@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import csv
 import os
-from concurrent.futures import as_completed
 from pathlib import Path
 from typing import Iterable, Sequence
 
@@ -112,14 +111,27 @@ def _untrusted_name(name: str, row: dict) -> dict | None:
             "false_right_bound": None, "seconds": 0.0}
 
 
-def warm(names: Iterable[str], limits: Limits = LIMITS) -> None:
+def warm(names: Iterable[str] | str, limits: Limits = LIMITS) -> None:
     """Build each problem's grader (the one :meth:`Grader.of` gives for ``limits``), its
-    quantities, points and feedback targets now (so forked workers share them)."""
+    quantities, points, feedback targets and the correct forms of its reactions and
+    accelerations now (so forked workers share them)."""
+    from .answers import catalogue
+    from .judge import expression_targets
+    if isinstance(names, str):
+        names = [names]
     for name in sorted(set(names)):
         try:
             g = Grader.of(name, limits=limits)
             g.quantities()
-            warm_targets(g.context)
+            ctx = g.context
+            warm_targets(ctx)
+            # the correct forms of each reaction and acceleration read off single rows
+            # (the whole system's symbolic solution, stage 1, is left to first use: it can
+            # take seconds and is needed only when no single row explains a wrong answer)
+            for q in catalogue(ctx).values():
+                if len(q.reference) == 1 and (q.reference[0] in set(ctx.reactions) or
+                                              q.reference[0] in set(ctx.qdd)):
+                    expression_targets(ctx, q, 0)
         except Exception:  # reported row by row when graded
             continue
 
@@ -184,6 +196,8 @@ def _run(chunks, workers, scheduler, connect_timeout):
     if scheduler:
         yield from _run_dask(tagged, scheduler, connect_timeout)
         return
+    from concurrent.futures import as_completed
+
     from .sandbox import GradingPool
     workers = workers or os.cpu_count() or 1
     with GradingPool(min(workers, len(tagged))) as pool:

@@ -28,6 +28,7 @@ from sympy.printing.str import StrPrinter
 from ..dimensions import DAMPING, LENGTH, TORSIONAL_DAMPING
 from .context import ProblemContext
 from .audit import reduced
+from .judge import unit_circle
 
 __all__ = ["Sample", "write", "correct_answers", "wrong_answers", "names_mistake", "CannotWrite"]
 
@@ -185,7 +186,7 @@ def _reaction_forms(ctx) -> list:
                 continue
             # as a person writes it: sin^2 + cos^2 of one angle read as 1 (a row as the
             # derivation leaves it may carry them, wheel_on_pivot's spin and precession)
-            form = sp.expand(sp.trigsimp(-(e - coeff * u) / sp.trigsimp(coeff)))
+            form = sp.expand(unit_circle(-(e - coeff * u)) / unit_circle(coeff))
             if len(sp.Add.make_args(form)) >= 2:
                 out.append((u, form))
                 done.add(u)

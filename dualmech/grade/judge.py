@@ -634,6 +634,25 @@ def expression_targets(ctx, quantity: Quantity, stage: int = 0) -> list:
     return ctx.memo(("targets", quantity.name, stage), build)
 
 
+def unit_circle(expr):
+    """``expr`` expanded with ``sin(a)^2 + cos(a)^2`` read as 1 wherever both squares of one
+    angle appear (``-l*sin(phi)^2 - l*cos(phi)^2`` is ``-l``): a polynomial substitution,
+    far cheaper than ``trigsimp``.
+
+    >>> import sympy as sp
+    >>> a, l = sp.symbols("a l")
+    >>> unit_circle(-l*sp.sin(a)**2 - l*sp.cos(a)**2 + sp.sin(a))
+    -l + sin(a)
+    """
+    expr = sp.expand(expr)
+    kinds: dict = {}
+    for p in expr.atoms(sp.Pow):
+        if p.exp == 2 and isinstance(p.base, (sp.sin, sp.cos)):
+            kinds.setdefault(p.base.args[0], set()).add(type(p.base))
+    rules = {sp.sin(a)**2: 1 - sp.cos(a)**2 for a, k in kinds.items() if len(k) == 2}
+    return sp.expand(expr.xreplace(rules)) if rules else expr
+
+
 def _solved_rows(ctx, unknown) -> list:
     """``unknown`` solved from each row that has it as its only reaction/acceleration of its
     kind (so the form may keep other accelerations: a reaction ``m (g + l theta'')``)."""
@@ -647,8 +666,8 @@ def _solved_rows(ctx, unknown) -> list:
                 coeff = sp.diff(e, unknown)
                 if not coeff.free_symbols & kind:
                     # sin^2 + cos^2 of one angle read as 1, as a person writes the form
-                    out.append(sp.expand(sp.trigsimp(-(e - coeff * unknown)
-                                                     / sp.trigsimp(coeff))))
+                    out.append(sp.expand(unit_circle(-(e - coeff * unknown))
+                                         / unit_circle(coeff)))
     return out[:6]
 
 

@@ -44,15 +44,19 @@ class Written:
 
 
 def write_report(comparisons: Sequence, out_dir: Path, duration: float = 5.0,
-                 progress: bool = True, audience: str = "teachers") -> Written:
+                 progress: bool = True, audience: str = "teachers",
+                 notation: str = "dots") -> Written:
     """Draw every problem's chart and write ``out_dir/report.md`` and ``out_dir/report.html``.
 
     ``duration`` is the longest simulated span in seconds; each chart stops earlier where
     its scene ends.  ``audience`` is ``"teachers"`` (why each wrong printed answer is wrong,
     and the full text report) or ``"students"`` (verdicts only, corrections hidden: a page
-    to hand out).  Raises ``OSError`` when ``out_dir`` cannot be written.
+    to hand out).  ``notation`` writes rates as ``"dots"`` (``θ̇``) or ``"primes"`` (``θ′``)
+    in every expression of both pages.  Raises ``OSError`` when ``out_dir`` cannot be written.
     """
     check_audience(audience)
+    from ..notation import check_notation
+    check_notation(notation)
     if not duration > 0:
         raise ValueError(f"`duration` must be positive, got {duration!r}.")
     out = Path(out_dir)
@@ -64,7 +68,9 @@ def write_report(comparisons: Sequence, out_dir: Path, duration: float = 5.0,
                        label=lambda c: c.problem.name):
         charts[c.problem.name] = trajectory_chart(c.problem, out, duration)
     md = out / "report.md"
-    md.write_text(markdown_page(comparisons, charts, duration, audience), encoding="utf-8")
+    md.write_text(markdown_page(comparisons, charts, duration, audience, notation),
+                  encoding="utf-8")
     page = out / "report.html"
-    page.write_text(html_page(comparisons, charts, out, duration, audience), encoding="utf-8")
+    page.write_text(html_page(comparisons, charts, out, duration, audience, notation),
+                    encoding="utf-8")
     return Written(md, page, charts)

@@ -14,9 +14,11 @@ True
 """
 from __future__ import annotations
 
+import html
+
 from .. import notation
 
-__all__ = ["expression", "equation", "inline"]
+__all__ = ["expression", "equation", "inline", "sentence"]
 
 
 def expression(expr, notation_: str = "dots") -> str:
@@ -33,6 +35,15 @@ def equation(lhs, rhs=0, notation_: str = "dots") -> str:
     """``<math>`` markup of ``lhs = rhs``."""
     return _wrap(f"{notation.mathml(lhs, notation_)}<mo>=</mo>"
                  f"{notation.mathml(rhs, notation_)}")
+
+
+def sentence(parts, notation_: str = "dots") -> str:
+    """A sentence -- text and expressions -- as HTML: the text escaped, each expression
+    typeset inline (a plain string is escaped as it is)."""
+    if isinstance(parts, str):
+        return html.escape(parts)
+    return "".join(html.escape(x) if isinstance(x, str) else inline(x, notation_)
+                   for x in parts)
 
 
 def _wrap(body: str, block: bool = True) -> str:

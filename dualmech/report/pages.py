@@ -12,6 +12,10 @@ one caption.  The summary links to each problem's section; sources are named by 
 Two audiences: ``"teachers"`` see why each wrong printed answer is wrong (typeset) and the full
 text report; ``"students"`` see which printed answers are right and which are wrong, with the
 corrections left for them to find.
+
+Every expression a person reads is in the textbook's notation (:mod:`dualmech.notation`), rates
+as dots or primes (``notation``): typeset with MathML on the HTML page, one line of textbook
+text (``m l θ̇^2``, no ``**``) in the Markdown.
 """
 from __future__ import annotations
 
@@ -22,6 +26,7 @@ from pathlib import Path
 import sympy as sp
 
 from . import mathml
+from ..notation import check_notation
 from ..sources import source_name
 
 __all__ = ["markdown_page", "html_page", "summary_rows", "SUMMARY_HEADERS", "AUDIENCES",
@@ -95,13 +100,22 @@ def _verdict(c) -> str:
     return line() if callable(line) else str(c).splitlines()[0]
 
 
-def _why_text(p) -> str:
-    return "" if p.verdict == "correct" else p.detail
+def _why_text(p, notation: str) -> str:
+    if p.verdict == "correct":
+        return ""
+    return p.text(notation) if callable(getattr(p, "text", None)) else p.detail
+
+
+def _full_text(c, notation: str) -> str:
+    """The comparison's text report in ``notation`` (a stand-in's ``str()`` otherwise)."""
+    text = getattr(c, "text", None)
+    return text(notation) if callable(text) else str(c)
 
 
 def markdown_page(comparisons, charts: dict, duration: float,
-                  audience: str = "teachers") -> str:
+                  audience: str = "teachers", notation: str = "dots") -> str:
     check_audience(audience)
+    check_notation(notation)
     teachers = audience == "teachers"
     ok = sum(1 for c in comparisons if c.equivalent)
     rows = [(f"[{r[0]}](#{r[0]})",) + r[1:] for r in summary_rows(comparisons)]
@@ -115,13 +129,13 @@ def markdown_page(comparisons, charts: dict, duration: float,
         lines += [f"## {name}", "", f"*{c.problem.title}* -- {source_name(c.problem.source)}",
                   "", f"**Verdict:** {_verdict(c)}", ""]
         if teachers:
-            lines += ["```", str(c), "```", ""]
+            lines += ["```", _full_text(c, notation), "```", ""]
         pubs = _published(c)
         if pubs:
             headers = ("answer", "where", "verdict") + (("why",) if teachers else ())
             lines += ["Printed answers:", "",
                       _md_table(headers, [(p.label, _where(p, teachers), p.verdict.upper())
-                                          + ((_why_text(p),) if teachers else ())
+                                          + ((_why_text(p, notation),) if teachers else ())
                                           for p in pubs]), ""]
         chart = charts.get(name)
         if chart is None or chart.error:
@@ -174,7 +188,7 @@ def _cell(value, cls: str = "") -> str:
     return f"<td{attr}>{html.escape(str(value))}</td>"
 
 
-def _equations_html(c) -> list[str]:
+def _equations_html(c, notation: str) -> list[str]:
     p = c.problem
     out = []
     try:
@@ -185,7 +199,7 @@ def _equations_html(c) -> list[str]:
     limits = getattr(c, "limits", None)
     for label, e in zip(ref.labels, ref.equations):
         out.append(f"<p class='note'>{html.escape(label)}</p>"
-                   f"{mathml.equation(_shortest(e, limits), 0)}")
+                   f"{mathml.equation(_shortest(e, limits), 0, notation)}")
     reactions = _reactions(c)
     if reactions:
         directions = {r.name: r.direction for r in p.reactions}
@@ -193,7 +207,7 @@ def _equations_html(c) -> list[str]:
         for name, expr in reactions.items():
             note = directions.get(str(name), "")
             out.append((f"<p class='note'>{html.escape(note)}</p>" if note else "")
-                       + mathml.equation(sp.Symbol(str(name)), expr))
+                       + mathml.equation(sp.Symbol(str(name)), expr, notation))
     for note in getattr(c, "display_notes", []) or []:
         out.append(f"<p class='note'>{html.escape(note)}</p>")
     return out
@@ -210,18 +224,14 @@ def _shortest(expr, limits=None):
     return short if sp.count_ops(short) < sp.count_ops(expr) else expr
 
 
-def _why_html(p) -> str:
+def _why_html(p, notation: str) -> str:
     """Why a printed answer is wrong: its sentences, expressions typeset."""
     if p.verdict == "correct":
         return ""
     parts = getattr(p, "parts", None)
     if parts is None:
         return html.escape(p.detail)
-    out = []
-    for sentence in parts:
-        out.append("".join(html.escape(x) if isinstance(x, str) else mathml.inline(x)
-                           for x in sentence))
-    return "; ".join(out)
+    return "; ".join(mathml.sentence(s, notation) for s in parts)
 
 
 def _chart_html(name: str, chart, out_dir: Path) -> list[str]:
@@ -235,7 +245,7 @@ def _chart_html(name: str, chart, out_dir: Path) -> list[str]:
             f"<figcaption>{html.escape(_caption(chart))}</figcaption></figure>"]
 
 
-def _published_html(c, teachers: bool) -> list[str]:
+def _published_html(c, teachers: bool, notation: str) -> list[str]:
     pubs = _published(c)
     if not pubs:
         return []
@@ -246,15 +256,16 @@ def _published_html(c, teachers: bool) -> list[str]:
         cells = [_cell(p.label), _cell(_where(p, teachers)),
                  _cell(p.verdict.upper(), p.verdict)]
         if teachers:
-            cells.append(f"<td>{_why_html(p)}</td>")
+            cells.append(f"<td>{_why_html(p, notation)}</td>")
         out.append("<tr>" + "".join(cells) + "</tr>")
     out.append("</table>")
     return out
 
 
 def html_page(comparisons, charts: dict, out_dir: Path, duration: float,
-              audience: str = "teachers") -> str:
+              audience: str = "teachers", notation: str = "dots") -> str:
     check_audience(audience)
+    check_notation(notation)
     teachers = audience == "teachers"
     ok = sum(1 for c in comparisons if c.equivalent)
     rows = summary_rows(comparisons)
@@ -282,13 +293,13 @@ def html_page(comparisons, charts: dict, out_dir: Path, duration: float,
         parts.append(f"<p class='note'>source: {html.escape(source_name(c.problem.source))}"
                      "</p>")
         parts.append(f"<p><b>Verdict:</b> {html.escape(_verdict(c))}</p>")
-        parts += _equations_html(c)
-        parts += _published_html(c, teachers)
+        parts += _equations_html(c, notation)
+        parts += _published_html(c, teachers, notation)
         parts.append("<h3>Simulated motion</h3>")
         parts += _chart_html(name, charts.get(name), out_dir)
         if teachers:
             parts.append(f"<details><summary>full text report</summary><pre>"
-                         f"{html.escape(str(c))}</pre></details>")
+                         f"{html.escape(_full_text(c, notation))}</pre></details>")
         parts.append('<p class="note"><a href="#">back to the summary</a></p>')
     parts.append("</body></html>")
     return "\n".join(parts) + "\n"

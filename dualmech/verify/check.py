@@ -18,7 +18,7 @@ import symengine as se
 import sympy as sp
 
 from ..equations import EquationSet, ModelError, Rows
-from ..sources import source_name
+from ..sources import source_fields, source_name
 from .display import Budget, OverBudget, budget, dotted, solve_display
 from .explain import Mismatch, explain_model, explain_reaction
 from .published import PublishedVerdict, check_published
@@ -60,6 +60,10 @@ class PairResult:
     decided: bool = True
 
     def __str__(self) -> str:
+        return self.text()
+
+    def text(self, notation: str = "dots") -> str:
+        """The verdict line, then each mismatch in textbook notation (:meth:`Mismatch.text`)."""
         if self.kind == "reactions":
             verdict = "the same" if self.equivalent else "DIFFERENT"
             if not self.decided:
@@ -75,7 +79,7 @@ class PairResult:
             s += (", P(false equal) < 1e-300" if self.bound == 0
                   else f", P(false equal) <= {self.bound:.1e}")
         s += f", {self.seconds:.2f} s)"
-        return "\n".join([s] + [str(m) for m in self.mismatches])
+        return "\n".join([s] + [m.text(notation) for m in self.mismatches])
 
     def to_dict(self) -> dict:
         return {"kind": self.kind, "reference": self.reference, "candidate": self.candidate,
@@ -96,6 +100,8 @@ class Comparison:
     ``equivalent``, ``pairs``, ``published``, ``judgement`` and ``dimension_issues`` are the
     verdicts; ``accelerations`` and ``reactions`` are symbolic displays computed when first
     read (empty when past the display budget -- ``display_notes`` says why).
+    ``dimension_audit`` holds the dimension audit's sentences with their terms as expressions
+    (``dimension_issues`` is the same as plain text).  ``str()`` is :meth:`text` with dots.
     """
 
     def __init__(self, problem, judgement: Judgement, pairs, published, dimension_issues,
@@ -104,13 +110,20 @@ class Comparison:
         self.judgement = judgement
         self.pairs = pairs
         self.published = published
-        self.dimension_issues = dimension_issues
+        self.dimension_audit = [x if isinstance(x, tuple) else (str(x),)
+                                for x in dimension_issues]
         self.seconds = seconds
         self.points = points
         self.limits = limits or Budget()
         self.display_notes: list[str] = []
         self._acc = self._reac = None
         self._static: dict = {}
+
+    @property
+    def dimension_issues(self) -> list[str]:
+        """The dimension audit's sentences as plain text, terms between backticks."""
+        from ..dimensions import quoted
+        return [quoted(x) for x in self.dimension_audit]
 
     @property
     def reaction_directions(self) -> dict:
@@ -195,38 +208,51 @@ class Comparison:
         return "DISAGREEMENT: " + j.summary().replace("\n", "; ")
 
     def __str__(self) -> str:
+        return self.text()
+
+    def text(self, notation: str = "dots") -> str:
+        """The readable report, every expression in textbook notation: letters as a worked
+        solution writes them, rates as dots (``θ̈``) or, with ``notation="primes"``, primes
+        (``θ′′``), powers as ``^`` and products as spaces -- no Python syntax."""
+        from ..notation import check_notation, plain, sentence, symbol_text
+        check_notation(notation)
         pr = self.problem
         ref = pr.model(pr.reference)
         out = [f"{pr.name}: {pr.title}", f"  source: {source_name(pr.source)}",
-               f"  coordinates: {', '.join(q.func.__name__ for q in ref.coordinates)}",
+               f"  coordinates: "
+               + ", ".join(symbol_text(q.func.__name__, 0, notation) for q in ref.coordinates),
                f"  verdict: {self.verdict_line()}"]
         for p in self.pairs:
-            out.append("  " + str(p).replace("\n", "\n  "))
+            out.append("  " + p.text(notation).replace("\n", "\n  "))
         if self.equivalent and self.accelerations:
             out.append("  accelerations:")
             for k, v in self.accelerations.items():
-                out.append(f"    {k}'' = {dotted(v)}")
+                out.append(f"    {symbol_text(k, 2, notation)} = {plain(v, notation)}")
             for k, v in self.static.items():
-                out.append(f"    {k} = {dotted(v)}   (static row: no inertia in {k})")
+                name = symbol_text(k, 0, notation)
+                out.append(f"    {name} = {plain(v, notation)}   (static row: no inertia in "
+                           f"{name})")
         lonely = self.not_cross_checked
         if self.equivalent and self.reactions:
             out.append("  reactions (from the direct form):")
             dirs = self.reaction_directions
             for k, v in self.reactions.items():
                 d = dirs.get(k, "")
-                out.append(f"    {k} = {dotted(v)}" + (f"   [{d}]" if d else "")
+                out.append(f"    {plain(sp.Symbol(k), notation)} = {plain(v, notation)}"
+                           + (f"   [{d}]" if d else "")
                            + ("   (NOT CROSS-CHECKED)" if k in lonely else ""))
         if lonely:
             held = self.reaction_derivations
             out.append("  not cross-checked (one derivation only): " + ", ".join(
-                f"{n} ({', '.join(held[n]) or 'no model'})" for n in lonely)
+                f"{plain(sp.Symbol(n), notation)} ({', '.join(held[n]) or 'no model'})"
+                for n in lonely)
                 + "; a second derivation (a multiplier model or another free-body diagram) "
                 "would catch a wrong term in it")
         for note in self.display_notes:
             out.append(f"  ({note})")
-        if self.dimension_issues:
+        if self.dimension_audit:
             out.append("  dimension audit:")
-            out.extend(f"    {i}" for i in self.dimension_issues)
+            out.extend(f"    {sentence(x, notation)}" for x in self.dimension_audit)
         else:
             out.append("  dimension audit: every equation is consistent")
         if self.published:
@@ -235,7 +261,8 @@ class Comparison:
                 out.append(f"    [{v.verdict.upper():7s}] {v.label}" +
                            (f" ({v.where})" if v.where else ""))
                 if v.verdict != "correct":
-                    out.append("              " + v.detail.replace("\n", "\n              "))
+                    why = v.text(notation) if hasattr(v, "text") else v.detail
+                    out.append("              " + why.replace("\n", "\n              "))
         return "\n".join(out)
 
     def __repr__(self) -> str:
@@ -250,7 +277,7 @@ class Comparison:
         pr = self.problem
         ref = pr.model(pr.reference)
         return {
-            "name": pr.name, "title": pr.title, "source": pr.source,
+            "name": pr.name, "title": pr.title, **source_fields(pr.source),
             "coordinates": [q.func.__name__ for q in ref.coordinates],
             "parameters": [str(p.symbol) for p in pr.parameters],
             "equivalent": self.equivalent, "method": self.method,
@@ -329,7 +356,7 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
         published = [PublishedVerdict(p.label, p.where, "unchecked",
                                       "the derivations disagree; fix them before judging "
                                       "printed answers", "none") for p in printed]
-    issues = list(problem.dimension_issues()) + _reaction_dimension_issues(problem)
+    issues = list(problem.dimension_audit()) + _reaction_dimension_issues(problem)
     return Comparison(problem, j, pairs, published, issues, time.perf_counter() - t0, points,
                       limits)
 

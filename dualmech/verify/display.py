@@ -124,10 +124,17 @@ def solve_display(eqs, limits: Budget | None = None) -> dict:
     n = len(eqs.accelerations) + len(eqs.unknowns)
     if n > 8:   # decided before the matrix is built: its sympy form costs more than a verdict
         raise OverBudget(f"{n} unknowns")
+    held = eqs.plain_matrix_se() if hasattr(eqs, "plain_matrix_se") else None
+    if held is not None:
+        out = _solve_held(eqs, held, limits)
+        limits.cache[key] = (eqs, out)
+        return out
     A, b = eqs.matrix()
     if A.rows != A.cols:
         raise OverBudget(f"{A.rows} equations for {A.cols} unknowns: not a square system")
-    coupled = largest_coupled_block(A)
+    # (a system of at most MAX_COUPLED unknowns cannot couple more: no structural analysis,
+    # nor its scipy import, for the common small system)
+    coupled = largest_coupled_block(A) if A.cols > MAX_COUPLED else A.cols
     if coupled > MAX_COUPLED:
         raise OverBudget(f"{coupled} unknowns are coupled (a symbolic solution would be "
                          "pages long)")
@@ -139,6 +146,86 @@ def solve_display(eqs, limits: Budget | None = None) -> dict:
     unknowns = list(eqs.accelerations) + list(eqs.unknowns)
     out = {u: tidy(s, limits) for u, s in zip(unknowns, sol)}
     limits.cache[key] = (eqs, out)
+    return out
+
+
+def _solve_held(eqs, held, limits: Budget) -> dict:
+    """:func:`solve_display` for equations a derivation holds in symengine: Gaussian
+    elimination on the symengine matrix (no sympy arithmetic, no symbolic zero tests), the
+    pivots chosen by their values at a random real point, computed alongside in floats --
+    an entry that is zero on the motion (``sin^2 + cos^2 - 1``, a cancelled term) is never a
+    pivot.  The solution is a rational function of the state, unique wherever the matrix is
+    regular, so the route taken does not change what :func:`tidy` shows."""
+    import numpy as np
+    import symengine as se
+
+    from .._algebra import to_sp
+    from ..equations import _rules
+    A, b, names = held
+    if A.rows != A.cols:
+        raise OverBudget(f"{A.rows} equations for {A.cols} unknowns: not a square system")
+    n = A.rows
+    if n > MAX_COUPLED:
+        pattern = sp.Matrix([[0 if A[i, j] == 0 else 1 for j in range(n)] for i in range(n)])
+        coupled = largest_coupled_block(pattern)
+        if coupled > MAX_COUPLED:
+            raise OverBudget(f"{coupled} unknowns are coupled (a symbolic solution would be "
+                             "pages long)")
+    entries = [A[i, j] for i in range(n) for j in range(n)] + [b[i] for i in range(n)]
+    ops = sum(se.count_ops(e) for e in entries)
+    if ops > 4 * limits.max_ops:
+        raise OverBudget(f"{n} unknowns, {ops} operations")
+    symbols = sorted(set().union(*(e.free_symbols for e in entries)), key=str)
+    rng = np.random.default_rng(20240229)
+    point = rng.uniform(0.3, 1.7, len(symbols))
+    # complex values: a root of a negative number at the random point is still a number
+    values = np.array(se.Lambdify(symbols, entries, real=False)(point) if symbols else
+                      [complex(e) for e in entries], dtype=complex)
+    if not np.isfinite(values).all():
+        raise ValueError("the matrix is not finite at a sampled state")
+    M = [[A[i, j] for j in range(n)] + [b[i]] for i in range(n)]
+    N = np.concatenate([values[:n * n].reshape(n, n), values[n * n:].reshape(n, 1)], axis=1)
+    scale = max(float(np.abs(N[:, :n]).max()), 1e-300)
+    tiny = 1e-9 * scale
+    with budget(limits.remaining()):
+        for k in range(n):
+            p = k + int(np.argmax(np.abs(N[k:, k])))
+            if abs(N[p, k]) <= tiny:
+                raise ValueError("Matrix det == 0; not invertible.")
+            if p != k:
+                M[k], M[p] = M[p], M[k]
+                N[[k, p]] = N[[p, k]]
+            for r in range(k + 1, n):
+                if M[r][k] == 0:      # structurally: the exact solution, term for term
+                    continue
+                f, nf = M[r][k] / M[k][k], N[r, k] / N[k, k]
+                for c in range(k + 1, n + 1):
+                    if M[k][c] != 0:
+                        M[r][c] = M[r][c] - f * M[k][c]
+                N[r, k + 1:] -= nf * N[k, k + 1:]
+        x = [None] * n
+        for k in reversed(range(n)):
+            acc = M[k][n]
+            for c in range(k + 1, n):
+                if M[k][c] != 0:
+                    acc = acc - M[k][c] * x[c]
+            x[k] = acc / M[k][k]
+    memo: dict = {}
+    # straight into the function form (theta(t), its derivatives): no second walk
+    timed = dict(names)
+    timed.update({sym.name: f for sym, f in _rules(eqs.coordinates)[2].items()})
+    unknowns = list(eqs.accelerations) + list(eqs.unknowns)
+    out = {}
+    for u, v in zip(unknowns, x):
+        expr = to_sp(v, timed, memo)
+        try:    # the reduced fraction (FLINT); tidy's general route for anything else
+            shown = tidy_rational(expr)
+        except (NotRational, ZeroDivisionError):
+            shown = tidy(expr, limits)
+        ops = sp.count_ops(shown)
+        if ops > 4 * limits.max_ops:     # a page of formula: shown as M q'' = f instead
+            raise OverBudget(f"expression of {ops} operations")
+        out[u] = shown
     return out
 
 

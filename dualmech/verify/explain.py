@@ -30,11 +30,13 @@ _MAX_TERMS = 40
 
 
 class Mismatch:
-    """Why one equation (or a whole derivation) is wrong; ``str()`` is the readable form.
+    """Why one equation (or a whole derivation) is wrong; ``str()`` is the readable form
+    (:meth:`text` in textbook notation).
 
     ``residual`` (the symbolic residual after the best combination) is computed when first
     read, within the display budget; ``value``, ``state`` and ``terms`` show the equation at a
-    real state, term by term.
+    real state, term by term.  ``residual`` and ``terms`` are plain text (``theta'**2``, what
+    JSON carries); the expressions themselves stay behind them for :meth:`text`.
     """
 
     def __init__(self, model: str, equation: str, reason: str, residual=None,
@@ -43,10 +45,10 @@ class Mismatch:
         self._residual = residual
         self.value = value
         self.state = dict(state or {})
-        self.terms = list(terms or [])
+        self._terms = list(terms or [])
 
-    @property
-    def residual(self) -> str:
+    def _resolved(self):
+        """The residual: an expression, a text saying why there is none, or ``""``."""
         if callable(self._residual):
             try:
                 self._residual = self._residual()
@@ -55,17 +57,36 @@ class Mismatch:
             except Exception as exc:  # noqa: BLE001 - display must never break a verdict
                 self._residual = (f"(not solved symbolically: {type(exc).__name__}; see the "
                                   "values below)")
-        return self._residual or ""
+        return self._residual if self._residual is not None else ""
+
+    @property
+    def residual(self) -> str:
+        r = self._resolved()
+        return r if isinstance(r, str) else dotted(r)
+
+    @property
+    def terms(self) -> list:
+        """``[(term as plain text, value)]`` of the equation at :attr:`state`."""
+        return [(x if isinstance(x, str) else dotted(x), v) for x, v in self._terms]
 
     def __str__(self) -> str:
+        return self.text()
+
+    def text(self, notation: str = "dots") -> str:
+        """The readable form in textbook notation: ``θ̈``, powers as ``^`` (``θ′′`` with
+        ``notation="primes"``)."""
+        from ..notation import plain, symbol_text
+        show = lambda x: x if isinstance(x, str) else plain(x, notation)  # noqa: E731
         lines = [f"{self.model} [{self.equation}]: {self.reason}"]
-        if self.residual:
-            lines.append(f"    residual after the best combination: {self.residual}")
+        residual = self._resolved()
+        if not isinstance(residual, str) or residual:
+            lines.append(f"    residual after the best combination: {show(residual)}")
         if self.state:
-            st = ", ".join(f"{k}={v:.6g}" for k, v in self.state.items())
+            st = ", ".join(f"{_state_name(k, notation, symbol_text)}={v:.6g}"
+                           for k, v in self.state.items())
             lines.append(f"    at {st}: residual {self.value:.6g}")
-        for term, value in self.terms:
-            lines.append(f"      {value:+.6g}  {term}")
+        for term, value in self._terms:
+            lines.append(f"      {value:+.6g}  {show(term)}")
         return "\n".join(lines)
 
     def to_dict(self) -> dict:
@@ -73,6 +94,14 @@ class Mismatch:
                 "residual": self.residual, "value": _json_float(self.value),
                 "state": {k: _json_float(v) for k, v in self.state.items()},
                 "terms": [[s, _json_float(v)] for s, v in self.terms]}
+
+
+def _state_name(name: str, notation: str, symbol_text) -> str:
+    """``theta''`` (a state's plain name) as the textbook writes it: ``θ̈``."""
+    base = name.rstrip("'")
+    if not base or not base.isidentifier():
+        return name
+    return symbol_text(base, len(name) - len(base), notation)
 
 
 def _json_float(x):
@@ -241,7 +270,7 @@ def _terms(model, i, values, shown):
         parts = sp.Add.make_args(expanded)
         if len(parts) <= _MAX_TERMS:
             for term in parts:
-                terms.append((dotted(from_plain(term, coords)),
+                terms.append((from_plain(term, coords),
                               float(term.xreplace(subs).evalf(30))))
         total = float(eq.xreplace(subs).evalf(30))
     except (TypeError, ValueError, ZeroDivisionError):
@@ -257,7 +286,7 @@ def _symbolic_residual(candidate, reference, i, limits):
     sol = solve_display(reference, limits)
     rules = {}
     rules.update({a: sol[a] for a in reference.accelerations})
-    return dotted(tidy(eq.xreplace(rules), limits))
+    return tidy(eq.xreplace(rules), limits)
 
 
 def _own_residual(own, row, reference, values, limits):
@@ -272,7 +301,7 @@ def _own_residual(own, row, reference, values, limits):
                 "the display budget; see the values below)")
     sol = solve_display(reference, limits)
     accelerations = {a: sol[a] for a in reference.accelerations}
-    return dotted(tidy(own.residual(row, accelerations, inverse), limits))
+    return tidy(own.residual(row, accelerations, inverse), limits)
 
 
 def explain_reaction(reaction: str, suspect: str, against: tuple, judgement, ctx: Context,
@@ -361,4 +390,4 @@ def _reaction_residual(suspect, other, row, limits):
     sol = solve_display(other, limits)
     rules = {a: sol[a] for a in other.accelerations}
     rules.update({u: sol[u] for u in other.unknowns if u in suspect.unknowns})
-    return dotted(tidy(suspect.equations[row].xreplace(rules), limits))
+    return tidy(suspect.equations[row].xreplace(rules), limits)

@@ -57,9 +57,16 @@ class PublishedVerdict:
 
     @property
     def detail(self) -> str:
-        """Why the answer is wrong, in plain text (primes for rates)."""
+        """Why the answer is wrong, in plain text (primes for rates, Python's ``*`` and
+        ``**``): the form ``check --json`` carries."""
         return "; ".join("".join(x if isinstance(x, str) else dotted(x) for x in sentence)
                          for sentence in self.parts)
+
+    def text(self, notation: str = "dots") -> str:
+        """Why the answer is wrong, in textbook text (``m l θ̇^2``; ``θ′`` with
+        ``notation="primes"``): the form a report and ``dualmech check`` show."""
+        from ..notation import sentence
+        return "; ".join(sentence(s, notation) for s in self.parts)
 
     def __repr__(self) -> str:
         return f"PublishedVerdict({self.label!r}, {self.verdict!r})"
@@ -293,8 +300,10 @@ def _detail(problem, pub, which, limits: Budget) -> list[tuple]:
         issues = audit(pub.printed[j], dims) if pub.kind != "expression" else \
             audit(pub.printed[j] - pub.reference[j], dims)
         if issues:
-            lines.append((f"{what} is dimensionally inconsistent: "
-                          + "; ".join(map(str, issues)),))
+            said: tuple = (f"{what} is dimensionally inconsistent: ",)
+            for i, issue in enumerate(issues):
+                said += (("; ",) if i else ()) + issue.sentence()
+            lines.append(said)
         shell = None
         if pub.kind != "expression":
             ref = problem.model(problem.reference)

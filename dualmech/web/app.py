@@ -169,12 +169,14 @@ class _Server:
 
 def _titles(served: dict) -> list[dict]:
     from dualmech.problems import declarations
+    from dualmech.sources import source_fields
     decl = {d.name: d for d in declarations()}
     out = []
     for name in served:
         d = decl.get(name)
         out.append({"name": name, "title": d.title if d else name,
-                    "source": d.source if d else "", "summary": d.summary if d else ""})
+                    **source_fields(d.source if d else ""),
+                    "summary": d.summary if d else ""})
     return out
 
 

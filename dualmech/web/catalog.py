@@ -116,7 +116,8 @@ class ProblemInfo:
 
     def to_dict(self) -> dict:
         """The JSON form (``/api/problems/{name}``)."""
-        return {"name": self.name, "title": self.title, "source": self.source,
+        from dualmech.sources import source_fields
+        return {"name": self.name, "title": self.title, **source_fields(self.source),
                 "summary": self.summary, "sketch": self.sketch,
                 "coordinates": self.coordinates, "parameters": self.parameters,
                 "reactions": self.reactions, "quantities": self.quantities,

@@ -49,8 +49,10 @@ SPEC = {
                        "the teacher page's login)"}}},
     "paths": {
         "/api/problems": {"get": {"summary": "The served problems.",
-                                  "responses": {"200": _json("name, title, source, summary of "
-                                                             "each", {"type": "array"})}}},
+                                  "responses": {"200": _json(
+                                      "name, title, source (named by course), source_file "
+                                      "(the archive's file, or null), summary of each",
+                                      {"type": "array"})}}},
         "/api/problems/{name}": {"get": {
             "summary": "One problem: coordinates and parameters with units, quantities, the "
                        "names an answer may use, its sketch.",

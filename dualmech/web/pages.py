@@ -17,6 +17,7 @@ from collections import Counter, defaultdict
 from html import escape
 
 from dualmech.grade.report import summarise
+from dualmech.sources import source_name
 
 __all__ = ["layout", "index_page", "problem_page", "feedback_html", "login_page",
            "teacher_page", "batch_page", "api_page"]
@@ -72,7 +73,7 @@ def problem_page(info) -> str:
               '<p class="muted">This problem has no sketch.</p>')
     table = ("<table><tr><th>name</th><th>unit</th><th>meaning</th></tr>{}</table>")
     body = f"""<h1>{escape(info.title)}</h1>
-<p class="source">Source: {escape(info.source)}</p><p>{escape(info.summary)}</p>
+<p class="source">Source: {escape(source_name(info.source))}</p><p>{escape(info.summary)}</p>
 <div class="card"><h2>The system</h2>{sketch}</div>
 <div class="grid"><section>
 <div class="card"><h2>Coordinates</h2>{table.format(coords)}
