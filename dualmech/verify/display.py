@@ -242,85 +242,20 @@ def largest_coupled_block(A) -> int:
     >>> largest_coupled_block(sp.Matrix([[a, 0, 0], [b, a, c], [c, b, a]]))
     2
     """
-    # in plain Python: the matrices are small (solve_display takes at most eight unknowns),
-    # and scipy.sparse.csgraph took 0.2 s to import, more than a check of a small problem
-    n = A.rows
-    if n == 0:
+    # scipy's graph routines (imported here: only a system of more than MAX_COUPLED unknowns
+    # asks, so a check of a small problem never pays for the import)
+    import numpy as np
+    from scipy.sparse import csr_matrix
+    from scipy.sparse.csgraph import connected_components, maximum_bipartite_matching
+    if A.rows == 0:
         return 0
-    nonzero = [[j for j in range(A.cols) if A[i, j] != 0] for i in range(n)]
-    column_of = _perfect_matching(nonzero, A.cols)
-    if column_of is None:
-        return n
-    row_of = {c: r for r, c in enumerate(column_of)}
-    # B[i, k] = A[i, column_of[k]] has a zero-free diagonal; its irreducible diagonal blocks
-    # are the strongly connected components of the graph i -> k where B[i, k] != 0
-    successors = [[row_of[j] for j in nonzero[i] if j in row_of] for i in range(n)]
-    return max(len(c) for c in _strong_components(successors))
-
-
-def _perfect_matching(nonzero: list, cols: int) -> list | None:
-    """The column matched to each row (rows ``i`` may take the columns in ``nonzero[i]``),
-    every row matched; ``None`` when no such matching exists (augmenting paths)."""
-    row_of_col = [-1] * cols
-
-    def augment(r: int, seen: list) -> bool:
-        for c in nonzero[r]:
-            if not seen[c]:
-                seen[c] = True
-                if row_of_col[c] < 0 or augment(row_of_col[c], seen):
-                    row_of_col[c] = r
-                    return True
-        return False
-    for r in range(len(nonzero)):
-        if not augment(r, [False] * cols):
-            return None
-    column_of = [0] * len(nonzero)
-    for c, r in enumerate(row_of_col):
-        if r >= 0:
-            column_of[r] = c
-    return column_of
-
-
-def _strong_components(successors: list) -> list[list[int]]:
-    """The strongly connected components of the graph ``v -> successors[v]`` (Tarjan's
-    algorithm, without recursion)."""
-    index: dict = {}
-    low: dict = {}
-    stack: list = []
-    on_stack: set = set()
-    out: list = []
-    for root in range(len(successors)):
-        if root in index:
-            continue
-        work = [(root, 0)]
-        while work:
-            v, i = work.pop()
-            if i == 0:
-                index[v] = low[v] = len(index)
-                stack.append(v)
-                on_stack.add(v)
-            for k in range(i, len(successors[v])):
-                w = successors[v][k]
-                if w not in index:
-                    work.append((v, k + 1))
-                    work.append((w, 0))
-                    break
-                if w in on_stack:
-                    low[v] = min(low[v], index[w])
-            else:
-                if low[v] == index[v]:
-                    component = []
-                    while True:
-                        w = stack.pop()
-                        on_stack.discard(w)
-                        component.append(w)
-                        if w == v:
-                            break
-                    out.append(component)
-                if work:
-                    parent = work[-1][0]
-                    low[parent] = min(low[parent], low[v])
-    return out
+    pattern = csr_matrix(np.array([[1 if A[i, j] != 0 else 0 for j in range(A.cols)]
+                                   for i in range(A.rows)], dtype=np.int8))
+    match = maximum_bipartite_matching(pattern, perm_type="column")
+    if (match < 0).any():
+        return A.rows
+    _, labels = connected_components(pattern[:, match], directed=True, connection="strong")
+    return int(np.bincount(labels).max())
 
 
 def dotted(expr, coordinates=None) -> str:
