@@ -14,7 +14,7 @@ import sympy as sp
 
 from .._expr import as_expr
 from ..equations import is_zero_expression
-from .ratfun import NotRational, tidy_rational
+from .ratfun import NotRational, solve_rational, tidy_rational
 
 __all__ = ["Budget", "OverBudget", "budget", "tidy", "solve_display", "largest_coupled_block",
            "dotted"]
@@ -187,6 +187,21 @@ def _solve_held(eqs, held, limits: Budget) -> dict:
     N = np.concatenate([values[:n * n].reshape(n, n), values[n * n:].reshape(n, 1)], axis=1)
     scale = max(float(np.abs(N[:, :n]).max()), 1e-300)
     tiny = 1e-9 * scale
+    memo: dict = {}
+    # straight into the function form (theta(t), its derivatives): no second walk
+    timed = dict(names)
+    timed.update({sym.name: f for sym, f in _rules(eqs.coordinates)[2].items()})
+    unknowns = list(eqs.accelerations) + list(eqs.unknowns)
+    try:    # exact fractions on FLINT, cancelled at every step (see ratfun.solve_rational)
+        pivots = _pivots(N.copy(), tiny)
+        with budget(limits.remaining()):
+            solved = solve_rational([[to_sp(x, timed, memo) for x in row[:n]] for row in M],
+                                    [to_sp(row[n], timed, memo) for row in M], pivots)
+        return _within(dict(zip(unknowns, solved)), limits)
+    except NotRational:
+        pass
+    except ZeroDivisionError:
+        raise ValueError("Matrix det == 0; not invertible.") from None
     with budget(limits.remaining()):
         for k in range(n):
             p = k + int(np.argmax(np.abs(N[k:, k])))
@@ -210,23 +225,40 @@ def _solve_held(eqs, held, limits: Budget) -> dict:
                 if M[k][c] != 0:
                     acc = acc - M[k][c] * x[c]
             x[k] = acc / M[k][k]
-    memo: dict = {}
-    # straight into the function form (theta(t), its derivatives): no second walk
-    timed = dict(names)
-    timed.update({sym.name: f for sym, f in _rules(eqs.coordinates)[2].items()})
-    unknowns = list(eqs.accelerations) + list(eqs.unknowns)
     out = {}
     for u, v in zip(unknowns, x):
         expr = to_sp(v, timed, memo)
         try:    # the reduced fraction (FLINT); tidy's general route for anything else
-            shown = tidy_rational(expr)
+            out[u] = tidy_rational(expr)
         except (NotRational, ZeroDivisionError):
-            shown = tidy(expr, limits)
-        ops = sp.count_ops(shown)
-        if ops > 4 * limits.max_ops:     # a page of formula: shown as M q'' = f instead
-            raise OverBudget(f"expression of {ops} operations")
-        out[u] = shown
+            out[u] = tidy(expr, limits)
+    return _within(out, limits)
+
+
+def _pivots(N, tiny: float) -> list:
+    """The rows partial pivoting brings up at each step of eliminating the (numeric) ``N``:
+    the largest value in the column at a real point, so never an entry zero there."""
+    import numpy as np
+    n = N.shape[0]
+    out = []
+    for k in range(n):
+        p = k + int(np.argmax(np.abs(N[k:, k])))
+        if abs(N[p, k]) <= tiny:
+            raise ZeroDivisionError("a zero pivot")
+        out.append(p)
+        if p != k:
+            N[[k, p]] = N[[p, k]]
+        N[k + 1:, k:] -= np.outer(N[k + 1:, k] / N[k, k], N[k, k:])
     return out
+
+
+def _within(solution: dict, limits: Budget) -> dict:
+    """``solution``, unless one of its forms is a page long (then shown as M q'' = f)."""
+    for shown in solution.values():
+        ops = sp.count_ops(shown)
+        if ops > 4 * limits.max_ops:
+            raise OverBudget(f"expression of {ops} operations")
+    return solution
 
 
 def largest_coupled_block(A) -> int:

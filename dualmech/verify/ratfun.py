@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["tidy_rational", "NotRational"]
+__all__ = ["tidy_rational", "solve_rational", "NotRational"]
 
 try:   # python-flint is a dependency; without it the caller keeps sympy's route
     import flint
@@ -144,6 +144,13 @@ def tidy_rational(expr) -> sp.Expr:
         return expr
     ring = _Ring(atoms)
     n, d = _reduce(*ring.fraction(expr))
+    return _tidied(ring, n, d)
+
+
+def _tidied(ring: _Ring, n, d) -> sp.Expr:
+    """The reduced fraction ``n/d`` shown with ``sin^2 + cos^2 = 1`` applied per angle
+    whichever way gives fewer terms (the tail of :func:`tidy_rational`)."""
+    atoms = ring.atoms
     if n.is_zero():
         return sp.Integer(0)
     by_arg: dict = {}
@@ -161,6 +168,65 @@ def tidy_rational(expr) -> sp.Expr:
                 best = cand
         n, d = best
     return _display(ring, n) / _display(ring, d)
+
+
+def solve_rational(rows: list, rhs: list, pivots: list) -> list:
+    """The solution of ``rows x = rhs`` (sympy expressions, rational functions of their
+    atoms), each component tidied as by :func:`tidy_rational`.
+
+    Gaussian elimination on reduced fractions of ``fmpz_mpoly`` (every intermediate entry
+    cancelled by a gcd in C, so nothing grows past the size of the answer); ``pivots[k]`` is
+    the row (counted from the current order) brought to position ``k`` at step ``k``, chosen
+    by the caller (:func:`dualmech.verify.display.solve_display` reads them off values at a
+    real point, so that an entry zero on the motion is never one).  Raises
+    :class:`NotRational` for anything else, ``ZeroDivisionError`` when a pivot is zero.
+
+    >>> import sympy as sp
+    >>> a, b, s, c = sp.symbols("a b s c")
+    >>> solve_rational([[a, b], [0, a]], [a * b, a * s], [0, 1])
+    [b*(a - s)/a, s]
+    """
+    if flint is None:
+        raise NotRational("python-flint is not installed")
+    rows = [[sp.sympify(x, strict=True) for x in row] for row in rows]
+    rhs = [sp.sympify(x, strict=True) for x in rhs]
+    found: dict = {}
+    for e in [x for row in rows for x in row] + rhs:
+        _atoms(e, found)
+    atoms = sorted(found, key=sp.default_sort_key)
+    ring = _Ring(atoms)
+    n = len(rows)
+    M = [[_reduce(*ring.fraction(e)) for e in row] + [_reduce(*ring.fraction(r))]
+         for row, r in zip(rows, rhs)]
+
+    def mul(x, y):
+        return _reduce(x[0] * y[0], x[1] * y[1])
+
+    def sub(x, y):
+        if y[0].is_zero():
+            return x
+        g = x[1].gcd(y[1])
+        return _reduce(x[0] * (y[1] / g) - y[0] * (x[1] / g), x[1] * (y[1] / g))
+
+    for k in range(n):
+        p = pivots[k]
+        M[k], M[p] = M[p], M[k]
+        head = M[k][k]
+        if head[0].is_zero():
+            raise ZeroDivisionError("a zero pivot")
+        for r in range(k + 1, n):
+            if M[r][k][0].is_zero():
+                continue
+            f = _reduce(M[r][k][0] * head[1], M[r][k][1] * head[0])
+            for c in range(k + 1, n + 1):
+                M[r][c] = sub(M[r][c], mul(f, M[k][c]))
+    x = [None] * n
+    for k in reversed(range(n)):
+        acc = M[k][n]
+        for c in range(k + 1, n):
+            acc = sub(acc, mul(M[k][c], x[c]))
+        x[k] = _reduce(acc[0] * M[k][k][1], acc[1] * M[k][k][0])
+    return [_tidied(ring, *v) for v in x]
 
 
 def _display(ring: _Ring, p) -> sp.Expr:
