@@ -144,6 +144,11 @@ def test_a_map_the_student_states():
     assert any("M*a*s''" in d and "L^2 M T^-2" in d for d in r.dimension_issues), str(r)
     assert "theta" not in str(r), str(r)
     assert set(r.state) >= {"s", "s'"} and "theta" not in r.state, r.state
+    # a map whose inverse multiplies the angles (theta = 150*s) would make the correct
+    # equations cost more than the answer was allowed to: graded, and diagnosed in theta,
+    # not "too costly"
+    r = grade("simple_pendulum", "s'' + s = 0; where s = theta/150")
+    assert r.status == "wrong" and "too costly" not in str(r), str(r)
 
 
 def test_relative_coordinates_the_student_states_are_diagnosed_in_them():

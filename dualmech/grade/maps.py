@@ -43,6 +43,11 @@ from .vocabulary import Vocabulary
 __all__ = ["StudentMap", "StudentView", "student_map"]
 
 
+#: Largest integer multiple of a student's coordinate that the inverse of their map may
+#: put into the correct equations (``theta = 8*s`` gives ``sin(8*s)``).
+_MAX_MULTIPLE = 8
+
+
 @dataclass
 class StudentMap:
     """The student's coordinates: their ``vocabulary`` and ``rules`` (plain symbols of the new
@@ -139,6 +144,12 @@ class StudentMap:
                 return None
             solved = J.LUsolve(sp.Matrix([s.q for s in new]) - b)
         except (ValueError, ZeroDivisionError, sp.PolynomialError):
+            return None
+        # the correct equations' angles become multiples of the student's coordinates
+        # (theta = 150*s): past a small multiple, expanding them would cost more than the
+        # answer itself was allowed to; such answers are diagnosed in the problem's
+        # coordinates instead
+        if any(abs(r.p) > _MAX_MULTIPLE for e in solved for r in sp.expand(e).atoms(sp.Rational)):
             return None
         functions = [coordinate(n) for n in self.names]
         timed_rule = {s.q: f for s, f in zip(new, functions)}
