@@ -172,13 +172,13 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
         target = sp.Symbol(str(lam_names.get(_name(lam), _name(lam))), real=True)
         rule[lam] = target
         unknowns.append(target)
-    stray = {f for r in rows for f in sp.sympify(r).atoms(AppliedUndef)} - set(mech_q) \
+    stray = {f for r in rows for f in r.atoms(AppliedUndef)} - set(mech_q) \
         - set(rule)
     if stray:
         raise ModelError(f"the {type(method).__name__} uses functions of time that are not its "
                          f"coordinates: {', '.join(sorted(map(str, stray)))}; specified inputs "
                          "are not supported (write them as functions of t).")
-    free = set().union(*(sp.sympify(r).free_symbols for r in rows)) - {tt}
+    free = set().union(*(r.free_symbols for r in rows)) - {tt}
     params = _by_name(problem.parameter_symbols) if problem is not None else {}
     explicit_s = {_name(k): v for k, v in (symbols or {}).items()}
     missing = []
@@ -195,7 +195,7 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
                          "...} naming the problem's symbol it stands for, or declare it as a "
                          "parameter of the problem.")
     rule[tt] = T_DUALMECH
-    equations = tuple(sp.sympify(r).xreplace(rule) for r in rows)
+    equations = tuple(r.xreplace(rule) for r in rows)
     return EquationSet(name, tuple(qmap.values()), equations,
                        unknowns=tuple(unknowns),
                        labels=tuple(labels), description=f"{type(method).__name__} of "
@@ -300,5 +300,8 @@ def lagranges_method(problem, lagrangian, forcelist=None, frame=None):
     for c, qi in zip(coords, q):
         rule[c.diff(T_DUALMECH)] = qi.diff(tt)
         rule[c] = qi
-    L = sp.sympify(lagrangian).xreplace(rule)
+    if isinstance(lagrangian, str):
+        raise TypeError("`lagrangian` must be a sympy expression built from the problem's "
+                        "coordinates, not text (text is never evaluated).")
+    L = sp.sympify(lagrangian, strict=True).xreplace(rule)
     return me.LagrangesMethod(L, q, forcelist=forcelist, frame=frame)

@@ -140,3 +140,8 @@ def test_export_round_trip_and_state_space_form():
     assert check_mechanics(TOY_CAR, lm, name="exported").equivalent
     with pytest.raises(ModelError, match="unknown reactions"):
         to_mechanics(TOY_CAR, "newton_euler")
+
+
+def test_a_lagrangian_given_as_text_is_refused_not_evaluated():
+    with pytest.raises(TypeError, match="not text"):
+        lagranges_method(TOY_CAR, "__import__('os').getcwd()")
