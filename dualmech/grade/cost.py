@@ -244,38 +244,5 @@ def explainable(node: Node) -> bool:
 
 def _text(node: Node) -> str:
     """``node`` as compact text, the way a student writes it: ``sin(1001*theta/2)``."""
-    s = _write(node)
+    s = to_text(node)
     return s[:200] + ("..." if len(s) > 200 else "")
-
-
-def _write(node: Node, inner: bool = False) -> str:
-    op, a = node.op, node.args
-    if op in ("num", "name", "dot"):
-        return to_text(node)
-    if op == "group":
-        return f"({_write(a[0])})" if inner else _write(a[0])
-    if op == "neg":
-        return f"-{_write(a[0], True)}"
-    if op == "add":
-        out = _write(a[0])
-        for c in a[1:]:
-            t = _write(c)
-            out += f" - {t[1:]}" if t.startswith("-") else f" + {t}"
-        return f"({out})" if inner else out
-    if op == "mul":
-        out = ""
-        for c in a:
-            if c.op == "inv":
-                out += ("1" if not out else "") + "/" + _write(c.args[0], True)
-            else:
-                out += ("*" if out else "") + _write(c, True)
-        return out
-    if op == "inv":
-        return "1/" + _write(a[0], True)
-    if op == "pow":
-        return f"{_write(a[0], True)}^{_write(a[1], True)}"
-    if op == "func":
-        return f"{a[0]}({_write(a[1])})"
-    if op == "vec":
-        return "[" + ", ".join(_write(c) for c in a) + "]"
-    return to_text(node)

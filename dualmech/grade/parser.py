@@ -194,36 +194,42 @@ class Node:
         return to_text(self)
 
 
-def to_text(node: Node) -> str:
-    """The tree written back as plain text (for messages); iterative depth is bounded."""
+def to_text(node: Node, inner: bool = False) -> str:
+    """The tree written back as plain text for messages, as a person types it: ``^`` for
+    powers, parentheses only where needed (``inner``: the node is an operand, so a sum or a
+    group keeps its parentheses); the tree's depth is bounded by the parser's limits."""
     op, a = node.op, node.args
     if op == "num":
         v = a[0]
         return str(v.numerator) if v.denominator == 1 else f"{v.numerator}/{v.denominator}"
-    if op == "name":
+    if op in ("name", "dot"):
         return a[0] + "'" * a[1]
-    if op == "dot":
-        return a[0] + "'" * a[1]
+    if op == "group":
+        return f"({to_text(a[0])})" if inner else to_text(a[0])
+    if op == "neg":
+        return f"-{to_text(a[0], True)}"
     if op == "add":
         out = to_text(a[0])
         for c in a[1:]:
-            s = to_text(c)
-            out += f" - {s[1:]}" if s.startswith("-") else f" + {s}"
-        return f"({out})"
+            t = to_text(c)
+            out += f" - {t[1:]}" if t.startswith("-") else f" + {t}"
+        return f"({out})" if inner else out
     if op == "mul":
-        return " * ".join(to_text(c) for c in a)
-    if op == "pow":
-        return f"{to_text(a[0])}^{to_text(a[1])}"
-    if op == "neg":
-        return f"-{to_text(a[0])}"
+        out = ""
+        for c in a:
+            if c.op == "inv":
+                out += ("1" if not out else "") + "/" + to_text(c.args[0], True)
+            else:
+                out += ("*" if out else "") + to_text(c, True)
+        return out
     if op == "inv":
-        return f"1/({to_text(a[0])})"
+        return "1/" + to_text(a[0], True)
+    if op == "pow":
+        return f"{to_text(a[0], True)}^{to_text(a[1], True)}"
     if op == "func":
         return f"{a[0]}({to_text(a[1])})"
     if op == "vec":
         return "[" + ", ".join(to_text(c) for c in a) + "]"
-    if op == "group":
-        return f"({to_text(a[0])})"
     raise AssertionError(op)
 
 
