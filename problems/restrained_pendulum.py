@@ -184,15 +184,21 @@ class RestrainedPendulum(Problem):
         return {"multiplier": {theta: theta, u: 0, v: 0}}
 
     # -- direct form ----------------------------------------------------------------------
+    def _elements(self, sc) -> tuple:
+        """``(spring travel, its direction, dashpot rate, its direction)`` on the link: here
+        along the arc (the variant overrides this)."""
+        return b * theta, sc.A.x, a * D(theta), sc.A.x
+
     def newton_euler(self) -> EquationSet:
         """Link + bob: ``sum F = m a_B`` on ``i`` and ``j``, moments about the pivot on ``k``."""
         sc = _scene()
-        O, A = sc.O, sc.A
+        O = sc.O
         ne = NewtonEuler("newton_euler", coordinates=[theta], ground=O,
                          description="free-body diagram of link and bob together")
         ne.gravity(-g * O.y, bodies=[sc.bob])
-        ne.linear_spring("spring", sc.link, k, b * theta, A.x, at=sc.S)     # along the arc
-        ne.linear_damper("dashpot", sc.link, c, a * D(theta), A.x, at=sc.D)
+        travel, along_s, rate, along_d = self._elements(sc)
+        ne.linear_spring("spring", sc.link, k, travel, along_s, at=sc.S)
+        ne.linear_damper("dashpot", sc.link, c, rate, along_d, at=sc.D)
         ne.reaction("H", sc.link, O.x, at=sc.pivot)
         ne.reaction("V", sc.link, O.y, at=sc.pivot)
         system = [sc.link, sc.bob]
@@ -274,24 +280,11 @@ class RestrainedPendulumHorizontal(RestrainedPendulum):
         Reaction("V", FORCE, "pivot on link, along j (up)"),
     )
 
-    def newton_euler(self) -> EquationSet:
-        """Link + bob, horizontal spring and dashpot: ``sum F`` on ``i``, ``j``, moments on ``k``."""
-        sc = _scene()
+    def _elements(self, sc) -> tuple:
+        """Horizontal: the travel of the spring's end and the velocity of the dashpot's end
+        along ``i``, read off the scene's points (the direct form's own kinematics)."""
         O = sc.O
-        ne = NewtonEuler("newton_euler", coordinates=[theta], ground=O,
-                         description="free-body diagram of link and bob together")
-        ne.gravity(-g * O.y, bodies=[sc.bob])
-        x_S = sc.S.pos_from().dot(O.x)            # horizontal travel of the spring's end
-        rate_D = sc.D.vel(O).dot(O.x)             # horizontal velocity of the dashpot's end
-        ne.linear_spring("spring", sc.link, k, x_S, O.x, at=sc.S)
-        ne.linear_damper("dashpot", sc.link, c, rate_D, O.x, at=sc.D)
-        ne.reaction("H", sc.link, O.x, at=sc.pivot)
-        ne.reaction("V", sc.link, O.y, at=sc.pivot)
-        system = [sc.link, sc.bob]
-        ne.linear_momentum(system, O.x)
-        ne.linear_momentum(system, O.y)
-        ne.angular_momentum(system, O.z, about=sc.pivot)
-        return ne.equations()
+        return sc.S.pos_from().dot(O.x), O.x, sc.D.vel(O).dot(O.x), O.x
 
     def lagrange(self) -> EquationSet:
         """``T``, ``U`` and ``R`` by hand, horizontal spring and dashpot."""
