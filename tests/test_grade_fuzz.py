@@ -86,3 +86,10 @@ def test_fuzz_combinations(pool, parts, ops, wrap, case):
         text = f"{text} {op} {p}" if op != "=" or "=" not in text else f"{text} + {p}"
     text = wrap.format(text)
     _check(text, pool.grade(case[0], text, case[1]))
+
+
+def test_a_map_that_multiplies_the_angles_is_graded_within_the_limits(pool):
+    # theta = 150*s: rewriting the correct equations in s would expand sin(150*s); the answer
+    # is graded (wrong, diagnosed in theta) inside the pool's time and memory ceilings
+    g = pool.grade("simple_pendulum", "s'' + s = 0; where s = theta/150")
+    assert g.status == "wrong" and "too costly" not in g.summary, g.summary
