@@ -21,7 +21,7 @@ Example
 >>> len(eqs), eqs[0].rhs is not None
 (2, True)
 >>> str(eqs[0].lhs)
-"(R * theta'' + g * sin(theta))"
+"R*theta'' + g*sin(theta)"
 >>> parse("__import__('os')")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
