@@ -480,7 +480,10 @@ class _SeWalker(_Walker):
     def __init__(self, dims: Mapping, names: Mapping):
         super().__init__(dims)
         self.names = names
-        self._rates: dict = {}   # plain state symbol -> the rate it stands for (display)
+        # plain state symbol -> (coordinate, order): the rate it stands for, built in sympy
+        # only when an issue is shown (a derivative costs more than the audit itself)
+        self._rate_of: dict = {}
+        self._rates_sp: dict | None = None
         se_dims: dict = {}
         for name, obj in names.items():
             if not name.endswith("()") and obj in self.dims:
@@ -495,10 +498,18 @@ class _SeWalker(_Walker):
             for order, sym in enumerate((st.q, st.qd, st.qdd)):
                 if names.get(sym.name) is sym:   # plain rows: q, q_dot, q_ddot
                     se_dims[se.Symbol(sym.name)] = _vadd(d, self.dims[t], -order)
-                    self._rates[sym] = q.diff(t, order) if order else q
+                    self._rate_of[sym] = (q, order)
         se_dims[se.Symbol(t.name)] = self.dims[t]
         self._memo.update(se_dims)   # declared symbols are their own memo entries
         self._seeded = set(se_dims)
+
+    @property
+    def _rates(self) -> dict:
+        """``{plain state symbol: the rate it stands for}`` (``theta_dot -> theta'``)."""
+        if self._rates_sp is None:
+            self._rates_sp = {sym: q.diff(t, order) if order else q
+                              for sym, (q, order) in self._rate_of.items()}
+        return self._rates_sp
 
     def _sympy(self, e):
         return to_sp(e, self.names).xreplace(self._rates)

@@ -157,6 +157,7 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
                 except (ValueError, TypeError, ZeroDivisionError) as exc:
                     faulty[item[0].label] = (f"could not be evaluated: "
                                              f"{type(exc).__name__}: {exc}")
+    shared = _Explaining(problem, limits)     # what the explanations share, when read
     verdicts = [PublishedVerdict(pub.label, pub.where, "unchecked",
                                  "NOT CHECKED, the printed answer " + faulty[pub.label], "none")
                 for pub in pubs if pub.label in faulty]
@@ -175,7 +176,8 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
         else:
             verdicts.append(PublishedVerdict(
                 pub.label, pub.where, "wrong",
-                lambda pub=pub, which=bad[pub.label]: _detail(problem, pub, which, limits),
+                lambda pub=pub, which=bad[pub.label]: _detail(problem, pub, which, limits,
+                                                              shared),
                 method))
     judged = {v.label: v for v in verdicts}
     return [judged[pub.label] for pub in pubs if pub.label in judged]
@@ -277,13 +279,41 @@ def _published_exprs(problem, pub) -> list:
     return exprs
 
 
-def _detail(problem, pub, which, limits: Budget) -> list[tuple]:
+class _Explaining:
+    """What explaining the wrong printed answers of one problem shares, each part built when
+    first needed: the declared dimensions, the reference model's rows as term tables, the
+    symbols of the reactions.  One per :func:`check_published` call, so nothing outlives the
+    models it was built from."""
+
+    def __init__(self, problem, limits: Budget):
+        self.problem, self.limits = problem, limits
+        self._dims = None
+        self.tables: dict = {}    # expression -> its expanded terms (see _terms)
+
+    @property
+    def dims(self) -> dict:
+        if self._dims is None:
+            self._dims = self.problem.dimensions()
+        return self._dims
+
+    @property
+    def ref(self):
+        return self.problem.model(self.problem.reference)
+
+    @property
+    def unknowns(self) -> set:
+        return {u for m in self.problem.models().values() for u in m.unknowns}
+
+
+def _detail(problem, pub, which, limits: Budget, shared: _Explaining | None = None
+            ) -> list[tuple]:
     """Say what is wrong with a printed answer (display work, within budget): sentences of
     text and expressions.  A difference is shown only between quantities of one dimension."""
-    dims = problem.dimensions()
+    shared = shared or _Explaining(problem, limits)
+    dims = shared.dims
     lines = []
     if "determines" in which:
-        k, n = len(pub.printed), len(problem.model(problem.reference).coordinates)
+        k, n = len(pub.printed), len(shared.ref.coordinates)
         if k == 1 and n == 1:
             why = "its one equation does not involve the acceleration"
         elif k == 1:
@@ -306,9 +336,9 @@ def _detail(problem, pub, which, limits: Budget) -> list[tuple]:
             lines.append(said)
         shell = None
         if pub.kind != "expression":
-            ref = problem.model(problem.reference)
+            ref = shared.ref
             near = closest_equation(exprs[j], ref.equations, ref.labels,
-                                    problem.parameter_symbols)
+                                    problem.parameter_symbols, memo=shared.tables)
             if near is not None:
                 label, alpha, rest = near
                 lines.append((f"{what} is closest to ", alpha,
@@ -317,14 +347,16 @@ def _detail(problem, pub, which, limits: Budget) -> list[tuple]:
                 # the derived row vanishes on the motion: a remainder free of accelerations
                 # and reactions is the printed side's value there, with no solve
                 shell = rest
-        diff = _on_shell(problem, exprs[j], limits, shell)
         if issues and pub.kind == "expression":
             lines.append((f"{what} and the derivation have different dimensions, so their "
                           "difference is not shown",))
-        elif issues:
+            continue
+        if issues:
             lines.append((f"{what} does not follow from the equations of motion (its terms "
                           "differ in dimension, so its value on the motion is not shown)",))
-        elif diff is not None and len(dotted(diff)) < 200:
+            continue
+        diff = _on_shell(problem, exprs[j], limits, shell, shared)
+        if diff is not None and len(dotted(diff)) < 200:
             if pub.kind != "expression":
                 lines.append((f"{what} does not follow from the equations of motion: on the "
                               "motion its left side equals ", diff, ", not 0"))
@@ -335,66 +367,116 @@ def _detail(problem, pub, which, limits: Budget) -> list[tuple]:
     return lines
 
 
-def closest_equation(expr, equations, labels, parameters, max_terms: int = 40):
+def closest_equation(expr, equations, labels, parameters, max_terms: int = 40,
+                     memo: dict | None = None):
     """The derived equation that ``expr`` most resembles, up to a constant factor.
 
     Tries every ratio ``alpha`` of a term of ``expr`` to a term of a derived equation (ratios
     free of the state) and keeps the smallest ``expr - alpha * equation``.  Returns
     ``(label, alpha, remainder)`` or ``None`` when nothing matches or the input is large.
-    Terms are compared as ``{monomial: coefficient}`` tables, so only the best remainder is
-    ever built as an expression.
+    Terms are compared as tables of ``{monomial: coefficient}`` with each monomial a table
+    of ``{base: exponent}``, so ratios and trial remainders are dictionary arithmetic and
+    only the best remainder is ever built as an expression.  ``memo`` (a dict the caller
+    keeps) shares the expanded terms of the equations between calls.
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> x, k, c = sp.symbols("x k c")
+    >>> closest_equation(2*k*x + 2*c + 1, [k*x + c, x**2], ["first", "second"], [k, c])
+    ('first', 2, 1)
     """
-    E = sp.expand(expr)
-    terms_e = sp.Add.make_args(E)
+    memo = {} if memo is None else memo
+    E, terms_e = _terms(expr, memo)
     if len(terms_e) > max_terms:
         return None
-    table_e = _coefficients(E)
+    table_e = {key: k for k, key, _ in terms_e}
     allowed = set(parameters)
+    free: dict = {}    # base or exponent -> whether it is free of the state
+
+    def constant(x) -> bool:
+        hit = free.get(x)
+        if hit is None:
+            hit = free[x] = x.free_symbols <= allowed
+        return hit
+
     best = None
     for label, R in zip(labels, equations):
-        R = sp.expand(R)
-        terms_r = sp.Add.make_args(R)
+        _, terms_r = _terms(R, memo)
         if len(terms_r) > max_terms:
             continue
-        table_r = _coefficients(R)
-        ratios = []
-        for a in terms_e:
-            for b in terms_r:
-                r = a / b   # monomials: the quotient is already in lowest terms
-                if r.free_symbols <= allowed and r not in ratios and r != 0:
-                    ratios.append(r)
-        for alpha in ratios[:60]:
+        ratios, seen = [], set()
+        for ka, _, pa in terms_e:
+            for kb, _, pb in terms_r:
+                # a / b, monomials: the quotient's exponents are the differences
+                powers = dict(pa)
+                for base, x in pb.items():
+                    left = powers.get(base, 0) - x
+                    if left == 0:
+                        powers.pop(base, None)
+                    else:
+                        powers[base] = left
+                if not all(constant(base) and constant(x) for base, x in powers.items()):
+                    continue
+                r = (ka / kb, frozenset(powers.items()))
+                if r not in seen:
+                    seen.add(r)
+                    ratios.append((ka / kb, powers))
+        for k_alpha, p_alpha in ratios[:60]:
             rest = dict(table_e)
-            for mono, c in table_r.items():
-                k, m = (alpha * mono).as_coeff_Mul()
-                rest[m] = rest.get(m, 0) - k * c
+            for c, _, mono in terms_r:
+                key = _times(mono, p_alpha)
+                rest[key] = rest.get(key, 0) - k_alpha * c
             size = sum(1 for v in rest.values() if v != 0)
             if best is None or size < best[0]:
-                best = (size, label, alpha, R)
+                best = (size, label, (k_alpha, p_alpha), terms_r)
     if best is None or best[0] >= len(terms_e):
         return None
-    size, label, alpha, R = best
-    return label, alpha, sp.factor_terms(sp.expand(E - alpha * R))
+    size, label, (k_alpha, p_alpha), terms_r = best
+    alpha = sp.Mul(k_alpha, *(b**x for b, x in p_alpha.items()))
+    return label, alpha, sp.factor_terms(sp.expand(E - alpha * sp.Add(*(
+        c * sp.Mul(*(b**x for b, x in mono.items())) for c, _, mono in terms_r))))
 
 
-def _coefficients(expr) -> dict:
-    """``{monomial: rational coefficient}`` of an expanded sum."""
-    out: dict = {}
-    for term in sp.Add.make_args(expr):
-        k, m = term.as_coeff_Mul()
-        out[m] = out.get(m, 0) + k
-    return out
+def _terms(expr, memo: dict) -> tuple:
+    """``(expanded expr, [(coefficient, key, {base: exponent}) per term])``, kept in
+    ``memo`` under the expression itself (equal expressions, equal terms: never stale)."""
+    hit = memo.get(expr)
+    if hit is None:
+        E = sp.expand(expr)
+        terms = []
+        for term in sp.Add.make_args(E):
+            k, m = term.as_coeff_Mul()
+            powers = {b: x for b, x in m.as_powers_dict().items() if b != 1 and x != 0}
+            terms.append((k, frozenset(powers.items()), powers))
+        hit = memo[expr] = (E, terms)
+    return hit
 
 
-def _on_shell(problem, expr, limits: Budget, same_on_motion=None):
+def _times(powers: dict, other: dict) -> frozenset:
+    """The key of the product of two monomials given as ``{base: exponent}``."""
+    out = dict(powers)
+    for base, x in other.items():
+        y = out.get(base, 0) + x
+        if y == 0:
+            out.pop(base, None)
+        else:
+            out[base] = y
+    return frozenset(out.items())
+
+
+def _on_shell(problem, expr, limits: Budget, same_on_motion=None,
+              shared: _Explaining | None = None):
     """``expr`` on the motion (accelerations and reactions substituted), for display.
 
     ``same_on_motion`` is an expression known to equal ``expr`` on the motion (``expr``
     minus a multiple of a derived row); when it is free of accelerations and reactions it is
-    shown instead, and nothing is solved."""
+    shown instead, and nothing is solved.  A model is solved for its reactions only when
+    ``expr`` holds one of them that no model before it gave."""
+    shared = shared or _Explaining(problem, limits)
     expr = as_expr(expr)
-    ref = problem.model(problem.reference)
-    unknowns = {u for m in problem.models().values() for u in m.unknowns}
+    ref = shared.ref
+    unknowns = shared.unknowns
     if same_on_motion is not None:
         other = as_expr(same_on_motion)
         if not any(other.has(a) for a in ref.accelerations) and \
@@ -406,18 +488,19 @@ def _on_shell(problem, expr, limits: Budget, same_on_motion=None):
         except OverBudget:
             return None
     try:
-        rules = dict((a, v) for a, v in solve_display(problem.model(problem.reference),
-                                                      limits).items())
+        rules = dict((a, v) for a, v in solve_display(ref, limits).items())
+        wanted = expr.free_symbols & unknowns
         for m in problem.models().values():
-            if m.unknowns:
-                m = problem.in_reference_coordinates(m)
-                try:
-                    sol = solve_display(m, limits)
-                except (OverBudget, ModelError, ValueError):
-                    continue
-                for u in m.unknowns:
-                    if u in sol:
-                        rules.setdefault(u, sol[u])
+            if not (set(m.unknowns) & wanted) - set(rules):
+                continue    # none of its reactions is in expr, or an earlier model gave them
+            m = problem.in_reference_coordinates(m)
+            try:
+                sol = solve_display(m, limits)
+            except (OverBudget, ModelError, ValueError):
+                continue
+            for u in m.unknowns:
+                if u in sol:
+                    rules.setdefault(u, sol[u])
         out = as_expr(expr).xreplace(rules)
         if sp.count_ops(out) > 2000:
             return None
