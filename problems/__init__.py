@@ -134,16 +134,43 @@ def declarations() -> list[Declaration]:
     return sorted(out, key=lambda d: (d.source_file, order[d.module]))
 
 
+#: problem name -> the module file found to declare it (read again, if changed, on each use)
+_FOUND: dict = {}
+#: module file -> ((modification time, size), its declarations)
+_PARSED: dict = {}
+
+
+def _read_once(path: Path) -> list[Declaration]:
+    """:func:`_read`, parsed again only when the file changed."""
+    st = path.stat()
+    stamp = (st.st_mtime_ns, st.st_size)
+    hit = _PARSED.get(path)
+    if hit is None or hit[0] != stamp:
+        hit = _PARSED[path] = (stamp, _read(path))
+    return hit[1]
+
+
 def module_of(name: str) -> Declaration:
     """The declaration of problem ``name``; ``KeyError`` names the close matches.
 
-    Only the module that declares ``name = "<name>"`` is parsed when one does."""
+    Only the module that declares ``name = "<name>"`` is parsed when one does; a second
+    look-up of the same name reads that module's declarations again (parsed again only if
+    the file changed) instead of searching the catalogue."""
     import re
+    known = _FOUND.get(name)
+    if known is not None:
+        try:
+            for d in _read_once(known):
+                if d.name == name:
+                    return d
+        except OSError:
+            pass
     pattern = re.compile(r'^\s+name\s*=\s*["\']' + re.escape(name) + r'["\']', re.M)
     for path in sorted(_HERE.glob("*.py")):
         if not path.name.startswith("_") and pattern.search(path.read_text(encoding="utf-8")):
-            for d in _read(path):
+            for d in _read_once(path):
                 if d.name == name:
+                    _FOUND[name] = path
                     return d
     decls = {d.name: d for d in declarations()}
     if name not in decls:

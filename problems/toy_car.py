@@ -152,9 +152,16 @@ class ToyCar(Problem):
     def coordinate_maps(self) -> dict:
         return {"multiplier": {theta: theta, phi: phi, rho: R}}
 
+    def _frames(self) -> SimpleNamespace:
+        """:func:`frames`, built once per problem: the direct forms and the printed answers
+        place the car in the same frames (a frame's rotation never changes)."""
+        if "_f" not in self.__dict__:
+            self.__dict__["_f"] = frames()
+        return self.__dict__["_f"]
+
     # -- direct form: sum F = m a (questions 7-10) --------------------------------------
     def newton_euler(self) -> EquationSet:
-        f = frames()
+        f = self._frames()
         car = Particle("car", m, f.car)
         ne = NewtonEuler(coordinates=[theta, phi], ground=f.O,
                          description="sum F = m a on the car, projected on i_B, j_B, k_B")
@@ -171,7 +178,7 @@ class ToyCar(Problem):
         The track's force ``F_r k_B`` acts at ``-R k_B``: its moment about O is zero, so it is
         left out of this free-body diagram and the model has no reaction unknowns.
         """
-        f = frames()
+        f = self._frames()
         car = Particle("car", m, f.car)
         ne = NewtonEuler("angular_momentum", coordinates=[theta, phi], ground=f.O,
                          description="sum tau_O = dh_O/dt on the car, projected on i_B, j_B")
@@ -209,7 +216,7 @@ class ToyCar(Problem):
     # -- quantities a student may be asked for (dualmech grade) -----------------------------
     def quantities(self) -> dict:
         """Momenta of question (3)/(4) in the car frame B, for answers typed in ``i_B, j_B, k_B``."""
-        f = frames()
+        f = self._frames()
         car = Particle("car", m, f.car)
         inB = lambda vec: tuple(vec.express(f.B).components)  # noqa: E731
         basis = ("i_B", "j_B", "k_B")
@@ -222,7 +229,7 @@ class ToyCar(Problem):
 
     # -- the source's answers -------------------------------------------------------------
     def published(self) -> list[Published]:
-        f = frames()
+        f = self._frames()
         O, A, B = f.O, f.A, f.B
         I, K = O.x, O.z
         iB, jB, kB, kA = B.x, B.y, B.z, A.z
