@@ -19,11 +19,12 @@ from __future__ import annotations
 import random
 
 import mpmath
+import symengine as se
 import sympy as sp
 
 from .._expr import as_expr
 from ..dimensions import audit
-from ..equations import EquationSet, ModelError, to_plain, to_plain_se
+from ..equations import EquationSet, ModelError, state_symbols, to_plain, to_plain_se
 from ..exact import MP_DIGITS, is_zero
 from ..kinematics import t
 from .errors import Undecidable
@@ -103,9 +104,14 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
     symbols = tuple(ctx.unknown_symbols(unknowns))
     faulty: dict = {}     # a printed answer that cannot be evaluated: reported on it alone
     known = set(ctx.base) | set(ctx.qdd) | set(symbols)
+    plain = _Plain(coords)
     for pub in pubs:
         try:
-            es = [_plain(e, coords) for e in _published_exprs(problem, pub)]
+            if pub.kind == "expression" and pub.coordinates in (None, problem.reference):
+                # printed - reference, each side converted once (they share their atoms)
+                es = [plain.difference(p, r) for p, r in zip(pub.printed, pub.reference)]
+            else:
+                es = [plain(e) for e in _published_exprs(problem, pub)]
             motion = _motion_system(problem, pub, coords, unknowns) if pub.kind == "motion" \
                 else None
         except (ValueError, TypeError, KeyError, ZeroDivisionError) as exc:
@@ -239,13 +245,62 @@ def _evaluate(items, systems, solvers, mapped, ctx, symbols, dependents, claims,
     return good, form.method
 
 
-def _plain(expr, coords):
-    """A printed expression in plain state symbols: in symengine when it converts (the
-    sampler takes it there), else in sympy."""
-    try:
-        return to_plain_se(expr, coords)
-    except Exception:  # noqa: BLE001 - what symengine does not take stays in sympy
-        return to_plain(expr, coords)
+class _Plain:
+    """Printed expressions in plain state symbols: in symengine when they convert (the
+    sampler takes them there), else in sympy.
+
+    One walk over the sympy tree, each distinct subexpression converted once for all the
+    printed answers of a problem (they share most of theirs: ``sin(theta)``, ``m R``,
+    ``theta'``); what the walk does not know is left to :func:`~dualmech.equations.to_plain_se`.
+    """
+
+    _FUNCTIONS = {sp.sin: se.sin, sp.cos: se.cos, sp.tan: se.tan, sp.exp: se.exp,
+                  sp.log: se.log}
+
+    def __init__(self, coords):
+        self.coords = tuple(coords)
+        self.memo: dict = {}
+        for q in self.coords:
+            s = state_symbols(q)
+            self.memo[q] = se.Symbol(s.q.name)
+            self.memo[sp.Derivative(q, t)] = se.Symbol(s.qd.name)
+            self.memo[sp.Derivative(q, (t, 2))] = se.Symbol(s.qdd.name)
+
+    def __call__(self, expr):
+        try:
+            return self._node(as_expr(expr))
+        except Exception:  # noqa: BLE001 - what symengine does not take stays in sympy
+            return to_plain(expr, self.coords)
+
+    def difference(self, a, b):
+        """``a - b`` in plain state symbols."""
+        try:
+            return self._node(as_expr(a)) - self._node(as_expr(b))
+        except Exception:  # noqa: BLE001 - what symengine does not take stays in sympy
+            return to_plain(as_expr(a) - as_expr(b), self.coords)
+
+    def _node(self, e):
+        out = self.memo.get(e)
+        if out is not None:
+            return out
+        if e.is_Symbol:
+            out = se.Symbol(e.name)
+        elif e.is_Integer:
+            out = se.Integer(int(e))
+        elif e.is_Rational:
+            out = se.Rational(int(e.p), int(e.q))
+        elif e.is_Add:
+            out = se.Add(*[self._node(a) for a in e.args])
+        elif e.is_Mul:
+            out = se.Mul(*[self._node(a) for a in e.args])
+        elif e.is_Pow:
+            out = se.Pow(self._node(e.base), self._node(e.exp))
+        elif type(e) in self._FUNCTIONS:
+            out = self._FUNCTIONS[type(e)](*[self._node(a) for a in e.args])
+        else:
+            out = to_plain_se(e, self.coords)
+        self.memo[e] = out
+        return out
 
 
 def _motion_system(problem, pub, coords, unknowns):
