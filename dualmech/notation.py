@@ -61,7 +61,7 @@ from ._expr import as_expr
 from .kinematics import t
 
 __all__ = ["NOTATIONS", "check_notation", "pretty", "latex", "text", "machine",
-           "mathml", "plain", "sentence", "symbol_text"]
+           "mathml", "plain", "sentence", "symbol_text", "equation_words"]
 
 #: the two ways of writing rates: dots over the letter, or primes after it
 NOTATIONS = ("dots", "primes")
@@ -285,3 +285,55 @@ def mathml(expr, notation: str = "dots", coordinates: Iterable | None = None) ->
 def symbol_text(name: str, order: int = 0, notation: str = "dots") -> str:
     """The unicode name of a coordinate's rate: ``symbol_text("theta1", 2)`` is ``θ̈₁``."""
     return _unicode(name, order, check_notation(notation))
+
+
+_BALANCE = re.compile(r"sum (F|tau_(\w+)) \. (\w+)\.(\w+) \((.+)\)$")
+_CONSTRAINT = re.compile(r"constraint (\w+) \((.+)\)$")
+
+
+def equation_words(label: str, model: str = "", coordinates: Iterable = ()) -> tuple:
+    """A derived equation named in words a teacher reads, as a sentence (text and
+    expressions, see :func:`sentence`) -- never the row's internal label.
+
+    ``label`` is the row's label in its :class:`~dualmech.equations.EquationSet`, ``model``
+    the derivation's name, ``coordinates`` the coordinates (a Lagrange row's coordinate is
+    then an expression, typeset as the letter).  Force and moment balances are named as the
+    grader names them; a label of any other form is quoted.
+
+    Example
+    -------
+    >>> from dualmech import coordinate
+    >>> th = coordinate("theta")
+    >>> sentence(equation_words("Lagrange, theta", "lagrange", [th]))
+    'the θ equation of the Lagrange derivation'
+    >>> sentence(equation_words("sum F . O.y (m2)", "newton_euler"))
+    'the force balance on m2 along y of the Newton–Euler derivation'
+    >>> sentence(equation_words("sum tau_G . b.x (body)"))
+    'the moment balance about G on body along b.x'
+    """
+    if label.startswith(("Lagrange, ", "linearised, ")):
+        kind, _, name = label.partition(", ")
+        q = next((c for c in coordinates if getattr(getattr(c, "func", None), "__name__", "")
+                  == name), None)
+        head = "the linearised " if kind == "linearised" else "the "
+        out: tuple = (head, q if q is not None else name, " equation")
+    elif _BALANCE.match(label):
+        kind, point, frame, axis, bodies = _BALANCE.match(label).groups()
+        along = axis if frame in ("O", "N", "E") else f"{frame}.{axis}"
+        what = "the force balance" if kind == "F" else f"the moment balance about {point}"
+        out = (f"{what} on {bodies} along {along}",)
+    elif _CONSTRAINT.match(label):
+        name, level = _CONSTRAINT.match(label).groups()
+        out = (f"the constraint of the multiplier {name} ({level})",)
+    else:
+        out = (f"the equation \u201c{label}\u201d",)
+    if model:
+        out += (f" of the {_model_words(model)} derivation",)
+    return out
+
+
+def _model_words(model: str) -> str:
+    """``newton_euler`` -> ``Newton–Euler``, ``lagrange`` -> ``Lagrange``, else its words."""
+    words = {"lagrange": "Lagrange", "newton": "Newton", "euler": "Euler"}
+    text = " ".join(words.get(w, w) for w in model.split("_"))
+    return text.replace("Newton Euler", "Newton\u2013Euler")

@@ -93,7 +93,7 @@ theta, phi = coordinate("theta"), coordinate("phi")
 rho = coordinate("rho")  # distance of the car from O, only in the multiplier model
 F_r = sp.Symbol("F_r", real=True)
 
-_d = lambda q, n=1: q.diff(t, n)  # noqa: E731  (q', q'')
+_d = lambda q, n=1: sp.Derivative(q, (t, n))  # noqa: E731  (q', q'' of a function of t)
 
 
 

@@ -396,8 +396,11 @@ def _detail(problem, pub, which, limits: Budget, shared: _Explaining | None = No
                                     problem.parameter_symbols, memo=shared.tables)
             if near is not None:
                 label, alpha, rest = near
-                lines.append((f"{what} is closest to ", alpha,
-                              f" \u00d7 [{problem.reference}: {label}]")
+                # the derived row named in words (never its internal label), typeset
+                from ..notation import equation_words   # (display only: imported when read)
+                row = equation_words(label, problem.reference, ref.coordinates)
+                lines.append((f"{what} is closest to ",)
+                             + ((alpha, " \u00d7 ") if alpha != 1 else ()) + row
                              + (("; printed minus that = ", rest) if not issues else ()))
                 # the derived row vanishes on the motion: a remainder free of accelerations
                 # and reactions is the printed side's value there, with no solve
@@ -442,10 +445,10 @@ def closest_equation(expr, equations, labels, parameters, max_terms: int = 40,
     ('first', 2, 1)
     """
     memo = {} if memo is None else memo
-    E, terms_e = _terms(expr, memo)
+    _, terms_e = _terms(expr, memo)
     if len(terms_e) > max_terms:
         return None
-    table_e = {key: k for k, key, _ in terms_e}
+    table_e = {key: k for k, key, _, _ in terms_e}
     allowed = set(parameters)
     free: dict = {}    # base or exponent -> whether it is free of the state
 
@@ -461,8 +464,8 @@ def closest_equation(expr, equations, labels, parameters, max_terms: int = 40,
         if len(terms_r) > max_terms:
             continue
         ratios, seen = [], set()
-        for ka, _, pa in terms_e:
-            for kb, _, pb in terms_r:
+        for ka, _, pa, _ in terms_e:
+            for kb, _, pb, _ in terms_r:
                 # a / b, monomials: the quotient's exponents are the differences
                 powers = dict(pa)
                 for base, x in pb.items():
@@ -479,7 +482,7 @@ def closest_equation(expr, equations, labels, parameters, max_terms: int = 40,
                     ratios.append((ka / kb, powers))
         for k_alpha, p_alpha in ratios[:60]:
             rest = dict(table_e)
-            for c, _, mono in terms_r:
+            for c, _, mono, _ in terms_r:
                 key = _times(mono, p_alpha)
                 rest[key] = rest.get(key, 0) - k_alpha * c
             size = sum(1 for v in rest.values() if v != 0)
@@ -488,14 +491,22 @@ def closest_equation(expr, equations, labels, parameters, max_terms: int = 40,
     if best is None or best[0] >= len(terms_e):
         return None
     size, label, (k_alpha, p_alpha), terms_r = best
+    # expr - alpha * equation, expanded: the winning table, each term built once
+    rest = dict(table_e)
+    monomials = {key: m for _, key, _, m in terms_e}
+    for c, _, mono, _ in terms_r:
+        key = _times(mono, p_alpha)
+        rest[key] = rest.get(key, 0) - k_alpha * c
+    remainder = sp.Add(*(c * (monomials[key] if key in monomials else
+                              sp.Mul(*(b**x for b, x in key)))
+                         for key, c in rest.items() if c != 0))
     alpha = sp.Mul(k_alpha, *(b**x for b, x in p_alpha.items()))
-    return label, alpha, sp.factor_terms(sp.expand(E - alpha * sp.Add(*(
-        c * sp.Mul(*(b**x for b, x in mono.items())) for c, _, mono in terms_r))))
+    return label, alpha, sp.factor_terms(remainder)
 
 
 def _terms(expr, memo: dict) -> tuple:
-    """``(expanded expr, [(coefficient, key, {base: exponent}) per term])``, kept in
-    ``memo`` under the expression itself (equal expressions, equal terms: never stale)."""
+    """``(expanded expr, [(coefficient, key, {base: exponent}, monomial) per term])``, kept
+    in ``memo`` under the expression itself (equal expressions, equal terms: never stale)."""
     hit = memo.get(expr)
     if hit is None:
         E = sp.expand(expr)
@@ -503,7 +514,7 @@ def _terms(expr, memo: dict) -> tuple:
         for term in sp.Add.make_args(E):
             k, m = term.as_coeff_Mul()
             powers = {b: x for b, x in m.as_powers_dict().items() if b != 1 and x != 0}
-            terms.append((k, frozenset(powers.items()), powers))
+            terms.append((k, frozenset(powers.items()), powers, m))
         hit = memo[expr] = (E, terms)
     return hit
 
