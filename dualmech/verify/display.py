@@ -17,7 +17,7 @@ from ..equations import is_zero_expression
 from .ratfun import NotRational, solve_rational, tidy_rational
 
 __all__ = ["Budget", "OverBudget", "budget", "tidy", "solve_display", "largest_coupled_block",
-           "dotted"]
+           "dotted", "ops_within"]
 
 #: Default budget for one displayed expression: operations in, seconds spent.
 MAX_OPS = 600
@@ -77,9 +77,8 @@ def tidy(expr, limits: Budget | None = None):
     input itself is past the size budget."""
     limits = limits or Budget()
     expr = as_expr(expr)
-    ops = sp.count_ops(expr)
-    if ops > 4 * limits.max_ops:
-        raise OverBudget(f"expression of {ops} operations")
+    if not ops_within(expr, 4 * limits.max_ops):
+        raise OverBudget(f"expression of {sp.count_ops(expr)} operations")
     best = expr
     try:
         with budget(limits.remaining()):
@@ -255,10 +254,35 @@ def _pivots(N, tiny: float) -> list:
 def _within(solution: dict, limits: Budget) -> dict:
     """``solution``, unless one of its forms is a page long (then shown as M q'' = f)."""
     for shown in solution.values():
-        ops = sp.count_ops(shown)
-        if ops > 4 * limits.max_ops:
-            raise OverBudget(f"expression of {ops} operations")
+        if not ops_within(shown, 4 * limits.max_ops):
+            raise OverBudget(f"expression of {sp.count_ops(shown)} operations")
     return solution
+
+
+#: ``sympy.count_ops`` counts at most this many operations per node of an expression tree:
+#: a node's own sign, division and kind (three) plus one per argument it joins
+OPS_PER_NODE = 4
+
+
+def ops_within(expr, limit: int) -> bool:
+    """Whether ``sympy.count_ops(expr) <= limit``.
+
+    A tree of at most ``limit / OPS_PER_NODE`` nodes is within the limit without counting
+    (counting the nodes is a walk; ``count_ops`` builds a fraction and a negation per
+    product); a larger one is counted.
+
+    >>> import sympy as sp
+    >>> x, y = sp.symbols("x y")
+    >>> e = -x / (2 * y) + sp.sin(x)        # count_ops: SUB, DIV, MUL, SIN
+    >>> ops_within(e, 36), ops_within(e, 4), ops_within(e, 3)   # 9 nodes: 36 needs no count
+    (True, True, False)
+    """
+    nodes = 0
+    for _ in sp.preorder_traversal(expr):
+        nodes += 1
+        if OPS_PER_NODE * nodes > limit:
+            return sp.count_ops(expr) <= limit
+    return True
 
 
 def largest_coupled_block(A) -> int:

@@ -28,7 +28,7 @@ from ..equations import EquationSet, ModelError, state_symbols, to_plain, to_pla
 from ..exact import MP_DIGITS, is_zero
 from ..kinematics import t
 from .errors import Undecidable
-from .display import Budget, OverBudget, dotted, solve_display, tidy
+from .display import Budget, OverBudget, dotted, ops_within, solve_display, tidy
 from .sampling import MAX_ATTEMPTS, Context, Sampler, System, shared_manifold, solve_model
 
 __all__ = ["PublishedVerdict", "check_published", "closest_equation"]
@@ -568,7 +568,7 @@ def _on_shell(problem, expr, limits: Budget, same_on_motion=None,
                 if u in sol:
                     rules.setdefault(u, sol[u])
         out = as_expr(expr).xreplace(rules)
-        if sp.count_ops(out) > 2000:
+        if not ops_within(out, 2000):
             return None
         return tidy(out, limits)
     except (OverBudget, ModelError, ValueError, ZeroDivisionError):
