@@ -24,7 +24,6 @@ from __future__ import annotations
 
 import numbers
 from collections import Counter
-from dataclasses import dataclass
 from fractions import Fraction
 from typing import Mapping
 
@@ -333,19 +332,48 @@ def _vformat(v: int) -> str:
     return format_dimension(_pairs(v))
 
 
-@dataclass(frozen=True)
 class DimensionIssue:
     """One inconsistency: ``term`` has ``found`` where ``expected`` was required.
 
     ``parts`` is the sentence that says so, text and sympy expressions (a page typesets the
     expressions, :func:`dualmech.notation.sentence` writes them in textbook text); ``str()``
-    writes each expression as plain text between backticks.
+    writes each expression as plain text between backticks.  ``term`` may be given as a
+    function that writes it: it is then written when first read (most readers only read the
+    sentence).
     """
 
-    term: str
-    found: str
-    expected: str
-    parts: tuple = ()
+    __slots__ = ("_term", "found", "expected", "parts")
+
+    def __init__(self, term, found: str, expected: str, parts: tuple = ()):
+        object.__setattr__(self, "_term", term)
+        object.__setattr__(self, "found", found)
+        object.__setattr__(self, "expected", expected)
+        object.__setattr__(self, "parts", tuple(parts))
+
+    def __setattr__(self, name, value):
+        raise AttributeError(f"a DimensionIssue is read-only (cannot set `{name}`)")
+
+    @property
+    def term(self) -> str:
+        """The offending term as plain text (primes for rates)."""
+        if callable(self._term):
+            object.__setattr__(self, "_term", self._term())
+        return self._term
+
+    def _key(self) -> tuple:
+        return (self.term, self.found, self.expected, self.parts)
+
+    def __eq__(self, other) -> bool:
+        if not isinstance(other, DimensionIssue):
+            return NotImplemented
+        return self._key() == other._key()
+
+    def __hash__(self) -> int:
+        return hash(self._key())
+
+    def __repr__(self) -> str:
+        return (f"DimensionIssue(term={self.term!r}, found={self.found!r}, "
+                f"expected={self.expected!r}, parts={self.parts!r})")
 
     def sentence(self) -> tuple:
         """The sentence as text and expressions."""
@@ -418,7 +446,8 @@ class _Walker:
         raise TypeError(f"cannot find the dimension of {e!r}")
 
     def _issue(self, e, found: str, expected: str, *parts) -> None:
-        self.issues.append(DimensionIssue(self._show(e), found, expected, parts))
+        # the term's text is written when someone reads it (the sentence holds the term)
+        self.issues.append(DimensionIssue(lambda: self._show(e), found, expected, parts))
 
     def _symbolic_power(self, e) -> None:
         self._issue(e, "?", "1", self._sympy(e), ": a symbolic power needs a dimensionless "

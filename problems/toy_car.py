@@ -76,6 +76,7 @@ Errata found in the printed solution (see :meth:`ToyCar.published`):
 """
 from __future__ import annotations
 
+import weakref
 from types import SimpleNamespace
 
 import sympy as sp
@@ -92,6 +93,9 @@ m, R, g = sp.symbols("m R g", positive=True)
 theta, phi = coordinate("theta"), coordinate("phi")
 rho = coordinate("rho")  # distance of the car from O, only in the multiplier model
 F_r = sp.Symbol("F_r", real=True)
+
+#: each problem instance's frames (see ToyCar._frames), gone with the instance
+_FRAMES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 _d = lambda q, n=1: sp.Derivative(q, (t, n))  # noqa: E731  (q', q'' of a function of t)
 
@@ -154,10 +158,12 @@ class ToyCar(Problem):
 
     def _frames(self) -> SimpleNamespace:
         """:func:`frames`, built once per problem: the direct forms and the printed answers
-        place the car in the same frames (a frame's rotation never changes)."""
-        if "_f" not in self.__dict__:
-            self.__dict__["_f"] = frames()
-        return self.__dict__["_f"]
+        place the car in the same frames (a frame's rotation never changes).  Kept beside
+        the instance, not in it: a problem pickles without its symengine kinematics."""
+        f = _FRAMES.get(self)
+        if f is None:
+            f = _FRAMES[self] = frames()
+        return f
 
     # -- direct form: sum F = m a (questions 7-10) --------------------------------------
     def newton_euler(self) -> EquationSet:
