@@ -14,7 +14,7 @@ import sympy as sp
 
 from .._expr import as_expr
 from ..equations import is_zero_expression
-from .ratfun import NotRational, solve_rational, tidy_rational
+from .ratfun import NotRational, solve_rational, solve_rational_held, tidy_rational
 
 __all__ = ["Budget", "OverBudget", "budget", "tidy", "solve_display", "largest_coupled_block",
            "dotted", "ops_within"]
@@ -194,8 +194,13 @@ def _solve_held(eqs, held, limits: Budget) -> dict:
     try:    # exact fractions on FLINT, cancelled at every step (see ratfun.solve_rational)
         pivots = _pivots(N.copy(), tiny)
         with budget(limits.remaining()):
-            solved = solve_rational([[to_sp(x, timed, memo) for x in row[:n]] for row in M],
-                                    [to_sp(row[n], timed, memo) for row in M], pivots)
+            try:    # from the symengine trees, only their atoms converted to sympy
+                solved = solve_rational_held([row[:n] for row in M], [row[n] for row in M],
+                                             pivots, lambda a: to_sp(a, timed, memo))
+            except NotRational:
+                solved = solve_rational([[to_sp(x, timed, memo) for x in row[:n]]
+                                         for row in M],
+                                        [to_sp(row[n], timed, memo) for row in M], pivots)
         return _within(dict(zip(unknowns, solved)), limits)
     except NotRational:
         pass

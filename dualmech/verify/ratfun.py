@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-__all__ = ["tidy_rational", "solve_rational", "NotRational"]
+__all__ = ["tidy_rational", "solve_rational", "solve_rational_held", "NotRational"]
 
 try:   # python-flint is a dependency; without it the caller keeps sympy's route
     import flint
@@ -68,6 +68,43 @@ class _Ring:
         if e.is_Pow and e.exp.is_Integer:
             bn, bd = self.fraction(e.base)
             k = int(e.exp)
+            if k < 0:
+                bn, bd, k = bd, bn, -k
+            if bn.is_zero():
+                raise ZeroDivisionError("a zero denominator")
+            return bn ** k, bd ** k
+        raise NotRational(f"not an atom of the ring: {e}")
+
+    def fraction_se(self, e, held: dict):
+        """:meth:`fraction` of a symengine expression whose atoms ``held`` maps to generator
+        indices."""
+        if e.is_Integer:
+            return self.one * int(e), self.one
+        if e.is_Rational:
+            p, q = e.get_num_den()
+            return self.one * int(p), self.one * int(q)
+        i = held.get(e)
+        if i is not None:
+            return self.gens[i], self.one
+        if e.is_Add:
+            n, d = self.zero, self.one
+            for a in e.args:
+                an, ad = self.fraction_se(a, held)
+                if ad == d:
+                    n = n + an
+                else:
+                    g = d.gcd(ad)
+                    n, d = n * (ad / g) + an * (d / g), d * (ad / g)
+            return n, d
+        if e.is_Mul:
+            n, d = self.one, self.one
+            for a in e.args:
+                an, ad = self.fraction_se(a, held)
+                n, d = n * an, d * ad
+            return n, d
+        if e.is_Pow and e.args[1].is_Integer:
+            bn, bd = self.fraction_se(e.args[0], held)
+            k = int(e.args[1])
             if k < 0:
                 bn, bd, k = bd, bn, -k
             if bn.is_zero():
@@ -195,9 +232,60 @@ def solve_rational(rows: list, rhs: list, pivots: list) -> list:
         _atoms(e, found)
     atoms = sorted(found, key=sp.default_sort_key)
     ring = _Ring(atoms)
-    n = len(rows)
     M = [[_reduce(*ring.fraction(e)) for e in row] + [_reduce(*ring.fraction(r))]
          for row, r in zip(rows, rhs)]
+    return _eliminate(ring, M, pivots)
+
+
+def solve_rational_held(rows: list, rhs: list, pivots: list, to_sympy) -> list:
+    """:func:`solve_rational` of symengine ``rows`` and ``rhs``: the same solution, with only
+    the atoms (symbols, function applications, non-integer powers) converted to sympy by
+    ``to_sympy`` -- not every entry's tree -- and the polynomials built from the symengine
+    trees.  Raises :class:`NotRational` as :func:`solve_rational` does, and also when an atom
+    does not stay one in sympy (then the caller converts the entries and asks
+    :func:`solve_rational`)."""
+    if flint is None:
+        raise NotRational("python-flint is not installed")
+    found: dict = {}
+    for e in [x for row in rows for x in row] + list(rhs):
+        _atoms_se(e, found)
+    mine = {a: to_sympy(a) for a in found}
+    theirs: dict = {}
+    for a in mine.values():
+        _atoms(a, theirs)
+        if a not in theirs:      # an atom that sympy writes as a sum or a product
+            raise NotRational(f"not an atom once in sympy: {a}")
+    atoms = sorted(theirs, key=sp.default_sort_key)
+    ring = _Ring(atoms)
+    held = {a: ring.index[v] for a, v in mine.items()}
+    M = [[_reduce(*ring.fraction_se(e, held)) for e in row]
+         + [_reduce(*ring.fraction_se(r, held))] for row, r in zip(rows, rhs)]
+    return _eliminate(ring, M, pivots)
+
+
+def _atoms_se(e, out: dict) -> None:
+    """:func:`_atoms` of a symengine expression (its own atoms, in symengine)."""
+    if e.is_Number:
+        if not e.is_Rational:
+            raise NotRational(f"a float: {e}")
+        return
+    if e.is_Add or e.is_Mul:
+        for a in e.args:
+            _atoms_se(a, out)
+        return
+    if e.is_Pow and e.args[1].is_Integer:
+        _atoms_se(e.args[0], out)
+        return
+    if e.is_Symbol or e.is_Pow or e.is_Function or e.is_Derivative or not e.args:
+        out.setdefault(e, None)
+        return
+    raise NotRational(f"cannot treat {type(e).__name__} as an atom")
+
+
+def _eliminate(ring: _Ring, M: list, pivots: list) -> list:
+    """Gaussian elimination of the augmented matrix ``M`` of reduced fractions (see
+    :func:`solve_rational`), each component of the solution tidied."""
+    n = len(M)
 
     def mul(x, y):
         return _reduce(x[0] * y[0], x[1] * y[1])
