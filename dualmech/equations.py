@@ -99,7 +99,10 @@ class Rows(Sequence):
                 names = dict(names)
                 for q in self.coordinates:
                     s = state_symbols(q)
-                    names.update({s.q.name: q, s.qd.name: q.diff(t), s.qdd.name: q.diff(t, 2)})
+                    # (the rates as Derivative objects: what q.diff(t) gives, without
+                    # differentiation machinery)
+                    names.update({s.q.name: q, s.qd.name: sp.Derivative(q, t),
+                                  s.qdd.name: sp.Derivative(q, (t, 2))})
             conv = lambda e: to_sp(e, names, memo)  # noqa: E731
             self._sp = tuple({k: conv(v) for k, v in x.items()} if isinstance(x, dict)
                              else conv(x) for x in self.se)
