@@ -13,12 +13,13 @@ its time, for nothing:
   system; ``atexit`` handlers, thread joins and the flushing of open files happen as before.
 
 The same freezing before a fork (:func:`freeze`) spares a forked grading worker from
-walking, and so copying, its parent's memory.
+walking, and so copying, its parent's memory; and a module a command may not need at all
+can be loaded on first use (:func:`defer`).
 
 All of this acts only in the program (:func:`dualmech.cli.command` calls
 :func:`as_program`).  A process that calls dualmech's functions and lives on -- tests, a
 notebook, the web server -- keeps the default collector: :func:`load` is a plain import
-there, :func:`freeze` and :func:`leave` nothing.
+there, :func:`defer`, :func:`freeze` and :func:`leave` nothing.
 
 Example
 -------
@@ -31,7 +32,7 @@ from __future__ import annotations
 import gc
 import importlib
 
-__all__ = ["as_program", "load", "freeze", "leave"]
+__all__ = ["as_program", "defer", "load", "freeze", "leave"]
 
 _PROGRAM = False
 
@@ -40,6 +41,28 @@ def as_program() -> None:
     """Mark this process as the ``dualmech`` program, which exits when the command is done."""
     global _PROGRAM
     _PROGRAM = True
+
+
+def defer(*modules: str) -> None:
+    """In the program, let ``modules`` load when first used instead of when imported
+    (:class:`importlib.util.LazyLoader`): a one-answer ``dualmech grade`` whose problem's
+    grading context is stored (:mod:`dualmech.grade.stored`) never uses symengine, and so
+    never pays for it and for the numpy it imports (some 50 ms).  Modules already imported,
+    or not installed, are left as they are."""
+    if not _PROGRAM:
+        return
+    import importlib.util
+    import sys
+    for name in modules:
+        if name in sys.modules:
+            continue
+        spec = importlib.util.find_spec(name)
+        if spec is None or spec.loader is None:
+            continue
+        spec.loader = importlib.util.LazyLoader(spec.loader)
+        module = importlib.util.module_from_spec(spec)
+        sys.modules[name] = module
+        spec.loader.exec_module(module)
 
 
 def load(*modules: str) -> None:
