@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import gc
 import importlib
+import types
 
 __all__ = ["as_program", "defer", "load", "freeze", "leave"]
 
@@ -44,25 +45,47 @@ def as_program() -> None:
 
 
 def defer(*modules: str) -> None:
-    """In the program, let ``modules`` load when first used instead of when imported
-    (:class:`importlib.util.LazyLoader`): a one-answer ``dualmech grade`` whose problem's
-    grading context is stored (:mod:`dualmech.grade.stored`) never uses symengine, and so
-    never pays for it and for the numpy it imports (some 50 ms).  Modules already imported,
-    or not installed, are left as they are."""
+    """In the program, let ``modules`` load when first used instead of when imported: a
+    one-answer ``dualmech grade`` whose problem's grading context is stored
+    (:mod:`dualmech.grade.stored`) never uses symengine, and so never pays for it and for the
+    numpy it imports (some 50 ms).  Modules already imported, or not installed, are left as
+    they are.
+
+    Each stands in ``sys.modules`` as a :class:`_Deferred` module until an attribute it lacks
+    is read.  (``importlib.util.LazyLoader`` would not do: every later ``import`` statement
+    of the module reads its ``__spec__``, which makes LazyLoader load it there and then.)
+    """
     if not _PROGRAM:
         return
     import importlib.util
     import sys
     for name in modules:
-        if name in sys.modules:
+        if name in sys.modules or "." in name:
             continue
         spec = importlib.util.find_spec(name)
-        if spec is None or spec.loader is None:
-            continue
-        spec.loader = importlib.util.LazyLoader(spec.loader)
-        module = importlib.util.module_from_spec(spec)
-        sys.modules[name] = module
-        spec.loader.exec_module(module)
+        if spec is not None:
+            sys.modules[name] = _Deferred(name, spec)
+
+
+class _Deferred(types.ModuleType):
+    """A module imported on first use of an attribute it does not have (see :func:`defer`);
+    from then on it holds every attribute of the real module."""
+
+    def __init__(self, name: str, spec):
+        super().__init__(name)
+        self.__spec__ = spec
+
+    def __getattr__(self, attr: str):
+        import sys
+        if sys.modules.get(self.__name__) is self:
+            del sys.modules[self.__name__]
+        try:
+            real = importlib.import_module(self.__name__)
+        except BaseException:
+            sys.modules.setdefault(self.__name__, self)
+            raise
+        self.__dict__.update(real.__dict__)
+        return getattr(real, attr)
 
 
 def load(*modules: str) -> None:
