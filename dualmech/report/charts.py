@@ -8,7 +8,10 @@ leaves its declared range or a one-sided contact would have to pull) and draws
   the reactions (forces in N, torques in N m), each axis labelled with its unit;
 * curves that coincide (to 1e-9 of the panel's scale) once, the legend naming all of them;
 * reactions that stay zero along the whole motion, and curves that stay constant, not drawn
-  but said in words on their panel ("identically zero along the whole motion: ...").
+  but said in words on their panel ("identically zero along the whole motion: ...");
+* every name in textbook notation: legends and panel texts in mathtext from the problem's
+  symbols (``theta1`` as θ₁, :func:`~dualmech.notation.mathtext`), the caption in the
+  page's one-line text (:func:`~dualmech.notation.symbol_text`).
 
 The notes (:attr:`Chart.notes`) are the chart's caption; the page prints them once, under it.
 
@@ -30,6 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from ..dimensions import ANGLE
+from ..notation import mathtext, symbol_text
 from ..numeric.units import unit
 
 __all__ = ["Chart", "trajectory_chart", "group_curves"]
@@ -101,7 +105,7 @@ def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400
     floor = SAME * max(biggest, 1.0)
     zero = [k for k, v in reactions.items() if float(np.abs(v).max()) <= floor]
     if zero:
-        chart.notes.append(f"{', '.join(zero)} = 0 along the whole motion (not drawn)")
+        chart.notes.append(f"{_text(zero, ', ')} = 0 along the whole motion (not drawn)")
 
     forces = _panels([(k, v, rinfo[k].dimension if k in rinfo else None)
                       for k, v in reactions.items() if k not in zero], _unit)
@@ -120,7 +124,7 @@ def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400
     for i, (ax, (u, curves)) in enumerate(zip(axes, panels)):
         said = _draw(ax, u, curves, traj.t, chart)
         if zero and i == len(coords) + max(len(forces), 1) - 1:
-            said.append("identically zero along the whole motion: " + ", ".join(zero))
+            said.append("identically zero along the whole motion: " + _tex(zero, ", "))
         if said:
             ax.text(0.5, 0.5, "\n".join(said), transform=ax.transAxes, ha="center",
                     va="center", fontsize="small",
@@ -138,6 +142,21 @@ def _unit(dimension) -> str:
     return "rad" if dimension == ANGLE else unit(dimension)
 
 
+def _tex(names, sep: str = "") -> str:
+    """Names as chart text: each one in mathtext (``$\\theta_{1}$``), joined by ``sep``."""
+    return sep.join(mathtext(n) for n in names)
+
+
+def _text(names, sep: str = "") -> str:
+    """Names as caption text, the page's one-line textbook form (``θ₁``), joined by ``sep``."""
+    return sep.join(symbol_text(n) if _symbolic(n) else n for n in names)
+
+
+def _symbolic(name: str) -> bool:
+    """Is ``name`` a symbol's name (what :func:`mathtext` typesets)?"""
+    return mathtext(name).startswith("$")
+
+
 def _draw(ax, u: str, curves, t, chart: Chart) -> list[str]:
     """Draw the curves of one panel; return what the panel must say in words instead of
     drawing it (curves that stay constant along the whole motion)."""
@@ -149,14 +168,14 @@ def _draw(ax, u: str, curves, t, chart: Chart) -> list[str]:
     said, drawn = [], 0
     for group in group_curves(names, values, scale):
         v = values[names.index(group[0])]
-        label = group[0] if len(group) == 1 else f"{' = '.join(group)} (identical)"
+        label = _tex(group) if len(group) == 1 else f"{_tex(group, ' = ')} (identical)"
         if len(group) > 1:
-            chart.notes.append(f"{' and '.join(group)} coincide along the whole motion "
+            chart.notes.append(f"{_text(group, ' and ')} coincide along the whole motion "
                                "(drawn once)")
         if np.ptp(v) <= SAME * scale:      # a flat line: say its value instead
-            said.append(f"{' = '.join(group)} = {v[0]:.4g} {u}, constant along the whole "
+            said.append(f"{_tex(group, ' = ')} = {v[0]:.4g} {u}, constant along the whole "
                         "motion")
-            chart.notes.append(f"{' = '.join(group)} stays at {v[0]:.4g} {u} (not drawn)")
+            chart.notes.append(f"{_text(group, ' = ')} stays at {v[0]:.4g} {u} (not drawn)")
             continue
         ax.plot(t, v, label=label, linewidth=1.3)
         drawn += 1
