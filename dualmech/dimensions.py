@@ -159,7 +159,7 @@ class Dimension:
         return self._hash
 
     def __reduce__(self):
-        return (Dimension._of, (self._exps,))
+        return (Dimension, self._exps)
 
     def __repr__(self):
         args = ", ".join(f"{name}={_number(e)}" for name, e in zip(BASES, self._exps) if e)

@@ -12,9 +12,13 @@ its time, for nothing:
   what is alive out of the collector's reach, so that shutdown leaves it to the operating
   system; ``atexit`` handlers, thread joins and the flushing of open files happen as before.
 
-Both act only in the program (:func:`dualmech.cli.command` calls :func:`as_program`).  A
-process that calls dualmech's functions and lives on -- tests, a notebook, the web server --
-keeps the default collector: :func:`load` is a plain import there, :func:`leave` nothing.
+The same freezing before a fork (:func:`freeze`) spares a forked grading worker from
+walking, and so copying, its parent's memory.
+
+All of this acts only in the program (:func:`dualmech.cli.command` calls
+:func:`as_program`).  A process that calls dualmech's functions and lives on -- tests, a
+notebook, the web server -- keeps the default collector: :func:`load` is a plain import
+there, :func:`freeze` and :func:`leave` nothing.
 
 Example
 -------
@@ -27,7 +31,7 @@ from __future__ import annotations
 import gc
 import importlib
 
-__all__ = ["as_program", "load", "leave"]
+__all__ = ["as_program", "load", "freeze", "leave"]
 
 _PROGRAM = False
 
@@ -56,7 +60,14 @@ def load(*modules: str) -> None:
             gc.enable()
 
 
-def leave() -> None:
-    """In the program, once the command is done: let shutdown skip freeing every object."""
+def freeze() -> None:
+    """In the program, put what is alive now out of the collector's reach: before forking a
+    worker, so that the child's collections walk -- and copy from its parent -- only what
+    the child itself builds."""
     if _PROGRAM:
         gc.freeze()
+
+
+def leave() -> None:
+    """In the program, once the command is done: let shutdown skip freeing every object."""
+    freeze()

@@ -42,16 +42,24 @@ class Grader:
     _cache: dict = {}
 
     def __init__(self, problem, seed: int = 0, limits: Limits = LIMITS):
+        self._ctx = None
+        self._named = None   # the catalogue name the problem was built from, if any
         if isinstance(problem, str):
             from dualmech import problems as catalogue_
-            try:
-                problem = catalogue_.get(problem)
-            except KeyError as exc:
-                raise AnswerError(exc.args[0] if exc.args else str(exc)) from None
+            from . import stored
+            name = problem
+            self._ctx = stored.load(name, seed)   # a context kept by an earlier run
+            if self._ctx is not None:
+                problem = self._ctx.problem
+            else:
+                try:
+                    problem = catalogue_.get(name)
+                except KeyError as exc:
+                    raise AnswerError(exc.args[0] if exc.args else str(exc)) from None
+                self._named = name if catalogue_.is_name(name) else None
         self.problem = problem
         self.seed = seed
         self.limits = limits
-        self._ctx = None
 
     @classmethod
     def of(cls, name: str, seed: int = 0, limits: Limits = LIMITS) -> "Grader":
@@ -64,7 +72,10 @@ class Grader:
     @property
     def context(self) -> ProblemContext:
         if self._ctx is None:
-            self._ctx = ProblemContext.of(self.problem, self.seed)
+            ctx = ProblemContext.of(self.problem, self.seed)
+            if self._named is not None:
+                ctx.named = self._named   # built from the bare name: may be kept (.stored)
+            self._ctx = ctx
         return self._ctx
 
     def quantities(self) -> dict[str, str]:

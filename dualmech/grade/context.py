@@ -138,6 +138,11 @@ class ProblemContext:
         #: what the answer's equations must follow from, in words
         self.subject = "the equations of motion"
         self.store: dict = {}  # lazily built helpers of other modules (feedback, Lagrange)
+        #: the catalogue name this context was built for by name (its problem at its default
+        #: size), else None; only such a context is kept on disk (:mod:`.stored`)
+        self.named: str | None = None
+        #: keys of :attr:`store` already kept on disk
+        self.stored: frozenset = frozenset()
 
     def memo(self, key, build):
         """``store[key]``, built once by ``build()``; its time is per-problem, not per-answer."""
@@ -278,7 +283,7 @@ class ProblemContext:
                 seed = f"{self.problem.name}:{self.seed}:{method}:{i}"
                 gseed = f"{self.problem.name}:{self.seed}:{method}:group{group}"
                 point = Point(values, {}, not mp, group, seed, self.derived_formulas())
-                point.draw = _grouped_draw(seed, gseed, set(self.parameters))
+                point.draw = _GroupedDraw(seed, gseed, self.parameters)
                 if self._on_motion(point, systems):
                     points.append(point)
                     break
@@ -365,13 +370,18 @@ class ProblemContext:
         return min(1.0, D / 2.0 ** SAMPLE_BITS) ** POINTS
 
 
-def _grouped_draw(seed: str, group_seed: str, parameters: set):
+class _GroupedDraw:
     """Angles of parameters only (``sin(alpha)``) are shared by the points of a pair."""
-    point_draw, group_draw = seeded_draw(seed), seeded_draw(group_seed)
 
-    def draw(mono):
-        return group_draw(mono) if all(s in parameters for s, _ in mono) else point_draw(mono)
-    return draw
+    __slots__ = ("point", "group", "parameters")
+
+    def __init__(self, seed: str, group_seed: str, parameters):
+        self.point, self.group = seeded_draw(seed), seeded_draw(group_seed)
+        self.parameters = frozenset(parameters)
+
+    def __call__(self, mono):
+        return self.group(mono) if all(s in self.parameters for s, _ in mono) \
+            else self.point(mono)
 
 
 def _dsub(d, T, k):

@@ -107,11 +107,29 @@ class Env:
 
 def seeded_draw(seed: str) -> Callable:
     """A ``draw`` for :class:`Env`: the same ``u`` for the same monomial and seed, always."""
-    def draw(mono):
-        key = seed + "|" + ",".join(f"{s}^{p}" for s, p in mono)
+    return _SeededDraw(seed)
+
+
+class _SeededDraw:
+    """The ``draw`` of :func:`seeded_draw` (a plain object, so a context pickles)."""
+
+    __slots__ = ("seed",)
+
+    def __init__(self, seed: str):
+        self.seed = seed
+
+    def __call__(self, mono) -> Fraction:
+        key = self.seed + "|" + ",".join(f"{s}^{p}" for s, p in mono)
         rng = random.Random(key)
         return Fraction(rng.randrange(-(1 << 61), 1 << 61))
-    return draw
+
+    def __getstate__(self):
+        return self.seed
+
+    def __setstate__(self, seed):
+        if not isinstance(seed, str):
+            raise TypeError("a draw's seed is text")
+        self.seed = seed
 
 
 def _cmul(a, b):
@@ -241,6 +259,17 @@ class Formula:
         self.degree = sum(self._scan(tree))
         self._fn = self._compile(tree)
 
+    def __getstate__(self):
+        """What a stored context keeps of a formula: everything but the compiled closures
+        (rebuilt from ``tree`` when read back)."""
+        return {"tree": self.tree, "text": self.text, "sympy": self._sympy}
+
+    def __setstate__(self, state):
+        self.tree, self.text, self._sympy = state["tree"], state["text"], state["sympy"]
+        self.symbols, self.exact, self._parts, self.student = set(), True, None, None
+        self.degree = sum(self._scan(self.tree))
+        self._fn = None   # compiled when first evaluated
+
     # -- construction -----------------------------------------------------------------
     @classmethod
     def from_node(cls, node: Node, vocabulary: Vocabulary, limits: Limits = LIMITS,
@@ -312,7 +341,10 @@ class Formula:
     # -- evaluation -----------------------------------------------------------------------
     def evaluate(self, env: Env):
         """The value at ``env`` (a Fraction, an mpmath number, or a list for a vector)."""
-        return self._fn(env)
+        fn = self._fn
+        if fn is None:
+            fn = self._fn = self._compile(self.tree)
+        return fn(env)
 
     def _compile(self, tree):
         op = tree[0]

@@ -93,6 +93,8 @@ def _load(problem: str, quantity, about, limits: Limits, loaded: set):
             grader.grade("0", quantity, about)
         except Exception:
             pass
+        from .stored import save
+        save(ctx)   # the next run of this problem starts from here (see .stored)
         loaded.add(key)
     return grader
 
@@ -414,6 +416,8 @@ def _grade_forked(problem, answer, quantity, about, seconds, memory_mb) -> Grade
                         else f"could not load problem {problem!r}: {type(exc).__name__}: {exc}")
     sys.stdout.flush()
     sys.stderr.flush()
+    from ..startup import freeze
+    freeze()
     read, write = os.pipe()
     pid = os.fork()
     if pid == 0:   # the child: grade, write the pickled grade, leave without cleanup

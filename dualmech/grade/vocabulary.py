@@ -57,16 +57,6 @@ class Ref:
     order: int = 0
     base: str = ""
 
-    def differentiated(self, n: int) -> "Ref | None":
-        """The same name with ``n`` more primes (``None`` if that is not allowed)."""
-        if n == 0:
-            return self
-        if self.kind != "coordinate" or self.order + n > 2:
-            return None
-        return _coordinate_refs[(self.base, self.order + n)]
-
-
-_coordinate_refs: dict = {}
 
 
 def _greek_forms(name: str) -> list[str]:
@@ -92,6 +82,7 @@ class Vocabulary:
     canonical: dict = field(default_factory=dict)  # kind -> [display names]
     aliases: dict = field(default_factory=dict)    # canonical name -> [aliases]
     _owners: dict = field(default_factory=dict)    # canonical name -> its Ref
+    rates: dict = field(default_factory=dict)      # (coordinate name, order) -> Ref
 
     @classmethod
     def build(cls, coordinates: Sequence = (), parameters: Sequence = (),
@@ -106,17 +97,17 @@ class Vocabulary:
             s = state_symbols(q)
             name = s.name
             for order, sym in enumerate((s.q, s.qd, s.qdd)):
-                _coordinate_refs[(name, order)] = Ref("coordinate", sym, order, name)
-            ref = _coordinate_refs[(name, 0)]
+                v.rates[(name, order)] = Ref("coordinate", sym, order, name)
+            ref = v.rates[(name, 0)]
             forms = [name] + _greek_forms(name)
             if name in _SHORT:
                 forms.append(_SHORT[name])
             v._add(name, "coordinate", forms, ref, clash)
             for a in forms:
                 for word, order in _ORDER_WORDS:
-                    v._put(a + word, _coordinate_refs[(name, order)], clash)
-                v._put("d" + a, _coordinate_refs[(name, 1)], clash)
-                v._put("dd" + a, _coordinate_refs[(name, 2)], clash)
+                    v._put(a + word, v.rates[(name, order)], clash)
+                v._put("d" + a, v.rates[(name, 1)], clash)
+                v._put("dd" + a, v.rates[(name, 2)], clash)
         for p in parameters:
             v._add(str(p), "parameter", [str(p)] + _greek_forms(str(p)), Ref("parameter", p),
                    clash)
@@ -171,7 +162,15 @@ class Vocabulary:
         ref = self.table.get(name)
         if ref is None:
             ref = self.normal.get(_normal(name))
-        return ref.differentiated(primes) if ref is not None else None
+        return self.differentiated(ref, primes) if ref is not None else None
+
+    def differentiated(self, ref: Ref, n: int) -> Ref | None:
+        """``ref`` with ``n`` more primes (``None`` if that is not allowed)."""
+        if n == 0:
+            return ref
+        if ref.kind != "coordinate" or ref.order + n > 2:
+            return None
+        return self.rates.get((ref.base, ref.order + n))
 
     def split(self, name: str, primes: int = 0) -> list[Ref] | None:
         """``name`` as a product of one-letter names (``mgl``; primes on the last), when that
@@ -196,7 +195,7 @@ class Vocabulary:
         if not found or len(found) != 1 or len(found[0]) < 2:
             return None
         refs = [self.table[p] for p in found[0]]
-        last = refs[-1].differentiated(primes)
+        last = self.differentiated(refs[-1], primes)
         return None if last is None else refs[:-1] + [last]
 
     def resolve(self, name: str, primes: int = 0) -> list[Ref]:
