@@ -65,9 +65,27 @@ def test_trajectory_chart_names_every_curve_by_its_symbol(figures, tmp_path, nam
     else:   # nothing drawn: the constant tilt and the zero reactions are said in symbols
         assert any(r"$\phi$ = 0.6 rad" in t for t in texts)
         assert any(r"$F_{x}$, $F_{y}$, $R_{x}$" in t for t in texts)
-        # the caption under it on the page is the page's one-line text, no markup
+        # the caption's text is the page's one-line text, no markup; its HTML typesets
+        # each name (F_y with a real subscript, where unicode has no subscript y)
         assert "\u03c6 stays at 0.6 rad (not drawn)" in chart.notes
         assert not any("$" in n for n in chart.notes)
+        assert len(chart.notes_html) == len(chart.notes)
+        fy = "<msub><mi>F</mi><mi>y</mi></msub>"
+        assert fy in chart.notes_html[1] and chart.notes_html[1].count("<math") == 5
+        assert chart.notes_html[1].endswith("</math> = 0 along the whole motion (not drawn)")
+
+
+def test_the_page_caption_typesets_the_names(tmp_path):
+    from dualmech.compare import compare
+    from dualmech.report import write_report
+    written = write_report([compare(get("falling_container"))], tmp_path, 1.0, progress=False)
+    page = written.html.read_text(encoding="utf-8")
+    (caption,) = re.findall(r"<figcaption>(.*?)</figcaption>", page, flags=re.S)
+    # H1, H2 vanish along the whole motion (the guides push nothing sideways)
+    h1 = "<msub><mi>H</mi><mi>1</mi></msub>"
+    assert caption.startswith("Simulated for t in [0, ") and h1 in caption
+    assert caption.endswith("</math> = 0 along the whole motion (not drawn).")
+    assert "H1" not in caption and "H\u2081" not in caption
 
 
 def test_atlas_axes_are_the_coordinates_symbols(figures, tmp_path):
