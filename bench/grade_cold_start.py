@@ -9,7 +9,10 @@ same on a fast machine and a slow one.  With ``--all`` it also times ``dualmech 
 
 User time is the process's own plus that of the children it waited for (the grader forks a
 worker per answer: that is counted).  One untimed run of each command comes first (it warms
-the file cache, the byte-code and dualmech's parser cache).  The commands run with byte-code
+the file cache, the byte-code, and the user's cache directory: the parser's tables and the
+problem's prepared grading context, :mod:`dualmech.grade.stored`).  The row "... (first
+call)" runs the same command with an empty cache directory each time: what the first call
+for a problem costs after an install or a change of code.  The commands run with byte-code
 caching on whatever ``PYTHONDONTWRITEBYTECODE`` says, as an installed package has it (pip
 compiles it); ``--no-bytecode`` keeps the variable as it is.  A script, not a test::
 
@@ -22,6 +25,7 @@ import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 DEFAULT = ["grade", "toy_car", "--quantity", "equation", "--answer", "R*theta'' = 0"]
@@ -58,22 +62,29 @@ def main(argv: list[str] | None = None) -> int:
     if args.all:
         commands["dualmech --help"] = [py, "-m", "dualmech", "--help"]
         commands["dualmech list"] = [py, "-m", "dualmech", "list"]
+    first = "dualmech " + (args.command or DEFAULT)[0] + " (first call)"
+    commands[first] = commands["dualmech " + (args.command or DEFAULT)[0]]
     times: dict[str, list[tuple[float, float]]] = {k: [] for k in commands}
     statuses = {}
-    for name, cmd in commands.items():   # untimed warm-up
-        statuses[name] = run_once(cmd, env)[2]
-    for _ in range(args.repeat):          # interleaved: a slow spell falls on every command
-        for name, cmd in commands.items():
-            wall, user, _ = run_once(cmd, env)
-            times[name].append((wall, user))
+    with tempfile.TemporaryDirectory() as scratch:
+        def env_of(name: str, i: int) -> dict:
+            if name != first:
+                return env
+            return dict(env, DUALMECH_CACHE_DIR=os.path.join(scratch, f"empty{i}"))
+        for name, cmd in commands.items():   # untimed warm-up
+            statuses[name] = run_once(cmd, env_of(name, -1))[2]
+        for i in range(args.repeat):          # interleaved: a slow spell falls on every command
+            for name, cmd in commands.items():
+                wall, user, _ = run_once(cmd, env_of(name, i))
+                times[name].append((wall, user))
     floor_wall = statistics.median(w for w, _ in times["import sympy"])
     floor_user = statistics.median(u for _, u in times["import sympy"])
-    print(f"{'command':22s} {'wall [s]':>9s} {'user [s]':>9s} {'wall/floor':>11s} "
+    print(f"{'command':30s} {'wall [s]':>9s} {'user [s]':>9s} {'wall/floor':>11s} "
           f"{'user/floor':>11s}  (medians of {args.repeat}; exit status)")
     for name, rows in times.items():
         wall = statistics.median(w for w, _ in rows)
         user = statistics.median(u for _, u in rows)
-        print(f"{name:22s} {wall:9.3f} {user:9.3f} {wall / floor_wall:11.2f} "
+        print(f"{name:30s} {wall:9.3f} {user:9.3f} {wall / floor_wall:11.2f} "
               f"{user / floor_user:11.2f}  ({statuses[name]})")
     print(f"load average: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
     return 0

@@ -71,6 +71,9 @@ def test_a_stored_context_grades_every_answer_as_the_one_it_was_written_from(nam
     loaded = Grader(name)
     assert loaded._ctx is not None and loaded.context is not fresh.context
     assert loaded.problem is loaded.context.problem
+    # every object read back is the real class's (a stand-in of the reader, left behind in
+    # place of a class, would not pickle by reference)
+    pickle.dumps(loaded.context, protocol=5)
     _same(fresh, loaded, _answers(fresh.context))
 
 

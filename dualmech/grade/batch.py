@@ -137,13 +137,14 @@ def warm(names: Iterable[str] | str, limits: Limits = LIMITS) -> None:
 
 
 def warm_targets(ctx) -> None:
-    """Build the exact points of ``ctx`` and its equations' feedback targets in every mode
-    (what explaining a wrong equation reads) now."""
+    """Build the exact points of ``ctx`` and its equations' feedback targets in every mode,
+    with their written groups (what explaining a wrong equation reads), now."""
     from .terms import MODES, equation_targets
     if ctx.method == "exact":
         ctx.points("exact")
         for mode in MODES:
-            equation_targets(ctx, mode)
+            for table in equation_targets(ctx, mode):
+                table.groups(ctx)   # the written groups an edit may add or flip
 
 
 def _chunks(rows: Sequence[dict], size: int) -> list[list[dict]]:
