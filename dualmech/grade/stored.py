@@ -10,8 +10,9 @@ milliseconds.  A context is only a cache: whatever it holds is rebuilt identical
 **When a file is used.**  Its name is a digest of the problem's name and seed, the versions
 of Python, sympy and mpmath, and the size and modification time of symengine's and
 python-flint's files and of every source file of ``dualmech`` and of the catalogue: change
-any of them (edit a model, upgrade sympy) and the file is simply not found.  Only catalogue problems named by their
-name are kept (a problem from a file or a notebook is built as before).
+any of them (edit a model, upgrade sympy) and the file is simply not found.  Only a catalogue
+problem asked for by its name, at its default size, is kept (a problem from a file, a
+notebook or another catalogue is built as before).
 
 **What reading one can do.**  The file is written through a temporary name and a rename,
 begins with a digest of its contents, and is read only when it and its directory belong to
@@ -96,7 +97,8 @@ class _Reader(pickle.Unpickler):
         elif module.startswith("sympy."):
             obj = super().find_class(module, name)
             if isinstance(obj, type) and obj.__module__ == module and (
-                    issubclass(obj, (sp.Basic, sp.MatrixBase)) or module.startswith("sympy.polys.")):
+                    issubclass(obj, (sp.Basic, sp.MatrixBase))
+                    or module.startswith("sympy.polys.")):
                 return _guarded(obj)
         raise pickle.UnpicklingError(f"a stored grading context names {module}.{name}; "
                                      "refused")
