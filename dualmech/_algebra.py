@@ -9,6 +9,7 @@ assumptions, so they are mapped back by name).
 """
 from __future__ import annotations
 
+from functools import cache
 from typing import Sequence
 
 import symengine as se
@@ -108,8 +109,11 @@ def total_derivative(expr, states: Sequence, time, bridge: Bridge):
 
 
 # -- expressions kept in symengine between the edges ------------------------------------------
-#: symengine's time symbol (sympy's ``t`` converts to it)
-T_SE = se.Symbol("t")
+@cache
+def time_se():
+    """symengine's time symbol (sympy's ``t`` converts to it); made on first use, so that
+    importing the library does not load symengine (and numpy) before it is needed."""
+    return se.Symbol("t")
 
 
 def names_of(expr) -> dict:

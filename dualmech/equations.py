@@ -30,7 +30,7 @@ import symengine as se
 import sympy as sp
 
 from ._expr import as_expr, refuse_text_in
-from ._algebra import T_SE, linear_coefficients, names_of, to_se, to_sp
+from ._algebra import linear_coefficients, names_of, time_se, to_se, to_sp
 from .kinematics import t
 
 __all__ = ["EquationSet", "ModelError", "Rows", "StateSymbols", "is_zero_expression",
@@ -142,15 +142,15 @@ class Rows(Sequence):
             for k, v in names_of(expr).items():
                 names.setdefault(k, v)
             e0 = to_se(expr)
-            e1 = e0.diff(T_SE)
-            e2 = e1.diff(T_SE)
+            e1 = e0.diff(time_se())
+            e2 = e1.diff(time_se())
             if self.plain:
                 st = state_symbols(q)
                 rules.update({se.Symbol(st.q.name): e0, se.Symbol(st.qd.name): e1,
                               se.Symbol(st.qdd.name): e2})
             else:
                 f = to_se(q)
-                rules.update({f.diff(T_SE, 2): e2, f.diff(T_SE): e1, f: e0})
+                rules.update({f.diff(time_se(), 2): e2, f.diff(time_se()): e1, f: e0})
         out, kept = [], []
         for e, label in zip(self.se, labels):
             e = e.xreplace(rules)
@@ -306,7 +306,7 @@ class EquationSet:
                     buckets.setdefault(u, []).append(term)
             for u in unknown:
                 terms = buckets.get(u)
-                a = se.Add(*terms).diff(u) if terms else _ZERO
+                a = se.Add(*terms).diff(u) if terms else se.Integer(0)
                 if terms and a.free_symbols & us:
                     bad.append(u)
                 A.append(a)
@@ -593,7 +593,6 @@ def _latex_text(label: str) -> str:
                   if m.group(1) not in "\\^~" else " ", label)
 
 
-_ZERO = se.Integer(0)
 _RULES: dict = {}
 
 
@@ -644,8 +643,8 @@ def to_plain_se(expr, coordinates):
         for q in key:
             s = state_symbols(q)
             f = to_se(q)
-            rules[f.diff(T_SE, 2)] = se.Symbol(s.qdd.name)
-            rules[f.diff(T_SE)] = se.Symbol(s.qd.name)
+            rules[f.diff(time_se(), 2)] = se.Symbol(s.qdd.name)
+            rules[f.diff(time_se())] = se.Symbol(s.qd.name)
             rules[f] = se.Symbol(s.q.name)
         _SE_RULES[key] = rules
     e = expr if isinstance(expr, se.Basic) else to_se(as_expr(expr))

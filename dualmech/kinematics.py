@@ -28,12 +28,13 @@ Matrix([[cos(theta(t))*Derivative(phi(t), t), Derivative(theta(t), t), sin(theta
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cache
 from typing import Iterable
 
 import symengine as se
 import sympy as sp
 
-from ._algebra import T_SE, merge_names, names_of, to_se, to_sp
+from ._algebra import merge_names, names_of, time_se, to_se, to_sp
 from ._expr import as_expr, as_matrix, refuse_text, refuse_text_in
 
 __all__ = [
@@ -147,15 +148,15 @@ class Frame:
     # -- unit vectors ------------------------------------------------------------------
     @property
     def x(self) -> "Vector":
-        return Vector._of(self, _UNIT[0], {})
+        return Vector._of(self, _unit(0), {})
 
     @property
     def y(self) -> "Vector":
-        return Vector._of(self, _UNIT[1], {})
+        return Vector._of(self, _unit(1), {})
 
     @property
     def z(self) -> "Vector":
-        return Vector._of(self, _UNIT[2], {})
+        return Vector._of(self, _unit(2), {})
 
     def vector(self, *components) -> "Vector":
         """The vector with ``components`` along this frame's x, y, z axes."""
@@ -255,7 +256,7 @@ class Frame:
         w = self.__dict__.get("_w_root")
         if w is None:
             if self.parent is None:
-                w = Vector._of(self, (_ZERO, _ZERO, _ZERO), {})
+                w = Vector._of(self, _unit(-1), {})
             else:
                 up = self.parent._ang_vel_root()
                 R, names = self._rotation_se()
@@ -271,7 +272,7 @@ class Frame:
 
     def origin_from_root(self) -> "Vector":
         """Position of this frame's origin relative to the root origin."""
-        total = Vector._of(self.root, (_ZERO, _ZERO, _ZERO), {})
+        total = Vector._of(self.root, _unit(-1), {})
         for f in self.chain()[1:]:
             if f._origin is not None:
                 total = total._add(f._origin)
@@ -305,8 +306,11 @@ def _sp_matrix(M, names) -> sp.Matrix:
     return sp.Matrix(M.rows, M.cols, [to_sp(x, names) for x in M])
 
 
-_ZERO, _ONE = se.Integer(0), se.Integer(1)
-_UNIT = ((_ONE, _ZERO, _ZERO), (_ZERO, _ONE, _ZERO), (_ZERO, _ZERO, _ONE))
+@cache
+def _unit(i: int) -> tuple:
+    """Components of the ``i``-th unit vector (``-1``: the zero vector), in symengine."""
+    zero, one = se.Integer(0), se.Integer(1)
+    return tuple(one if j == i else zero for j in range(3))
 
 
 @refuse_text_in
@@ -395,7 +399,8 @@ class Vector:
         return Vector._of(self.frame, comps, merge_names(self._names, o._names))
 
     def _dt(self, frame: Frame) -> "Vector":
-        local = Vector._of(self.frame, tuple(c.diff(T_SE) for c in self._comps), self._names)
+        dt = time_se()
+        local = Vector._of(self.frame, tuple(c.diff(dt) for c in self._comps), self._names)
         if frame is self.frame:
             return local
         return local._add(self.frame._ang_vel(frame)._cross(self))

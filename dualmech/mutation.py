@@ -2,7 +2,7 @@
 
 For every model of a problem the generator makes broken variants: drop one ingredient (a force,
 a torque, a reaction, an energy term, a generalised force, the inertia term of a body), flip
-the sign of one ingredient, double one ingredient (e.g. one body's mass in its inertia term
+the sign of one ingredient or of one unknown reaction, double one ingredient (e.g. one body's mass in its inertia term
 only), double one mass or inertia parameter everywhere, swap two parameters of the same
 dimension.  Each mutant
 is compared with an unbroken model of the same problem -- its motion, and its reactions with
@@ -17,10 +17,15 @@ the same reactions and the same value of every one of them -- e.g. the flipped o
 constraint of a multiplier that vanishes identically (``-N`` and ``2 N`` are ``N`` when
 ``N = 0``).  Such a mutant claims nothing false, so no comparator could catch it; it is
 reported apart too.  Only a mutant that got past the full comparison is tested for this, so
-no caught mutant is ever reclassified.  The sign of an
-*unknown* reaction is not flipped: ``R d`` and ``-R d`` with ``R`` unknown are the same model
-with the unknown renamed, so the motion cannot change (the sign of a recovered reaction is
-checked against the published answers instead).
+no caught mutant is ever reclassified.
+
+The sign of each *unknown* reaction is flipped too, one unknown at a time (``R -> -R`` in the
+direct form's free-body diagram, ``lambda -> -lambda`` in a multiplier model).  Such a model
+is the original with the unknown renamed, so its motion cannot change: only the recovered
+reaction changes sign.  It is caught by the reactions comparison -- every reaction is derived
+by a second, independent model (a direct form beside a multiplier form) -- and never by the
+equations of motion.  Where the reaction vanishes identically on the motion (``-N`` is ``N``
+when ``N = 0``) the flipped model claims nothing false and is reported as *equivalent*.
 
 Mutants that raise (``errored``) or on which the comparator gives no verdict
 (``undetermined``) are reported apart too: neither is a catch.  The kill rate is over the
@@ -113,6 +118,9 @@ def mutants(problem) -> Iterator[Mutant]:
             if not key.startswith("reaction "):
                 yield Mutant(name, f"{name}: flip the sign of `{key}`", m.flipped(key))
                 yield Mutant(name, f"{name}: double `{key}`", m._edit(key, 2, f"{name} x2 {key}"))
+        for u in m.unknowns:
+            yield Mutant(name, f"{name}: flip the sign of unknown `{u}`",
+                         m.substitute({u: -u}))
         heavy = {reduce(MASS), reduce(INERTIA)}
         for p in params:
             if p.symbol in free and reduce(p.dimension) in heavy:

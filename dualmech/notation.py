@@ -15,6 +15,7 @@ LaTeX (primes)  ``\\theta``            ``\\theta'``                  ``\\theta''
 plain text      ``theta``             ``theta'``                   ``theta''``
 machine         ``theta``             ``theta_d``                  ``theta_dd``
 MathML          a theta               a theta, dot above           two dots above
+chart label     ``$\\theta$``         ``$\\dot{\\theta}$``           ``$\\ddot{\\theta}$``
 ==============  ====================  ===========================  ===================
 
 The textbook line (:func:`plain`) is what a page of prose or a terminal shows in one line:
@@ -43,6 +44,8 @@ Example
 ('l m θ̇^2 + sin(θ)', 'l m θ′^2 + sin(θ)')
 >>> sentence(("on the motion it equals ", e, ", not 0"))
 'on the motion it equals l m θ̇^2 + sin(θ), not 0'
+>>> print(mathtext("theta1", 1), mathtext("F_r"))
+$\\dot{\\theta}_{1}$ $F_{r}$
 """
 from __future__ import annotations
 
@@ -61,7 +64,8 @@ from ._expr import as_expr
 from .kinematics import t
 
 __all__ = ["NOTATIONS", "check_notation", "pretty", "latex", "text", "machine",
-           "mathml", "plain", "sentence", "symbol_text", "equation_words"]
+           "mathml", "plain", "sentence", "symbol_text", "mathtext",
+           "equation_words"]
 
 #: the two ways of writing rates: dots over the letter, or primes after it
 NOTATIONS = ("dots", "primes")
@@ -337,3 +341,29 @@ def _model_words(model: str) -> str:
     words = {"lagrange": "Lagrange", "newton": "Newton", "euler": "Euler"}
     text = " ".join(words.get(w, w) for w in model.split("_"))
     return text.replace("Newton Euler", "Newton\u2013Euler")
+
+
+#: a name :func:`mathtext` typesets: letters, optional digits, ``_`` and a subscript
+_NAME = re.compile(r"[A-Za-z]+[0-9]*(_[A-Za-z0-9]+)?")
+
+
+def mathtext(name: str, order: int = 0, notation: str = "dots") -> str:
+    """A chart label (matplotlib mathtext) of a coordinate, its rate or a reaction's name.
+
+    ``mathtext("theta1", 1)`` is ``$\\dot{\\theta}_{1}$`` -- the LaTeX of :func:`latex` between
+    dollars, so a legend shows θ̇₁ as the page does.  A name that is not a symbol's name
+    (spaces, punctuation) is returned as text with its ``$`` escaped, never as markup.
+
+    Examples
+    --------
+    >>> mathtext("phi", 2), mathtext("phi", 1, "primes"), mathtext("R_x")
+    ('$\\\\ddot{\\\\phi}$', "$\\\\phi'$", '$R_{x}$')
+    >>> mathtext("a $5 fee")
+    'a \\\\$5 fee'
+    """
+    check_notation(notation)
+    if not isinstance(order, int) or isinstance(order, bool) or order < 0:
+        raise ValueError(f"`order` must be a non-negative integer, got {order!r}.")
+    if not isinstance(name, str) or not _NAME.fullmatch(name):
+        return str(name).replace("$", r"\$")
+    return f"${_latex(name, order, notation)}$"

@@ -176,7 +176,7 @@ class WheelOnPivot(Problem):
     """Wheel rolling round a pivot at a steady rate (see module doc)."""
 
     name = "wheel_on_pivot"
-    title = "Wheel rolling round a pivot (steady motion, contact force)"
+    title = "Wheel rolling round a pivot (driven precession; contact and pivot forces)"
     source = "004_f75aa9bb64d0737a.txt: question 2 (a), (b)"
     summary = ("Precession angle as the free coordinate (J phi'' = tau: steady iff tau = 0); "
                "contact force from H_O, from Newton-Euler and from multipliers; pivot force "

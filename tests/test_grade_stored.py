@@ -193,3 +193,21 @@ def test_a_damaged_or_foreign_file_is_ignored(cache):
     assert stored.load("simple_pendulum") is None
     os.chmod(folder / file, 0o600)
     assert stored.load("simple_pendulum") is not None
+
+
+def test_a_stored_context_spares_the_command_symengine_and_numpy(cache):
+    """With the context stored, the command's answer needs neither symengine nor numpy
+    (``dualmech.startup.defer``); without it, they load when the models are derived."""
+    script = ("import sys\nfrom dualmech.cli import command\n"
+              "sys.argv = ['dualmech', 'grade', 'simple_pendulum', '--answer', "
+              "\"a*theta'' + g*sin(theta) = 0\"]\n"
+              "code = command()\n"
+              "print(code, 'numpy' in sys.modules, "
+              "'symengine.lib.symengine_wrapper' in sys.modules)\n")
+    env = dict(os.environ, DUALMECH_CACHE_DIR=str(cache))
+    runs = [subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                           env=env, timeout=120) for _ in range(2)]
+    first, second = (r.stdout.strip().splitlines()[-1] for r in runs)
+    assert first == "0 True True"      # right; the models were derived (symengine loaded)
+    assert second == "0 False False"   # right; read from the stored context
+    assert "RIGHT" in runs[1].stdout

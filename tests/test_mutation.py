@@ -1,7 +1,8 @@
 """An honest mutation score (dualmech.mutation): what raises or gets no verdict is reported
 apart, `points` is validated, one derivation alone is refused, `_identical` never calls
-a mutant identical without evaluating it, and a survivor is called equivalent only when it
-gives its original's motion and every one of its reactions."""
+a mutant identical without evaluating it, a survivor is called equivalent only when it
+gives its original's motion and every one of its reactions, and an unknown reaction's flipped
+sign is caught by the reactions comparison."""
 import pytest
 import sympy as sp
 
@@ -98,3 +99,39 @@ def test_a_flipped_multiplier_is_equivalent_only_where_it_vanishes():
     # a dropped multiplier loses the reaction: not equivalent either, even where it is zero
     drop = lambda m: m.without("constraint N")  # noqa: E731
     assert _against_itself(get("block_in_pipe"), "multiplier", drop) is False
+
+
+def test_every_unknown_reaction_of_every_model_gets_a_sign_flip():
+    from dualmech.mutation import mutants
+    p = get("compound_double_pendulum")
+    flips = {m.description: m for m in mutants(p) if "sign of unknown" in m.description}
+    expected = {f"{name}: flip the sign of unknown `{u}`"
+                for name, model in p.models().items() for u in model.unknowns}
+    assert set(flips) == expected and len(expected) == 4     # R_x, R_y in two models each
+
+
+def test_a_flipped_unknown_reaction_keeps_the_motion_and_negates_the_reaction():
+    # independent of the comparator: solve both models symbolically (toy_car is small)
+    from dualmech.mutation import mutants
+    p = get("toy_car")
+    model = p.model("newton_euler")
+    (flip,) = [m for m in mutants(p) if m.description == "newton_euler: flip the sign of "
+               "unknown `F_r`"]
+    F_r = model.unknowns[0]
+    before, after = model.solve(), flip.equations.solve()
+    for a in model.accelerations:
+        assert sp.simplify(before[a] - after[a]) == 0
+    assert sp.simplify(before[F_r] + after[F_r]) == 0 and sp.simplify(before[F_r]) != 0
+
+
+@pytest.fixture(scope="module")
+def toy_car_report():
+    return mutation_report(get("toy_car"))
+
+
+@pytest.mark.parametrize("model", ["newton_euler", "multiplier"])
+def test_a_flipped_unknown_reaction_is_caught_by_the_reactions_alone(toy_car_report, model):
+    # the car's motion cannot change (F_r is only renamed), so the catch must be the
+    # comparison of F_r with the other model that derives it -- and nothing else
+    killed = dict(toy_car_report.killed)
+    assert killed[f"{model}: flip the sign of unknown `F_r`"] == ["reaction F_r"]

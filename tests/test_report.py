@@ -29,7 +29,7 @@ def charts(tmp_path_factory):
 
 def test_zero_reactions_are_named_not_drawn(charts):
     _, c = charts
-    assert "H1, H2 = 0 along the whole motion (not drawn)" in c["falling_container"].notes
+    assert "H₁, H₂ = 0 along the whole motion (not drawn)" in c["falling_container"].notes
 
 
 def test_coinciding_reactions_are_drawn_once_and_named(charts):

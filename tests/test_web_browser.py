@@ -111,6 +111,18 @@ def test_student_sees_the_preview_while_typing_and_feedback_on_submit(server, br
     assert "Right" in page.inner_text("#feedback .verdict")
 
 
+def test_preview_typesets_the_dimensions_of_terms_that_disagree(server, browser, tmp_path):
+    # a*theta'' is L T^-2, a*g is L^2 T^-2: both shown with their exponents as superscripts
+    page = browser.new_page(viewport={"width": 1280, "height": 700})
+    page.goto(f"{server}/problems/simple_pendulum")
+    page.locator("#answer").fill("a*theta'' + a*g = 0")
+    page.wait_for_selector("#preview .warn math")
+    warn = page.locator("#preview .warn")
+    assert warn.locator("math").count() == 2 and warn.locator("msup").count() == 3
+    assert "^" not in warn.inner_text() and "T^-2" not in page.content()
+    page.locator("#preview").screenshot(path=str(_shots(tmp_path) / "web_dimensions.png"))
+
+
 def test_teacher_uploads_a_class_and_sees_the_table(server, browser, tmp_path):
     csv = tmp_path / "class.csv"
     csv.write_text("id,question,answer\n"

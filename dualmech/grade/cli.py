@@ -100,8 +100,9 @@ def handle(args: argparse.Namespace) -> int:
             answer = args.answer
         else:
             return _usage("give the answer with --answer TEXT or --answer-file FILE.")
-        from ..startup import load
-        load("dualmech.grade.api")   # sympy, symengine and the grader (see dualmech.startup)
+        from ..startup import defer, load
+        defer("symengine")   # used only when the problem's context must be built
+        load("dualmech.grade.api")   # sympy and the grader (see dualmech.startup)
         from .sandbox import grade_bounded
         result = grade_bounded(args.name, answer, args.quantity, about=args.about)
         print(json.dumps(result.to_dict(), indent=2) if args.json else str(result))

@@ -8,10 +8,11 @@ user's cache directory (:func:`dualmech.caches.cache_dir`); :func:`load` reads i
 milliseconds.  A context is only a cache: whatever it holds is rebuilt identically without it.
 
 **When a file is used.**  Its name is a digest of the problem's name and seed, the versions
-of Python, sympy, symengine, mpmath and python-flint, and the size and modification time of
-every source file of ``dualmech`` and of the catalogue: change any of them (edit a model,
-upgrade sympy) and the file is simply not found.  Only catalogue problems named by their
-name are kept (a problem from a file or a notebook is built as before).
+of Python, sympy and mpmath, and the size and modification time of symengine's and
+python-flint's files and of every source file of ``dualmech`` and of the catalogue: change
+any of them (edit a model, upgrade sympy) and the file is simply not found.  Only a catalogue
+problem asked for by its name, at its default size, is kept (a problem from a file, a
+notebook or another catalogue is built as before).
 
 **What reading one can do.**  The file is written through a temporary name and a rename,
 begins with a digest of its contents, and is read only when it and its directory belong to
@@ -96,7 +97,8 @@ class _Reader(pickle.Unpickler):
         elif module.startswith("sympy."):
             obj = super().find_class(module, name)
             if isinstance(obj, type) and obj.__module__ == module and (
-                    issubclass(obj, (sp.Basic, sp.MatrixBase)) or module.startswith("sympy.polys.")):
+                    issubclass(obj, (sp.Basic, sp.MatrixBase))
+                    or module.startswith("sympy.polys.")):
                 return _guarded(obj)
         raise pickle.UnpicklingError(f"a stored grading context names {module}.{name}; "
                                      "refused")
@@ -159,14 +161,19 @@ def _no_text(args, kwargs) -> None:
 def _stamp() -> str:
     """Versions and the size and time of every source file the context depends on."""
     if not _STAMP:
-        import flint
+        import importlib.util
         import mpmath
-        import symengine
         import dualmech
         from dualmech import problems
         h = hashlib.sha256()
-        h.update("\0".join([sys.version, sp.__version__, symengine.__version__,
-                            mpmath.__version__, flint.__version__]).encode())
+        h.update("\0".join([sys.version, sp.__version__, mpmath.__version__]).encode())
+        for name in ("symengine", "flint"):   # their files, not imported just for a version
+            try:
+                origin = getattr(importlib.util.find_spec(name), "origin", None)
+                st = os.stat(origin) if origin else None
+            except (ImportError, ValueError, OSError):
+                origin = st = None
+            h.update(f"{name}\0{origin}\0{st and (st.st_size, st.st_mtime_ns)}\n".encode())
         roots = sorted({os.path.dirname(dualmech.__file__), os.path.dirname(problems.__file__)})
         while roots:
             folder = roots.pop()

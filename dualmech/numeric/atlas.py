@@ -40,6 +40,7 @@ from typing import Sequence
 
 import numpy as np
 
+from ..notation import mathtext
 from .regimes import STIFF_SCENES, chaos, dae_drift, linearisation, stiffness
 from .singularities import GARBAGE, KAPPA_LIMIT, PROBES, probe, scan
 
@@ -231,8 +232,8 @@ def _chart_singularities(results, stem: Path) -> list[Path]:
         ax.axhline(GARBAGE, color="0.6", linestyle="--", linewidth=0.9,
                    label=f"{GARBAGE:.0e}: guard (errors grow 1000-fold)")
         ax.set_yscale("log")
-        ax.set_xlabel(f"{coord} [{s.units.get(coord, '?')}]")
-        ax.set_ylabel("degeneracy kappa [1]")
+        ax.set_xlabel(f"{mathtext(coord)} [{s.units.get(coord, '?')}]")
+        ax.set_ylabel(r"degeneracy $\kappa$ [1]")
         ax.legend(fontsize="x-small", loc="upper right")
     return save(fig, stem)
 
@@ -257,13 +258,13 @@ def _chart_drift(d, stem: Path) -> list[Path]:
                         + " along the whole run" + note)
             continue
         ax.plot(t[1:], np.maximum(np.abs(g[1:]), ROUNDING / 10),
-                label=f"{k} (|g| ~ t^{d.growth[k]:.2f}){note}")
+                label=f"{k} ($|g| \\sim t^{{{d.growth[k]:.2f}}}$){note}")
     if flat:
         ax.text(0.02, 0.04, "\n".join(flat), transform=ax.transAxes, fontsize="small",
                 va="bottom", bbox={"facecolor": "white", "edgecolor": "0.7"})
     ax.set_yscale("log")
     ax.set_xlabel("t [s]")
-    ax.set_ylabel(f"|g| [{d.unit}]")
+    ax.set_ylabel(f"$|g|$ [{d.unit}]")
     if ax.get_legend_handles_labels()[0]:
         ax.legend(fontsize="small")
     return save(fig, stem)
@@ -271,7 +272,7 @@ def _chart_drift(d, stem: Path) -> list[Path]:
 
 def _chart_stiffness(s, stem: Path) -> list[Path]:
     from .charts import METHOD_COLORS, panels, save
-    fig, axes = panels(2, f"{s.problem}: stiffness in {s.parameter} (declared "
+    fig, axes = panels(2, f"{s.problem}: stiffness in {mathtext(s.parameter)} (declared "
                        f"{s.declared[0]:g}-{s.declared[1]:g} {s.unit}), rtol {s.rtol:g}",
                        height=2.8)
     methods = list(dict.fromkeys(r["method"] for r in s.rows))
@@ -290,7 +291,7 @@ def _chart_stiffness(s, stem: Path) -> list[Path]:
         ax.set_ylabel(label)
         ax.axvspan(*s.declared, color="0.9", label="declared range")
         ax.legend(fontsize="x-small", ncol=2)
-    axes[-1].set_xlabel(f"{s.parameter} [{s.unit}]")
+    axes[-1].set_xlabel(f"{mathtext(s.parameter)} [{s.unit}]")
     return save(fig, stem)
 
 
@@ -307,7 +308,7 @@ def _chart_linear(lin, stem: Path) -> list[Path]:
                         xytext=(4, 4), textcoords="offset points")
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel(f"amplitude of {lin.coordinate} [{lin.unit}]")
+    ax.set_xlabel(f"amplitude of {mathtext(lin.coordinate)} [{lin.unit}]")
     ax.set_ylabel("largest error / amplitude [1]")
     return save(fig, stem)
 
@@ -331,7 +332,7 @@ def _chart_chaos(results, stem: Path) -> list[Path]:
             x0, t0 = np.mean(good, axis=0)
             line = np.array([min(xs), max(xs)])
             ax.plot(line, t0 + (line - x0) / h.lyapunov, linestyle="--", color="0.4",
-                    label=f"slope 1/lambda, Benettin's lambda = {h.lyapunov:.3g} 1/s")
+                    label=f"slope $1/\\lambda$, Benettin's $\\lambda$ = {h.lyapunov:.3g} 1/s")
         ax.axhline(h.reference_valid, color="0.7", linestyle=":",
                    label=f"reference trusted until {h.reference_valid:.3g} s")
     ax.set_xlabel("-ln(relative tolerance) [1]")
@@ -343,7 +344,7 @@ def _chart_chaos(results, stem: Path) -> list[Path]:
 def _chart_floquet(fl, stem: Path) -> list[Path]:
     from .charts import panels, save
     from .mathieu import draw_chart
-    points = {f"{o.label}: {'stable' if o.stable else 'unstable'}": o.mathieu
+    points = {f"{_orbit(o)}: {'stable' if o.stable else 'unstable'}": o.mathieu
               for o in fl.orbits if o.mathieu is not None}
     count = 3 if points else 1
     fig, axes = panels(count, f"{fl.problem}: Floquet multipliers of each periodic motion"
@@ -355,10 +356,10 @@ def _chart_floquet(fl, stem: Path) -> list[Path]:
     for o in fl.orbits:
         mu = np.array(o.multipliers, dtype=complex)
         ax.plot(mu.real, mu.imag, marker="o", linestyle="none",
-                label=f"{o.label}: largest |mu| = {o.radius:.10f}")
+                label=f"{_orbit(o)}: largest $|\\mu|$ = {o.radius:.10f}")
     ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel("Re mu [1]")
-    ax.set_ylabel("Im mu [1]")
+    ax.set_xlabel(r"Re $\mu$ [1]")
+    ax.set_ylabel(r"Im $\mu$ [1]")
     ax.legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0))
     if points:
         qmax = max(abs(q) for _, q in points.values())
@@ -371,6 +372,16 @@ def _chart_floquet(fl, stem: Path) -> list[Path]:
         axes[2].set_title("near the problem's own parameters", fontsize="small")
         axes[2].legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0))
     return save(fig, stem)
+
+
+def _orbit(orbit) -> str:
+    """An orbit's state at ``t = 0`` for a legend: ``$\\theta$ = 3.1416, $\\dot{\\theta}$ = 0``
+    (its names are the coordinates, then their rates with a prime: ``theta'``)."""
+    parts = []
+    for name, value in zip(orbit.names, orbit.state):
+        stem = name.rstrip("'")
+        parts.append(f"{mathtext(stem, len(name) - len(stem))} = {value:.5g}")
+    return ", ".join(parts)
 
 
 _CHARTS = {"singularities": _chart_singularities, "dae_drift": _chart_drift,

@@ -30,6 +30,7 @@ Example
 from __future__ import annotations
 
 import json
+import re
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -37,6 +38,7 @@ from typing import Callable
 
 import numpy as np
 
+from ..notation import mathtext
 from .contacts import scene_span
 from .formulations import formulations
 from .integrators import integrate
@@ -143,12 +145,22 @@ class Ladder:
         fig, (ax,) = panels(1, f"{self.scene}: each rung against the richest model",
                             height=3.4)
         for r in self.rungs[:-1]:
-            ax.plot(r.times, np.maximum(r.error_curve, 1e-17), label=r.label)
+            ax.plot(r.times, np.maximum(r.error_curve, 1e-17), label=_legend(r))
         ax.set_yscale("log")
         ax.set_xlabel("t [s]")
         ax.set_ylabel("state error [relative to range]")
         ax.legend(fontsize="small")
         return [stem.with_suffix(".json")] + save(fig, stem)
+
+
+def _legend(rung: Rung) -> str:
+    """The rung's label for the chart, each reaction it neglects named as a symbol (the
+    label's ``H`` as :math:`H`, :func:`~dualmech.notation.mathtext`)."""
+    label = rung.label.replace("$", r"\$")
+    for name in rung.neglected:
+        label = re.sub(rf"(?<![\w$\\{{]){re.escape(name)}(?![\w$}}])",
+                       lambda _m, n=name: mathtext(n), label)
+    return label
 
 
 def has_ladder(problem) -> bool:

@@ -72,8 +72,8 @@ REFERENCE_RTOL, CHECK_RTOL = 1e-13, 1e-12
 MEASURES = (("final_error", "state error at the end\n[relative to range]"),
             ("path_error", "state error along the path\n[relative to range]"),
             ("reaction_error", "reaction error\n[relative to largest]"),
-            ("drift", "constraint drift |g| [{drift_unit}]"),
-            ("energy_drift", "energy drift |E - E0| [N m]"))
+            ("drift", "constraint drift $|g|$ [{drift_unit}]"),
+            ("energy_drift", "energy drift $|E - E_0|$ [N m]"))
 
 
 @dataclass

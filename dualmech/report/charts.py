@@ -8,9 +8,13 @@ leaves its declared range or a one-sided contact would have to pull) and draws
   the reactions (forces in N, torques in N m), each axis labelled with its unit;
 * curves that coincide (to 1e-9 of the panel's scale) once, the legend naming all of them;
 * reactions that stay zero along the whole motion, and curves that stay constant, not drawn
-  but said in words on their panel ("identically zero along the whole motion: ...").
+  but said in words on their panel ("identically zero along the whole motion: ...");
+* every name in textbook notation: legends and panel texts in mathtext from the problem's
+  symbols (``theta1`` as θ₁, :func:`~dualmech.notation.mathtext`), the caption in the
+  page's one-line text (:func:`~dualmech.notation.symbol_text`).
 
-The notes (:attr:`Chart.notes`) are the chart's caption; the page prints them once, under it.
+The notes (:attr:`Chart.notes`) are the chart's caption; the page prints them once, under it
+(:attr:`Chart.notes_html`: the same sentences with each name typeset in MathML).
 
 It returns a :class:`Chart` with the paths and the notes, or the reason it could not draw.
 
@@ -27,9 +31,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import numpy as np
+import html
 
+import numpy as np
+import sympy as sp
+
+from .mathml import inline
 from ..dimensions import ANGLE
+from ..notation import mathtext, symbol_text
 from ..numeric.units import unit
 
 __all__ = ["Chart", "trajectory_chart", "group_curves"]
@@ -43,10 +52,15 @@ _KIND = {"m": "position", "rad": "angle", "N": "force", "N m": "torque or moment
 
 @dataclass
 class Chart:
-    """What :func:`trajectory_chart` drew (``paths``, ``notes``) or why not (``error``)."""
+    """What :func:`trajectory_chart` drew (``paths``, ``notes``) or why not (``error``).
+
+    ``notes`` are the caption's sentences as text (names in the page's one-line form, ``θ₁``);
+    ``notes_html`` the same sentences as HTML, each name typeset (MathML ``<msub>``).
+    """
 
     paths: list = field(default_factory=list)
     notes: list = field(default_factory=list)
+    notes_html: list = field(default_factory=list)
     error: str = ""
     span: tuple = ()
 
@@ -90,8 +104,8 @@ def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400
         chart.error = f"simulation failed -- {type(exc).__name__}: {exc}"
         return chart
     chart.span = (span.t0, span.t_end)
-    chart.notes.append(f"simulated for t in [{span.t0:g}, {span.t_end:.3g}] s"
-                       + (f"; it stops there because {span.reason}" if span.reason else ""))
+    _note(chart, f"simulated for t in [{span.t0:g}, {span.t_end:.3g}] s"
+          + (f"; it stops there because {span.reason}" if span.reason else ""))
     info = {c.name: c for c in problem.all_coordinates()}
     coords = _panels([(n, q, info[n].dimension if n in info else None)
                       for n, q in zip(traj.coordinate_names, traj.q)], _unit)
@@ -101,7 +115,7 @@ def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400
     floor = SAME * max(biggest, 1.0)
     zero = [k for k, v in reactions.items() if float(np.abs(v).max()) <= floor]
     if zero:
-        chart.notes.append(f"{', '.join(zero)} = 0 along the whole motion (not drawn)")
+        _note(chart, *_names(zero, ", "), " = 0 along the whole motion (not drawn)")
 
     forces = _panels([(k, v, rinfo[k].dimension if k in rinfo else None)
                       for k, v in reactions.items() if k not in zero], _unit)
@@ -120,7 +134,7 @@ def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400
     for i, (ax, (u, curves)) in enumerate(zip(axes, panels)):
         said = _draw(ax, u, curves, traj.t, chart)
         if zero and i == len(coords) + max(len(forces), 1) - 1:
-            said.append("identically zero along the whole motion: " + ", ".join(zero))
+            said.append("identically zero along the whole motion: " + _tex(zero, ", "))
         if said:
             ax.text(0.5, 0.5, "\n".join(said), transform=ax.transAxes, ha="center",
                     va="center", fontsize="small",
@@ -138,6 +152,33 @@ def _unit(dimension) -> str:
     return "rad" if dimension == ANGLE else unit(dimension)
 
 
+def _tex(names, sep: str = "") -> str:
+    """Names as chart text: each one in mathtext (``$\\theta_{1}$``), joined by ``sep``."""
+    return sep.join(mathtext(n) for n in names)
+
+
+def _names(names, sep: str) -> list:
+    """Caption parts: each name as a symbol (text stays text), ``sep`` between them."""
+    parts: list = []
+    for i, n in enumerate(names):
+        parts += ([sep] if i else []) + [sp.Symbol(n) if _symbolic(n) else n]
+    return parts
+
+
+def _note(chart: Chart, *parts) -> None:
+    """One sentence of the caption from text and symbols: as text (``θ₁``, the page's
+    one-line form) and as HTML (text escaped, each symbol typeset)."""
+    chart.notes.append("".join(symbol_text(p.name) if isinstance(p, sp.Symbol) else p
+                               for p in parts))
+    chart.notes_html.append("".join(inline(p) if isinstance(p, sp.Symbol) else html.escape(p)
+                                    for p in parts))
+
+
+def _symbolic(name: str) -> bool:
+    """Is ``name`` a symbol's name (what :func:`mathtext` typesets)?"""
+    return mathtext(name).startswith("$")
+
+
 def _draw(ax, u: str, curves, t, chart: Chart) -> list[str]:
     """Draw the curves of one panel; return what the panel must say in words instead of
     drawing it (curves that stay constant along the whole motion)."""
@@ -149,14 +190,14 @@ def _draw(ax, u: str, curves, t, chart: Chart) -> list[str]:
     said, drawn = [], 0
     for group in group_curves(names, values, scale):
         v = values[names.index(group[0])]
-        label = group[0] if len(group) == 1 else f"{' = '.join(group)} (identical)"
+        label = _tex(group) if len(group) == 1 else f"{_tex(group, ' = ')} (identical)"
         if len(group) > 1:
-            chart.notes.append(f"{' and '.join(group)} coincide along the whole motion "
-                               "(drawn once)")
+            _note(chart, *_names(group, " and "), " coincide along the whole motion "
+                  "(drawn once)")
         if np.ptp(v) <= SAME * scale:      # a flat line: say its value instead
-            said.append(f"{' = '.join(group)} = {v[0]:.4g} {u}, constant along the whole "
+            said.append(f"{_tex(group, ' = ')} = {v[0]:.4g} {u}, constant along the whole "
                         "motion")
-            chart.notes.append(f"{' = '.join(group)} stays at {v[0]:.4g} {u} (not drawn)")
+            _note(chart, *_names(group, " = "), f" stays at {v[0]:.4g} {u} (not drawn)")
             continue
         ax.plot(t, v, label=label, linewidth=1.3)
         drawn += 1

@@ -158,6 +158,18 @@ def _caption(chart) -> str:
     return " ".join(notes)
 
 
+def _caption_html(chart) -> str:
+    """The caption as HTML: the chart's typeset notes where it has them, else its text
+    escaped."""
+    typeset = list(getattr(chart, "notes_html", None) or [])
+    if len(typeset) != len(chart.notes):
+        return html.escape(_caption(chart))
+    notes = [n + "." for n in typeset]
+    if notes and notes[0][:1].islower():
+        notes[0] = notes[0][0].upper() + notes[0][1:]
+    return " ".join(notes)
+
+
 def _where(p, teachers: bool) -> str:
     """Where the answer is printed; for students only the place (the source's own remark
     after the colon may give the correction away)."""
@@ -242,7 +254,7 @@ def _chart_html(name: str, chart, out_dir: Path) -> list[str]:
     data = base64.b64encode(png.read_bytes()).decode("ascii")
     return [f'<figure><img alt="{html.escape(name)}: simulated motion and reactions" '
             f'src="data:image/png;base64,{data}">'
-            f"<figcaption>{html.escape(_caption(chart))}</figcaption></figure>"]
+            f"<figcaption>{_caption_html(chart)}</figcaption></figure>"]
 
 
 def _published_html(c, teachers: bool, notation: str) -> list[str]:

@@ -142,7 +142,11 @@ SCRIPT = r"""
         p.append(" -- the accepted names are listed beside the answer box.");
         out.push(p);
       }
-      (data.dimensions || []).forEach(function (d) { out.push(el("div", "warn", "dimensions: " + d)); });
+      (data.dimensions_html || []).forEach(function (d) {   // escaped by the server, MathML
+        const w = el("div", "warn", "dimensions: ");
+        w.insertAdjacentHTML("beforeend", d);
+        out.push(w);
+      });
       preview.replaceChildren.apply(preview, out);
       preview.dataset.state = (status === 200 && data.ok) ? "ok" : "error";
     }

@@ -64,7 +64,7 @@ SPEC = {
                        "suggestions, dimension warnings.",
             "requestBody": {"required": True, "content": {"application/json": {
                 "schema": _ANSWER}}},
-            "responses": {"200": _json("ok, error, mathml, unknown, dimensions"),
+            "responses": {"200": _json("ok, error, mathml, unknown, dimensions, dimensions_html"),
                           "400": _ERROR, "404": _ERROR, "413": _ERROR, "429": _ERROR}}},
         "/api/grade": {"post": {
             "summary": "Grade one answer: verdict, the smallest edit, feedback_html.",

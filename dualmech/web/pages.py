@@ -17,6 +17,7 @@ from collections import Counter, defaultdict
 from html import escape
 
 from dualmech.grade.report import summarise
+from dualmech.report.mathml import text_html
 from dualmech.sources import source_name
 
 __all__ = ["layout", "index_page", "problem_page", "feedback_html", "login_page",
@@ -141,7 +142,7 @@ def feedback_html(info, g: dict) -> str:
     out = [f'<div class="feedback {escape(status)}"><div class="verdict">'
            f"{escape(_VERDICT.get(status, status))}</div><p>{escape(g.get('summary', ''))}</p>"]
     if g.get("dimension_issues"):
-        out.append("<ul>" + "".join(f'<li class="warn">dimensions: {escape(d)}</li>'
+        out.append("<ul>" + "".join(f'<li class="warn">dimensions: {text_html(str(d))}</li>'
                                     for d in g["dimension_issues"]) + "</ul>")
     if g.get("edits"):
         out.append("<p>The smallest edit that makes it right:</p><ul>"

@@ -4,7 +4,8 @@ r"""Validation while typing: how an answer reads, before it is graded.
 looks every name up in the problem's vocabulary and typesets the answer in MathML *as the
 student wrote it* -- their order of terms, their brackets, ``theta''`` shown as a theta with
 two dots.  Names the problem does not define are marked and listed with the closest accepted
-ones; terms whose dimensions disagree are listed as the grader's audit words them.  Nothing
+ones; terms whose dimensions disagree are listed as the grader's audit words them (and as
+HTML with each dimension typeset, exponents as superscripts).  Nothing
 is graded here; it is cheap and bounded by the parser's :class:`~dualmech.grade.Limits`.
 
 :func:`term_mathml` typesets one term of the feedback (``-g*sin(theta)``) the same way.
@@ -36,6 +37,7 @@ from dualmech.grade.parser import LIMITS, AnswerError, Limits, Node, parse
 from dualmech.grade.vocabulary import UnknownName
 from dualmech.kinematics import t
 from dualmech import notation
+from dualmech.report.mathml import text_html
 
 __all__ = ["preview", "term_mathml", "PREVIEW_CHARS"]
 
@@ -49,13 +51,14 @@ def preview(info, text: str, quantity: str | None = None, limits: Limits = LIMIT
     """How ``text`` reads as an answer to problem ``info`` (a
     :class:`~dualmech.web.catalog.ProblemInfo`).
 
-    Returns ``{"ok", "error", "mathml", "unknown", "dimensions", "equations"}``: ``ok`` is
-    true when the text parses and every name is known; ``error`` the parser's message
-    otherwise; ``unknown`` the unknown names, each with ``suggestions``; ``dimensions`` the
-    dimension warnings (sentences).  Never raises for any text.
+    Returns ``{"ok", "error", "mathml", "unknown", "dimensions", "dimensions_html",
+    "equations"}``: ``ok`` is true when the text parses and every name is known; ``error``
+    the parser's message otherwise; ``unknown`` the unknown names, each with
+    ``suggestions``; ``dimensions`` the dimension warnings (sentences), ``dimensions_html``
+    the same escaped, each dimension in MathML.  Never raises for any text.
     """
     out = {"ok": False, "error": None, "mathml": "", "unknown": [], "dimensions": [],
-           "equations": 0}
+           "dimensions_html": [], "equations": 0}
     try:
         eqs = parse(text, limits)
     except AnswerError as exc:
@@ -71,6 +74,7 @@ def preview(info, text: str, quantity: str | None = None, limits: Limits = LIMIT
     out["ok"] = not writer.unknown
     if out["ok"] and not writer.basis_used:
         out["dimensions"] = _dimensions(info, eqs, limits, out)
+        out["dimensions_html"] = [text_html(d) for d in out["dimensions"]]
     return out
 
 
