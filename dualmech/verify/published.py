@@ -254,10 +254,12 @@ class _Plain:
     ``theta'``); what the walk does not know is left to :func:`~dualmech.equations.to_plain_se`.
     """
 
-    _FUNCTIONS = {sp.sin: se.sin, sp.cos: se.cos, sp.tan: se.tan, sp.exp: se.exp,
-                  sp.log: se.log}
+    _FUNCTIONS: dict = {}   # sympy function -> symengine's (made on first use)
 
     def __init__(self, coords):
+        if not _Plain._FUNCTIONS:
+            _Plain._FUNCTIONS.update({sp.sin: se.sin, sp.cos: se.cos, sp.tan: se.tan,
+                                      sp.exp: se.exp, sp.log: se.log})
         self.coords = tuple(coords)
         self.memo: dict = {}
         for q in self.coords:
