@@ -88,9 +88,6 @@ def restyle(text: str, coordinates, notation: str = "primes") -> str:
     return text
 
 
-_LABEL = re.compile(r"sum (F|tau_(\w+)) \. (\w+)\.(\w+) \((.+)\)$")
-
-
 def label_words(label: str) -> str:
     """A model row's label in words a student reads, without the model's name.
 
@@ -103,12 +100,11 @@ def label_words(label: str) -> str:
         return f"the {label[10:]} equation (Lagrange)"
     if label.startswith("linearised, "):
         return f"the linearised {label[12:]} equation"
-    m = _LABEL.match(label)
-    if m:
-        kind, point, frame, axis, bodies = m.groups()
-        along = axis if frame in ("O", "N", "E") else f"{frame}.{axis}"
-        what = "the force balance" if kind == "F" else f"the moment balance about {point}"
-        return f"{what} on {bodies} along {along}"
+    if label.startswith("sum "):   # a force or moment balance, named as a teacher reads it
+        from ..notation import equation_words   # (only feedback naming a balance needs it)
+        words = equation_words(label)
+        if len(words) == 1 and not words[0].startswith("the equation "):
+            return words[0]
     if " minus (" in label:
         return "a combination of balances that eliminates the reactions"
     return "a correct equation of the problem"
