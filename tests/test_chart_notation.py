@@ -105,7 +105,11 @@ def test_floquet_legends_write_the_rates_with_dots(figures, tmp_path):
     atlas(get("kapitza_pendulum"), sections=("floquet",), progress=False).write(tmp_path)
     (fig,) = figures
     texts = _texts(fig)
-    assert _raw(texts, ["theta", "mu"]) == [] and not any("theta'" in t for t in texts)
+    assert _raw(texts, ["theta", "mu", "alpha", "Omega"]) == [] and \
+        not any("theta'" in t for t in texts)
+    # the Mathieu panels: alpha and Omega typeset, the DLMF curves a_0, b_1, ...
+    assert r"$\alpha$ [1]" in texts and r"$a_0(q)$, DLMF 28.6 series" in texts
+    assert any(r"$a^2\Omega^2 = 2gl$" in t for t in texts)
     orbits = [t for t in texts if "largest" in t]
     assert orbits and all(t.startswith(r"$\theta$ = ") and r", $\dot{\theta}$ = 0: largest "
                           r"$|\mu|$ = " in t for t in orbits)

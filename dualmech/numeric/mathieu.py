@@ -117,12 +117,12 @@ def draw_chart(ax, q_range: tuple, alpha_range: tuple, points: dict | None = Non
     small = qs[qs <= 1.0]
     for name, style in (("a0", "-"), ("b1", "--"), ("a1", "--"), ("b2", ":")):
         ax.plot(small, [series(name, x)[0] for x in small], color="#1f4e9c", linestyle=style,
-                linewidth=1.0, label=f"{name}(q), DLMF 28.6 series")
+                linewidth=1.0, label=rf"${name[0]}_{name[1]}(q)$, DLMF 28.6 series")
     ax.plot(qs, -qs**2 / 2, color="#b03030", linewidth=0.9, linestyle="-.",
-            label="Kapitza: alpha = -q^2/2 (a^2 Omega^2 = 2 g l)")
+            label=r"Kapitza: $\alpha = -q^2/2$ ($a^2\Omega^2 = 2gl$)")
     for label, (alpha, q) in (points or {}).items():
         ax.plot([abs(q)], [alpha], marker="o", markersize=6, linestyle="none", label=label)
     ax.set_xlim(*q_range)
     ax.set_ylim(*alpha_range)
-    ax.set_xlabel("q [1]")
-    ax.set_ylabel("alpha [1]")
+    ax.set_xlabel(r"$q$ [1]")
+    ax.set_ylabel(r"$\alpha$ [1]")
