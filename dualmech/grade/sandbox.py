@@ -94,7 +94,10 @@ def _load(problem: str, quantity, about, limits: Limits, loaded: set):
         except Exception:
             pass
         from .stored import save
-        save(ctx)   # the next run of this problem starts from here (see .stored)
+        try:
+            save(ctx)   # the next run of this problem starts from here (see .stored)
+        except Exception:   # noqa: BLE001 - a cache that cannot be written changes nothing
+            pass
         loaded.add(key)
     return grader
 
