@@ -8,6 +8,7 @@
     dualmech report [--out DIR]                    everything, written to DIR (report.html)
     dualmech grade NAME --answer TEXT              a typed answer, checked exactly
     dualmech chart | atlas | fidelity NAME         work-precision, where methods fail, model ladder
+    dualmech mutate NAME [NAME...] | --all         break each model: does the check notice?
     dualmech new NAME [--out DIR]                  a new problem's skeleton and its test
 
 NAME is a catalogue name, a file ``path.py`` or ``path.py:Class``, ``module:Class``, or a
@@ -156,6 +157,30 @@ def build_parser() -> argparse.ArgumentParser:
     _notation_option(p)
     _json_flag(p, "the summary: one object per problem, and the files written")
     p.set_defaults(func=_cmd_report)
+
+    p = sub.add_parser("mutate", help="break each model on purpose: does the check notice?",
+                       description="Make every mutant of each problem's models -- one force, "
+                                   "torque, energy term or inertia dropped, flipped or "
+                                   "doubled; one unknown reaction's sign flipped; one mass "
+                                   "doubled; two parameters swapped -- and check that the "
+                                   "comparison, judging the mutant among all the problem's "
+                                   "derivations, names the mutant's derivation (or the "
+                                   "reaction it changes).  A survivor is a mistake your two "
+                                   "derivations would not catch; the report says why.  "
+                                   "Exit status 1 when a mutant survives.")
+    p.add_argument("names", nargs="*", metavar="NAME",
+                   help="problems to mutate: catalogue names, path.py[:Class] or module:Class")
+    p.add_argument("--all", action="store_true", help="every problem of the catalogue")
+    p.add_argument("--n", metavar="N", type=_positive_int, default=None,
+                   help="size of a parametric problem (e.g. n_link_pendulum --n 3)")
+    p.add_argument("--points", metavar="K", type=_points, default=3,
+                   help="random exact points per verdict (default: %(default)s)")
+    p.add_argument("--seed", metavar="S", type=int, default=0,
+                   help="seed of the random points (default: %(default)s)")
+    _json_flag(p, "one object per problem: caught, judged, kill_rate, and every mutant by "
+                  "outcome (killed, survived with why, identical, equivalent, errored, "
+                  "undetermined)")
+    p.set_defaults(func=_cmd_mutate)
 
     p = sub.add_parser("new", help="write a new problem's skeleton (both models, a test)",
                        description="Write DIR/NAME.py -- a working problem with both models "
@@ -652,6 +677,41 @@ def _cmd_report(args) -> int:
         for name, why in w.failed.items():
             print(f"no chart for {name}: {why}")
     return EXIT_OK if all(c.equivalent for _, c in results) else EXIT_DISAGREE
+
+
+def _cmd_mutate(args) -> int:
+    from .startup import load
+    load("dualmech.mutation")   # sympy, symengine and the comparator (see dualmech.startup)
+    from .mutation import mutation_report
+    chosen = _selected(args)
+    reports, failed = [], []
+    for problem in _progress(chosen, "mutating"):
+        try:
+            report = mutation_report(problem, points=args.points, seed=args.seed)
+        except Exception as exc:  # a problem whose models cannot be mutated: reported, not a crash
+            failed.append({"problem": getattr(problem, "name", "?"),
+                           "error": f"{type(exc).__name__}: {exc}"})
+            if not args.json:
+                print(f"{getattr(problem, 'name', '?')}: not mutated: {failed[-1]['error']}\n")
+            continue
+        reports.append(report)
+        if not args.json:
+            print(report)
+            print()
+    if args.json:
+        data = [r.to_dict() for r in reports] + failed
+        print(_json(data[0] if len(args.names) == 1 and not args.all else data))
+    elif len(chosen) > 1:
+        rows = [(r.problem, f"{len(r.killed)}/{r.total}", len(r.survived), len(r.identical),
+                 len(r.equivalent), len(r.errored) + len(r.undetermined)) for r in reports]
+        caught = sum(len(r.killed) for r in reports)
+        judged = sum(r.total for r in reports)
+        print(_table(("problem", "caught", "survived", "identical", "equivalent",
+                      "no verdict"), rows))
+        print(f"\n{caught}/{judged} mutants caught over {len(reports)} problems"
+              + (f"; {len(failed)} not mutated" if failed else ""))
+    survived = any(r.survived for r in reports)
+    return EXIT_DISAGREE if survived or failed else EXIT_OK
 
 
 def _cmd_new(args) -> int:

@@ -88,6 +88,17 @@ class MutationReport:
         """Caught over judged; ``nan`` when no mutant was judged (nothing to score)."""
         return len(self.killed) / self.total if self.total else float("nan")
 
+    def to_dict(self) -> dict:
+        """The report as JSON data (``kill_rate`` is ``None`` when nothing was judged)."""
+        return {"problem": self.problem, "caught": len(self.killed), "judged": self.total,
+                "kill_rate": self.kill_rate if self.total else None,
+                "killed": [{"mutant": d, "named": list(n)} for d, n in self.killed],
+                "survived": [{"mutant": d, "why": self.why.get(d, "")}
+                             for d in self.survived],
+                "identical": list(self.identical), "equivalent": list(self.equivalent),
+                "errored": [{"mutant": d, "error": e} for d, e in self.errored],
+                "undetermined": [{"mutant": d, "why": w} for d, w in self.undetermined]}
+
     def __str__(self) -> str:
         rate = f"{100 * self.kill_rate:.0f} %" if self.total else "no verdict"
         lines = [f"{self.problem}: {len(self.killed)}/{self.total} mutants caught "

@@ -1,0 +1,64 @@
+"""``dualmech mutate``: every mutant of a problem's models judged, survivors explained, the
+exit status 1 when one survives.
+
+The figures asserted are the comparator's own (``dualmech.mutation``): a catalogue problem
+catches every judged mutant (the mutation tests require it), and the skeleton that
+``dualmech new`` writes derives its string tension ``T`` in one model only, so flipping ``T``
+-- or doubling the mass in the direct form, which only changes ``T`` -- cannot be caught by a
+second derivation: the two survivors a teacher must see.
+"""
+from __future__ import annotations
+
+import json
+
+from dualmech.cli import main
+
+
+def run(capsys, *argv):
+    status = main(list(argv))
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def test_a_catalogue_problem_catches_every_mutant(capsys):
+    status, out, _ = run(capsys, "mutate", "simple_pendulum", "--json")
+    data = json.loads(out)
+    assert status == 0
+    assert data["problem"] == "simple_pendulum" and data["survived"] == []
+    assert data["judged"] == data["caught"] == len(data["killed"]) > 20
+    assert data["kill_rate"] == 1.0
+    # each kill names the broken derivation (or the reaction it changes)
+    assert all(k["named"] and k["mutant"].split(":")[0] in k["named"][0] or
+               k["named"][0].startswith("reaction ") for k in data["killed"])
+
+
+def test_a_reaction_derived_once_lets_its_mutants_survive(capsys, tmp_path):
+    assert main(["new", "my_pend", "--out", str(tmp_path)]) == 0
+    capsys.readouterr()
+    status, out, _ = run(capsys, "mutate", str(tmp_path / "my_pend.py"))
+    assert status == 1
+    assert "SURVIVED: newton_euler: flip the sign of unknown `T`" in out
+    assert "which no second model derives" in out and "multiplier named T" in out
+    status, out, _ = run(capsys, "mutate", str(tmp_path / "my_pend.py"), "--json")
+    data = json.loads(out)
+    assert status == 1 and data["caught"] == data["judged"] - len(data["survived"])
+    assert {s["mutant"] for s in data["survived"]} == {
+        "newton_euler: flip the sign of unknown `T`", "newton_euler: double `m`"}
+
+
+def test_several_problems_end_with_a_table(capsys):
+    status, out, err = run(capsys, "mutate", "simple_pendulum", "spring_mass_damper")
+    assert status == 0
+    assert "mutants caught over 2 problems" in out
+    lines = [ln for ln in out.splitlines() if ln.startswith(("simple_pendulum ",
+                                                              "spring_mass_damper "))]
+    assert len(lines) == 2 and all(" 0 " in ln for ln in lines)   # nothing survived
+
+
+def test_usage_errors_say_what_to_do(capsys):
+    status, _, err = run(capsys, "mutate")
+    assert status == 2 and "name at least one problem, or use --all" in err
+    status, _, err = run(capsys, "mutate", "toy_carr")
+    assert status == 2 and "Did you mean 'toy_car'?" in err
+    status, _, err = run(capsys, "mutate", "simple_pendulum", "--all")
+    assert status == 2 and "not both" in err
