@@ -537,3 +537,37 @@ def test_absurd_point_counts_are_refused_before_any_work(pendulum, monkeypatch):
     monkeypatch.setattr(check, "judge", judge)
     with pytest.raises(ValueError, match="`points`"):
         check.compare(pendulum, points=10**100)
+
+
+# -- the library's own converters never parse text ----------------------------------------------
+def _bridge_init(h):
+    from dualmech._algebra import Bridge
+    return Bridge([h])
+
+
+def _bridge_se(h):
+    from dualmech._algebra import Bridge
+    return Bridge().se(h)
+
+
+def _bridge_sp(h):
+    from dualmech._algebra import Bridge
+    return Bridge().sp(h)
+
+
+def _to_se(h):
+    from dualmech._algebra import to_se
+    return to_se(h)
+
+
+@pytest.mark.parametrize("convert", [_bridge_init, _bridge_se, _bridge_sp, _to_se],
+                         ids=["Bridge(exprs)", "Bridge.se", "Bridge.sp", "to_se"])
+@pytest.mark.parametrize("kind", sorted(HOSTILE))
+def test_internal_converters_refuse_text_before_any_parser(convert, kind):
+    """The sympify calls of the derivation's sympy/symengine bridge take the library's own
+    expressions only: ``strict=True`` (and ``to_se``'s check) refuse text, so even a string
+    that reached them by mistake is never parsed (the marker file is never written)."""
+    MARKER.unlink(missing_ok=True)
+    with pytest.raises((TypeError, ValueError, sp.SympifyError)):
+        convert(HOSTILE[kind])
+    assert not MARKER.exists()
