@@ -211,3 +211,26 @@ def test_a_stored_context_spares_the_command_symengine_and_numpy(cache):
     assert first == "0 True True"      # right; the models were derived (symengine loaded)
     assert second == "0 False False"   # right; read from the stored context
     assert "RIGHT" in runs[1].stdout
+
+
+def test_an_oversized_file_is_not_read_past_the_bound(cache):
+    """A file past the size bound (a context is 20-300 kB) is cut at the bound, fails its
+    digest and is ignored: bounded time and memory, whatever the file's size."""
+    import time
+    import tracemalloc
+    folder, file = stored._where("simple_pendulum", 0)
+    folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+    payload = pickle.dumps(b"x" * (stored._MOST + 1024), protocol=5)
+    digest = hashlib.sha256(payload).hexdigest().encode()
+    (folder / file).write_bytes(stored._MAGIC + digest + b"\n" + payload)
+    os.chmod(folder / file, 0o600)
+    del payload
+    tracemalloc.start()
+    t0 = time.process_time()
+    try:
+        assert stored.load("simple_pendulum") is None
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak < 1.5 * stored._MOST          # the bound read and hashed, never copied
+    assert time.process_time() - t0 < 5.0     # reading and hashing 32 MB

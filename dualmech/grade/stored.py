@@ -214,8 +214,9 @@ def load(name: str, seed: int = 0):
     blob = read_private(folder / file, _MOST)
     if not blob or not blob.startswith(_MAGIC):
         return None
-    head, _, payload = blob[len(_MAGIC):].partition(b"\n")
-    if head != hashlib.sha256(payload).hexdigest().encode("ascii"):
+    end = blob.find(b"\n", len(_MAGIC))
+    payload = memoryview(blob)[end + 1:]    # (no copy of a file that may be large)
+    if end < 0 or blob[len(_MAGIC):end] != hashlib.sha256(payload).hexdigest().encode("ascii"):
         return None
     from .context import ProblemContext
     try:
