@@ -76,7 +76,6 @@ Errata found in the printed solution (see :meth:`ToyCar.published`):
 """
 from __future__ import annotations
 
-import weakref
 from types import SimpleNamespace
 
 import sympy as sp
@@ -93,9 +92,6 @@ m, R, g = sp.symbols("m R g", positive=True)
 theta, phi = coordinate("theta"), coordinate("phi")
 rho = coordinate("rho")  # distance of the car from O, only in the multiplier model
 F_r = sp.Symbol("F_r", real=True)
-
-#: each problem instance's frames (see ToyCar._frames), gone with the instance
-_FRAMES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 _d = lambda q, n=1: sp.Derivative(q, (t, n))  # noqa: E731  (q', q'' of a function of t)
 
@@ -156,18 +152,9 @@ class ToyCar(Problem):
     def coordinate_maps(self) -> dict:
         return {"multiplier": {theta: theta, phi: phi, rho: R}}
 
-    def _frames(self) -> SimpleNamespace:
-        """:func:`frames`, built once per problem: the direct forms and the printed answers
-        place the car in the same frames (a frame's rotation never changes).  Kept beside
-        the instance, not in it: a problem pickles without its symengine kinematics."""
-        f = _FRAMES.get(self)
-        if f is None:
-            f = _FRAMES[self] = frames()
-        return f
-
     # -- direct form: sum F = m a (questions 7-10) --------------------------------------
     def newton_euler(self) -> EquationSet:
-        f = self._frames()
+        f = frames()
         car = Particle("car", m, f.car)
         ne = NewtonEuler(coordinates=[theta, phi], ground=f.O,
                          description="sum F = m a on the car, projected on i_B, j_B, k_B")
@@ -184,7 +171,7 @@ class ToyCar(Problem):
         The track's force ``F_r k_B`` acts at ``-R k_B``: its moment about O is zero, so it is
         left out of this free-body diagram and the model has no reaction unknowns.
         """
-        f = self._frames()
+        f = frames()
         car = Particle("car", m, f.car)
         ne = NewtonEuler("angular_momentum", coordinates=[theta, phi], ground=f.O,
                          description="sum tau_O = dh_O/dt on the car, projected on i_B, j_B")
@@ -222,7 +209,7 @@ class ToyCar(Problem):
     # -- quantities a student may be asked for (dualmech grade) -----------------------------
     def quantities(self) -> dict:
         """Momenta of question (3)/(4) in the car frame B, for answers typed in ``i_B, j_B, k_B``."""
-        f = self._frames()
+        f = frames()
         car = Particle("car", m, f.car)
         inB = lambda vec: tuple(vec.express(f.B).components)  # noqa: E731
         basis = ("i_B", "j_B", "k_B")
@@ -235,7 +222,7 @@ class ToyCar(Problem):
 
     # -- the source's answers -------------------------------------------------------------
     def published(self) -> list[Published]:
-        f = self._frames()
+        f = frames()
         O, A, B = f.O, f.A, f.B
         I, K = O.x, O.z
         iB, jB, kB, kA = B.x, B.y, B.z, A.z
