@@ -203,6 +203,13 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
     ref_model = problem.model(problem.reference)
     ctx = Context(ref_model.coordinates, problem.parameter_symbols, problem)
     claims = claims_of(problem)
+    unbroken = judge(models, context=ctx, points=points, seed=seed,
+                     reference=problem.reference, claims=claims)
+    if not unbroken.equivalent:
+        # a mutant that happens to repair the disagreement would pass for a gap in the checks
+        raise ValueError(f"`{problem.name}`'s derivations disagree before any mutant is made "
+                         f"(`dualmech check {problem.name}` shows where): mutants can only be "
+                         "scored against derivations that agree; fix them first.")
     for mut in mutants(problem):
         original = problem.models()[mut.model]
         if _identical(original, mut.equations, problem.parameter_symbols, seed):

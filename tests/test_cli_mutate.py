@@ -62,3 +62,20 @@ def test_usage_errors_say_what_to_do(capsys):
     assert status == 2 and "Did you mean 'toy_car'?" in err
     status, _, err = run(capsys, "mutate", "simple_pendulum", "--all")
     assert status == 2 and "not both" in err
+
+
+def test_derivations_that_already_disagree_are_not_scored(capsys, tmp_path):
+    # with the potential's sign flipped, flipping gravity in the direct form would make the
+    # two wrong models agree: that mutant would pass for a gap in the checks
+    assert main(["new", "my_pend", "--out", str(tmp_path)]) == 0
+    capsys.readouterr()
+    path = tmp_path / "my_pend.py"
+    text = path.read_text()
+    wrong = text.replace('lg.potential("gravity", -m * g * l * sp.cos(theta))',
+                         'lg.potential("gravity", m * g * l * sp.cos(theta))')
+    assert wrong != text
+    path.write_text(wrong)
+    status, out, _ = run(capsys, "mutate", str(path))
+    assert status == 1 and "SURVIVED" not in out
+    assert "derivations disagree before any mutant is made" in out
+    assert f"dualmech check my_pend" in out
