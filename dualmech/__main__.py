@@ -1,5 +1,5 @@
 """``python -m dualmech``: the same as the ``dualmech`` command (see :mod:`dualmech.cli`)."""
-from .cli import command
+from dualmech.cli import command
 
 if __name__ == "__main__":
     raise SystemExit(command())

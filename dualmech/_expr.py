@@ -121,5 +121,5 @@ def dotted(expr) -> str:
     """``expr`` as text with ``theta'`` and ``theta''`` for the derivatives of functions of
     time (the notation people read), ``theta`` for ``theta(t)``: :func:`dualmech.notation.text`.
     """
-    from .notation import text
+    from dualmech.notation import text
     return text(as_expr(expr))

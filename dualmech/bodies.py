@@ -28,9 +28,9 @@ from typing import Iterable
 
 import sympy as sp
 
-from ._algebra import merge_names, names_of, to_se
-from ._expr import as_expr, as_matrix, refuse_text, refuse_text_in
-from .kinematics import Frame, Point, Vector
+from dualmech._algebra import merge_names, names_of, to_se
+from dualmech._expr import as_expr, as_matrix, refuse_text, refuse_text_in
+from dualmech.kinematics import Frame, Point, Vector
 
 __all__ = [
     "Particle", "RigidBody", "MassProperties", "parallel_axis", "composite",

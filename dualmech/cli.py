@@ -37,7 +37,7 @@ import time
 from pathlib import Path
 from typing import Sequence
 
-from . import __version__
+from dualmech import __version__
 
 __all__ = ["main", "command", "build_parser"]
 
@@ -194,9 +194,9 @@ def build_parser() -> argparse.ArgumentParser:
     _json_flag(p, "the files written")
     p.set_defaults(func=_cmd_new)
 
-    from .grade.cli import register as _register_grade
-    from .numeric.commands import register as _register_numeric
-    from .web.cli import register as _register_web
+    from dualmech.grade.cli import register as _register_grade
+    from dualmech.numeric.commands import register as _register_numeric
+    from dualmech.web.cli import register as _register_web
     _register_grade(sub)
     _register_numeric(sub)
     _register_web(sub)
@@ -233,7 +233,7 @@ def command() -> int:
     shutdown leaves the objects to the operating system instead of freeing them one by one).
     :func:`main` called inside a longer-lived process keeps the default collector.
     """
-    from . import startup
+    from dualmech import startup
     startup.as_program()
     status = main()
     startup.leave()
@@ -244,7 +244,7 @@ def command() -> int:
 def _guarded_stdout():
     """``sys.stdout`` that survives a closed pipe (``dualmech check X | head -1``): the command
     finishes, keeps its exit status, and the output nobody reads goes to /dev/null."""
-    from .progress import GuardedStdout
+    from dualmech.progress import GuardedStdout
     try:
         sys.stdout.fileno()
     except (AttributeError, OSError, ValueError):  # not a file (a test's capture): as it is
@@ -359,14 +359,14 @@ class _Failed:
 
     def to_dict(self) -> dict:
         p = self.problem
-        from .sources import source_fields
+        from dualmech.sources import source_fields
         return {"name": p.name, "title": p.title, **source_fields(p.source),
                 "equivalent": False, "method": "error", "seconds": self.seconds,
                 "error": f"{type(self.error).__name__}: {self.error}"}
 
 
 def _compare(problem, points: int, seed: int):
-    from .compare import compare
+    from dualmech.compare import compare
     start = time.perf_counter()
     try:
         return compare(problem, points=points, seed=seed)
@@ -376,7 +376,7 @@ def _compare(problem, points: int, seed: int):
 
 def _progress(items, what: str):
     """``items`` with progress on stderr: a bar on a terminal, one line per problem otherwise."""
-    from .progress import progress
+    from dualmech.progress import progress
     return progress(items, what, unit="problem")
 
 
@@ -388,7 +388,7 @@ LIST_WIDTH = 100
 def _list_rows() -> list[dict]:
     """One dict per problem: dualmech's catalogue, its out-of-scope systems, then every
     registered catalogue's problems."""
-    from .sources import source_fields
+    from dualmech.sources import source_fields
     cat = _catalogue()
     rows = [{"name": d.name, "title": d.title, **source_fields(d.source), "summary": d.summary,
              "dof": d.dof, "coordinates": list(d.coordinates), "reactions": list(d.reactions),
@@ -496,7 +496,7 @@ def _compared(chosen: list, points: int, seed: int, jobs: int | None,
 
 
 def _cmd_check(args) -> int:
-    from .startup import load
+    from dualmech.startup import load
     load("dualmech.compare")   # sympy, symengine and the comparator (see dualmech.startup)
     chosen = _selected(args)
     results = []
@@ -514,7 +514,7 @@ def _cmd_check(args) -> int:
 
 
 def _cmd_show(args) -> int:
-    from .startup import load
+    from dualmech.startup import load
     load("dualmech.compare", "dualmech.notation")   # see dualmech.startup
     problem = _get(args.name)
     models = problem.models()
@@ -525,7 +525,7 @@ def _cmd_show(args) -> int:
         models = {args.model: models[args.model]}
     if args.json:
         return _show_json(problem, models)
-    from .sources import source_name
+    from dualmech.sources import source_name
     print(f"{problem.name}: {problem.title}  ({source_name(problem.source)})")
     for name, eqs in models.items():
         coords = ", ".join(q.func.__name__ for q in eqs.coordinates)
@@ -543,7 +543,7 @@ def _cmd_show(args) -> int:
         return EXIT_DISAGREE
     info = problem.reaction_info()
     import sympy as sp
-    from . import notation
+    from dualmech import notation
     coords = problem.coordinate_functions + tuple(problem.model(problem.reference).coordinates)
     for rname, expr in c.reactions.items():
         where = info.get(str(rname))
@@ -572,9 +572,9 @@ def _notation_option(p) -> None:
 def _show_json(problem, models: dict) -> int:
     """``show --json``: each model's labelled equations, then the recovered reactions (the
     expressions as ``check --json`` writes them)."""
-    from .notation import machine
-    from .verify.display import dotted
-    from .sources import source_fields
+    from dualmech.notation import machine
+    from dualmech.verify.display import dotted
+    from dualmech.sources import source_fields
     doc = {"name": problem.name, "title": problem.title, **source_fields(problem.source),
            "models": {name: {"coordinates": [q.func.__name__ for q in eqs.coordinates],
                              "unknowns": [str(u) for u in eqs.unknowns],
@@ -647,7 +647,7 @@ def _verdict_counts(verdicts) -> str:
 
 
 def _cmd_report(args) -> int:
-    from .report import write_report
+    from dualmech.report import write_report
     out: Path = args.out
     if "\x00" in str(out):
         raise UsageError("`--out` contains a NUL byte; give a directory path.")
@@ -680,9 +680,9 @@ def _cmd_report(args) -> int:
 
 
 def _cmd_mutate(args) -> int:
-    from .startup import load
+    from dualmech.startup import load
     load("dualmech.mutation")   # sympy, symengine and the comparator (see dualmech.startup)
-    from .mutation import mutation_report
+    from dualmech.mutation import mutation_report
     chosen = _selected(args)
     reports, failed = [], []
     for problem in _progress(chosen, "mutating"):
@@ -715,7 +715,7 @@ def _cmd_mutate(args) -> int:
 
 
 def _cmd_new(args) -> int:
-    from .skeleton import SkeletonError, write_skeleton
+    from dualmech.skeleton import SkeletonError, write_skeleton
     try:
         problem, test = write_skeleton(args.name, args.out, force=args.force)
     except SkeletonError as exc:

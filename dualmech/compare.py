@@ -6,10 +6,10 @@ equation sets.  How a verdict is reached is documented in :mod:`dualmech.verify.
 (judging every derivation at once, naming the faulty one), :mod:`dualmech.verify.sampling`
 (exact evaluation at random points) and :mod:`dualmech.exact` (why that is sound).
 """
-from .verify.check import (METHOD_NAMES, Comparison, PairResult, compare, compare_models,
+from dualmech.verify.check import (METHOD_NAMES, Comparison, PairResult, compare, compare_models,
                            compare_reactions, method_name, reaction_pairs, recover_reactions)
-from .verify.explain import Mismatch
-from .verify.sampling import Context
+from dualmech.verify.explain import Mismatch
+from dualmech.verify.sampling import Context
 
 __all__ = ["compare", "compare_models", "compare_reactions", "reaction_pairs",
            "recover_reactions", "Comparison", "PairResult", "Mismatch", "Context",

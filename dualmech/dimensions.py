@@ -30,10 +30,10 @@ from typing import Mapping
 import symengine as se
 import sympy as sp
 
-from ._algebra import to_se, to_sp
-from ._expr import as_expr, dotted
-from .equations import state_symbols
-from .kinematics import t
+from dualmech._algebra import to_se, to_sp
+from dualmech._expr import as_expr, dotted
+from dualmech.equations import state_symbols
+from dualmech.kinematics import t
 
 __all__ = ["BASES", "Dimension", "MASS", "LENGTH", "TIME", "ANGLE", "FORCE", "TORQUE", "ENERGY",
            "DIMENSIONLESS", "VELOCITY", "ACCELERATION", "STIFFNESS", "DAMPING",

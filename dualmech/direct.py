@@ -36,12 +36,12 @@ from typing import Sequence
 
 import sympy as sp
 
-from ._algebra import merge_names, names_of, to_se
-from ._expr import as_expr, refuse_text_in
+from dualmech._algebra import merge_names, names_of, to_se
+from dualmech._expr import as_expr, refuse_text_in
 
-from .bodies import Particle, RigidBody
-from .equations import EquationSet, ModelError, Rows
-from .kinematics import Frame, Point, Vector
+from dualmech.bodies import Particle, RigidBody
+from dualmech.equations import EquationSet, ModelError, Rows
+from dualmech.kinematics import Frame, Point, Vector
 
 __all__ = ["NewtonEuler", "Load"]
 

@@ -29,9 +29,9 @@ from typing import Mapping, Sequence
 import symengine as se
 import sympy as sp
 
-from ._expr import as_expr, refuse_text_in
-from ._algebra import linear_coefficients, names_of, time_se, to_se, to_sp
-from .kinematics import t
+from dualmech._expr import as_expr, refuse_text_in
+from dualmech._algebra import linear_coefficients, names_of, time_se, to_se, to_sp
+from dualmech.kinematics import t
 
 __all__ = ["EquationSet", "ModelError", "Rows", "StateSymbols", "is_zero_expression",
            "state_symbols"]
@@ -561,7 +561,7 @@ class EquationSet:
         """The equations as a worked solution writes them, one ``[label]`` block each:
         two-dimensional unicode text, or LaTeX with ``latex=True``; rates as dots
         (``notation="dots"``: ``θ̈``, ``\\ddot{\\theta}``) or primes (``"primes"``)."""
-        from . import notation as _notation
+        from dualmech import notation as _notation
         lines = []
         for label, e in zip(self.labels, self.equations):
             body = (_notation.latex(e, notation, self.coordinates) + " = 0" if latex else
@@ -570,7 +570,7 @@ class EquationSet:
         return "\n\n".join(lines)
 
     def __str__(self) -> str:
-        from . import notation as _notation
+        from dualmech import notation as _notation
         rows = "; ".join(f"{_notation.text(e, self.coordinates)} = 0" for e in self.equations)
         return f"{self.name}: {rows}"
 
@@ -580,7 +580,7 @@ class EquationSet:
 
     def _repr_latex_(self) -> str:
         """Jupyter: the equations as an aligned LaTeX block, rates as dots."""
-        from . import notation as _notation
+        from dualmech import notation as _notation
         rows = r" \\ ".join(
             f"{_notation.latex(e, 'dots', self.coordinates)} &= 0 "
             rf"&& \text{{{_latex_text(label)}}}" for label, e in zip(self.labels, self.equations))

@@ -91,15 +91,15 @@ import symengine as se
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
-from ._algebra import to_sp
-from ._expr import as_expr
-from .verify import interval as _iv
-from .verify.branches import Case, find_cases, regions
-from .verify.circle import world_values
-from .verify.surd import Surd, independent, is_square
-from .verify.program import NotRationalProgram, compile_rational
-from .verify.world import (AtomKey, NotExact, Undecidable, World, analyse, degree_bound)
-from .verify.world_se import analyse_se
+from dualmech._algebra import to_sp
+from dualmech._expr import as_expr
+from dualmech.verify import interval as _iv
+from dualmech.verify.branches import Case, find_cases, regions
+from dualmech.verify.circle import world_values
+from dualmech.verify.surd import Surd, independent, is_square
+from dualmech.verify.program import NotRationalProgram, compile_rational
+from dualmech.verify.world import (AtomKey, NotExact, Undecidable, World, analyse, degree_bound)
+from dualmech.verify.world_se import analyse_se
 
 __all__ = ["ExactForm", "Undecidable", "NotRational", "METHOD_NAMES", "CASE", "AtomKey",
            "SAMPLE_BITS", "MP_DIGITS", "is_zero"]

@@ -33,8 +33,8 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from .equations import EquationSet, ModelError
-from .kinematics import t as T_DUALMECH
+from dualmech.equations import EquationSet, ModelError
+from dualmech.kinematics import t as T_DUALMECH
 
 __all__ = ["from_mechanics", "with_derivation", "check_mechanics", "to_mechanics",
            "lagranges_method", "MechanicsForm"]
@@ -155,7 +155,7 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
                 raise ModelError(f"coordinate `{qname}` of the {type(method).__name__} is not a "
                                  f"coordinate of `{problem.name}` (it has "
                                  f"{', '.join(known_q)}); pass coordinates={{'{qname}': ...}}.")
-            from .kinematics import coordinate
+            from dualmech.kinematics import coordinate
             target = coordinate(qname)
         qmap[qi] = target
     rule = {}
@@ -232,7 +232,7 @@ def with_derivation(problem, equations: EquationSet, coordinate_map: dict | None
 def check_mechanics(problem, model, *, points: int = 8, seed: int = 0, **match):
     """Compare ``model`` (a sympy.physics.mechanics model) with every derivation of ``problem``,
     exactly; ``match`` goes to :func:`from_mechanics` (``name``, ``coordinates``, ...)."""
-    from .compare import compare
+    from dualmech.compare import compare
     eqs = from_mechanics(model, problem, **match)
     return compare(with_derivation(problem, eqs), points=points, seed=seed)
 

@@ -26,9 +26,9 @@ from typing import Mapping, Sequence
 import numpy as np
 import sympy as sp
 
-from ._expr import as_expr, refuse_text
-from .equations import EquationSet, ModelError
-from .kinematics import t
+from dualmech._expr import as_expr, refuse_text
+from dualmech.equations import EquationSet, ModelError
+from dualmech.kinematics import t
 
 __all__ = ["required_inputs", "peak"]
 

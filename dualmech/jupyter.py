@@ -20,8 +20,8 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import notation
-from .sources import source_name
+from dualmech import notation
+from dualmech.sources import source_name
 
 __all__ = ["problem_html", "comparison_html", "grade_html", "chart_html", "math_block",
            "math_inline"]
@@ -50,7 +50,7 @@ def _e(x) -> str:
 
 def _unit(dimension) -> str:
     try:
-        from .dimensions import format_dimension
+        from dualmech.dimensions import format_dimension
         return format_dimension(dimension)
     except Exception:  # noqa: BLE001 - display only
         return str(dimension)

@@ -34,8 +34,8 @@ from typing import Iterable
 import symengine as se
 import sympy as sp
 
-from ._algebra import merge_names, names_of, time_se, to_se, to_sp
-from ._expr import as_expr, as_matrix, refuse_text, refuse_text_in
+from dualmech._algebra import merge_names, names_of, time_se, to_se, to_sp
+from dualmech._expr import as_expr, as_matrix, refuse_text, refuse_text_in
 
 __all__ = [
     "t", "coordinate", "rot_x", "rot_y", "rot_z", "rot_axis", "skew", "unskew",

@@ -29,11 +29,11 @@ from typing import Sequence
 import symengine as se
 import sympy as sp
 
-from ._expr import as_expr, refuse_text_in
-from .bodies import Particle, RigidBody
-from ._algebra import Bridge, total_derivative
-from .equations import EquationSet, ModelError, Rows, state_symbols, to_plain
-from .kinematics import Frame, Point, Vector, t
+from dualmech._expr import as_expr, refuse_text_in
+from dualmech.bodies import Particle, RigidBody
+from dualmech._algebra import Bridge, total_derivative
+from dualmech.equations import EquationSet, ModelError, Rows, state_symbols, to_plain
+from dualmech.kinematics import Frame, Point, Vector, t
 
 __all__ = ["Lagrangian"]
 

@@ -45,12 +45,12 @@ import random
 from dataclasses import dataclass, field
 from typing import Iterator
 
-from .verify.check import claims_of
-from .verify.sampling import Context
-from .verify.verdicts import judge
-from .dimensions import INERTIA, MASS, reduce
-from .equations import EquationSet, ModelError, to_plain
-from .exact import ExactForm
+from dualmech.verify.check import claims_of
+from dualmech.verify.sampling import Context
+from dualmech.verify.verdicts import judge
+from dualmech.dimensions import INERTIA, MASS, reduce
+from dualmech.equations import EquationSet, ModelError, to_plain
+from dualmech.exact import ExactForm
 
 __all__ = ["Mutant", "MutationReport", "mutants", "mutation_report"]
 

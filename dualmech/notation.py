@@ -60,8 +60,8 @@ from sympy.printing.pretty.pretty import PrettyPrinter
 from sympy.printing.pretty.pretty_symbology import greek_unicode, sub as _SUB
 from sympy.printing.str import StrPrinter
 
-from ._expr import as_expr
-from .kinematics import t
+from dualmech._expr import as_expr
+from dualmech.kinematics import t
 
 __all__ = ["NOTATIONS", "check_notation", "pretty", "latex", "text", "machine",
            "mathml", "plain", "sentence", "symbol_text", "mathtext",

@@ -31,10 +31,10 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from ._expr import as_expr
-from .dimensions import ENERGY, Dimension, as_dimension, audit_rows, quoted, reduce
-from .equations import EquationSet, ModelError, Rows
-from .kinematics import t
+from dualmech._expr import as_expr
+from dualmech.dimensions import ENERGY, Dimension, as_dimension, audit_rows, quoted, reduce
+from dualmech.equations import EquationSet, ModelError, Rows
+from dualmech.kinematics import t
 
 __all__ = ["Parameter", "Coordinate", "Reaction", "Published", "Problem", "ProblemError"]
 
@@ -376,5 +376,5 @@ class Problem:
 
     def _repr_html_(self) -> str:
         """Jupyter: the problem's card (symbols, models, equations typeset)."""
-        from .jupyter import problem_html
+        from dualmech.jupyter import problem_html
         return problem_html(self)

@@ -29,9 +29,9 @@ from typing import Mapping, Sequence
 
 import sympy as sp
 
-from ._expr import refuse_text
+from dualmech._expr import refuse_text
 
-from .equations import EquationSet, ModelError, from_plain, state_symbols, to_plain
+from dualmech.equations import EquationSet, ModelError, from_plain, state_symbols, to_plain
 
 __all__ = ["steady_conditions", "steady_rates"]
 

@@ -23,8 +23,8 @@ import importlib
 from dataclasses import dataclass
 from pathlib import Path
 
-from ._loader import GROUP, SpecError, canonical, catalogue_classes, registered
-from ._loader import resolve as _resolve
+from dualmech.problems._loader import GROUP, SpecError, canonical, catalogue_classes, registered
+from dualmech.problems._loader import resolve as _resolve
 
 __all__ = ["Declaration", "OUT_OF_SCOPE", "declarations", "all_problems", "get", "load",
            "named", "is_name", "resolve", "module_of", "SpecError", "canonical", "registered", "catalogue_classes",

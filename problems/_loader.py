@@ -240,7 +240,7 @@ def resolve(spec: str, catalogue_class=None):
                             "(e.g. my_course.pendulum:Pendulum) or path.py:Class.")
         return _from_module(module, wanted)
     if catalogue_class is None:
-        from . import _class_named as catalogue_class
+        from dualmech.problems import _class_named as catalogue_class
     try:
         return catalogue_class(spec)
     except KeyError as exc:

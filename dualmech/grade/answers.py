@@ -47,11 +47,11 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from ..equations import EquationSet, ModelError
-from ..kinematics import t
-from ..problem import Problem
-from .context import GradingUnavailable, ProblemContext
-from .parser import AnswerError, parse
+from dualmech.equations import EquationSet, ModelError
+from dualmech.kinematics import t
+from dualmech.problem import Problem
+from dualmech.grade.context import GradingUnavailable, ProblemContext
+from dualmech.grade.parser import AnswerError, parse
 
 __all__ = ["Quantity", "catalogue", "find_quantity", "UnknownQuantity", "linearised_context",
            "KINDS"]
@@ -281,7 +281,7 @@ def _show(point: dict) -> str:
 
 def _equilibrium(ctx: ProblemContext, about: str) -> dict:
     """``{q(t): value}`` from ``"theta=0, phi=pi/2"`` (parsed, never evaluated as text)."""
-    from .formula import Formula
+    from dualmech.grade.formula import Formula
     out = {}
     for part in [p for p in about.replace(";", ",").split(",") if p.strip()]:
         eqs = parse(part)

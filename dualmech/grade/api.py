@@ -17,16 +17,16 @@ import time
 
 import sympy as sp
 
-from .answers import Quantity, catalogue, find_quantity, linearised_context
-from .context import GradingUnavailable, ProblemContext, build_seconds
-from .formula import Formula, difference
-from .cost import costliest
-from .judge import AnswerTimeout, Deadline, judge_equations, judge_expression
-from .judge_energy import judge_force, judge_kinetic, judge_lagrangian, judge_potential
-from .maps import student_map
-from .parser import LIMITS, AnswerError, Limits, parse, split_where
-from .result import Grade
-from .vocabulary import UnknownName, Vocabulary
+from dualmech.grade.answers import Quantity, catalogue, find_quantity, linearised_context
+from dualmech.grade.context import GradingUnavailable, ProblemContext, build_seconds
+from dualmech.grade.formula import Formula, difference
+from dualmech.grade.cost import costliest
+from dualmech.grade.judge import AnswerTimeout, Deadline, judge_equations, judge_expression
+from dualmech.grade.judge_energy import judge_force, judge_kinetic, judge_lagrangian, judge_potential
+from dualmech.grade.maps import student_map
+from dualmech.grade.parser import LIMITS, AnswerError, Limits, parse, split_where
+from dualmech.grade.result import Grade
+from dualmech.grade.vocabulary import UnknownName, Vocabulary
 
 __all__ = ["grade", "Grader"]
 
@@ -46,7 +46,7 @@ class Grader:
         self._named = None   # the catalogue name the problem was built from, if any
         if isinstance(problem, str):
             from dualmech import problems as catalogue_
-            from . import stored
+            from dualmech.grade import stored
             name = problem
             self._ctx = stored.load(name, seed)   # a context kept by an earlier run
             if self._ctx is not None:

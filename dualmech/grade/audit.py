@@ -13,8 +13,8 @@ import re
 
 from sympy.printing.str import StrPrinter
 
-from ..dimensions import format_dimension, reduce
-from .formula import Formula, tree_to_sympy
+from dualmech.dimensions import format_dimension, reduce
+from dualmech.grade.formula import Formula, tree_to_sympy
 
 __all__ = ["display", "dimension_issues", "expected_dimension", "reduced", "Dims",
            "notation_of", "restyle", "label_words", "NOTATIONS"]
@@ -101,7 +101,7 @@ def label_words(label: str) -> str:
     if label.startswith("linearised, "):
         return f"the linearised {label[12:]} equation"
     if label.startswith("sum "):   # a force or moment balance, named as a teacher reads it
-        from ..notation import equation_words   # (only feedback naming a balance needs it)
+        from dualmech.notation import equation_words   # (only feedback naming a balance needs it)
         words = equation_words(label)
         if len(words) == 1 and not words[0].startswith("the equation "):
             return words[0]

@@ -26,8 +26,8 @@ import os
 from pathlib import Path
 from typing import Iterable, Sequence
 
-from .api import Grader
-from .parser import LIMITS, Limits
+from dualmech.grade.api import Grader
+from dualmech.grade.parser import LIMITS, Limits
 
 __all__ = ["read_csv", "grade_rows", "grade_batch", "BatchError", "warm", "warm_targets"]
 
@@ -82,7 +82,7 @@ def grade_rows(rows: Sequence[dict], seconds: float = 1.0, memory_mb: int = 256)
     (:func:`~.sandbox.grade_bounded`).  A pure function of its input (graders are cached per
     process), so any executor may map it.
     """
-    from .sandbox import grade_bounded
+    from dualmech.grade.sandbox import grade_bounded
     out = []
     for row in rows:
         name, quantity = _question(row)
@@ -115,8 +115,8 @@ def warm(names: Iterable[str] | str, limits: Limits = LIMITS) -> None:
     """Build each problem's grader (the one :meth:`Grader.of` gives for ``limits``), its
     quantities, points, feedback targets and the correct forms of its reactions and
     accelerations now (so forked workers share them)."""
-    from .answers import catalogue
-    from .judge import expression_targets
+    from dualmech.grade.answers import catalogue
+    from dualmech.grade.judge import expression_targets
     if isinstance(names, str):
         names = [names]
     for name in sorted(set(names)):
@@ -139,7 +139,7 @@ def warm(names: Iterable[str] | str, limits: Limits = LIMITS) -> None:
 def warm_targets(ctx) -> None:
     """Build the exact points of ``ctx`` and its equations' feedback targets in every mode,
     with their written groups (what explaining a wrong equation reads), now."""
-    from .terms import MODES, equation_targets
+    from dualmech.grade.terms import MODES, equation_targets
     if ctx.method == "exact":
         ctx.points("exact")
         for mode in MODES:
@@ -199,7 +199,7 @@ def _run(chunks, workers, scheduler, connect_timeout):
         return
     from concurrent.futures import as_completed
 
-    from .sandbox import GradingPool
+    from dualmech.grade.sandbox import GradingPool
     workers = workers or os.cpu_count() or 1
     with GradingPool(min(workers, len(tagged))) as pool:
         futures = {}

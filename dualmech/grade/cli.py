@@ -90,7 +90,7 @@ def handle(args: argparse.Namespace) -> int:
         if args.list:
             return _list(args)
         if args.answer_file is not None:
-            from .parser import LIMITS
+            from dualmech.grade.parser import LIMITS
             try:   # read no more than the parser accepts (+1 to see it is too long)
                 with open(args.answer_file, encoding="utf-8") as fh:
                     answer = fh.read(LIMITS.chars + 1)
@@ -100,10 +100,10 @@ def handle(args: argparse.Namespace) -> int:
             answer = args.answer
         else:
             return _usage("give the answer with --answer TEXT or --answer-file FILE.")
-        from ..startup import defer, load
+        from dualmech.startup import defer, load
         defer("symengine")   # used only when the problem's context must be built
         load("dualmech.grade.api")   # sympy and the grader (see dualmech.startup)
-        from .sandbox import grade_bounded
+        from dualmech.grade.sandbox import grade_bounded
         result = grade_bounded(args.name, answer, args.quantity, about=args.about)
         print(json.dumps(result.to_dict(), indent=2) if args.json else str(result))
         return {"right": EXIT_RIGHT, "wrong": EXIT_WRONG}.get(result.status, EXIT_USAGE)
@@ -117,9 +117,9 @@ def _usage(message: str) -> int:
 
 
 def _list(args) -> int:
-    from .api import Grader
-    from .parser import AnswerError
-    from .vocabulary import symbol_table
+    from dualmech.grade.api import Grader
+    from dualmech.grade.parser import AnswerError
+    from dualmech.grade.vocabulary import symbol_table
     try:
         grader = Grader.of(args.name)
         quantities = grader.quantities()
@@ -142,8 +142,8 @@ def _list(args) -> int:
 
 
 def _batch(args) -> int:
-    from .batch import BatchError, grade_batch, read_csv
-    from .report import summarise, write_report
+    from dualmech.grade.batch import BatchError, grade_batch, read_csv
+    from dualmech.grade.report import summarise, write_report
     if args.name:
         return _usage("--batch takes the problem from each row's question; drop NAME.")
     if args.workers is not None and args.workers < 1:

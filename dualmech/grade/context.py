@@ -37,14 +37,14 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from ..dimensions import TIME
-from ..equations import state_symbols, to_plain
-from ..exact import MP_DIGITS, SAMPLE_BITS
-from ..kinematics import t
-from ..verify import linalg as la
-from .audit import reduced
-from .formula import Env, Formula, seeded_draw
-from .vocabulary import Vocabulary
+from dualmech.dimensions import TIME
+from dualmech.equations import state_symbols, to_plain
+from dualmech.exact import MP_DIGITS, SAMPLE_BITS
+from dualmech.kinematics import t
+from dualmech.verify import linalg as la
+from dualmech.grade.audit import reduced
+from dualmech.grade.formula import Env, Formula, seeded_draw
+from dualmech.grade.vocabulary import Vocabulary
 
 __all__ = ["ProblemContext", "Point", "GradingUnavailable", "zero", "off_motion",
            "build_seconds"]

@@ -31,7 +31,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from fractions import Fraction
 
-from .parser import LIMITS, AnswerError, AnswerTooLarge, Limits, Node, parse, to_text
+from dualmech.grade.parser import LIMITS, AnswerError, AnswerTooLarge, Limits, Node, parse, to_text
 
 __all__ = ["Cost", "TooCostly", "assess", "check", "costliest", "explainable",
            "EXPLAIN_TERMS", "MAX_NESTING"]

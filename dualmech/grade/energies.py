@@ -35,9 +35,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..kinematics import t
-from .context import GradingUnavailable, ProblemContext, off_motion, zero
-from .formula import Formula
+from dualmech.kinematics import t
+from dualmech.grade.context import GradingUnavailable, ProblemContext, off_motion, zero
+from dualmech.grade.formula import Formula
 
 __all__ = ["LagrangeParts", "euler_lagrange"]
 

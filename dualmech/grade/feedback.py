@@ -37,15 +37,15 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from ..dimensions import (ACCELERATION, DAMPING, STIFFNESS, TORSIONAL_DAMPING,
+from dualmech.dimensions import (ACCELERATION, DAMPING, STIFFNESS, TORSIONAL_DAMPING,
                           TORSIONAL_STIFFNESS)
-from ..exact import MP_DIGITS
-from ..kinematics import t
-from .context import ProblemContext, zero
-from .audit import display, reduced
-from .formula import Formula
-from .result import Edit
-from .terms import MODES, TermTable, coefficient_env, state_symbols, term_table
+from dualmech.exact import MP_DIGITS
+from dualmech.kinematics import t
+from dualmech.grade.context import ProblemContext, zero
+from dualmech.grade.audit import display, reduced
+from dualmech.grade.formula import Formula
+from dualmech.grade.result import Edit
+from dualmech.grade.terms import MODES, TermTable, coefficient_env, state_symbols, term_table
 
 __all__ = ["best_edit", "Diagnosis", "concrete_state", "category", "swap_pairs", "MAX_EDITS"]
 

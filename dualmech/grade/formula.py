@@ -38,11 +38,11 @@ from typing import Callable
 import mpmath
 import sympy as sp
 
-from ..exact import MP_DIGITS
-from .parser import LIMITS, AnswerError, AnswerTooLarge, Limits, Node, to_text
-from .cost import check
-from .resolve import resolve
-from .vocabulary import Vocabulary
+from dualmech.exact import MP_DIGITS
+from dualmech.grade.parser import LIMITS, AnswerError, AnswerTooLarge, Limits, Node, to_text
+from dualmech.grade.cost import check
+from dualmech.grade.resolve import resolve
+from dualmech.grade.vocabulary import Vocabulary
 
 __all__ = ["Formula", "Env", "difference", "seeded_draw", "tree_to_sympy", "sympy_to_tree"]
 

@@ -25,10 +25,10 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.printing.str import StrPrinter
 
-from ..dimensions import DAMPING, LENGTH, TORSIONAL_DAMPING
-from .context import ProblemContext
-from .audit import reduced
-from .judge import unit_circle
+from dualmech.dimensions import DAMPING, LENGTH, TORSIONAL_DAMPING
+from dualmech.grade.context import ProblemContext
+from dualmech.grade.audit import reduced
+from dualmech.grade.judge import unit_circle
 
 __all__ = ["Sample", "write", "correct_answers", "wrong_answers", "names_mistake", "CannotWrite"]
 
@@ -149,8 +149,8 @@ def correct_answers(ctx: ProblemContext) -> list[Sample]:
 
 def _same_dimension(ctx, rows):
     """Two rows of one dimension (their sum is then a meaningful equation), or None."""
-    from .audit import expected_dimension
-    from .formula import Formula
+    from dualmech.grade.audit import expected_dimension
+    from dualmech.grade.formula import Formula
     dims = [expected_dimension(Formula.from_sympy(r), ctx.dims) for r in rows]
     for i in range(len(rows)):
         for j in range(i + 1, len(rows)):
@@ -260,7 +260,7 @@ def _mapped_mistakes(ctx) -> list[Sample]:
     """A wrong sign in a row of a model written in other coordinates than the reference's
     (falling_container's ``y1, y2``): the answer is in those coordinates, and so must be the
     diagnosis."""
-    from .terms import state_symbols
+    from dualmech.grade.terms import state_symbols
     derived = set(ctx.derived_formulas())
     reference = {s.name for s in ctx.states}
     for name, m in ctx.problem.models().items():
@@ -285,7 +285,7 @@ def _mapped_mistakes(ctx) -> list[Sample]:
 
 
 def _exact(expr) -> bool:
-    from .formula import Formula
+    from dualmech.grade.formula import Formula
     try:
         return Formula.from_sympy(expr).exact
     except TypeError:
@@ -298,7 +298,7 @@ def _written_mistakes(ctx) -> list[Sample]:
     sign flipped inside a factor (``(A + B)*w1*w2`` for ``(A - B)*w1*w2``), and one of two
     written terms with the same state part flipped (``2*k*a^2*sin(theta)`` beside
     ``-m*g*l*sin(theta)``).  Each answer is that single equation."""
-    from .terms import state_symbols
+    from dualmech.grade.terms import state_symbols
     if ctx.method != "exact":   # how a person groups terms is read off exact term tables
         return []
     states = state_symbols(ctx)
@@ -345,7 +345,7 @@ def _written_mistakes(ctx) -> list[Sample]:
 def _natural(a, rest, row, ctx) -> bool:
     """A written term as a person writes it: its expanded terms neither cancel nor merge
     with the rest of the row's, nor collapse by ``sin^2 + cos^2 = 1``."""
-    from .terms import term_table
+    from dualmech.grade.terms import term_table
     n = len(sp.Add.make_args(sp.expand(a)))
     if n + len(sp.Add.make_args(sp.expand(rest))) != len(sp.Add.make_args(sp.expand(row))):
         return False
@@ -401,8 +401,8 @@ def names_mistake(ctx: ProblemContext, sample: Sample, edits: list) -> bool:
 
 
 def _read(ctx, text: str):
-    from .formula import Formula
-    from .parser import parse
+    from dualmech.grade.formula import Formula
+    from dualmech.grade.parser import parse
     if not text:
         return sp.Integer(0)
     return Formula.from_node(parse(text)[0].lhs, ctx.vocabulary).sympy()

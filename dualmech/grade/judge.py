@@ -28,18 +28,18 @@ from dataclasses import dataclass, field, replace
 import mpmath
 import sympy as sp
 
-from ..exact import MP_DIGITS
-from ..kinematics import t
-from ..verify import linalg as la
-from .answers import Quantity
-from .context import GradingUnavailable, Point, ProblemContext, build_seconds, zero
-from .feedback import Diagnosis, best_edit, concrete_state
-from .notation import for_student, in_their_words
-from .terms import answer_coordinates, equation_targets, expression_tables, term_table
-from .audit import dimension_issues, display, expected_dimension, label_words
-from .formula import Formula
-from .parser import AnswerError
-from .result import Edit
+from dualmech.exact import MP_DIGITS
+from dualmech.kinematics import t
+from dualmech.verify import linalg as la
+from dualmech.grade.answers import Quantity
+from dualmech.grade.context import GradingUnavailable, Point, ProblemContext, build_seconds, zero
+from dualmech.grade.feedback import Diagnosis, best_edit, concrete_state
+from dualmech.grade.notation import for_student, in_their_words
+from dualmech.grade.terms import answer_coordinates, equation_targets, expression_tables, term_table
+from dualmech.grade.audit import dimension_issues, display, expected_dimension, label_words
+from dualmech.grade.formula import Formula
+from dualmech.grade.parser import AnswerError
+from dualmech.grade.result import Edit
 
 __all__ = ["Verdict", "Deadline", "AnswerTimeout", "judge_equations", "judge_expression",
            "says_nothing", "check_real",
@@ -242,7 +242,7 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
                        "equation of motion must involve the accelerations on the motion",
                        dimension_issues=dims, method="exact" if method == "exact" else "slow")
     if method == "slow":
-        from .slow import slow_equations
+        from dualmech.grade.slow import slow_equations
         v = slow_equations(ctx, formulas, single or quantity.coordinate is not None, dims)
         try:
             wrong = _off_at_real_points(ctx, formulas, [None] * k) if v.status == "wrong" \
@@ -477,7 +477,7 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
     method = method_for(ctx, comps + refs)
     if method == "slow":
         check_real(ctx, comps, need_for(ctx, comps))
-        from .slow import slow_expression
+        from dualmech.grade.slow import slow_expression
         v = slow_expression(ctx, comps, refs, dims, quantity.description)
         if v.status == "wrong":
             try:
@@ -565,7 +565,7 @@ def _off_at_real_points(ctx, formulas, refs) -> list[int]:
     """Indices whose value differs from its reference (None: from zero) at the real display
     points -- only to choose what to explain after the comparator's verdict."""
     import mpmath
-    from ..exact import MP_DIGITS
+    from dualmech.exact import MP_DIGITS
     points = ctx.points("mpmath")       # GradingUnavailable: the caller decides
     out = []
     with mpmath.workdps(MP_DIGITS):
@@ -587,7 +587,7 @@ def _off_at_real_points(ctx, formulas, refs) -> list[int]:
 def factor_edit(expr, targets, ctx, equation=None):
     """A diagnosis when the answer is a constant multiple of a target, possibly after two
     symbols of one dimension are swapped (``R`` missing and the angles swapped)."""
-    from .feedback import swap_pairs
+    from dualmech.grade.feedback import swap_pairs
     for rule, text in [({}, "")] + swap_pairs(ctx):
         mine = term_table(expr.xreplace(rule) if rule else expr, ctx)
         if mine is None:
@@ -672,7 +672,7 @@ def _solved_rows(ctx, unknown) -> list:
 
 
 def _recovered(ctx, u) -> list:
-    from ..compare import recover_reactions
+    from dualmech.compare import recover_reactions
 
     def build():
         try:

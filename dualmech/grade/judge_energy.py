@@ -20,17 +20,17 @@ from itertools import combinations
 
 import sympy as sp
 
-from .answers import Quantity
-from .context import GradingUnavailable, ProblemContext, off_motion, zero
-from .energies import LagrangeParts, euler_lagrange
-from .feedback import best_edit, concrete_state
-from .terms import term_table
-from .audit import dimension_issues, reduced
-from .notation import in_their_words
-from .formula import Formula
-from .judge import Deadline, Verdict, factor_edit, method_for
-from .parser import AnswerError
-from ..dimensions import ENERGY
+from dualmech.grade.answers import Quantity
+from dualmech.grade.context import GradingUnavailable, ProblemContext, off_motion, zero
+from dualmech.grade.energies import LagrangeParts, euler_lagrange
+from dualmech.grade.feedback import best_edit, concrete_state
+from dualmech.grade.terms import term_table
+from dualmech.grade.audit import dimension_issues, reduced
+from dualmech.grade.notation import in_their_words
+from dualmech.grade.formula import Formula
+from dualmech.grade.judge import Deadline, Verdict, factor_edit, method_for
+from dualmech.grade.parser import AnswerError
+from dualmech.dimensions import ENERGY
 
 __all__ = ["judge_kinetic", "judge_potential", "judge_lagrangian", "judge_force"]
 
@@ -185,7 +185,7 @@ def judge_potential(ctx: ProblemContext, f: Formula, quantity: Quantity,
 
 
 def _show(ctx, expr) -> str:
-    from .audit import display
+    from dualmech.grade.audit import display
     return display(expr, ctx.names)
 
 

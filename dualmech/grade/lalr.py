@@ -33,7 +33,7 @@ import sys
 import lark
 from lark import Lark
 
-from ..caches import cache_dir, read_private, write_atomic
+from dualmech.caches import cache_dir, read_private, write_atomic
 
 __all__ = ["lalr_parser"]
 

@@ -28,17 +28,17 @@ from dataclasses import dataclass, field
 import mpmath
 import sympy as sp
 
-from ..equations import state_symbols, to_plain
-from ..exact import MP_DIGITS
-from ..kinematics import coordinate, t
-from ..verify import linalg as la
-from ..dimensions import TIME
-from .audit import expected_dimension, reduced
-from .context import ProblemContext, _dsub
-from .formula import Formula
-from .parser import LIMITS, AnswerError, Equation, Limits
-from .terms import equation_targets, term_table
-from .vocabulary import Vocabulary
+from dualmech.equations import state_symbols, to_plain
+from dualmech.exact import MP_DIGITS
+from dualmech.kinematics import coordinate, t
+from dualmech.verify import linalg as la
+from dualmech.dimensions import TIME
+from dualmech.grade.audit import expected_dimension, reduced
+from dualmech.grade.context import ProblemContext, _dsub
+from dualmech.grade.formula import Formula
+from dualmech.grade.parser import LIMITS, AnswerError, Equation, Limits
+from dualmech.grade.terms import equation_targets, term_table
+from dualmech.grade.vocabulary import Vocabulary
 
 __all__ = ["StudentMap", "StudentView", "student_map"]
 

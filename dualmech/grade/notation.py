@@ -16,10 +16,10 @@ from dataclasses import replace
 
 import sympy as sp
 
-from ..kinematics import t
-from .audit import notation_of, restyle
-from .context import ProblemContext
-from .formula import Formula
+from dualmech.kinematics import t
+from dualmech.grade.audit import notation_of, restyle
+from dualmech.grade.context import ProblemContext
+from dualmech.grade.formula import Formula
 
 __all__ = ["for_student", "coordinate_names", "in_their_words"]
 
@@ -96,8 +96,8 @@ def _mathml(ctx: ProblemContext, text: str) -> str:
     """MathML of a term the feedback wrote (read back by the answer parser), or ''."""
     if not text:
         return ""
-    from .. import notation
-    from .parser import parse
+    from dualmech import notation
+    from dualmech.grade.parser import parse
     try:
         expr = Formula.from_node(parse(text)[0].lhs, ctx.vocabulary).sympy()
     except Exception:   # a display aid only: a term the parser cannot read has no MathML

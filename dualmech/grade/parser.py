@@ -37,7 +37,7 @@ from fractions import Fraction
 from lark import Lark, Transformer
 from lark.exceptions import LarkError, UnexpectedCharacters, UnexpectedEOF, UnexpectedToken
 
-from .lalr import lalr_parser
+from dualmech.grade.lalr import lalr_parser
 
 __all__ = ["split_where",
            "Limits", "LIMITS", "Node", "Equation", "AnswerError", "AnswerSyntaxError",

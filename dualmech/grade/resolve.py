@@ -9,8 +9,8 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from .parser import AnswerError, AnswerTooLarge, Limits, Node, to_text
-from .vocabulary import Vocabulary
+from dualmech.grade.parser import AnswerError, AnswerTooLarge, Limits, Node, to_text
+from dualmech.grade.vocabulary import Vocabulary
 
 __all__ = ["resolve"]
 

@@ -37,8 +37,8 @@ import threading
 import time
 from dataclasses import replace
 
-from .parser import LIMITS, Limits
-from .result import Grade
+from dualmech.grade.parser import LIMITS, Limits
+from dualmech.grade.result import Grade
 
 __all__ = ["GradingPool", "grade_bounded", "too_costly", "LOAD_SECONDS", "GRACE"]
 
@@ -81,11 +81,11 @@ def _limit_memory(memory_mb: int):
 def _load(problem: str, quantity, about, limits: Limits, loaded: set):
     """The warm grader of ``problem``: models, points, feedback targets and what the
     ``quantity`` asked needs, built now (the printed answers only when it is one of them)."""
-    from .api import Grader
+    from dualmech.grade.api import Grader
     grader = Grader.of(problem, limits=limits)
     key = (problem, quantity, about, limits)
     if key not in loaded:
-        from .batch import warm_targets
+        from dualmech.grade.batch import warm_targets
         ctx = grader.context   # a problem whose models cannot be built fails here
         try:
             warm_targets(ctx)
@@ -93,7 +93,7 @@ def _load(problem: str, quantity, about, limits: Limits, loaded: set):
             grader.grade("0", quantity, about)
         except Exception:
             pass
-        from .stored import save
+        from dualmech.grade.stored import save
         try:
             save(ctx)   # the next run of this problem starts from here (see .stored)
         except Exception:   # noqa: BLE001 - a cache that cannot be written changes nothing
@@ -138,7 +138,7 @@ def _serve(conn) -> None:
         try:
             grader = _load(problem, quantity, about, limits, loaded)
         except Exception as exc:
-            from .parser import AnswerError
+            from dualmech.grade.parser import AnswerError
             text = str(exc) if isinstance(exc, AnswerError) else \
                 f"could not load problem {problem!r}: {type(exc).__name__}: {exc}"
             conn.send(("done", _invalid(problem, quantity, answer, text)))
@@ -155,7 +155,7 @@ def too_costly(problem, answer, quantity, ceiling: str, limits: Limits = LIMITS)
     """The ``invalid`` grade of an answer that overran ``ceiling`` (e.g. ``"1 s"``)."""
     culprit = ""
     try:
-        from .cost import costliest
+        from dualmech.grade.cost import costliest
         culprit = costliest(answer, limits)
     except Exception:   # naming the culprit is a courtesy; the verdict stands without it
         culprit = ""
@@ -414,12 +414,12 @@ def _grade_forked(problem, answer, quantity, about, seconds, memory_mb) -> Grade
     try:
         grader = _load(problem, quantity, about, limits, _LOADED)
     except Exception as exc:
-        from .parser import AnswerError
+        from dualmech.grade.parser import AnswerError
         return _invalid(problem, quantity, answer, str(exc) if isinstance(exc, AnswerError)
                         else f"could not load problem {problem!r}: {type(exc).__name__}: {exc}")
     sys.stdout.flush()
     sys.stderr.flush()
-    from ..startup import freeze
+    from dualmech.startup import freeze
     freeze()
     read, write = os.pipe()
     pid = os.fork()

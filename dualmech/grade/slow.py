@@ -13,12 +13,12 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..compare import compare_models, compare_reactions, method_name
-from ..equations import EquationSet, ModelError, from_plain
-from ..verify.sampling import Context
-from .context import GradingUnavailable, ProblemContext
-from .judge import Verdict
-from .parser import AnswerError
+from dualmech.compare import compare_models, compare_reactions, method_name
+from dualmech.equations import EquationSet, ModelError, from_plain
+from dualmech.verify.sampling import Context
+from dualmech.grade.context import GradingUnavailable, ProblemContext
+from dualmech.grade.judge import Verdict
+from dualmech.grade.parser import AnswerError
 
 __all__ = ["slow_equations", "slow_expression"]
 

@@ -51,8 +51,8 @@ import sys
 
 import sympy as sp
 
-from ..caches import cache_dir, read_private, write_atomic
-from ..problem import Problem
+from dualmech.caches import cache_dir, read_private, write_atomic
+from dualmech.problem import Problem
 
 __all__ = ["load", "save"]
 
@@ -218,7 +218,7 @@ def load(name: str, seed: int = 0):
     payload = memoryview(blob)[end + 1:]    # (no copy of a file that may be large)
     if end < 0 or blob[len(_MAGIC):end] != hashlib.sha256(payload).hexdigest().encode("ascii"):
         return None
-    from .context import ProblemContext
+    from dualmech.grade.context import ProblemContext
     try:
         ctx = _Reader(payload).load()
     except Exception:   # noqa: BLE001 - a file that does not load is as good as none

@@ -15,9 +15,9 @@ from fractions import Fraction
 
 import sympy as sp
 
-from ..kinematics import t
-from .context import GradingUnavailable, ProblemContext, zero
-from .formula import Env, Formula, seeded_draw
+from dualmech.kinematics import t
+from dualmech.grade.context import GradingUnavailable, ProblemContext, zero
+from dualmech.grade.formula import Env, Formula, seeded_draw
 
 __all__ = ["TermTable", "term_table", "equation_targets", "expression_tables",
            "coefficient_env", "state_symbols", "MODES", "answer_coordinates"]

@@ -31,9 +31,9 @@ from typing import Sequence
 
 import sympy as sp
 
-from ..equations import state_symbols
-from ..kinematics import t as TIME
-from .parser import GREEK
+from dualmech.equations import state_symbols
+from dualmech.kinematics import t as TIME
+from dualmech.grade.parser import GREEK
 
 __all__ = ["Ref", "Vocabulary", "UnknownName", "symbol_table"]
 

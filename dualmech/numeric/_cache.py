@@ -25,7 +25,7 @@ from typing import Callable, Sequence
 
 import sympy as sp
 
-from ..caches import cache_dir
+from dualmech.caches import cache_dir
 
 __all__ = ["cache_dir", "digest", "load_module", "private_dir"]
 

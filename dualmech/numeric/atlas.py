@@ -40,9 +40,9 @@ from typing import Sequence
 
 import numpy as np
 
-from ..notation import mathtext
-from .regimes import STIFF_SCENES, chaos, dae_drift, linearisation, stiffness
-from .singularities import GARBAGE, KAPPA_LIMIT, PROBES, probe, scan
+from dualmech.notation import mathtext
+from dualmech.numeric.regimes import STIFF_SCENES, chaos, dae_drift, linearisation, stiffness
+from dualmech.numeric.singularities import GARBAGE, KAPPA_LIMIT, PROBES, probe, scan
 
 __all__ = ["Atlas", "atlas", "SECTIONS", "CHAOS_STATES"]
 
@@ -165,8 +165,8 @@ def _stiff(problem):
 
 def _driven(problem) -> str | None:
     """Why the reference model is periodically driven (its period), or ``None``."""
-    from .floquet import NotDriven, forcing_period
-    from .simulation import problem_parameters
+    from dualmech.numeric.floquet import NotDriven, forcing_period
+    from dualmech.numeric.simulation import problem_parameters
     try:
         period = forcing_period(problem.model(problem.reference), problem_parameters(problem))
     except NotDriven:
@@ -189,13 +189,13 @@ def _chaos(problem):
     ref = problem.model(problem.reference)
     if ref.n < 2:
         raise _NotApplicable("one degree of freedom: no chaos")
-    from .energy import conservative_reason
-    from .simulation import problem_parameters
+    from dualmech.numeric.energy import conservative_reason
+    from dualmech.numeric.simulation import problem_parameters
     why = conservative_reason(ref, problem_parameters(problem))
     if why is not None:
         raise _NotApplicable(f"the reference model does not conserve energy ({why}); the "
                              "agreement study needs a conservative motion")
-    from .horizon import horizons
+    from dualmech.numeric.horizon import horizons
     y0 = CHAOS_STATES.get(problem.name)
     try:
         agreement = chaos(problem, y0=y0)
@@ -206,7 +206,7 @@ def _chaos(problem):
 
 
 def _floquet(problem):
-    from .floquet import NotDriven, floquet
+    from dualmech.numeric.floquet import NotDriven, floquet
     try:
         return floquet(problem)
     except NotDriven as exc:
@@ -219,7 +219,7 @@ _RUN = {"singularities": _singularities, "dae_drift": _dae, "stiffness": _stiff,
 
 # -- charts ------------------------------------------------------------------------------------
 def _chart_singularities(results, stem: Path) -> list[Path]:
-    from .charts import panels, save
+    from dualmech.numeric.charts import panels, save
     s = results[0]
     fig, axes = panels(len(s.curves), f"{s.problem}: degeneracy of each formulation "
                        "along each coordinate (others at the initial state)", height=2.6,
@@ -244,7 +244,7 @@ ROUNDING = 1e3 * float(np.finfo(float).eps)
 
 
 def _chart_drift(d, stem: Path) -> list[Path]:
-    from .charts import panels, save
+    from dualmech.numeric.charts import panels, save
     fig, (ax,) = panels(1, f"{d.problem}: constraint drift of {d.model}, {d.method} at rtol "
                         f"{d.rtol:g}", height=3.2)
     flat = []
@@ -271,7 +271,7 @@ def _chart_drift(d, stem: Path) -> list[Path]:
 
 
 def _chart_stiffness(s, stem: Path) -> list[Path]:
-    from .charts import METHOD_COLORS, panels, save
+    from dualmech.numeric.charts import METHOD_COLORS, panels, save
     fig, axes = panels(2, f"{s.problem}: stiffness in {mathtext(s.parameter)} (declared "
                        f"{s.declared[0]:g}-{s.declared[1]:g} {s.unit}), rtol {s.rtol:g}",
                        height=2.8)
@@ -296,7 +296,7 @@ def _chart_stiffness(s, stem: Path) -> list[Path]:
 
 
 def _chart_linear(lin, stem: Path) -> list[Path]:
-    from .charts import panels, save
+    from dualmech.numeric.charts import panels, save
     fig, (ax,) = panels(1, f"{lin.problem}: small-oscillation model against the nonlinear "
                         "one, over one period", height=3.4)
     ax.plot(lin.amplitudes, lin.errors, marker="o", markersize=3)
@@ -314,7 +314,7 @@ def _chart_linear(lin, stem: Path) -> list[Path]:
 
 
 def _chart_chaos(results, stem: Path) -> list[Path]:
-    from .charts import panels, save
+    from dualmech.numeric.charts import panels, save
     c, h = (results + [None])[:2] if isinstance(results, list) else (results, None)
     fig, (ax,) = panels(1, f"{c.problem}: how long a chaotic run stays right", height=3.4)
     x = [-np.log(r["rtol"]) for r in c.rows]
@@ -342,8 +342,8 @@ def _chart_chaos(results, stem: Path) -> list[Path]:
 
 
 def _chart_floquet(fl, stem: Path) -> list[Path]:
-    from .charts import panels, save
-    from .mathieu import draw_chart
+    from dualmech.numeric.charts import panels, save
+    from dualmech.numeric.mathieu import draw_chart
     points = {f"{_orbit(o)}: {'stable' if o.stable else 'unstable'}": o.mathieu
               for o in fl.orbits if o.mathieu is not None}
     count = 3 if points else 1

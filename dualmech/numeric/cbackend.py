@@ -34,8 +34,8 @@ import sysconfig
 import tempfile
 from pathlib import Path
 
-from . import codegen
-from ._cache import cache_dir, private_dir
+from dualmech.numeric import codegen
+from dualmech.numeric._cache import cache_dir, private_dir
 
 __all__ = ["c_source", "compiler", "load"]
 

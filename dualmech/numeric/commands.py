@@ -157,8 +157,8 @@ def _repeats(text: str) -> int:
 
 
 def _chart(args) -> int:
-    from ..progress import progress
-    from .workprecision import STEPS, TOLERANCES, work_precision
+    from dualmech.progress import progress
+    from dualmech.numeric.workprecision import STEPS, TOLERANCES, work_precision
     if args.all and args.names:
         raise _Usage("give problem names or --all, not both.")
     if not args.all and not args.names:
@@ -194,7 +194,7 @@ def _chart(args) -> int:
 
 
 def _atlas(args) -> int:
-    from .atlas import SECTIONS, atlas
+    from dualmech.numeric.atlas import SECTIONS, atlas
     bad = [s for s in (args.sections or []) if s not in SECTIONS]
     if bad:
         raise _Usage(f"unknown section(s) {', '.join(bad)}; choose from {', '.join(SECTIONS)}.")
@@ -211,7 +211,7 @@ def _atlas(args) -> int:
 
 
 def _fidelity(args) -> int:
-    from .fidelity import has_ladder, ladder
+    from dualmech.numeric.fidelity import has_ladder, ladder
     p = _problem(args.name)
     if not has_ladder(p):
         raise _Usage(f"`{p.name}` has no fidelity ladder: no simpler model in the sources and "

@@ -30,9 +30,9 @@ from typing import Mapping, Sequence
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from ..dimensions import ANGLE, reduce
-from .model import NumericModel, SingularityError
-from .simulation import default_initial_state, direct_models, problem_parameters
+from dualmech.dimensions import ANGLE, reduce
+from dualmech.numeric.model import NumericModel, SingularityError
+from dualmech.numeric.simulation import default_initial_state, direct_models, problem_parameters
 
 __all__ = ["UNILATERAL", "ContactBreak", "ContactReport", "unilateral_of", "watch",
            "scene_span", "SceneSpan"]

@@ -37,10 +37,10 @@ from typing import Mapping, Sequence
 import numpy as np
 import sympy as sp
 
-from ..equations import EquationSet, ModelError, from_plain, state_symbols
-from ..kinematics import t
-from .energy import dynamic_rows, identically_zero
-from .model import NumericModel, StateFunction
+from dualmech.equations import EquationSet, ModelError, from_plain, state_symbols
+from dualmech.kinematics import t
+from dualmech.numeric.energy import dynamic_rows, identically_zero
+from dualmech.numeric.model import NumericModel, StateFunction
 
 __all__ = ["Constraints", "ConstrainedModel", "constraints_of", "index1_equations",
            "ALPHA", "BETA", "STABILISATIONS", "DAE_SOLVED", "BAUMGARTE_GAINS"]

@@ -45,8 +45,8 @@ from typing import Sequence
 
 import numpy as np
 
-from ..equations import ModelError
-from .integrators import Run
+from dualmech.equations import ModelError
+from dualmech.numeric.integrators import Run
 
 __all__ = ["DAE_FORMS", "DAE_METHODS", "IDASolver"]
 

@@ -40,11 +40,11 @@ from typing import Mapping
 import numpy as np
 import sympy as sp
 
-from ..equations import EquationSet, ModelError, from_plain, state_symbols
-from ..exact import ExactForm, is_zero
-from ..kinematics import t
-from ..verify.world import Undecidable
-from .model import StateFunction
+from dualmech.equations import EquationSet, ModelError, from_plain, state_symbols
+from dualmech.exact import ExactForm, is_zero
+from dualmech.kinematics import t
+from dualmech.verify.world import Undecidable
+from dualmech.numeric.model import StateFunction
 
 __all__ = ["EnergyFunction", "conservative_reason", "dynamic_rows", "identically_zero"]
 
@@ -135,7 +135,7 @@ def _exact_values(eqs: EquationSet, params: Mapping | None) -> tuple:
     """The parameter values as exact numbers (a float's exact binary value), sorted pairs."""
     if not params:
         return ()
-    from .model import parameters_of
+    from dualmech.numeric.model import parameters_of
     symbols = parameters_of(eqs.equations, eqs.unknowns)
     by_name = {s.name: s for s in symbols}
     out = {}

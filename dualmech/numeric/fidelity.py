@@ -38,13 +38,13 @@ from typing import Callable
 
 import numpy as np
 
-from ..notation import mathtext
-from .contacts import scene_span
-from .formulations import formulations
-from .integrators import integrate
-from .model import NumericModel
-from .regimes import stable_equilibrium, jacobian
-from .simulation import default_initial_state, direct_models, problem_parameters
+from dualmech.notation import mathtext
+from dualmech.numeric.contacts import scene_span
+from dualmech.numeric.formulations import formulations
+from dualmech.numeric.integrators import integrate
+from dualmech.numeric.model import NumericModel
+from dualmech.numeric.regimes import stable_equilibrium, jacobian
+from dualmech.numeric.simulation import default_initial_state, direct_models, problem_parameters
 
 __all__ = ["Rung", "Ladder", "ladder", "LADDERS", "has_ladder"]
 
@@ -137,7 +137,7 @@ class Ladder:
                            if k not in ("times", "error_curve")} for r in self.rungs]}
 
     def write(self, out_dir: Path) -> list[Path]:
-        from .charts import panels, save
+        from dualmech.numeric.charts import panels, save
         out_dir = Path(out_dir)
         out_dir.mkdir(parents=True, exist_ok=True)
         stem = out_dir / f"{self.scene}_fidelity"

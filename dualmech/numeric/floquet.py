@@ -36,8 +36,8 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 from scipy.optimize import root
 
-from ..kinematics import t
-from .simulation import problem_parameters
+from dualmech.kinematics import t
+from dualmech.numeric.simulation import problem_parameters
 
 __all__ = ["forcing_period", "monodromy", "PeriodicOrbit", "Floquet", "floquet",
            "mathieu_coefficients", "NotDriven"]
@@ -226,8 +226,8 @@ def floquet(problem, params: Mapping | None = None, rtol: float = RTOL) -> Floqu
     state, the middle of the declared ranges and each angle turned half over; each is made
     exactly periodic by shooting.  Raises :class:`NotDriven` for an autonomous model.
     """
-    from ..dimensions import ANGLE
-    from .formulations import formulations
+    from dualmech.dimensions import ANGLE
+    from dualmech.numeric.formulations import formulations
     values = problem_parameters(problem, params)
     ref = problem.model(problem.reference)
     period = forcing_period(ref, values)

@@ -32,16 +32,16 @@ from typing import Callable, Mapping, Sequence
 
 import numpy as np
 
-from .._expr import as_expr
-from ..equations import EquationSet, ModelError
-from ..kinematics import t
-from .dae import STABILISATIONS, ConstrainedModel, constraints_of
-from .daesolve import DAE_FORMS, IDASolver
-from .energy import EnergyFunction, conservative_reason, dynamic_rows
-from .integrators import Run, integrate
-from .model import NumericModel, StateFunction
-from .simulation import default_initial_state, problem_parameters
-from .stepping import projected_run
+from dualmech._expr import as_expr
+from dualmech.equations import EquationSet, ModelError
+from dualmech.kinematics import t
+from dualmech.numeric.dae import STABILISATIONS, ConstrainedModel, constraints_of
+from dualmech.numeric.daesolve import DAE_FORMS, IDASolver
+from dualmech.numeric.energy import EnergyFunction, conservative_reason, dynamic_rows
+from dualmech.numeric.integrators import Run, integrate
+from dualmech.numeric.model import NumericModel, StateFunction
+from dualmech.numeric.simulation import default_initial_state, problem_parameters
+from dualmech.numeric.stepping import projected_run
 
 __all__ = ["Formulation", "formulations", "state_scales", "outside_parameters"]
 
@@ -123,7 +123,7 @@ class Formulation:
     def methods(self, candidates: Sequence[str]) -> list[str]:
         """The methods of ``candidates`` that can integrate this form (``"IDA"`` for the
         DAE-solved forms, the projectable scipy steppers for projection)."""
-        from .stepping import PROJECTABLE
+        from dualmech.numeric.stepping import PROJECTABLE
         if self.dae_solver is not None:
             return [m for m in candidates if m == "IDA"]
         if self.stabilisation == "projection":

@@ -116,7 +116,7 @@ def horizons(problem, y0=None, tolerances: Sequence[float] = tuple(10.0 ** -k fo
              duration: float = 15.0, threshold: float = 0.01, method: str = "DOP853",
              samples: int = 3001, lyapunov_time: float = 60.0) -> Horizons:
     """The horizons of the module docstring for the problem's reference formulation."""
-    from .formulations import formulations
+    from dualmech.numeric.formulations import formulations
     f = formulations(problem, y0=y0, models=[problem.reference])[0][0]
     te = np.linspace(0.0, duration, samples)
     ref = reference(f, (0.0, duration), te, threshold)

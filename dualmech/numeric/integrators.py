@@ -32,7 +32,7 @@ from typing import Callable, Sequence
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from .model import SingularityError
+from dualmech.numeric.model import SingularityError
 
 __all__ = ["Run", "integrate", "METHODS", "SCIPY_METHODS", "EXPLICIT", "IMPLICIT",
            "STRUCTURE_PRESERVING", "SYMPLECTIC", "IntegrationError"]
@@ -118,7 +118,7 @@ def integrate(fun: Callable, t_span: Sequence[float], y0, method: str, *,
     counted = _Counted(fun)
     start = _time.process_time()
     if method in SYMPLECTIC:
-        from . import symplectic
+        from dualmech.numeric import symplectic
         if hamiltonian is None or step is None:
             raise ValueError(f"`{method}` needs `hamiltonian` (an EnergyFunction) and `step`.")
         if events or projector is not None:

@@ -33,11 +33,11 @@ import numpy as np
 import sympy as sp
 from scipy.linalg.lapack import dgesv
 
-from .._expr import as_expr
-from ..equations import EquationSet, ModelError, state_symbols, to_plain
-from ..kinematics import t
-from . import cbackend, codegen
-from ._cache import digest, load_module
+from dualmech._expr import as_expr
+from dualmech.equations import EquationSet, ModelError, state_symbols, to_plain
+from dualmech.kinematics import t
+from dualmech.numeric import cbackend, codegen
+from dualmech.numeric._cache import digest, load_module
 
 __all__ = ["NumericModel", "SingularityError", "StateFunction"]
 

@@ -33,10 +33,10 @@ import numpy as np
 from scipy.integrate import RK45, DOP853, solve_ivp
 from scipy.optimize import brentq, root
 
-from ..dimensions import STIFFNESS, reduce
-from .formulations import formulations
-from .integrators import EXPLICIT
-from .simulation import problem_parameters
+from dualmech.dimensions import STIFFNESS, reduce
+from dualmech.numeric.formulations import formulations
+from dualmech.numeric.integrators import EXPLICIT
+from dualmech.numeric.simulation import problem_parameters
 
 __all__ = ["stability_radius", "stable_equilibrium", "jacobian", "Stiffness", "stiffness",
            "STIFF_SCENES",
@@ -265,7 +265,7 @@ def linearisation(problem, levels: Sequence[float] = (0.01, 0.1), params: Mappin
         j = next((i for i, e in enumerate(errs) if e > lv), None)
         marks[lv] = None if j in (None, 0) else \
             float(brentq(lambda a: np.log(error(a) / lv), amps[j - 1], amps[j], xtol=1e-12))
-    from .units import unit as unit_of
+    from dualmech.numeric.units import unit as unit_of
     return Linearisation(problem.name, [round(float(x), 9) for x in q_eq], w,
                          [round(float(x), 6) + 0.0 for x in mode], info.name, unit_of(info.dimension),
                          amps, errs, marks, te)
@@ -378,7 +378,7 @@ class Drift:
 def dae_drift(problem, model: str | None = None, duration: float = 20.0, method: str = "RK45",
               rtol: float = 1e-6, samples: int = 401) -> Drift:
     """The drift of each stabilisation of a multiplier model (see the module docstring)."""
-    from .units import work_conjugate_unit
+    from dualmech.numeric.units import work_conjugate_unit
     forms = [f for f in formulations(problem)[0] if f.kind == "dae"
              and (model is None or f.model.name == model)]
     if not forms:

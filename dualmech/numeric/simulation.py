@@ -25,8 +25,8 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from ..kinematics import t
-from .model import NumericModel, SingularityError
+from dualmech.kinematics import t
+from dualmech.numeric.model import NumericModel, SingularityError
 
 __all__ = ["Trajectory", "simulate", "reactions_at", "reactions_along", "direct_models",
            "default_initial_state", "problem_parameters", "right_hand_side", "check_t_span"]

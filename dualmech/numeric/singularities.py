@@ -40,13 +40,13 @@ import numpy as np
 from scipy.integrate import BDF, DOP853, LSODA, RK45, Radau
 from scipy.optimize import minimize_scalar
 
-from ..dimensions import ANGLE
-from .formulations import Formulation, formulations
-from .integrators import Run
-from .model import NumericModel, SingularityError, StateFunction
-from .horizon import state_sizes
-from .simulation import problem_parameters
-from .units import unit
+from dualmech.dimensions import ANGLE
+from dualmech.numeric.formulations import Formulation, formulations
+from dualmech.numeric.integrators import Run
+from dualmech.numeric.model import NumericModel, SingularityError, StateFunction
+from dualmech.numeric.horizon import state_sizes
+from dualmech.numeric.simulation import problem_parameters
+from dualmech.numeric.units import unit
 
 __all__ = ["KAPPA_LIMIT", "GARBAGE", "WRONG", "Scan", "SingularPoint", "ProbeRun", "Probe",
            "scan", "probe", "PROBES", "degeneracy", "verdict_word"]
@@ -398,7 +398,7 @@ _SOLVERS = {"RK45": RK45, "DOP853": DOP853, "Radau": Radau, "BDF": BDF, "LSODA":
 def _guarded(f: Formulation, method: str, span, te, rtol, kappa) -> Run:
     """Step ``method`` by hand; stop at the last accepted state where the degeneracy passes
     :data:`GARBAGE` or the next step cannot evaluate the model."""
-    from .integrators import _Counted
+    from dualmech.numeric.integrators import _Counted
     fun = _Counted(f.rhs)
     kw = {"vectorized": True} if method in ("Radau", "BDF") else {}
     start = time.process_time()
@@ -444,7 +444,7 @@ def _guarded(f: Formulation, method: str, span, te, rtol, kappa) -> Run:
 
 def _switch(f, ref, run, te, truth, rtol, ref_kappa, sizes) -> ProbeRun:
     """Continue a guarded run in the reference form from where the guard stopped it."""
-    from .integrators import integrate
+    from dualmech.numeric.integrators import integrate
     n = ref.n
     lifted = _lift(f, ref, ref.y0, run.y)
     start = lifted[:, -1] if lifted.shape[1] else ref.y0

@@ -54,7 +54,7 @@ def _grid(t_span, h: float, max_steps: int, name: str) -> tuple[float, float, in
 
 
 def _run(name, t0, h, qs, vs, t_eval, calls, steps, message=""):
-    from .integrators import Run
+    from dualmech.numeric.integrators import Run
     T = t0 + h * np.arange(len(qs))
     Y = np.vstack([np.array(qs).T, np.array(vs).T])
     y = _lagrange4(T, Y, np.asarray(t_eval, dtype=float))
@@ -229,7 +229,7 @@ def constraint_functions(constrained, values) -> tuple:
     """``(g, G)`` for :func:`rattle` from a
     :class:`~dualmech.numeric.dae.ConstrainedModel` at parameter ``values``: the residuals
     ``g(q)`` it keeps and their exact gradients ``G(q)`` (generated code)."""
-    from .model import StateFunction
+    from dualmech.numeric.model import StateFunction
     c = constrained.constraints
     k, n = len(c.expressions), len(c.coordinates)
     grads = StateFunction([d for row in c.gradients for d in row], c.coordinates, values)

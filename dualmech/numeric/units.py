@@ -8,7 +8,7 @@ Example
 """
 from __future__ import annotations
 
-from ..dimensions import (ACCELERATION, ANGLE, DAMPING, ENERGY, FORCE, FREQUENCY, INERTIA,
+from dualmech.dimensions import (ACCELERATION, ANGLE, DAMPING, ENERGY, FORCE, FREQUENCY, INERTIA,
                           LENGTH, MASS, STIFFNESS, TIME, VELOCITY, as_dimension, reduce)
 
 __all__ = ["unit", "rate_unit", "work_conjugate_unit"]

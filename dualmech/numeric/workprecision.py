@@ -55,12 +55,12 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
-from .contacts import scene_span
-from .dae import BAUMGARTE_GAINS, DAE_SOLVED, STABILISATIONS
-from .daesolve import DAE_METHODS
-from .formulations import Formulation, formulations
-from .integrators import METHODS, Run
-from .units import work_conjugate_unit
+from dualmech.numeric.contacts import scene_span
+from dualmech.numeric.dae import BAUMGARTE_GAINS, DAE_SOLVED, STABILISATIONS
+from dualmech.numeric.daesolve import DAE_METHODS
+from dualmech.numeric.formulations import Formulation, formulations
+from dualmech.numeric.integrators import METHODS, Run
+from dualmech.numeric.units import work_conjugate_unit
 
 __all__ = ["RunResult", "WorkPrecision", "work_precision", "TOLERANCES", "STEPS", "MEASURES"]
 
@@ -148,7 +148,7 @@ class WorkPrecision:
         return [stem.with_suffix(".csv"), stem.with_suffix(".json")] + self.chart(stem)
 
     def chart(self, stem: Path) -> list[Path]:
-        from .charts import METHOD_COLORS, panels, save, style_of
+        from dualmech.numeric.charts import METHOD_COLORS, panels, save, style_of
         measures = [(k, label.format(drift_unit=self.drift_unit)) for k, label in MEASURES
                     if any(np.isfinite(getattr(r, k)) for r in self.runs)]
         fig, axes = panels(2 * len(measures), f"{self.problem}: work against precision, "
@@ -198,7 +198,7 @@ def _tag(r: "RunResult") -> str:
 
 def _legends(fig, wp: WorkPrecision, forms) -> None:
     from matplotlib.lines import Line2D
-    from .charts import METHOD_COLORS, style_of
+    from dualmech.numeric.charts import METHOD_COLORS, style_of
     methods = list(dict.fromkeys(r.method for r in wp.runs))
     same = {r.formulation: r.same_as.split(" x ")[0] for r in wp.runs if r.same_as}
     h1 = [Line2D([], [], color=METHOD_COLORS.get(m, "k"), label=m) for m in methods]

@@ -23,8 +23,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Sequence
 
-from .charts import Chart, trajectory_chart
-from .pages import AUDIENCES, check_audience, html_page, markdown_page
+from dualmech.report.charts import Chart, trajectory_chart
+from dualmech.report.pages import AUDIENCES, check_audience, html_page, markdown_page
 
 __all__ = ["write_report", "Written", "Chart", "trajectory_chart", "AUDIENCES"]
 
@@ -55,7 +55,7 @@ def write_report(comparisons: Sequence, out_dir: Path, duration: float = 5.0,
     in every expression of both pages.  Raises ``OSError`` when ``out_dir`` cannot be written.
     """
     check_audience(audience)
-    from ..notation import check_notation
+    from dualmech.notation import check_notation
     check_notation(notation)
     if not duration > 0:
         raise ValueError(f"`duration` must be positive, got {duration!r}.")
@@ -63,7 +63,7 @@ def write_report(comparisons: Sequence, out_dir: Path, duration: float = 5.0,
     out.mkdir(parents=True, exist_ok=True)
     comparisons = list(comparisons)
     charts = {}
-    from ..progress import progress as _progress   # a bar on a terminal, lines otherwise
+    from dualmech.progress import progress as _progress   # a bar on a terminal, lines otherwise
     for c in _progress(comparisons, "charts", quiet=not progress,
                        label=lambda c: c.problem.name):
         charts[c.problem.name] = trajectory_chart(c.problem, out, duration)

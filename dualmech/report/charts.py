@@ -36,10 +36,10 @@ import html
 import numpy as np
 import sympy as sp
 
-from .mathml import inline
-from ..dimensions import ANGLE
-from ..notation import mathtext, symbol_text
-from ..numeric.units import unit
+from dualmech.report.mathml import inline
+from dualmech.dimensions import ANGLE
+from dualmech.notation import mathtext, symbol_text
+from dualmech.numeric.units import unit
 
 __all__ = ["Chart", "trajectory_chart", "group_curves"]
 
@@ -66,7 +66,7 @@ class Chart:
 
     def _repr_html_(self) -> str:
         """Jupyter: the picture and its one caption."""
-        from ..jupyter import chart_html
+        from dualmech.jupyter import chart_html
         return chart_html(self)
 
 
@@ -93,9 +93,9 @@ def _panels(entries, kind_of):
 
 def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400) -> Chart:
     """Simulate ``problem`` and draw its chart into ``out_dir/NAME_reactions.{png,svg}``."""
-    from ..numeric.simulation import simulate
-    from ..numeric.charts import pyplot, save
-    from ..numeric.contacts import scene_span
+    from dualmech.numeric.simulation import simulate
+    from dualmech.numeric.charts import pyplot, save
+    from dualmech.numeric.contacts import scene_span
     chart = Chart()
     try:
         span = scene_span(problem, duration)

@@ -22,7 +22,7 @@ from __future__ import annotations
 import html
 import re
 
-from .. import notation
+from dualmech import notation
 
 __all__ = ["expression", "equation", "inline", "sentence", "dimension", "text_html"]
 

@@ -25,9 +25,9 @@ from pathlib import Path
 
 import sympy as sp
 
-from . import mathml
-from ..notation import check_notation
-from ..sources import source_name
+from dualmech.report import mathml
+from dualmech.notation import check_notation
+from dualmech.sources import source_name
 
 __all__ = ["markdown_page", "html_page", "summary_rows", "SUMMARY_HEADERS", "AUDIENCES",
            "check_audience"]
@@ -228,7 +228,7 @@ def _equations_html(c, notation: str) -> list[str]:
 def _shortest(expr, limits=None):
     """``expr`` or its tidied form (:func:`~dualmech.verify.display.tidy`, within the display
     budget), whichever is shorter: ``m q1''(2 sin^2 a + 2 cos^2 a)/2`` becomes ``m q1''``."""
-    from ..verify.display import OverBudget, tidy
+    from dualmech.verify.display import OverBudget, tidy
     try:
         short = tidy(expr, limits)
     except OverBudget:

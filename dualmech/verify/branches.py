@@ -39,8 +39,8 @@ from itertools import product
 import sympy as sp
 from mpmath import iv
 
-from .interval import Ambiguous, IntervalProgram, Unsupported, domain_of, real_sample
-from .world import NotExact, World
+from dualmech.verify.interval import Ambiguous, IntervalProgram, Unsupported, domain_of, real_sample
+from dualmech.verify.world import NotExact, World
 
 __all__ = ["Case", "find_cases", "regions", "MAX_CONDITIONS", "MAX_CASES"]
 

@@ -17,13 +17,13 @@ from typing import Sequence
 import symengine as se
 import sympy as sp
 
-from ..equations import EquationSet, ModelError, Rows
-from ..sources import source_fields, source_name
-from .display import Budget, OverBudget, budget, dotted, solve_display
-from .explain import Mismatch, explain_model, explain_reaction
-from .published import PublishedVerdict, check_published
-from .sampling import Context
-from .verdicts import Judgement, judge
+from dualmech.equations import EquationSet, ModelError, Rows
+from dualmech.sources import source_fields, source_name
+from dualmech.verify.display import Budget, OverBudget, budget, dotted, solve_display
+from dualmech.verify.explain import Mismatch, explain_model, explain_reaction
+from dualmech.verify.published import PublishedVerdict, check_published
+from dualmech.verify.sampling import Context
+from dualmech.verify.verdicts import Judgement, judge
 
 __all__ = ["Comparison", "PairResult", "claims_of", "compare", "compare_models", "compare_reactions",
            "reaction_pairs", "recover_reactions", "solve_with_static", "METHOD_NAMES",
@@ -37,7 +37,7 @@ METHOD_NAMES = {
 
 def method_name(method: str) -> str:
     """The human name of a verdict method (the evaluation module may add its own)."""
-    from .. import exact
+    from dualmech import exact
     names = dict(METHOD_NAMES)
     names.update(getattr(exact, "METHOD_NAMES", {}))
     return names.get(method, method)
@@ -122,7 +122,7 @@ class Comparison:
     @property
     def dimension_issues(self) -> list[str]:
         """The dimension audit's sentences as plain text, terms between backticks."""
-        from ..dimensions import quoted
+        from dualmech.dimensions import quoted
         return [quoted(x) for x in self.dimension_audit]
 
     @property
@@ -214,7 +214,7 @@ class Comparison:
         """The readable report, every expression in textbook notation: letters as a worked
         solution writes them, rates as dots (``θ̈``) or, with ``notation="primes"``, primes
         (``θ′′``), powers as ``^`` and products as spaces -- no Python syntax."""
-        from ..notation import check_notation, plain, sentence, symbol_text
+        from dualmech.notation import check_notation, plain, sentence, symbol_text
         check_notation(notation)
         pr = self.problem
         ref = pr.model(pr.reference)
@@ -270,7 +270,7 @@ class Comparison:
 
     def _repr_html_(self) -> str:
         """Jupyter: verdict, accelerations, reactions and printed answers, typeset."""
-        from ..jupyter import comparison_html
+        from dualmech.jupyter import comparison_html
         return comparison_html(self)
 
     def to_dict(self) -> dict:
@@ -305,7 +305,7 @@ class Comparison:
     def _machine(self) -> dict:
         """The expressions of :meth:`to_dict` in a form parsers read: ``theta_d``, ``theta_dd``
         for the rates (the grader's parser and sympy's ``parse_expr`` both take it)."""
-        from ..notation import machine
+        from dualmech.notation import machine
         pr = self.problem
         coords = pr.model(pr.reference).coordinates
         return {"notation": "q_d = dq/dt, q_dd = d2q/dt2; ** is a power",
@@ -365,7 +365,7 @@ def _check_problem(problem) -> None:
     """A string (a catalogue name) or anything else that is not a problem: a TypeError that
     shows the fix.  ``compare`` does not look names up itself: the catalogue sits above the
     verifier in the pipeline, and a name may also be a file or ``module:Class``."""
-    from ..problem import Problem
+    from dualmech.problem import Problem
     if isinstance(problem, str):
         raise TypeError(f"`problem` must be a Problem, got the string {problem[:60]!r}; "
                         f"look it up first: compare(dualmech.problems.get({problem[:60]!r})).")
@@ -398,7 +398,7 @@ def _reaction_dimension_issues(problem) -> list[str]:
     In each equation the reaction's coefficient times its declared dimension must have the
     dimension of the rest of the equation; decided from the structure, without solving.
     """
-    from ..dimensions import dimension_reader, format_dimension, reduce
+    from dualmech.dimensions import dimension_reader, format_dimension, reduce
     dims = problem.dimensions()
     declared = problem.reaction_info()
     out, seen = [], set()

@@ -28,10 +28,10 @@ import itertools
 
 import sympy as sp
 
-from .._expr import as_expr
-from ..equations import EquationSet, state_symbols, to_plain
-from ..kinematics import t
-from .display import Budget, OverBudget, budget
+from dualmech._expr import as_expr
+from dualmech.equations import EquationSet, state_symbols, to_plain
+from dualmech.kinematics import t
+from dualmech.verify.display import Budget, OverBudget, budget
 
 __all__ = ["OwnCoordinates"]
 

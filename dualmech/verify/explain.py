@@ -16,13 +16,13 @@ import random
 import mpmath
 import sympy as sp
 
-from ..equations import from_plain
-from ..exact import is_zero
-from ..kinematics import t
-from . import linalg as la
-from .coordinates import OwnCoordinates
-from .display import Budget, OverBudget, dotted, solve_display, tidy
-from .sampling import Context, System, solve_model
+from dualmech.equations import from_plain
+from dualmech.exact import is_zero
+from dualmech.kinematics import t
+from dualmech.verify import linalg as la
+from dualmech.verify.coordinates import OwnCoordinates
+from dualmech.verify.display import Budget, OverBudget, dotted, solve_display, tidy
+from dualmech.verify.sampling import Context, System, solve_model
 
 __all__ = ["Mismatch", "explain_model", "explain_reaction", "residuals_at"]
 
@@ -75,7 +75,7 @@ class Mismatch:
     def text(self, notation: str = "dots") -> str:
         """The readable form in textbook notation: ``θ̈``, powers as ``^`` (``θ′′`` with
         ``notation="primes"``)."""
-        from ..notation import plain, symbol_text
+        from dualmech.notation import plain, symbol_text
         show = lambda x: x if isinstance(x, str) else plain(x, notation)  # noqa: E731
         lines = [f"{self.model} [{self.equation}]: {self.reason}"]
         residual = self._resolved()

@@ -33,8 +33,8 @@ try:   # FLINT's exact linear algebra, when installed (a dependency; the fallbac
 except ImportError:  # pragma: no cover - platforms without python-flint wheels
     flint = None
 
-from .interval import to_interval
-from .surd import Surd
+from dualmech.verify.interval import to_interval
+from dualmech.verify.surd import Surd
 
 __all__ = ["rref", "rref_info", "rank", "solve_square", "matvec", "residual_after_least_squares",
            "kind_of"]

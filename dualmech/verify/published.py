@@ -22,14 +22,14 @@ import mpmath
 import symengine as se
 import sympy as sp
 
-from .._expr import as_expr
-from ..dimensions import audit
-from ..equations import EquationSet, ModelError, state_symbols, to_plain, to_plain_se
-from ..exact import MP_DIGITS, is_zero
-from ..kinematics import t
-from .errors import Undecidable
-from .display import Budget, OverBudget, dotted, ops_within, solve_display, tidy
-from .sampling import MAX_ATTEMPTS, Context, Sampler, System, shared_manifold, solve_model
+from dualmech._expr import as_expr
+from dualmech.dimensions import audit
+from dualmech.equations import EquationSet, ModelError, state_symbols, to_plain, to_plain_se
+from dualmech.exact import MP_DIGITS, is_zero
+from dualmech.kinematics import t
+from dualmech.verify.errors import Undecidable
+from dualmech.verify.display import Budget, OverBudget, dotted, ops_within, solve_display, tidy
+from dualmech.verify.sampling import MAX_ATTEMPTS, Context, Sampler, System, shared_manifold, solve_model
 
 __all__ = ["PublishedVerdict", "check_published", "closest_equation"]
 
@@ -66,14 +66,14 @@ class PublishedVerdict:
     def text(self, notation: str = "dots") -> str:
         """Why the answer is wrong, in textbook text (``m l θ̇^2``; ``θ′`` with
         ``notation="primes"``): the form a report and ``dualmech check`` show."""
-        from ..notation import sentence
+        from dualmech.notation import sentence
         return "; ".join(sentence(s, notation) for s in self.parts)
 
     def __repr__(self) -> str:
         return f"PublishedVerdict({self.label!r}, {self.verdict!r})"
 
     def to_dict(self) -> dict:
-        from .check import method_name   # (check imports this module)
+        from dualmech.verify.check import method_name   # (check imports this module)
         return {"label": self.label, "where": self.where, "verdict": self.verdict,
                 "detail": self.detail, "method": method_name(self.method)}
 
@@ -399,7 +399,7 @@ def _detail(problem, pub, which, limits: Budget, shared: _Explaining | None = No
             if near is not None:
                 label, alpha, rest = near
                 # the derived row named in words (never its internal label), typeset
-                from ..notation import equation_words   # (display only: imported when read)
+                from dualmech.notation import equation_words   # (display only: imported when read)
                 row = equation_words(label, problem.reference, ref.coordinates)
                 lines.append((f"{what} is closest to ",)
                              + ((alpha, " \u00d7 ") if alpha != 1 else ()) + row

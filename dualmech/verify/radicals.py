@@ -30,9 +30,9 @@ from fractions import Fraction
 
 import sympy as sp
 
-from .circle import world_values
-from .errors import NotExact, Undecidable
-from .surd import independent, is_square
+from dualmech.verify.circle import world_values
+from dualmech.verify.errors import NotExact, Undecidable
+from dualmech.verify.surd import independent, is_square
 
 __all__ = ["u_rule", "factor_signs", "square_sqrt", "factored_sqrt", "radicals_dependent"]
 
@@ -227,5 +227,5 @@ class _SignOf(sp.Function):
 
 
 def _label(expr, relation):
-    from .world import _Label
+    from dualmech.verify.world import _Label
     return _Label(expr, relation)

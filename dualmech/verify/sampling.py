@@ -16,12 +16,12 @@ from typing import Iterator, Sequence
 import symengine as se
 import sympy as sp
 
-from .._algebra import Bridge, linear_coefficients, to_se, total_derivative
-from .._expr import as_expr
-from ..equations import EquationSet, ModelError, state_symbols
-from ..exact import ExactForm, is_zero
-from ..kinematics import t
-from . import linalg as la
+from dualmech._algebra import Bridge, linear_coefficients, to_se, total_derivative
+from dualmech._expr import as_expr
+from dualmech.equations import EquationSet, ModelError, state_symbols
+from dualmech.exact import ExactForm, is_zero
+from dualmech.kinematics import t
+from dualmech.verify import linalg as la
 
 __all__ = ["Context", "System", "Solution", "solve_model", "same_values", "Sampler",
            "MAX_ATTEMPTS"]

@@ -37,10 +37,10 @@ from typing import Mapping, Sequence
 
 import mpmath
 
-from ..equations import ModelError
-from ..exact import MP_DIGITS, is_zero
-from .errors import Undecidable
-from .sampling import (MAX_ATTEMPTS, Context, Sampler, System, same_values,
+from dualmech.equations import ModelError
+from dualmech.exact import MP_DIGITS, is_zero
+from dualmech.verify.errors import Undecidable
+from dualmech.verify.sampling import (MAX_ATTEMPTS, Context, Sampler, System, same_values,
                        shared_manifold, solve_model)
 
 __all__ = ["Judgement", "ModelFault", "ReactionFault", "judge"]

@@ -37,8 +37,8 @@ from typing import Callable
 
 import sympy as sp
 
-from .errors import NotExact, Undecidable
-from .radicals import factor_signs, factored_sqrt, radicals_dependent, square_sqrt
+from dualmech.verify.errors import NotExact, Undecidable
+from dualmech.verify.radicals import factor_signs, factored_sqrt, radicals_dependent, square_sqrt
 
 __all__ = ["Undecidable", "NotExact", "AtomKey", "World", "analyse", "MAX_MULTIPLE",
            "degree_bound"]

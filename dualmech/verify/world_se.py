@@ -27,7 +27,7 @@ from typing import Sequence
 import symengine as se
 import sympy as sp
 
-from .world import MAX_MULTIPLE, AtomKey, World
+from dualmech.verify.world import MAX_MULTIPLE, AtomKey, World
 
 __all__ = ["analyse_se"]
 

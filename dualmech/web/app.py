@@ -40,14 +40,14 @@ from starlette.requests import Request
 from starlette.responses import (HTMLResponse, JSONResponse, RedirectResponse, Response)
 from starlette.routing import Route
 
-from . import pages
-from .assets import SCRIPT, STYLE
-from .batches import BatchError, BatchRunner, read_upload
-from .catalog import ProblemInfo
-from .guard import RateLimiter, SecurityHeaders, TooLarge, read_body
-from .openapi import SPEC
-from .preview import preview
-from .store import Store
+from dualmech.web import pages
+from dualmech.web.assets import SCRIPT, STYLE
+from dualmech.web.batches import BatchError, BatchRunner, read_upload
+from dualmech.web.catalog import ProblemInfo
+from dualmech.web.guard import RateLimiter, SecurityHeaders, TooLarge, read_body
+from dualmech.web.openapi import SPEC
+from dualmech.web.preview import preview
+from dualmech.web.store import Store
 
 __all__ = ["create_app", "served_problems", "WebLimits"]
 

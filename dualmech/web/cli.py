@@ -71,7 +71,7 @@ def handle(args: argparse.Namespace) -> int:
     if args.workers is not None and args.workers < 1:
         print("dualmech serve: error: `--workers` must be at least 1.", file=sys.stderr)
         return 2
-    from .server import serve
+    from dualmech.web.server import serve
     try:
         serve(args.host, args.port, args.problems, token=args.token, data=args.data,
               workers=args.workers, as_json=args.json)

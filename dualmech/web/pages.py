@@ -106,7 +106,7 @@ def _term(info, text: str, typeset: str | None) -> str:
         return typeset.replace('display="block"', 'display="inline"', 1)
     if info is None:
         return f"<code>{escape(text)}</code>"
-    from .preview import term_mathml
+    from dualmech.web.preview import term_mathml
     return term_mathml(info, text)
 
 

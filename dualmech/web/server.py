@@ -36,7 +36,7 @@ def serve(host: str = "127.0.0.1", port: int = 8000, problems: Sequence[str] | N
     """
     import uvicorn
 
-    from .app import create_app
+    from dualmech.web.app import create_app
     try:
         Path(data).mkdir(parents=True, exist_ok=True)
     except OSError as exc:
