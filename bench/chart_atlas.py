@@ -36,11 +36,11 @@ def main(argv=None) -> int:
     import numpy as np
 
     from dualmech import problems
-    from dualmech.numeric.atlas import atlas
+    from dualmech.numeric.studies.atlas import atlas
     from dualmech.numeric.contacts import scene_span
     from dualmech.numeric.formulations import formulations
     from dualmech.numeric.integrators import SCIPY_METHODS
-    from dualmech.numeric.workprecision import work_precision
+    from dualmech.numeric.studies.workprecision import work_precision
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("names", nargs="*")

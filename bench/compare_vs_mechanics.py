@@ -29,7 +29,7 @@ from sympy.core.cache import clear_cache
 ROOT = Path(__file__).resolve().parent
 sys.path.insert(0, str(ROOT.parent))
 
-from dualmech.compare import compare  # noqa: E402
+from dualmech.verify.check import compare  # noqa: E402
 from dualmech.problems import get  # noqa: E402
 
 

@@ -10,7 +10,7 @@ same on a fast machine and a slow one.  With ``--all`` it also times ``dualmech 
 User time is the process's own plus that of the children it waited for (the grader forks a
 worker per answer: that is counted).  One untimed run of each command comes first (it warms
 the file cache, the byte-code, and the user's cache directory: the parser's tables and the
-problem's prepared grading context, :mod:`dualmech.grade.stored`).  The row "... (first
+problem's prepared grading context, :mod:`dualmech.grade.stored_contexts`).  The row "... (first
 call)" runs the same command with an empty cache directory each time: what the first call
 for a problem costs after an install or a change of code.  The commands run with byte-code
 caching on whatever ``PYTHONDONTWRITEBYTECODE`` says, as an installed package has it (pip

@@ -80,7 +80,7 @@ def full(n: int):
     """What ``dualmech check n_link_pendulum --n N`` does: ``compare`` of the catalogue's chain
     (its three derivations: Newton--Euler, Lagrange, Cartesian coordinates with multipliers)
     and the report it prints."""
-    from dualmech.compare import compare
+    from dualmech.verify.check import compare
     from dualmech.problems import get
 
     c = compare(get("n_link_pendulum", n=n))
@@ -189,7 +189,7 @@ def child(which: str, n: int) -> None:
     import sympy.physics.mechanics  # noqa: F401
     import dualmech.verify.verdicts  # noqa: F401
     import dualmech.problems.n_link_pendulum  # noqa: F401
-    import dualmech.compare  # noqa: F401
+    import dualmech.verify.check  # noqa: F401
     from sympy.core.cache import clear_cache
     if which == "check":
         print(json.dumps({"message": check(n)}))

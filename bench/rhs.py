@@ -33,7 +33,7 @@ import numpy as np
 import sympy as sp
 
 from dualmech import Lagrangian, coordinate, t
-from dualmech.equations import to_plain
+from dualmech.model.equations import to_plain
 from dualmech.numeric import NumericModel
 from dualmech.numeric.cbackend import compiler
 

@@ -87,7 +87,7 @@ def main() -> None:
 
 
 def _jac(f):
-    from dualmech.numeric.regimes import jacobian
+    from dualmech.numeric.studies.regimes import jacobian
     n = f.n
     return jacobian(f.rhs, 0.0, np.zeros(2 * n))
 

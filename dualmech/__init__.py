@@ -7,14 +7,14 @@ The public API, in one list (``__all__``).  Names are imported when first used, 
 from importlib import import_module
 
 _HOME = {
-    "kinematics": ("Frame", "Point", "RelativeMotion", "Vector", "coordinate", "rot_axis",
+    "model.kinematics": ("Frame", "Point", "RelativeMotion", "Vector", "coordinate", "rot_axis",
                    "rot_x", "rot_y", "rot_z", "skew", "t"),
-    "bodies": ("MassProperties", "Particle", "RigidBody", "composite", "cuboid",
+    "model.bodies": ("MassProperties", "Particle", "RigidBody", "composite", "cuboid",
                "parallel_axis", "point_mass", "solid_cylinder", "solid_sphere", "thin_disk",
                "thin_rod"),
-    "equations": ("EquationSet", "ModelError"),
-    "direct": ("NewtonEuler",),
-    "lagrange": ("Lagrangian",),
+    "model.equations": ("EquationSet", "ModelError"),
+    "model.direct": ("NewtonEuler",),
+    "model.lagrange": ("Lagrangian",),
 }
 _WHERE = {name: module for module, names in _HOME.items() for name in names}
 

@@ -16,7 +16,7 @@ The same freezing before a fork (:func:`freeze`) spares a forked grading worker 
 walking, and so copying, its parent's memory; and a module a command may not need at all
 can be loaded on first use (:func:`defer`).
 
-All of this acts only in the program (:func:`dualmech.cli.command` calls
+All of this acts only in the program (:func:`dualmech.cli.main.command` calls
 :func:`as_program`).  A process that calls dualmech's functions and lives on -- tests, a
 notebook, the web server -- keeps the default collector: :func:`load` is a plain import
 there, :func:`defer`, :func:`freeze` and :func:`leave` nothing.
@@ -47,7 +47,7 @@ def as_program() -> None:
 def defer(*modules: str) -> None:
     """In the program, let ``modules`` load when first used instead of when imported: a
     one-answer ``dualmech grade`` whose problem's grading context is stored
-    (:mod:`dualmech.grade.stored`) never uses symengine, and so never pays for it and for the
+    (:mod:`dualmech.grade.stored_contexts`) never uses symengine, and so never pays for it and for the
     numpy it imports (some 50 ms).  Modules already imported, or not installed, are left as
     they are.
 

@@ -1,6 +1,6 @@
 """Hypothesis strategies and assertions for property-testing your own models.
 
-Draw parameters and states of any :class:`~dualmech.problem.Problem` within its declared ranges
+Draw parameters and states of any :class:`~dualmech.model.problem.Problem` within its declared ranges
 and away from its singular set, then assert that every derivation gives the same accelerations
 and that the recovered reactions satisfy the direct equations.  Tolerances come from the linear
 solve's own error bound (``eps * cond(A)``), not from a round number.
@@ -33,7 +33,7 @@ except ImportError as exc:  # the plain install has no hypothesis
     raise ImportError("dualmech.testing needs hypothesis: install it with "
                       "`pip install 'dualmech[testing]'`.") from exc
 
-from dualmech.kinematics import t
+from dualmech.model.kinematics import t
 from dualmech.numeric import NumericModel
 
 __all__ = ["Point", "parameters", "states", "points", "assert_same_motion",
@@ -96,7 +96,7 @@ def has_static_rows(problem) -> bool:
 
 def _solve_all(problem, point: Point):
     if has_static_rows(problem):
-        from dualmech.equations import ModelError
+        from dualmech.model.equations import ModelError
         raise ModelError(f"`{problem.name}` is differential-algebraic (static rows of a "
                          "massless body): its states must lie on the constraint manifold, which "
                          "these float assertions do not sample; `compare()` decides it exactly "
@@ -127,7 +127,7 @@ def _term_magnitude(eqs, point: Point) -> float:
     if hit is None or hit[0] is not eqs:
         _, b = eqs.plain_matrix()
         states = eqs.states
-        from dualmech.kinematics import t as time_symbol
+        from dualmech.model.kinematics import t as time_symbol
         symbols = [time_symbol] + [s.q for s in states] + [s.qd for s in states]
         params = sorted(set().union(*(e.free_symbols for e in b)) - set(symbols), key=str)
         rows = [sum(sp.Abs(term) for term in sp.Add.make_args(e)) for e in b]

@@ -1,7 +1,7 @@
 """The problems of the course sources, each written twice (Newton--Euler and Lagrange).
 
 Every module of this package (names not starting with ``_``) defines one or more
-:class:`dualmech.problem.Problem` subclasses and lists them in ``PROBLEMS``.  The catalogue is
+:class:`dualmech.model.problem.Problem` subclasses and lists them in ``PROBLEMS``.  The catalogue is
 found by reading the modules' *declarations* (their source text, parsed with :mod:`ast`):
 listing it imports nothing, so ``dualmech list`` never builds a model.  :func:`all_problems`
 imports the modules and gives instances; :func:`get` (or :func:`load`) finds one problem by

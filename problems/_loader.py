@@ -8,7 +8,7 @@ Specs, tried in this order:
   ``python -m`` would);
 * ``catalogue:problem`` -- a problem of a catalogue that a course package registers under the
   entry-point group ``dualmech.problems`` (the entry point names a module whose ``PROBLEMS``, or
-  whose :class:`~dualmech.problem.Problem` subclasses, form the catalogue);
+  whose :class:`~dualmech.model.problem.Problem` subclasses, form the catalogue);
 * ``problem`` -- a problem of dualmech's catalogue, then of every registered catalogue.
 
 Every failure raises :class:`SpecError` (a ``KeyError``) with a message that says what to fix.
@@ -55,7 +55,7 @@ class SpecError(KeyError):
 
 
 def _problem_base():
-    from dualmech.problem import Problem
+    from dualmech.model.problem import Problem
     return Problem
 
 
@@ -66,7 +66,7 @@ def _is_problem_class(obj) -> bool:
 
 def problem_classes(module) -> list:
     """The problem classes a module offers: its ``PROBLEMS`` if it has one, else the
-    :class:`~dualmech.problem.Problem` subclasses defined in it (not imported into it)."""
+    :class:`~dualmech.model.problem.Problem` subclasses defined in it (not imported into it)."""
     listed = getattr(module, "PROBLEMS", None)
     if listed is not None:
         return [c for c in listed if _is_problem_class(c)]
@@ -78,7 +78,7 @@ def _pick(classes: list, wanted: str | None, where: str):
     """The class of ``classes`` called ``wanted`` (class name or problem name), or the only one."""
     if not classes:
         raise SpecError(f"{where} defines no Problem subclass (a class deriving from "
-                        "dualmech.problem.Problem); write one, or name the file that does.")
+                        "dualmech.model.problem.Problem); write one, or name the file that does.")
     if wanted is None:
         if len(classes) == 1:
             return classes[0]
@@ -157,7 +157,7 @@ def _from_file(path_text: str, wanted: str | None):
     obj = getattr(module, wanted, None) if wanted else None
     if obj is not None and not _is_problem_class(obj):
         raise SpecError(f"{path}:{wanted} is a {type(obj).__name__}, not a Problem subclass "
-                        "(a class deriving from dualmech.problem.Problem).")
+                        "(a class deriving from dualmech.model.problem.Problem).")
     return obj if obj is not None else _pick(problem_classes(module), wanted, str(path))
 
 
@@ -215,7 +215,7 @@ def _from_module(module: str, wanted: str):
     obj = getattr(mod, wanted, None)
     if obj is not None and not _is_problem_class(obj):
         raise SpecError(f"{module}:{wanted} is a {type(obj).__name__}, not a Problem subclass "
-                        "(a class deriving from dualmech.problem.Problem).")
+                        "(a class deriving from dualmech.model.problem.Problem).")
     return obj if obj is not None else _pick(problem_classes(mod), wanted, module)
 
 

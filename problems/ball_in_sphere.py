@@ -80,9 +80,9 @@ from __future__ import annotations
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_y, rot_z, t
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, VELOCITY
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, VELOCITY
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["BallInSphere", "PROBLEMS", "m", "a", "g", "v", "theta0", "theta", "phi", "r",
            "hand_normal_force", "printed_momentum", "printed_energy", "initial_state"]

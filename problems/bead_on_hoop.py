@@ -80,9 +80,9 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_y, rot_z,
                       t)
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, FREQUENCY, LENGTH, MASS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, FREQUENCY, LENGTH, MASS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["BeadOnHoop", "PROBLEMS", "hand_reactions", "m", "R", "g", "omega", "theta", "psi",
            "r", "w"]

@@ -52,7 +52,7 @@ the pipe at the block does virtual work ``N dw``::
 so ``N`` is derived twice, and both derivations give ``N = 0``.  A reaction that vanishes
 identically cannot be told from its negative or its double: the mutants "flip/double the
 constraint ``N``" of this model give the same motion and the same ``N`` as the model itself,
-and the mutation score reports them apart as *equivalent* (:mod:`dualmech.mutation`).  A
+and the mutation score reports them apart as *equivalent* (:mod:`dualmech.verify.mutation`).  A
 wrong term that makes either derivation's ``N`` non-zero is caught (pinned in the tests).
 
 Equilibrium (derived by the library in the tests): ``th = 0``, ``y = y0 + m g/k``; small
@@ -75,9 +75,9 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate,
                       rot_z, t)
-from dualmech.dimensions import ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["BlockInPipe", "PROBLEMS", "frames", "multiplier_model", "m", "k", "d", "y0", "g",
            "theta", "y", "w"]

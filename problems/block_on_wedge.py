@@ -91,9 +91,9 @@ from __future__ import annotations
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_z, t
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["BlockOnWedge", "PROBLEMS", "hand_reactions", "hand_accelerations"]
 

@@ -108,10 +108,10 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate,
                       rot_z, t)
-from dualmech.dimensions import (ACCELERATION, ANGLE, DAMPING, FORCE, FREQUENCY, LENGTH, MASS,
-                                 STIFFNESS, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS)
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import (ACCELERATION, ANGLE, DAMPING, FORCE, FREQUENCY, LENGTH, MASS,
+                                      STIFFNESS, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS)
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["CartPendulum", "PROBLEMS", "direct_form", "hand_reactions"]
 

@@ -90,9 +90,9 @@ from __future__ import annotations
 import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_z, t)
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["CompoundDoublePendulum", "PROBLEMS", "m", "a", "b", "I0", "g", "theta1", "theta2",
            "printed_reduced", "scene"]

@@ -93,9 +93,9 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate, t
-from dualmech.dimensions import ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["CopyingMachine", "PROBLEMS", "effective_stiffness", "m2", "k1", "k2", "a", "L",
            "b", "F", "y", "theta", "w"]

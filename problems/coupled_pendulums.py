@@ -73,9 +73,9 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_z, t)
-from dualmech.dimensions import ACCELERATION, ANGLE, LENGTH, MASS, STIFFNESS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published
+from dualmech.model.dimensions import ACCELERATION, ANGLE, LENGTH, MASS, STIFFNESS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published
 
 __all__ = ["CoupledPendulums", "PROBLEMS", "scene", "geometric_spring_model", "m", "k", "l",
            "d", "g", "theta1", "theta2"]

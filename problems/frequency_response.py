@@ -57,9 +57,9 @@ from __future__ import annotations
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, t
-from dualmech.dimensions import DAMPING, FORCE, FREQUENCY, LENGTH, MASS, STIFFNESS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published
+from dualmech.model.dimensions import DAMPING, FORCE, FREQUENCY, LENGTH, MASS, STIFFNESS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published
 
 __all__ = ["FrequencyResponse", "PROBLEMS", "amplitude", "m", "c", "k", "F0", "omega", "x"]
 

@@ -84,10 +84,10 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_y, rot_z, t
-from dualmech.bodies import thin_rod
-from dualmech.dimensions import ACCELERATION, ANGLE, FREQUENCY, LENGTH, MASS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published
+from dualmech.model.bodies import thin_rod
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FREQUENCY, LENGTH, MASS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published
 
 __all__ = ["HelicopterBlade", "HelicopterBladeWeighted", "PROBLEMS", "frames", "lift_per_length", "first_order", "M", "L",
            "Omega", "A", "alpha0", "g", "beta", "x"]

@@ -79,9 +79,9 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_z, t)
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS, TORQUE
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS, TORQUE
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["InertiaWheelPendulum", "PROBLEMS", "frames", "hand_reactions", "m1", "m2", "l1",
            "l_c1", "I1", "I2", "g", "tau", "q1", "q2"]

@@ -63,9 +63,9 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_z, t
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, STIFFNESS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["InvertedPendulumSprings", "PROBLEMS", "frames", "m", "l", "a", "k", "g", "theta"]
 

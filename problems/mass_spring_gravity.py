@@ -55,9 +55,9 @@ from __future__ import annotations
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, t
-from dualmech.dimensions import ACCELERATION, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published
+from dualmech.model.dimensions import ACCELERATION, FORCE, LENGTH, MASS, STIFFNESS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published
 
 __all__ = ["MassSpringGravity", "PROBLEMS", "M", "k", "g", "F", "x", "static_equilibrium"]
 

@@ -28,7 +28,7 @@ frame ``A = O.child(rot_z(phi))``: ``A.y = (-sin phi, cos phi)`` runs from P alo
 The base translates: its point B = P = ``x i`` (the pivot's height does not enter).
 
 Bodies.  The base: a particle ``M``.  Arm and hand: one rigid body of mass ``m = m1 + m2``,
-built with :func:`~dualmech.bodies.composite` from two point masses (the source's
+built with :func:`~dualmech.model.bodies.composite` from two point masses (the source's
 ``I_P = m1 D1^2 + m2 (D2 + r2)^2`` treats them so): centre
 ``L = (m1 D1 + m2 (D2 + r2)) / m`` along ``A.y``, inertia ``I_P`` about P.
 
@@ -132,9 +132,9 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, composite,
                       coordinate, point_mass, rot_z, t)
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, TORQUE
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, TORQUE
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["MobileRobotSimplified", "MobileRobot", "PROBLEMS", "arm_properties",
            "base_profile", "arm_profile", "M", "m1", "m2", "D1", "D2", "r2", "g", "f", "T",

@@ -69,9 +69,9 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate,
                       rot_z, t, thin_rod)
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Reaction
 
 __all__ = ["NLinkPendulum", "NLinkRigidPendulum", "PROBLEMS"]
 

@@ -25,7 +25,7 @@ Frames::
     A = O.child(rot_z(theta), -(l0 + y) J)     pendulum: i_A, j_A, k_A = K
 
 Bodies: ``M`` is a particle at A (it only translates); the pendulum is one rigid body of mass
-``3m`` with mass centre ``C = A - 4r j_A`` and, by :func:`~dualmech.bodies.composite`, inertia
+``3m`` with mass centre ``C = A - 4r j_A`` and, by :func:`~dualmech.model.bodies.composite`, inertia
 about A ``m r^2 diag(335/6, 1/2, 169/3)`` in A axes (about C: ``169/3 - 3*16 = 25/3`` on K).
 
 Free-body diagrams (as the source draws them)::
@@ -82,10 +82,10 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, composite,
                       coordinate, rot_z, t, thin_disk, thin_rod)
-from dualmech.bodies import MassProperties
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.bodies import MassProperties
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, STIFFNESS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["PendulumOnMass", "PROBLEMS", "frames", "pendulum_mass_properties", "kinetic_energy",
            "potential_energy",

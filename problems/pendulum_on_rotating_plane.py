@@ -95,9 +95,9 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_y, rot_z,
                       t)
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, FREQUENCY, LENGTH, MASS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, FREQUENCY, LENGTH, MASS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["PendulumOnRotatingPlane", "PROBLEMS", "frames", "plane_angle", "hand_rod_force",
            "on_plane", "m", "l", "c", "g", "beta0", "Omega", "alpha", "theta", "N"]

@@ -77,10 +77,10 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate,
                       rot_z, t, thin_disk)
-from dualmech.dimensions import (ACCELERATION, ANGLE, DAMPING, FORCE, FREQUENCY, LENGTH, MASS,
-                                 STIFFNESS)
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import (ACCELERATION, ANGLE, DAMPING, FORCE, FREQUENCY, LENGTH, MASS,
+                                      STIFFNESS)
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["PulleyBentTrack", "PROBLEMS", "scene", "hand_reactions", "drive", "M1", "M2", "m",
            "k", "c", "r", "theta0", "g", "F0", "omega", "x"]

@@ -82,9 +82,9 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_y, rot_z, t
-from dualmech.dimensions import ANGLE, INERTIA, TORQUE
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published
+from dualmech.model.dimensions import ANGLE, INERTIA, TORQUE
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published
 
 __all__ = ["RigidBodyEulerAngles", "PROBLEMS", "frames", "body_rates", "A", "B", "C", "Q1",
            "Q2", "Q3", "phi", "theta", "psi"]

@@ -67,9 +67,9 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_z, t,
                       thin_rod)
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["RigidRodPendulum", "PROBLEMS", "frames", "hand_reactions", "m", "l", "g", "theta"]
 

@@ -38,7 +38,7 @@ theta is ignorable (section 3.1: no generalised force, ``dV/dtheta = dT/dtheta =
 angular momentum ``p_theta = m r^2 theta'`` is conserved; ``r`` times the direct form's
 ``e_theta`` equation is its rate.  Circular orbits (``r`` constant, every rate constant) need
 ``theta'^2 = mu / r^3`` -- computed from the verified equations by
-:func:`dualmech.steady.steady_rates` -- so the period is ``2 pi sqrt(r^3 / mu)`` (Kepler's
+:func:`dualmech.model.steady.steady_rates` -- so the period is ``2 pi sqrt(r^3 / mu)`` (Kepler's
 third law).
 
 Singular set: the mass matrix ``diag(m, m r^2)`` is singular at ``r = 0`` (the centre, where
@@ -60,9 +60,9 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_z, t
-from dualmech.dimensions import ANGLE, LENGTH, MASS, TIME
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published
+from dualmech.model.dimensions import ANGLE, LENGTH, MASS, TIME
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published
 
 __all__ = ["SatellitePolar", "PROBLEMS", "frames", "angular_momentum", "m", "mu", "r", "theta"]
 

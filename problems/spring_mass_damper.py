@@ -55,9 +55,9 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, t
-from dualmech.dimensions import DAMPING, FORCE, FREQUENCY, LENGTH, MASS, STIFFNESS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published
+from dualmech.model.dimensions import DAMPING, FORCE, FREQUENCY, LENGTH, MASS, STIFFNESS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published
 
 __all__ = ["SpringMassDamper", "PROBLEMS", "forcing", "steady_state", "m", "k", "b", "F0",
            "Omega", "x"]

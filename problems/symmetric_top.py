@@ -87,10 +87,10 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_y, rot_z, t
-from dualmech.dimensions import ACCELERATION, ANGLE, INERTIA, LENGTH, MASS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published
-from dualmech.steady import steady_rates
+from dualmech.model.dimensions import ACCELERATION, ANGLE, INERTIA, LENGTH, MASS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published
+from dualmech.model.steady import steady_rates
 
 __all__ = ["SymmetricTop", "PROBLEMS", "frames", "steady_precession_rates", "momenta",
            "A", "C", "M", "g", "h", "phi", "theta", "psi"]
@@ -126,7 +126,7 @@ def steady_precession_rates(eqs: EquationSet, values: dict | None = None) -> lis
     """Precession rates ``phi'`` of the steady motions of ``eqs`` with ``theta`` constant.
 
     ``theta'' = theta' = 0`` and constant ``phi', psi'`` in the given (verified) equations;
-    see :func:`dualmech.steady.steady_rates`.
+    see :func:`dualmech.model.steady.steady_rates`.
 
     >>> rates = steady_precession_rates(SymmetricTop().model("lagrange"), {g: 0})
     >>> sorted(map(str, rates))

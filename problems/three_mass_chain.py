@@ -75,9 +75,9 @@ from __future__ import annotations
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, t
-from dualmech.dimensions import ACCELERATION, LENGTH, MASS, STIFFNESS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published
+from dualmech.model.dimensions import ACCELERATION, LENGTH, MASS, STIFFNESS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published
 
 __all__ = ["ThreeMassChain", "PROBLEMS", "m1", "m2", "m3", "k1", "k2", "k3", "g",
            "x1", "x2", "x3", "printed_matrices"]

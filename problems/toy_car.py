@@ -82,9 +82,9 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RelativeMotion, Vector,
                       coordinate, rot_x, rot_y, t)
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["ToyCar", "PROBLEMS", "frames", "coriolis_term", "m", "R", "g", "theta", "phi", "rho"]
 

@@ -121,9 +121,9 @@ import sympy as sp
 
 from dualmech import (Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_x, rot_z,
                       t, thin_disk)
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, TORQUE
-from dualmech.equations import EquationSet
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, TORQUE
+from dualmech.model.equations import EquationSet
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 __all__ = ["WheelOnPivot", "PROBLEMS", "frames", "direct_form", "m", "a", "l", "g", "tau",
            "phi"]

@@ -9,8 +9,8 @@ lam: m x'' = 2 lam x, m y'' = 2 lam y - m g  (lam = -S / (2 l)).
 import sympy as sp
 
 from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_z, t
-from dualmech.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 m, l, g = sp.symbols("m l g", positive=True)
 th = coordinate("theta")

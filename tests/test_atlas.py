@@ -1,4 +1,4 @@
-"""The stability atlas (dualmech.numeric.singularities, .regimes, .atlas): the detections.
+"""The stability atlas (dualmech.numeric.studies.singularities, .regimes, .atlas): the detections.
 
 Hand references: the toy car's mass matrix diag(m R^2, m R^2 cos^2 theta) (problems/toy_car.py),
 the two-rod linkage's x form M + m l^2 / D with D = 4 l^2 sin^2 theta, the falling container's
@@ -9,10 +9,10 @@ import numpy as np
 import pytest
 from scipy.special import ellipj, ellipk
 
-from dualmech.numeric.atlas import atlas
-from dualmech.numeric.regimes import (chaos, dae_drift, growth_exponent, linearisation,
-                                      stability_radius, stiffness)
-from dualmech.numeric.singularities import GARBAGE, WRONG, probe, scan, verdict_word
+from dualmech.numeric.studies.atlas import atlas
+from dualmech.numeric.studies.regimes import (chaos, dae_drift, growth_exponent, linearisation,
+                                             stability_radius, stiffness)
+from dualmech.numeric.studies.singularities import GARBAGE, WRONG, probe, scan, verdict_word
 from dualmech.problems import get
 
 EPS = np.finfo(float).eps
@@ -200,10 +200,10 @@ def test_atlas_says_why_a_section_does_not_apply():
     assert "[chaos] not applicable" in str(a)
 
 
-# -- the `atlas` command (dualmech.numeric.commands) ------------------------------------------
+# -- the `atlas` command (dualmech.cli.studies) ------------------------------------------
 def _cli():
     import argparse
-    from dualmech.numeric.commands import register
+    from dualmech.cli.studies import register
     parser = argparse.ArgumentParser(prog="dualmech")
     register(parser.add_subparsers(dest="command"))
     return parser

@@ -6,10 +6,10 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
-from dualmech.equations import to_plain
+from dualmech.verify.check import compare
+from dualmech.model.equations import to_plain
 from dualmech.numeric import NumericModel, simulate
-from dualmech.published import check_published
+from dualmech.verify.published import check_published
 from dualmech.problems.ball_in_sphere import (BallInSphere, a, g, hand_normal_force, m, phi,
                                      printed_energy, printed_momentum, theta, theta0, v)
 

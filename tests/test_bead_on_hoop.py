@@ -3,7 +3,7 @@ import pytest
 import sympy as sp
 
 from dualmech import EquationSet, ModelError, t
-from dualmech.compare import compare, compare_models
+from dualmech.verify.check import compare, compare_models
 from dualmech.problems.bead_on_hoop import BeadOnHoop, R, g, hand_reactions, m, omega, theta
 
 problem = BeadOnHoop()

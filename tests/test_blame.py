@@ -26,10 +26,10 @@ import sympy as sp
 
 from dualmech import problems
 from dualmech import Lagrangian, NewtonEuler, Particle, t
-from dualmech.cli import main
-from dualmech.compare import compare
-from dualmech.dimensions import FORCE
-from dualmech.problem import Published, Reaction
+from dualmech.cli.main import main
+from dualmech.verify.check import compare
+from dualmech.model.dimensions import FORCE
+from dualmech.model.problem import Published, Reaction
 from dualmech.problems import block_on_wedge as bw
 from dualmech.problems import cart_pendulum as cp
 from dualmech.problems import pendulum_on_mass as pm

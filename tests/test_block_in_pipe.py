@@ -4,8 +4,8 @@ import pytest
 import sympy as sp
 
 from dualmech import Lagrangian, t
-from dualmech.compare import compare, compare_models
-from dualmech.mutation import mutation_report
+from dualmech.verify.check import compare, compare_models
+from dualmech.verify.mutation import mutation_report
 from dualmech.problems.block_in_pipe import (BlockInPipe, d, g, k, m, multiplier_model, theta, w,
                                              y, y0)
 

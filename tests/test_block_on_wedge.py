@@ -5,7 +5,7 @@ import sympy as sp
 from hypothesis import given, settings
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
 from dualmech.problems.block_on_wedge import (BlockOnWedge, M, alpha, g, hand_accelerations,

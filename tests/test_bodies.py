@@ -6,12 +6,12 @@ import random
 import pytest
 import sympy as sp
 
-from dualmech.bodies import (MassProperties, Particle, RigidBody, composite, cuboid,
-                             parallel_axis, point_mass, solid_cylinder, solid_sphere, thin_disk,
-                             thin_rod)
-from dualmech.equations import to_plain
-from dualmech.exact import ExactForm
-from dualmech.kinematics import Frame, Point, coordinate, rot_x, rot_y, rot_z, t
+from dualmech.model.bodies import (MassProperties, Particle, RigidBody, composite, cuboid,
+                                  parallel_axis, point_mass, solid_cylinder, solid_sphere,
+                                  thin_disk, thin_rod)
+from dualmech.model.equations import to_plain
+from dualmech.exact.form import ExactForm
+from dualmech.model.kinematics import Frame, Point, coordinate, rot_x, rot_y, rot_z, t
 
 m, r, L, a, b, c = sp.symbols("m r L a b c", positive=True)
 
@@ -21,7 +21,7 @@ def is_zero_matrix(M) -> bool:
 
 
 def vanishes_exactly(exprs, coordinates, points: int = 3) -> bool:
-    """Identically zero, decided at random rational points (see dualmech.exact)."""
+    """Identically zero, decided at random rational points (see dualmech.exact.form)."""
     plain = [to_plain(e, coordinates) for e in exprs]
     symbols = sorted(set().union(*(e.free_symbols for e in plain)), key=str)
     form = ExactForm.build(plain, symbols)

@@ -1,10 +1,10 @@
-"""The two builders (dualmech.direct, dualmech.lagrange) on small systems derived by hand."""
+"""The two builders (dualmech.model.direct, dualmech.model.lagrange) on small systems derived by hand."""
 import pytest
 import sympy as sp
 
 from dualmech import (Frame, Lagrangian, ModelError, NewtonEuler, Particle, Point, RigidBody,
                       coordinate, rot_z, t, thin_rod)
-from dualmech.compare import compare_models
+from dualmech.verify.check import compare_models
 
 m, k, g, R, w, L0, c, l = sp.symbols("m k g R omega L0 c l", positive=True)
 th, psi, x, y = coordinate("theta"), coordinate("psi"), coordinate("x"), coordinate("y")

@@ -5,9 +5,9 @@ import sympy as sp
 from hypothesis import given, settings
 
 from dualmech import t
-from dualmech.compare import compare
-from dualmech.dimensions import audit
-from dualmech.equations import state_symbols, to_plain
+from dualmech.verify.check import compare
+from dualmech.model.dimensions import audit
+from dualmech.model.equations import state_symbols, to_plain
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
 from dualmech.problems.cart_pendulum import (CartPendulum, F0, c, c_t, direct_form, g, hand_reactions, k,

@@ -6,8 +6,8 @@ import re
 import pytest
 from hypothesis import given, settings
 
-from dualmech.compare import compare
-from dualmech.mutation import mutation_report
+from dualmech.verify.check import compare
+from dualmech.verify.mutation import mutation_report
 from dualmech.testing import (assert_reactions_consistent, assert_same_motion, has_static_rows,
                               points)
 from dualmech.problems import all_problems, get

@@ -7,7 +7,7 @@ import re
 import pytest
 
 import dualmech.numeric.charts as charts
-from dualmech.notation import mathtext
+from dualmech.model.notation import mathtext
 from dualmech.problems import get
 from dualmech.report.charts import trajectory_chart
 
@@ -76,7 +76,7 @@ def test_trajectory_chart_names_every_curve_by_its_symbol(figures, tmp_path, nam
 
 
 def test_the_page_caption_typesets_the_names(tmp_path):
-    from dualmech.compare import compare
+    from dualmech.verify.check import compare
     from dualmech.report import write_report
     written = write_report([compare(get("falling_container"))], tmp_path, 1.0, progress=False)
     page = written.html.read_text(encoding="utf-8")
@@ -89,7 +89,7 @@ def test_the_page_caption_typesets_the_names(tmp_path):
 
 
 def test_atlas_axes_are_the_coordinates_symbols(figures, tmp_path):
-    from dualmech.numeric.atlas import atlas
+    from dualmech.numeric.studies.atlas import atlas
     p = get("toy_car")
     atlas(p, sections=("singularities", "linearisation"), progress=False).write(tmp_path)
     texts = [t for fig in figures for t in _texts(fig)]
@@ -101,7 +101,7 @@ def test_atlas_axes_are_the_coordinates_symbols(figures, tmp_path):
 
 def test_floquet_legends_write_the_rates_with_dots(figures, tmp_path):
     # the orbits are named by their state at t = 0: theta and its rate, theta' in the data
-    from dualmech.numeric.atlas import atlas
+    from dualmech.numeric.studies.atlas import atlas
     atlas(get("kapitza_pendulum"), sections=("floquet",), progress=False).write(tmp_path)
     (fig,) = figures
     texts = _texts(fig)
@@ -116,7 +116,7 @@ def test_floquet_legends_write_the_rates_with_dots(figures, tmp_path):
 
 
 def test_fidelity_legend_names_the_neglected_reaction(figures, tmp_path):
-    from dualmech.numeric.fidelity import ladder
+    from dualmech.numeric.studies.fidelity import ladder
     ladder(get("mobile_robot")).write(tmp_path)
     (fig,) = figures
     (label,) = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
@@ -124,7 +124,7 @@ def test_fidelity_legend_names_the_neglected_reaction(figures, tmp_path):
 
 
 def test_work_precision_labels_typeset_the_drifts(figures, tmp_path):
-    from dualmech.numeric.workprecision import work_precision
+    from dualmech.numeric.studies.workprecision import work_precision
     wp = work_precision(get("toy_car"), duration=0.5, tolerances=(1e-6,), steps=(),
                         methods=("DOP853",), models=("lagrange", "multiplier"), progress=False)
     wp.write(tmp_path)

@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 import re
 
-from dualmech.cli import main
+from dualmech.cli.main import main
 
 CHEAP = ["spring_mass_damper", "simple_pendulum", "mass_spring_gravity"]
 

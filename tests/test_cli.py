@@ -20,11 +20,11 @@ import sympy as sp
 
 from dualmech import problems
 from dualmech import coordinate, t
-from dualmech.cli import main
-from dualmech.dimensions import ACCELERATION, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.equations import EquationSet
-from dualmech.lagrange import Lagrangian
-from dualmech.problem import Coordinate, Parameter, Problem, Reaction
+from dualmech.cli.main import main
+from dualmech.model.dimensions import ACCELERATION, FORCE, LENGTH, MASS, STIFFNESS
+from dualmech.model.equations import EquationSet
+from dualmech.model.lagrange import Lagrangian
+from dualmech.model.problem import Coordinate, Parameter, Problem, Reaction
 
 m, k, g = sp.symbols("m k g", positive=True)
 x = coordinate("x")
@@ -115,7 +115,7 @@ def test_help_lists_the_commands(capsys):
 @pytest.mark.parametrize("argv", [["--help"], ["list"], ["grade", "--help"]],
                          ids=["help", "list", "grade-help"])
 def test_commands_that_need_no_algebra_start_without_sympy(argv):
-    code = ("import sys; from dualmech.cli import main; status = main(sys.argv[1:]); "
+    code = ("import sys; from dualmech.cli.main import main; status = main(sys.argv[1:]); "
             "heavy = sorted(m for m in ('sympy', 'symengine', 'numpy', 'scipy', 'matplotlib', "
             "'lark') if m in sys.modules); print(status, heavy, file=sys.stderr)")
     done = subprocess.run([sys.executable, "-c", code, *argv], capture_output=True,
@@ -124,7 +124,8 @@ def test_commands_that_need_no_algebra_start_without_sympy(argv):
 
 
 def test_the_parsers_notations_are_those_of_the_notation_module():
-    from dualmech import cli, notation
+    from dualmech.cli import main as cli
+    from dualmech.model import notation
     assert cli._NOTATIONS == notation.NOTATIONS
 
 
@@ -361,7 +362,7 @@ def test_the_command_keeps_its_output_and_status_past_its_fast_exit(answer, stat
                                                                      tmp_path):
     # command() leaves the objects to the operating system at exit: the whole output is
     # still written, atexit handlers still run, and the exit status is the command's
-    code = ("import atexit, sys; from dualmech.cli import command; "
+    code = ("import atexit, sys; from dualmech.cli.main import command; "
             f"atexit.register(lambda: open({str(tmp_path / 'ran')!r}, 'w').close()); "
             "sys.argv[1:] = ['grade', 'simple_pendulum', '--json', '--answer', "
             f"{answer!r}]; raise SystemExit(command())")

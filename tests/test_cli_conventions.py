@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from dualmech.cli import build_parser, main
+from dualmech.cli.main import build_parser, main
 
 from test_loader import USER_FILE
 

@@ -2,7 +2,7 @@
 
 Issue 6, points 6 and 7.  Hypothesis draws argument lists -- sub-commands, flags, numbers
 (``nan``, ``inf``, ``1e400``, non-ASCII digits), problem and model names, random unicode,
-empty strings -- and :func:`dualmech.cli.main` must return an exit status in {0, 1, 2} (130
+empty strings -- and :func:`dualmech.cli.main.main` must return an exit status in {0, 1, 2} (130
 for an interrupt), never raise, and never print a traceback.
 
 To stay fast (well under a minute on one core) the catalogue is cut to three cheap problems,
@@ -27,7 +27,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from dualmech import problems
-from dualmech.cli import main
+from dualmech.cli.main import main
 
 CHEAP = ("mass_spring_gravity", "satellite_polar", "spring_mass_damper")
 MODELS = ("lagrange", "newton_euler", "gravity_as_force", "angular_momentum", "")
@@ -186,7 +186,7 @@ def _stub_everywhere(monkeypatch, *names: str) -> None:
                 with contextlib.suppress(Exception):
                     importlib.import_module(info.name)
     with contextlib.suppress(ImportError):
-        importlib.import_module("dualmech.compare")
+        importlib.import_module("dualmech.verify.check")
     for name in names:
         for module_name, module in list(sys.modules.items()):
             if module_name.startswith(("dualmech", "scipy.integrate")) \

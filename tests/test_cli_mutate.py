@@ -1,7 +1,7 @@
 """``dualmech mutate``: every mutant of a problem's models judged, survivors explained, the
 exit status 1 when one survives.
 
-The figures asserted are the comparator's own (``dualmech.mutation``): a catalogue problem
+The figures asserted are the comparator's own (``dualmech.verify.mutation``): a catalogue problem
 catches every judged mutant (the mutation tests require it), and the skeleton that
 ``dualmech new`` writes derives its string tension ``T`` in one model only, so flipping ``T``
 -- or doubling the mass in the direct form, which only changes ``T`` -- cannot be caught by a
@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import json
 
-from dualmech.cli import main
+from dualmech.cli.main import main
 
 
 def run(capsys, *argv):

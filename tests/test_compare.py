@@ -1,11 +1,11 @@
-"""The comparator: verdicts, explanations, reactions, published answers (dualmech.compare)."""
+"""The comparator: verdicts, explanations, reactions, published answers (dualmech.verify.check)."""
 import json
 
 import pytest
 import sympy as sp
 
 from dualmech import EquationSet, ModelError, coordinate, t
-from dualmech.compare import compare, compare_models, recover_reactions
+from dualmech.verify.check import compare, compare_models, recover_reactions
 
 from _pendulum import Pendulum, cartesian, g, l, m, th
 
@@ -112,7 +112,7 @@ def test_integer_systems_stay_exact():
     # regression: int / int in the elimination gave floats, and a float residual of 1e36
     # passed the mpmath tolerance scaled by 1e71 -- a dropped spring was called equivalent
     from fractions import Fraction
-    from dualmech.verify import linalg as la
+    from dualmech.exact import linalg as la
     res, lam, und = la.residual_after_least_squares([[2], [4]], [1, 3])
     assert all(isinstance(v, Fraction) for v in res + lam)
     assert res == [Fraction(1, 5) - 0, Fraction(3) - Fraction(14, 5)] or res[0] != 0
@@ -126,7 +126,7 @@ def test_reactions_of_direct_form_and_multiplier_agree():
 
 
 def test_reaction_only_error_is_caught_by_the_multiplier_model():
-    from dualmech.compare import compare_reactions
+    from dualmech.verify.check import compare_reactions
     p = Pendulum()
     ref = p.model("lagrange")
     multiplier = p.in_reference_coordinates(p.model("multiplier"))
@@ -142,8 +142,8 @@ def test_reaction_only_error_is_caught_by_the_multiplier_model():
 
 
 def test_reaction_with_the_wrong_dimension_is_reported():
-    from dualmech.dimensions import TORQUE
-    from dualmech.problem import Reaction
+    from dualmech.model.dimensions import TORQUE
+    from dualmech.model.problem import Reaction
 
     class Mislabelled(Pendulum):
         reactions = (Reaction("S", TORQUE, "declared as a torque by mistake"),)
@@ -158,8 +158,8 @@ def test_dimension_audit_of_a_derivation_held_in_symengine():
     cos(phi)``, a force where an energy belongs) is flagged in the equations as derived
     (held in symengine), with the same findings as the audit of their sympy form."""
     from dualmech import Lagrangian
-    from dualmech.dimensions import audit
-    from dualmech.equations import Rows
+    from dualmech.model.dimensions import audit
+    from dualmech.model.equations import Rows
     from dualmech.problems import toy_car as tc
 
     class NoRadius(tc.ToyCar):

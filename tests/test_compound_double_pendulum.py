@@ -3,7 +3,7 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.problems.compound_double_pendulum import (CompoundDoublePendulum, I0, a, b, g, m,
                                                printed_reduced, scene, theta1, theta2)
 

@@ -9,7 +9,7 @@ import pytest
 import sympy as sp
 
 from dualmech import EquationSet, t
-from dualmech.compare import compare, compare_models, compare_reactions
+from dualmech.verify.check import compare, compare_models, compare_reactions
 from dualmech.problems.copying_machine import (CopyingMachine, F, L, a, b, effective_stiffness, k1, k2,
                                       m2, theta, w, y)
 

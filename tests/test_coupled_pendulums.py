@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.numeric import NumericModel
 from dualmech.problems.coupled_pendulums import (CoupledPendulums, d, g, geometric_spring_model, k, l, m,
                                         theta1, theta2)

@@ -6,8 +6,8 @@ purpose: the restrained pendulum with its multiplier model left out, so that its
 forces ``H`` and ``V`` rest on the free-body diagram alone."""
 import pytest
 
-from dualmech.cli import main
-from dualmech.compare import compare
+from dualmech.cli.main import main
+from dualmech.verify.check import compare
 from dualmech.problems import get, load
 from dualmech.report.pages import summary_rows
 

@@ -10,7 +10,7 @@ import pytest
 import sympy as sp
 
 from dualmech import Lagrangian, coordinate, t
-from dualmech.equations import ModelError
+from dualmech.model.equations import ModelError
 from dualmech.numeric.dae import constraints_of
 from dualmech.numeric.energy import EnergyFunction, conservative_reason
 from dualmech.numeric.formulations import formulations

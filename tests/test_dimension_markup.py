@@ -5,7 +5,7 @@ import re
 
 import pytest
 
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.problems import get
 from dualmech.report.mathml import dimension, text_html
 from dualmech.report.pages import html_page

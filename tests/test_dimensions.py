@@ -1,7 +1,7 @@
 """dualmech's own Dimension: its algebra, its agreement with sympy's, and its refusals.
 
 The reference for every named constant is ``sympy.physics.units`` (dimension definitions and
-the SI dimension system), converted by :func:`dualmech.dimensions.as_dimension`.
+the SI dimension system), converted by :func:`dualmech.model.dimensions.as_dimension`.
 """
 from __future__ import annotations
 
@@ -15,9 +15,9 @@ import sympy as sp
 from hypothesis import given, settings, strategies as st
 from sympy.physics.units.definitions import dimension_definitions as dd
 
-from dualmech import dimensions as D
-from dualmech.dimensions import (ANGLE, DIMENSIONLESS, FORCE, LENGTH, MASS, TIME, Dimension,
-                                 as_dimension, format_dimension, reduce)
+from dualmech.model import dimensions as D
+from dualmech.model.dimensions import (ANGLE, DIMENSIONLESS, FORCE, LENGTH, MASS, TIME, Dimension,
+                                      as_dimension, format_dimension, reduce)
 
 NAMED = {  # dualmech's name -> the same dimension written with sympy's
     "MASS": dd.mass, "LENGTH": dd.length, "TIME": dd.time, "ANGLE": dd.angle,
@@ -126,7 +126,7 @@ def test_immutable_and_unknown_bases_refused():
 
 def test_a_problem_may_declare_sympys_dimensions():
     from dualmech import coordinate
-    from dualmech.problem import Coordinate, Parameter, Reaction
+    from dualmech.model.problem import Coordinate, Parameter, Reaction
     p = Parameter(sp.Symbol("k", positive=True), dd.force / dd.length, 1.0, (0.5, 2.0))
     c = Coordinate(coordinate("theta"), dd.angle, (-1, 1))
     r = Reaction("N", dd.force, "normal")
@@ -136,7 +136,7 @@ def test_a_problem_may_declare_sympys_dimensions():
 
 
 def test_importing_dimensions_leaves_sympys_units_alone():
-    code = ("import sys, dualmech.dimensions as d; d.reduce(d.FORCE / d.ANGLE); "
+    code = ("import sys, dualmech.model.dimensions as d; d.reduce(d.FORCE / d.ANGLE); "
             "print('sympy.physics.units' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout

@@ -1,7 +1,7 @@
 """The dimension audit against sympy's own dimension algebra, and on shared rows.
 
 The reference exponents come from ``sympy.physics.units`` (its Dimension algebra and SI
-dimension system), independent of dualmech's own :class:`~dualmech.dimensions.Dimension`."""
+dimension system), independent of dualmech's own :class:`~dualmech.model.dimensions.Dimension`."""
 from __future__ import annotations
 
 from fractions import Fraction
@@ -12,8 +12,8 @@ from hypothesis import given, settings, strategies as st
 from sympy.physics.units.definitions import dimension_definitions as dd
 from sympy.physics.units.systems.si import dimsys_SI
 
-from dualmech.dimensions import (ACCELERATION, FORCE, LENGTH, MASS, TIME, audit, audit_rows,
-                                 dimension_of, reduce)
+from dualmech.model.dimensions import (ACCELERATION, FORCE, LENGTH, MASS, TIME, audit, audit_rows,
+                                      dimension_of, reduce)
 
 m, l, g, k = sp.symbols("m l g k")
 DIMS = {m: MASS, l: LENGTH, g: ACCELERATION, k: FORCE / LENGTH}
@@ -71,8 +71,8 @@ def test_an_issue_names_its_terms_as_expressions_in_every_notation():
     """The sentence holds the terms themselves, so a page typesets them and text writes them
     in the textbook's notation (a derivation held in symengine: tests/test_blame.py)."""
     from dualmech import coordinate, t
-    from dualmech.dimensions import ANGLE
-    from dualmech.notation import sentence
+    from dualmech.model.dimensions import ANGLE
+    from dualmech.model.notation import sentence
     x, th = coordinate("x"), coordinate("theta")
     c_t = sp.Symbol("c_t")      # a torsional dashpot: N m s = M L^2 T^-1
     dims = {m: MASS, l: LENGTH, g: ACCELERATION, k: FORCE / LENGTH, x: LENGTH, th: ANGLE,

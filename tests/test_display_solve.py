@@ -7,7 +7,7 @@ import random
 import pytest
 import sympy as sp
 
-from dualmech.equations import to_plain
+from dualmech.model.equations import to_plain
 from dualmech.problems import get
 from dualmech.verify.display import Budget, solve_display
 

@@ -1,10 +1,10 @@
-"""The canonical equation object (dualmech.equations)."""
+"""The canonical equation object (dualmech.model.equations)."""
 import numpy as np
 import pytest
 import sympy as sp
 
 from dualmech import EquationSet, ModelError, coordinate, t
-from dualmech.dimensions import MASS, STIFFNESS, audit
+from dualmech.model.dimensions import MASS, STIFFNESS, audit
 
 q1, q2, th = coordinate("q1"), coordinate("q2"), coordinate("theta")
 m, k, g, l, c = sp.symbols("m k g l c", positive=True)
@@ -88,7 +88,7 @@ def test_dimension_audit_of_sums_and_functions():
 
 
 def test_zero_has_every_dimension():
-    from dualmech.dimensions import FORCE
+    from dualmech.model.dimensions import FORCE
     assert audit(sp.Integer(0), {}, FORCE) == []
     assert audit(k * q1 + 0, {k: STIFFNESS, q1: MASS}) == []
     assert audit(k + 1, {k: STIFFNESS})  # a nonzero number is dimensionless

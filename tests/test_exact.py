@@ -1,4 +1,4 @@
-"""The exact rational-point evaluator (dualmech.exact)."""
+"""The exact rational-point evaluator (dualmech.exact.form)."""
 import random
 from fractions import Fraction
 
@@ -7,7 +7,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 import sympy as sp
 
-from dualmech.exact import ExactForm, SAMPLE_BITS
+from dualmech.exact.form import ExactForm, SAMPLE_BITS
 
 th, ph, w, tt, a = sp.symbols("theta phi omega t a")
 
@@ -101,7 +101,7 @@ def test_degree_bound_counts_multiples_and_square_roots():
 
 # -- the pieces --------------------------------------------------------------------------------
 def test_square_root_numbers_are_exact():
-    from dualmech.verify.surd import Surd, independent
+    from dualmech.exact.surds import Surd, independent
     r2, r3 = Surd.root(2), Surd.root(3)
     assert (r2 + r3) * (r2 - r3) == -1 and (r2 * r3) ** 2 == 6
     assert 1 / (1 + r2) == r2 - 1
@@ -112,7 +112,7 @@ def test_square_root_numbers_are_exact():
 
 
 def test_multiples_are_powers_on_the_circle():
-    from dualmech.verify.circle import world_values
+    from dualmech.exact.trig_values import world_values
     u = Fraction(2**61 - 1)
     (s1000, c1000), (s1, c1) = world_values([("circle", ((0, 1000),), None),
                                              ("circle", ((0, 1),), None)], {0: u})
@@ -127,7 +127,7 @@ def test_multiples_are_powers_on_the_circle():
 
 
 def test_points_cycle_through_branch_cases_and_say_where():
-    from dualmech.exact import CASE
+    from dualmech.exact.form import CASE
     form = ExactForm.build([sp.Abs(sp.cos(th))], [th])
     rng = random.Random(0)
     points = [form.sample(rng) for _ in range(form.points_needed(3))]
@@ -141,7 +141,7 @@ def test_points_cycle_through_branch_cases_and_say_where():
 
 
 def test_interval_values_are_rigorous_and_zero_test_is_containment():
-    from dualmech.exact import METHOD_NAMES, is_zero
+    from dualmech.exact.form import METHOD_NAMES, is_zero
     form = ExactForm.build([sp.atan(a) - sp.atan(a), sp.atan(a)], [a])
     assert form.method == "interval" and "evidence" in METHOD_NAMES["interval"]
     zero, value = form.evaluate({a: Fraction(1)})
@@ -154,12 +154,12 @@ def test_interval_values_are_rigorous_and_zero_test_is_containment():
 
 def test_linear_algebra_on_intervals_refuses_undecided_ranks():
     from mpmath import iv
-    from dualmech.verify import linalg as la
+    from dualmech.exact import linalg as la
     eps = iv.mpf([-1e-70, 1e-70])          # consistent with zero, not certainly zero
     assert la.solve_square([[iv.mpf(1), iv.mpf(1)], [iv.mpf(1), 1 + eps]], [1, 2]) is None
     _, piv, ambiguous = la.rref_info([[iv.mpf(1), iv.mpf(1)], [iv.mpf(1), 1 + eps]])
     assert piv == [0] and ambiguous == [1]
-    from dualmech.exact import is_zero
+    from dualmech.exact.form import is_zero
     res, _, undetermined = la.residual_after_least_squares([[iv.mpf(1)], [eps]], [0, 1])
     assert undetermined == [] and not is_zero(res[1])       # a certain residual
     res, _, undetermined = la.residual_after_least_squares([[eps], [eps]], [1, 1])
@@ -182,7 +182,7 @@ def test_fraction_free_rref_is_the_reduced_echelon_form(engine, m, n, deficiency
     sympy's ``Matrix.rref`` (an independent implementation), also for rank-deficient
     matrices (rows built as combinations of others)."""
     from unittest import mock
-    from dualmech.verify import linalg
+    from dualmech.exact import linalg
     if engine == "integers":
         with mock.patch.object(linalg, "flint", None):
             _check_rref(linalg.rref_info, m, n, deficiency, seed)
@@ -223,7 +223,7 @@ def test_symengine_world_decides_as_the_sympy_world(expr):
     """Built from symengine the world has the same atoms and arguments, the same degree bound
     and the same verdict at every point as the one built from sympy."""
     import symengine as se
-    from dualmech.verify.world_se import analyse_se
+    from dualmech.exact.sample_space_se import analyse_se
     syms = [th, ph, a]
     assert analyse_se([se.sympify(expr)], syms) is not None      # it takes the fast route
     via_se = ExactForm.build([se.sympify(expr)], syms)
@@ -249,7 +249,7 @@ def test_symengine_world_decides_as_the_sympy_world(expr):
 ], ids=["sqrt", "pi", "exp", "abs", "square-argument"])
 def test_symengine_input_outside_the_common_case_takes_the_general_route(expr):
     import symengine as se
-    from dualmech.verify.world_se import analyse_se
+    from dualmech.exact.sample_space_se import analyse_se
     assert analyse_se([se.sympify(expr)], [th, a]) is None
     via_se = ExactForm.build([se.sympify(expr)], [th, a])
     via_sp = ExactForm.build([expr], [th, a])
@@ -259,7 +259,7 @@ def test_symengine_input_outside_the_common_case_takes_the_general_route(expr):
 
 def test_symengine_world_refuses_an_integer_symbol_inside_a_sine():
     import symengine as se
-    from dualmech.exact import Undecidable
+    from dualmech.exact.form import Undecidable
     n = sp.Symbol("n", integer=True)
     with pytest.raises(Undecidable):
         ExactForm.build([se.sympify(sp.sin(n * th))], [n, th])
@@ -270,7 +270,7 @@ def test_exact_values_and_solutions_do_not_depend_on_the_engine(engine):
     """The register program and the square solve give the same exact values with FLINT's
     rationals as with Python's Fractions (checked against sympy's own evaluation)."""
     from unittest import mock
-    from dualmech.verify import linalg, program
+    from dualmech.exact import linalg, register_program as program
     x, y = sp.symbols("x y")
     exprs = [x**2 + x * y / 3 - 1 / (x + y) ** 2, (x - y) ** 3 / 7]
     point = {x: Fraction(3, 5), y: Fraction(-7, 2)}

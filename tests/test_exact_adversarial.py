@@ -14,8 +14,8 @@ import random
 import pytest
 import sympy as sp
 
-from dualmech.exact import ExactForm, Undecidable, is_zero
-from dualmech.verify import linalg as la
+from dualmech.exact.form import ExactForm, Undecidable, is_zero
+from dualmech.exact import linalg as la
 
 th, ph, t, x, y, f, m, w = sp.symbols("theta phi t x y f m omega")
 F0, k, xp = sp.symbols("F0 k xp", positive=True)

@@ -21,8 +21,8 @@ import pytest
 import sympy as sp
 
 from dualmech import EquationSet, coordinate, t
-from dualmech.compare import compare
-from dualmech.equations import state_symbols
+from dualmech.verify.check import compare
+from dualmech.model.equations import state_symbols
 from dualmech.verify.coordinates import OwnCoordinates
 from dualmech.verify.display import dotted
 from dualmech.verify.explain import explain_model

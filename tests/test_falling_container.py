@@ -5,7 +5,7 @@ import sympy as sp
 from hypothesis import given, settings
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
 from dualmech.problems.falling_container import (FallingContainer, c, g, k, l0, m1, m2, x1, x2, y1, y2)

@@ -1,4 +1,4 @@
-"""Fidelity ladders (dualmech.numeric.fidelity): what each simplification costs, measured.
+"""Fidelity ladders (dualmech.numeric.studies.fidelity): what each simplification costs, measured.
 
 Hand references: the mobile robot with f = T = 0 conserves the horizontal momentum
 (M + m) x' - m L cos(phi) phi' (problems/mobile_robot.py), so the detailed base moves by
@@ -11,7 +11,7 @@ import pytest
 from scipy.special import ellipj, ellipk
 
 from dualmech.numeric import NumericModel, problem_parameters
-from dualmech.numeric.fidelity import has_ladder, ladder
+from dualmech.numeric.studies.fidelity import has_ladder, ladder
 from dualmech.numeric.integrators import integrate
 from dualmech.problems import get
 
@@ -78,10 +78,10 @@ def test_which_problems_have_a_ladder():
     assert not has_ladder(get("falling_container"))   # falls: no equilibrium, no ladder
 
 
-# -- the `fidelity` command (dualmech.numeric.commands) ----------------------------------------
+# -- the `fidelity` command (dualmech.cli.studies) ----------------------------------------
 def _cli():
     import argparse
-    from dualmech.numeric.commands import register
+    from dualmech.cli.studies import register
     parser = argparse.ArgumentParser(prog="dualmech")
     register(parser.add_subparsers(dest="command"))
     return parser

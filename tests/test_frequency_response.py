@@ -5,7 +5,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.numeric import NumericModel
 from dualmech.problems.frequency_response import FrequencyResponse, F0, amplitude, c, k, m, omega, x
 

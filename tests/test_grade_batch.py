@@ -1,6 +1,6 @@
 """``dualmech grade``: the command, CSV batches on a process pool and on Dask, the reports.
 
-The subcommand is tested through a parser built here with :func:`dualmech.grade.cli.register`,
+The subcommand is tested through a parser built here with :func:`dualmech.cli.grade.register`,
 as the main ``dualmech`` command wires it.  Batches use the simple pendulum and the toy car;
 the verdicts they must reach are those of the single-answer tests (``a theta'' + g sin(theta)``
 is the pendulum's equation; its mirror image with ``-g`` is not).
@@ -14,7 +14,7 @@ import json
 import pytest
 
 from dualmech.grade.batch import BatchError, grade_batch, grade_rows, read_csv
-from dualmech.grade.cli import EXIT_RIGHT, EXIT_USAGE, EXIT_WRONG, register
+from dualmech.cli.grade import EXIT_RIGHT, EXIT_USAGE, EXIT_WRONG, register
 from dualmech.grade.report import summarise, write_report
 
 RIGHT = "a*theta'' + g*sin(theta) = 0"

@@ -99,12 +99,12 @@ def _printed_answers(g, ctx):
 @pytest.mark.parametrize("name", NAMES)
 def test_printed_answers_agree_with_the_library(name):
     """Each printed answer of the source, typed in, gets the verdict the library's own check
-    of printed answers gives (an independent implementation, dualmech.published); a wrong one
+    of printed answers gives (an independent implementation, dualmech.verify.published); a wrong one
     gets feedback.  This covers every row of README.md's errata table."""
-    from dualmech.published import check_published
+    from dualmech.verify.published import check_published
     g, ctx = context_or_refusal(name)
     if ctx.static_rows():
-        # dualmech.published calls copying_machine's printed static equation wrong although
+        # dualmech.verify.published calls copying_machine's printed static equation wrong although
         # it reports "printed minus that = 0" (its check of static rows compares zeros); the
         # grader decides these by the comparator (tests/test_grade_safety.py)
         pytest.skip(f"{name}: the library's check of printed static rows disagrees with itself")

@@ -13,7 +13,7 @@ import pytest
 import sympy as sp
 
 from dualmech import coordinate
-from dualmech.equations import state_symbols
+from dualmech.model.equations import state_symbols
 from dualmech.grade.audit import dimension_issues
 from dualmech.grade.formula import Env, Formula, difference
 from dualmech.grade.parser import AnswerError, AnswerTooLarge, Limits, parse
@@ -170,7 +170,7 @@ def test_limits_are_configurable():
 
 
 def test_dimension_audit_names_the_odd_term():
-    from dualmech.dimensions import ANGLE, FORCE, LENGTH, MASS, ACCELERATION, reduce
+    from dualmech.model.dimensions import ANGLE, FORCE, LENGTH, MASS, ACCELERATION, reduce
     dims = {TH.q: (), TH.qd: (("time", -1),), TH.qdd: (("time", -2),),
             m: tuple(sorted(reduce(MASS))), g: tuple(sorted(reduce(ACCELERATION))),
             X1.q: tuple(sorted(reduce(LENGTH)))}

@@ -1,4 +1,4 @@
-"""Grading contexts kept on disk (:mod:`dualmech.grade.stored`): the same grades, never stale,
+"""Grading contexts kept on disk (:mod:`dualmech.grade.stored_contexts`): the same grades, never stale,
 never a way to run code.
 
 Each test points ``DUALMECH_CACHE_DIR`` at a fresh directory.  The reference for "the same
@@ -17,7 +17,7 @@ import sys
 import pytest
 import sympy as sp
 
-from dualmech.grade import stored
+from dualmech.grade import stored_contexts as stored
 from dualmech.grade.api import Grader
 from dualmech.grade.batch import warm_targets
 from dualmech.grade.generate import correct_answers, wrong_answers
@@ -198,7 +198,7 @@ def test_a_damaged_or_foreign_file_is_ignored(cache):
 def test_a_stored_context_spares_the_command_symengine_and_numpy(cache):
     """With the context stored, the command's answer needs neither symengine nor numpy
     (``dualmech.startup.defer``); without it, they load when the models are derived."""
-    script = ("import sys\nfrom dualmech.cli import command\n"
+    script = ("import sys\nfrom dualmech.cli.main import command\n"
               "sys.argv = ['dualmech', 'grade', 'simple_pendulum', '--answer', "
               "\"a*theta'' + g*sin(theta) = 0\"]\n"
               "code = command()\n"

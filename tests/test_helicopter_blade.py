@@ -3,7 +3,7 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.problems.helicopter_blade import (A, L, M, HelicopterBlade, HelicopterBladeWeighted,
                                                 Omega, alpha0, beta, first_order, frames, g,
                                                 lift_per_length, x)

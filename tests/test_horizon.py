@@ -1,4 +1,4 @@
-"""Chaotic horizons against a reference more accurate than the run (dualmech.numeric.horizon).
+"""Chaotic horizons against a reference more accurate than the run (dualmech.numeric.studies.horizon).
 
 The property checked: an error that starts at the tolerance and grows like e^(lambda t) passes
 a threshold at t = (ln threshold - ln tol) / lambda, so the horizons' slope against -ln(tol)
@@ -8,8 +8,8 @@ judged by the slope's own standard error (least squares over the tolerances).
 import numpy as np
 import pytest
 
-from dualmech.numeric.horizon import horizons, lyapunov, state_sizes
-from dualmech.numeric.regimes import chaos
+from dualmech.numeric.studies.horizon import horizons, lyapunov, state_sizes
+from dualmech.numeric.studies.regimes import chaos
 from dualmech.problems import get
 
 Y0 = [2.0, 2.5, 0.0, 0.0]   # the atlas's chaotic state of the compound double pendulum

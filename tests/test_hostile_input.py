@@ -32,8 +32,8 @@ from dualmech import (EquationSet, Frame, Lagrangian, MassProperties, NewtonEule
                       Point, RigidBody, Vector, composite, coordinate, cuboid, parallel_axis,
                       point_mass, rot_axis, rot_x, rot_y, rot_z, skew, solid_cylinder,
                       solid_sphere, t, thin_disk, thin_rod)
-from dualmech.dimensions import ACCELERATION, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech.model.dimensions import ACCELERATION, FORCE, LENGTH, MASS, STIFFNESS
+from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
 
 # the same name in every xdist worker (parametrize ids must agree); removed before each check
 MARKER = Path(tempfile.gettempdir()) / "PWNED_dualmech_hostile_input"
@@ -115,7 +115,7 @@ def _lg(term):
 
 def _compare_with(**declared):
     """``compare`` a correct one-coordinate problem whose declarations get ``declared``."""
-    from dualmech.compare import compare
+    from dualmech.verify.check import compare
     dims = dict(pdim=MASS, pdefault=2.0, cdim=LENGTH, cdomain=None, rdim=FORCE)
     dims.update(declared)
     N = sp.Symbol("N", real=True)
@@ -142,32 +142,32 @@ def _compare_with(**declared):
 
 
 def _steady(h):
-    from dualmech.steady import steady_conditions
+    from dualmech.model.steady import steady_conditions
     return steady_conditions(PEND, [], {m: h})
 
 
 def _steady_rate(h):
-    from dualmech.steady import steady_rates
+    from dualmech.model.steady import steady_rates
     return steady_rates(PEND, [], h)
 
 
 def _inputs(h):
-    from dualmech.inverse import required_inputs
+    from dualmech.model.inverse import required_inputs
     return required_inputs(PEND, [h], {th: t})
 
 
 def _inputs_motion(h):
-    from dualmech.inverse import required_inputs
+    from dualmech.model.inverse import required_inputs
     return required_inputs(PEND, [k], {th: h})
 
 
 def _peak(h):
-    from dualmech.inverse import peak
+    from dualmech.model.inverse import peak
     return peak(h, (0.0, 1.0))
 
 
 def _peak_params(h):
-    from dualmech.inverse import peak
+    from dualmech.model.inverse import peak
     return peak(sp.sin(m * t), (0.0, 1.0), {m: h})
 
 
@@ -394,7 +394,7 @@ class _NamedWrong(_Named):
 
 def test_hostile_names_are_never_code():
     """Compare (right and wrong), explain and simulate with hostile names: nothing runs."""
-    from dualmech.compare import compare
+    from dualmech.verify.check import compare
     from dualmech.numeric import simulate
     right = compare(_Named(), points=2)
     assert right.equivalent
@@ -419,7 +419,7 @@ def test_coordinate_given_text_says_to_use_coordinate():
 
 
 def test_unused_declarations_are_mistakes_named_in_one_error():
-    from dualmech.problem import ProblemError
+    from dualmech.model.problem import ProblemError
 
     class Stale(_Named):
         name = "stale"
@@ -520,7 +520,7 @@ def test_bad_sample_counts_are_refused(pendulum, samples):
 
 @pytest.mark.parametrize("points", [0, -1, 1.5, True, "3", None])
 def test_points_must_be_a_positive_integer(pendulum, points):
-    from dualmech.compare import compare
+    from dualmech.verify.check import compare
     with pytest.raises(ValueError, match="`points` must be a positive integer"):
         compare(pendulum, points=points)
 
@@ -541,22 +541,22 @@ def test_absurd_point_counts_are_refused_before_any_work(pendulum, monkeypatch):
 
 # -- the library's own converters never parse text ----------------------------------------------
 def _bridge_init(h):
-    from dualmech._algebra import Bridge
+    from dualmech.model._algebra import Bridge
     return Bridge([h])
 
 
 def _bridge_se(h):
-    from dualmech._algebra import Bridge
+    from dualmech.model._algebra import Bridge
     return Bridge().se(h)
 
 
 def _bridge_sp(h):
-    from dualmech._algebra import Bridge
+    from dualmech.model._algebra import Bridge
     return Bridge().sp(h)
 
 
 def _to_se(h):
-    from dualmech._algebra import to_se
+    from dualmech.model._algebra import to_se
     return to_se(h)
 
 

@@ -5,10 +5,10 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
-from dualmech.dimensions import audit
-from dualmech.equations import to_plain
-from dualmech.exact import ExactForm
+from dualmech.verify.check import compare
+from dualmech.model.dimensions import audit
+from dualmech.model.equations import to_plain
+from dualmech.exact.form import ExactForm
 from dualmech.problems.inertia_wheel_pendulum import (I1, I2, InertiaWheelPendulum, g, hand_reactions, l1,
                                              l_c1, m1, m2, q1, q2, tau)
 
@@ -20,7 +20,7 @@ M = m1 * l_c1 + m2 * l1
 
 
 def _identically_zero(expr) -> bool:
-    """Exact rational-point test (dualmech.exact): zero at 4 random points, else False."""
+    """Exact rational-point test (dualmech.exact.form): zero at 4 random points, else False."""
     plain = to_plain(expr, (q1, q2))
     form = ExactForm.build([plain], sorted(plain.free_symbols, key=str))
     assert form.method == "exact"

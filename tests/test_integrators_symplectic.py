@@ -11,7 +11,7 @@ import pytest
 
 from dualmech.numeric.formulations import formulations
 from dualmech.numeric.integrators import IntegrationError, integrate
-from dualmech.numeric.regimes import growth_exponent
+from dualmech.numeric.studies.regimes import growth_exponent
 from dualmech.numeric.simulation import problem_parameters
 from dualmech.numeric.symplectic import constraint_functions
 from dualmech.problems import get

@@ -12,9 +12,9 @@ import pytest
 import sympy as sp
 import sympy.physics.mechanics as me
 
-from dualmech.equations import ModelError
-from dualmech.interop import (check_mechanics, from_mechanics, lagranges_method, to_mechanics,
-                              with_derivation)
+from dualmech.model.equations import ModelError
+from dualmech.verify.interop import (check_mechanics, from_mechanics, lagranges_method,
+                                    to_mechanics, with_derivation)
 from dualmech.problems import get
 
 TOY_CAR = get("toy_car")
@@ -89,7 +89,7 @@ def test_a_lagranges_method_with_a_multiplier_recovers_the_tension():
     assert [str(u) for u in eqs.unknowns] == ["T"]
     problem = with_derivation(PENDULUM, eqs,
                               coordinate_map=PENDULUM.coordinate_maps()["multiplier"])
-    from dualmech.compare import compare
+    from dualmech.verify.check import compare
     c = compare(problem)
     assert c.equivalent, str(c)
     theta = PENDULUM.coordinate_functions[0]

@@ -1,4 +1,4 @@
-"""Inverse dynamics (dualmech/inverse.py): inputs and reactions along a prescribed motion."""
+"""Inverse dynamics (dualmech/model/inverse.py): inputs and reactions along a prescribed motion."""
 import math
 import sys
 
@@ -6,7 +6,7 @@ import pytest
 import sympy as sp
 
 from dualmech import EquationSet, ModelError, coordinate, t
-from dualmech.inverse import peak, required_inputs
+from dualmech.model.inverse import peak, required_inputs
 
 x, th = coordinate("x"), coordinate("theta")
 m, l, g, k = sp.symbols("m l g k", positive=True)

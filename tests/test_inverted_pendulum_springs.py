@@ -3,7 +3,7 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.problems.inverted_pendulum_springs import InvertedPendulumSprings, a, g, k, l, m, theta
 
 problem = InvertedPendulumSprings()

@@ -5,8 +5,8 @@ import pytest
 import sympy as sp
 
 from dualmech import Lagrangian
-from dualmech.compare import compare
-from dualmech.problem import Published
+from dualmech.verify.check import compare
+from dualmech.model.problem import Published
 from dualmech.problems.copying_machine import CopyingMachine
 from dualmech.problems.coupled_pendulums import CoupledPendulums
 from dualmech.problems.restrained_pendulum import RestrainedPendulum, g, l, m, theta

@@ -11,11 +11,11 @@ import pytest
 import sympy as sp
 from scipy.special import mathieu_a, mathieu_b
 
-from dualmech.compare import compare
-from dualmech.numeric.atlas import atlas
-from dualmech.numeric.floquet import NotDriven, floquet, forcing_period, monodromy
+from dualmech.verify.check import compare
+from dualmech.numeric.studies.atlas import atlas
+from dualmech.numeric.studies.floquet import NotDriven, floquet, forcing_period, monodromy
 from dualmech.numeric.formulations import formulations
-from dualmech.numeric.mathieu import boundary, series, trace
+from dualmech.numeric.studies.mathieu import boundary, series, trace
 from dualmech.problems import get
 from dualmech.problems.kapitza_pendulum import hand_tension, mathieu_parameters
 

@@ -1,7 +1,7 @@
 """Frames, rotation matrices, angular velocity, the transport theorem and point kinematics.
 
 Symbolic claims are decided exactly: small expressions by ``simplify``, larger ones by
-evaluation at random rational points (:class:`dualmech.exact.ExactForm`).
+evaluation at random rational points (:class:`dualmech.exact.form.ExactForm`).
 """
 from __future__ import annotations
 
@@ -12,10 +12,10 @@ import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from dualmech.equations import to_plain
-from dualmech.exact import ExactForm
-from dualmech.kinematics import (Frame, Point, RelativeMotion, Vector, coordinate, rot_axis,
-                                 rot_x, rot_y, rot_z, skew, t, unskew)
+from dualmech.model.equations import to_plain
+from dualmech.exact.form import ExactForm
+from dualmech.model.kinematics import (Frame, Point, RelativeMotion, Vector, coordinate, rot_axis,
+                                      rot_x, rot_y, rot_z, skew, t, unskew)
 
 a = sp.Symbol("a", real=True)
 ROTATIONS = {"x": rot_x, "y": rot_y, "z": rot_z}
@@ -29,7 +29,7 @@ def vanishes_exactly(exprs, coordinates=(), points: int = 3, seed: int = 0) -> b
     """True when every expression is identically zero, decided by the library's exact method.
 
     Coordinates ``q(t)`` and their derivatives become plain symbols, then
-    :class:`~dualmech.exact.ExactForm` evaluates at random rational points.  A nonzero value is
+    :class:`~dualmech.exact.form.ExactForm` evaluates at random rational points.  A nonzero value is
     a certain counter-example; the chance of missing one is below ``degree/2**62`` per point.
     """
     plain = [to_plain(e, coordinates) for e in exprs]

@@ -13,14 +13,14 @@ import pytest
 import sympy as sp
 
 from dualmech import problems
-from dualmech.cli import main
+from dualmech.cli.main import main
 
 USER_FILE = textwrap.dedent('''
     import sympy as sp
     from dualmech import Lagrangian, coordinate, t
-    from dualmech.dimensions import LENGTH, MASS, STIFFNESS
-    from dualmech.equations import EquationSet
-    from dualmech.problem import Coordinate, Parameter, Problem
+    from dualmech.model.dimensions import LENGTH, MASS, STIFFNESS
+    from dualmech.model.equations import EquationSet
+    from dualmech.model.problem import Coordinate, Parameter, Problem
 
     m, k = sp.symbols("m k", positive=True)
     x = coordinate("x")
@@ -68,7 +68,7 @@ def test_a_file_with_one_problem_is_checked_by_path(capsys, user_dir):
     d = json.loads(out)
     assert d["name"] == "my_spring" and d["equivalent"] is True
     # the acceleration, by hand: x'' = -k x / m
-    from dualmech.compare import compare
+    from dualmech.verify.check import compare
     problem = problems.load(str(user_dir / "one_spring.py"))
     mod = sys.modules[type(problem).__module__]
     (acc,) = compare(problem).accelerations.values()
@@ -191,7 +191,7 @@ def test_new_writes_a_skeleton_that_passes_check_and_its_test(capsys, tmp_path):
     d = json.loads(out)
     assert d["name"] == "bead_on_rod" and d["equivalent"]
     # the pendulum by hand: tension m (g cos theta + l theta'^2)
-    from dualmech.compare import compare
+    from dualmech.verify.check import compare
     mod = sys.modules[type(problems.load(str(path))).__module__]
     (tension,) = compare(problems.load(str(path))).reactions.values()
     hand = mod.m * (mod.g * sp.cos(mod.theta) + mod.l * mod.theta.diff(mod.t)**2)

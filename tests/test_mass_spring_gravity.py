@@ -2,8 +2,8 @@
 import pytest
 import sympy as sp
 
-from dualmech.compare import compare
-from dualmech.equations import ModelError
+from dualmech.verify.check import compare
+from dualmech.model.equations import ModelError
 from dualmech.problems.mass_spring_gravity import F, M, MassSpringGravity, g, k, static_equilibrium, x
 
 problem = MassSpringGravity()

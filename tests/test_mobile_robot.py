@@ -4,8 +4,8 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
-from dualmech.inverse import peak, required_inputs
+from dualmech.verify.check import compare
+from dualmech.model.inverse import peak, required_inputs
 from dualmech.numeric import NumericModel, simulate
 from dualmech.problems.mobile_robot import (D1, D2, M, MobileRobot, MobileRobotSimplified, T, arm_profile,
                                    arm_properties, base_profile, f, g, m1, m2, phi, r2, x)

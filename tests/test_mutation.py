@@ -1,4 +1,4 @@
-"""An honest mutation score (dualmech.mutation): what raises or gets no verdict is reported
+"""An honest mutation score (dualmech.verify.mutation): what raises or gets no verdict is reported
 apart, `points` is validated, one derivation alone is refused, `_identical` never calls
 a mutant identical without evaluating it, a survivor is called equivalent only when it
 gives its original's motion and every one of its reactions, and an unknown reaction's flipped
@@ -7,8 +7,8 @@ import pytest
 import sympy as sp
 
 from dualmech import EquationSet, coordinate, t
-from dualmech.mutation import (MutationReport, _against_original, _equivalent, _identical,
-                               _in_ref, mutation_report)
+from dualmech.verify.mutation import (MutationReport, _against_original, _equivalent, _identical,
+                                     _in_ref, mutation_report)
 from dualmech.problems import get
 
 
@@ -53,7 +53,7 @@ def test_identical_is_not_claimed_when_no_sample_can_be_evaluated():
 
 
 def test_mutants_that_raise_are_counted_apart(monkeypatch):
-    import dualmech.mutation as mutation
+    import dualmech.verify.mutation as mutation
     real = mutation.judge
     calls = {"n": 0}
 
@@ -102,7 +102,7 @@ def test_a_flipped_multiplier_is_equivalent_only_where_it_vanishes():
 
 
 def test_every_unknown_reaction_of_every_model_gets_a_sign_flip():
-    from dualmech.mutation import mutants
+    from dualmech.verify.mutation import mutants
     p = get("compound_double_pendulum")
     flips = {m.description: m for m in mutants(p) if "sign of unknown" in m.description}
     expected = {f"{name}: flip the sign of unknown `{u}`"
@@ -112,7 +112,7 @@ def test_every_unknown_reaction_of_every_model_gets_a_sign_flip():
 
 def test_a_flipped_unknown_reaction_keeps_the_motion_and_negates_the_reaction():
     # independent of the comparator: solve both models symbolically (toy_car is small)
-    from dualmech.mutation import mutants
+    from dualmech.verify.mutation import mutants
     p = get("toy_car")
     model = p.model("newton_euler")
     (flip,) = [m for m in mutants(p) if m.description == "newton_euler: flip the sign of "

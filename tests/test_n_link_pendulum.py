@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 from dualmech import NewtonEuler, RigidBody, t, thin_rod
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.problems.n_link_pendulum import NLinkRigidPendulum, g
 
 D = lambda q, n=1: q.diff(t, n)  # noqa: E731

@@ -1,4 +1,4 @@
-"""Textbook notation (dualmech.notation): dots, primes, LaTeX, machine text, MathML.
+"""Textbook notation (dualmech.model.notation): dots, primes, LaTeX, machine text, MathML.
 
 Reference for the LaTeX: ``sympy.physics.vector.vlatex``, the printer sympy's own mechanics
 package uses for dynamic symbols (an independent implementation).  Reference for the machine
@@ -11,8 +11,9 @@ import sympy as sp
 from sympy.parsing.sympy_parser import parse_expr
 from sympy.physics.vector import dynamicsymbols, vlatex
 
-from dualmech import coordinate, notation, t
-from dualmech.cli import main
+from dualmech import coordinate, t
+from dualmech.model import notation
+from dualmech.cli.main import main
 from dualmech.problems import get
 
 th, q1, x = coordinate("theta"), coordinate("q1"), coordinate("x_B")
@@ -134,7 +135,7 @@ def test_json_carries_a_machine_form_beside_the_human_one(capsys):
 
 # -- Jupyter rich display ---------------------------------------------------------------------
 def test_comparison_displays_its_verdict_and_typeset_reactions():
-    from dualmech.compare import compare
+    from dualmech.verify.check import compare
     c = compare(get("simple_pendulum"))
     assert repr(c).startswith("<Comparison simple_pendulum: all derivations agree")
     page = c._repr_html_()

@@ -5,7 +5,7 @@ import sympy as sp
 from hypothesis import given, settings
 
 from dualmech import t
-from dualmech.compare import compare, compare_models
+from dualmech.verify.check import compare, compare_models
 from dualmech.numeric import NumericModel
 from dualmech.testing import Point, assert_same_motion, points
 from dualmech.problems.pendulum_on_mass import (M, PendulumOnMass, frames, g, k, m,
@@ -111,7 +111,7 @@ def test_a_flipped_force_or_inertia_changes_the_motion(ingredient):
 
 @pytest.mark.parametrize("ingredient", MOTION_INGREDIENTS)
 def test_comparator_catches_a_flipped_force_or_inertia(ingredient):
-    # regression: with int / int -> float in dualmech/verify/linalg.py the integer reaction matrix
+    # regression: with int / int -> float in dualmech/exact/linalg.py the integer reaction matrix
     # made the least squares inexact and the flipped forces passed as equivalent
     broken = problem.model("newton_euler").flipped(ingredient)
     result = compare_models(problem.model("lagrange"), broken, explain=False)

@@ -5,10 +5,10 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
-from dualmech.dimensions import audit
-from dualmech.equations import to_plain
-from dualmech.exact import ExactForm
+from dualmech.verify.check import compare
+from dualmech.model.dimensions import audit
+from dualmech.model.equations import to_plain
+from dualmech.exact.form import ExactForm
 from dualmech.problems.pendulum_on_rotating_plane import (N, Omega, PendulumOnRotatingPlane, alpha, beta0,
                                                  c, g, hand_rod_force, l, m, plane_angle, theta)
 
@@ -19,7 +19,7 @@ S = sp.Symbol("S", real=True)
 
 
 def _identically_zero(expr) -> bool:
-    """Exact rational-point test (dualmech.exact) at 4 random points."""
+    """Exact rational-point test (dualmech.exact.form) at 4 random points."""
     plain = to_plain(expr, (theta,))
     form = ExactForm.build([plain], sorted(plain.free_symbols, key=str))
     assert form.method == "exact"

@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.numeric import reactions_at
 from dualmech.problems.pendulum_particle import PendulumParticle, S, g, hand_rod_force, l, m, theta, x, y
 

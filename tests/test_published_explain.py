@@ -4,10 +4,10 @@ import sympy as sp
 import pytest
 
 from dualmech import coordinate, t
-from dualmech.compare import compare
-from dualmech.notation import equation_words, sentence
+from dualmech.verify.check import compare
+from dualmech.model.notation import equation_words, sentence
 from dualmech.problems import get
-from dualmech.published import check_published, closest_equation
+from dualmech.verify.published import check_published, closest_equation
 
 from _pendulum import Pendulum, g, l, m, th
 
@@ -90,7 +90,7 @@ class _Heavier(Pendulum):
 
 
 def _doubled(eqs):
-    from dualmech.equations import EquationSet
+    from dualmech.model.equations import EquationSet
     return EquationSet(eqs.name, eqs.coordinates, [e.subs(g, 2 * g) for e in eqs.equations],
                        eqs.unknowns, eqs.labels)
 
@@ -114,7 +114,7 @@ def test_printed_answers_beyond_the_fast_conversion_are_still_judged():
     # -pi/2 for x < 0) do not
     class Identities(Pendulum):
         def published(self):
-            from dualmech.problem import Published
+            from dualmech.model.problem import Published
             tension = m * g * sp.cos(th) + m * l * th.diff(t)**2
             S = sp.Symbol("S", real=True)
             return [

@@ -5,7 +5,7 @@ import sympy as sp
 from hypothesis import given, settings
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
 from dualmech.problems.pulley_bent_track import (M1, M2, PulleyBentTrack, c, drive, g, hand_reactions, k,

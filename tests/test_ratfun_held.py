@@ -1,13 +1,13 @@
-"""The display solve from symengine trees (:func:`dualmech.verify.ratfun.solve_rational_held`,
+"""The display solve from symengine trees (:func:`dualmech.exact.rational_functions.solve_rational_held`,
 only the atoms converted to sympy) gives exactly the expressions of the sympy route
 (:func:`solve_rational` on every entry converted): the same reduced fractions, written alike."""
 import pytest
 import symengine as se
 import sympy as sp
 
-from dualmech._algebra import to_sp
+from dualmech.model._algebra import to_sp
 from dualmech.problems import get
-from dualmech.verify.ratfun import NotRational, solve_rational, solve_rational_held
+from dualmech.exact.rational_functions import NotRational, solve_rational, solve_rational_held
 
 #: (problem, model, whether every atom stays an atom in sympy); where one does not (sympy writes
 #: sin(theta1 - theta2) as -sin(theta2 - theta1), a product), the held route refuses and the

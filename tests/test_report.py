@@ -13,7 +13,7 @@ import pytest
 import sympy as sp
 
 from dualmech import coordinate, t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.report import write_report
 from dualmech.report.charts import SAME, group_curves, trajectory_chart
 from dualmech.report.mathml import equation

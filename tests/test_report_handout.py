@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.problems import get
 from dualmech.report import write_report
 from dualmech.report.charts import trajectory_chart
@@ -107,8 +107,8 @@ def test_constant_curves_and_zero_reactions_are_said_not_drawn(tmp_path):
 
 
 def test_drift_at_rounding_level_is_said_not_drawn(monkeypatch, tmp_path):
-    from dualmech.numeric import atlas
-    from dualmech.numeric.regimes import Drift
+    from dualmech.numeric.studies import atlas
+    from dualmech.numeric.studies.regimes import Drift
     seen = {}
 
     def keep(fig, stem, **kw):

@@ -6,7 +6,7 @@ import sympy as sp
 from hypothesis import given, settings
 
 from dualmech import EquationSet, Lagrangian, t
-from dualmech.compare import compare, compare_models, reaction_pairs
+from dualmech.verify.check import compare, compare_models, reaction_pairs
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
 from dualmech.problems.restrained_pendulum import (RestrainedPendulum,

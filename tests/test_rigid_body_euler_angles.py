@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.numeric import NumericModel, SingularityError
 from dualmech.problems.rigid_body_euler_angles import (A, B, C, Q1, Q2, Q3, RigidBodyEulerAngles,
                                               body_rates, frames, phi, psi, theta)
@@ -101,8 +101,8 @@ def test_published_verdicts(comparison):
 
 def test_a_wrong_spin_rate_would_be_caught(comparison):
     # guard on the verdicts above: the same check calls a sign slip in w1 wrong
-    from dualmech.problem import Published
-    from dualmech.published import check_published
+    from dualmech.model.problem import Published
+    from dualmech.verify.published import check_published
     f = frames()
     w1 = f.b.ang_vel_in(f.O).express(f.b).components[0]
     bad = Published("w1 with a sign slip", "expression",

@@ -5,8 +5,8 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
-from dualmech.exact import ExactForm
+from dualmech.verify.check import compare
+from dualmech.exact.form import ExactForm
 from dualmech.problems.rigid_rod_pendulum import RigidRodPendulum, g, hand_reactions, l, m, theta
 
 problem = RigidRodPendulum()

@@ -4,9 +4,9 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.numeric import simulate
-from dualmech.steady import steady_rates
+from dualmech.model.steady import steady_rates
 from dualmech.problems.satellite_polar import SatellitePolar, angular_momentum, frames, m, mu, r, theta
 
 problem = SatellitePolar()

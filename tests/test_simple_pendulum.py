@@ -3,7 +3,7 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare, compare_models, reaction_pairs
+from dualmech.verify.check import compare, compare_models, reaction_pairs
 from dualmech.problems.simple_pendulum import M, SimplePendulum, a, g, hand_tension, theta
 
 problem = SimplePendulum()

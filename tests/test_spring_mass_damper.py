@@ -3,7 +3,7 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare, compare_models
+from dualmech.verify.check import compare, compare_models
 from dualmech.problems.spring_mass_damper import (F0, Omega, SpringMassDamper, b, forcing, k, m,
                                          steady_state, x)
 

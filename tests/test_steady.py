@@ -1,10 +1,10 @@
-"""Steady motions (dualmech.steady): conditions and rates from the equations, clear refusals."""
+"""Steady motions (dualmech.model.steady): conditions and rates from the equations, clear refusals."""
 import pytest
 import sympy as sp
 
 from dualmech import Lagrangian, coordinate, t
-from dualmech.equations import EquationSet, ModelError
-from dualmech.steady import steady_conditions, steady_rates
+from dualmech.model.equations import EquationSet, ModelError
+from dualmech.model.steady import steady_conditions, steady_rates
 
 r, th, z = coordinate("r"), coordinate("theta"), coordinate("z")
 m, mu, k, g = sp.symbols("m mu k g", positive=True)

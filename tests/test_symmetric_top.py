@@ -4,8 +4,8 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
-from dualmech.equations import state_symbols
+from dualmech.verify.check import compare
+from dualmech.model.equations import state_symbols
 from dualmech.numeric import NumericModel, simulate
 from dualmech.problems.symmetric_top import (A, C, M, SymmetricTop, frames, g, h, momenta, phi, psi,
                                     steady_precession_rates, theta)

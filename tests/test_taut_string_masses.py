@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.problems.taut_string_masses import (P, TautStringMasses, a, exact_geometry, m,
                                          string_pulls, x1, x2)
 

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.problems.three_mass_chain import (ThreeMassChain, g, k1, k2, k3, m1, m2, m3,
                                        printed_matrices)
 

@@ -7,7 +7,7 @@ import sympy as sp
 from hypothesis import given, settings
 
 from dualmech import t
-from dualmech.compare import compare, compare_models, reaction_pairs
+from dualmech.verify.check import compare, compare_models, reaction_pairs
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
 from dualmech.problems.toy_car import R, ToyCar, coriolis_term, frames, g, m, phi, theta

@@ -3,7 +3,7 @@ import pytest
 import sympy as sp
 
 from dualmech import Frame, Point, rot_z, t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.problems.trolley_pendulum import (F, M, P, TrolleyPendulum, X, a, energies, g,
                                        hand_generalised_forces, hand_tension, m, theta, x)
 

@@ -5,8 +5,8 @@ import sympy as sp
 from hypothesis import given, settings
 
 from dualmech import t
-from dualmech.compare import compare, compare_models
-from dualmech.equations import to_plain
+from dualmech.verify.check import compare, compare_models
+from dualmech.model.equations import to_plain
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
 from dualmech.problems.two_rod_linkage import (M, TwoRodLinkage, c, g, k, l, l0, m, scene, theta, x)

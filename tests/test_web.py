@@ -77,7 +77,7 @@ def test_index_lists_served_problems_only(client):
 
 
 def test_units_of_dimensions():
-    from dualmech.dimensions import ANGLE, ENERGY, TORSIONAL_DAMPING
+    from dualmech.model.dimensions import ANGLE, ENERGY, TORSIONAL_DAMPING
     assert unit(ENERGY) == "kg m² s⁻²"
     assert unit(ANGLE) == "rad"
     # torque * time / angle: kg m^2 s^-1 (the angle is dimensionless)
@@ -299,7 +299,7 @@ def test_serve_refuses_an_unknown_problem_with_the_reason():
 
 
 def test_serve_command_is_registered_and_checks_its_port(capsys):
-    from dualmech.cli import main
+    from dualmech.cli.main import main
     assert main(["serve", "--port", "70000"]) == 2
     assert "`--port` must be 1 to 65535" in capsys.readouterr().err
 

@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 
 from dualmech import NewtonEuler, t
-from dualmech.compare import compare
+from dualmech.verify.check import compare
 from dualmech.problems.wheel_on_pivot import WheelOnPivot, a, direct_form, frames, g, l, m, phi, tau
 
 problem = WheelOnPivot()

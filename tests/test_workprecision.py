@@ -1,4 +1,4 @@
-"""Work-precision sweeps (dualmech.numeric.workprecision) on the particle pendulum of source 003.
+"""Work-precision sweeps (dualmech.numeric.studies.workprecision) on the particle pendulum of source 003.
 
 What is asserted are the measured numbers and their bookkeeping, not the pictures: the
 errors are recomputed independently for one run, RK45's error is proportional to its
@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from dualmech.numeric.formulations import formulations
-from dualmech.numeric.workprecision import work_precision
+from dualmech.numeric.studies.workprecision import work_precision
 from dualmech.problems import get
 
 TOLS = (1e-4, 1e-6, 1e-8)
@@ -129,10 +129,10 @@ def test_data_and_charts_are_written(wp, tmp_path):
     assert data["span"] == [0.0, 3.0] and len(data["runs"]) == len(wp.runs)
 
 
-# -- the `chart` command (dualmech.numeric.commands) ------------------------------------------
+# -- the `chart` command (dualmech.cli.studies) ------------------------------------------
 def _cli():
     import argparse
-    from dualmech.numeric.commands import register
+    from dualmech.cli.studies import register
     parser = argparse.ArgumentParser(prog="dualmech")
     register(parser.add_subparsers(dest="command"))
     return parser

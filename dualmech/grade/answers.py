@@ -47,9 +47,9 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from dualmech.equations import EquationSet, ModelError
-from dualmech.kinematics import t
-from dualmech.problem import Problem
+from dualmech.model.equations import EquationSet, ModelError
+from dualmech.model.kinematics import t
+from dualmech.model.problem import Problem
 from dualmech.grade.context import GradingUnavailable, ProblemContext
 from dualmech.grade.parser import AnswerError, parse
 

@@ -36,7 +36,7 @@ _METHODS = {"exact": "exact rational-point test", "slow": "library comparator"}
 class Grader:
     """Grades answers to one problem; the problem's models and points are built once.
 
-    ``problem`` is a :class:`~dualmech.problem.Problem` or a catalogue name.
+    ``problem`` is a :class:`~dualmech.model.problem.Problem` or a catalogue name.
     """
 
     _cache: dict = {}
@@ -46,7 +46,7 @@ class Grader:
         self._named = None   # the catalogue name the problem was built from, if any
         if isinstance(problem, str):
             from dualmech import problems as catalogue_
-            from dualmech.grade import stored
+            from dualmech.grade import stored_contexts as stored
             name = problem
             self._ctx = stored.load(name, seed)   # a context kept by an earlier run
             if self._ctx is not None:

@@ -13,7 +13,7 @@ import re
 
 from sympy.printing.str import StrPrinter
 
-from dualmech.dimensions import format_dimension, reduce
+from dualmech.model.dimensions import format_dimension, reduce
 from dualmech.grade.formula import Formula, tree_to_sympy
 
 __all__ = ["display", "dimension_issues", "expected_dimension", "reduced", "Dims",
@@ -101,7 +101,7 @@ def label_words(label: str) -> str:
     if label.startswith("linearised, "):
         return f"the linearised {label[12:]} equation"
     if label.startswith("sum "):   # a force or moment balance, named as a teacher reads it
-        from dualmech.notation import equation_words   # (only feedback naming a balance needs it)
+        from dualmech.model.notation import equation_words   # (only feedback naming a balance needs it)
         words = equation_words(label)
         if len(words) == 1 and not words[0].startswith("the equation "):
             return words[0]

@@ -3,7 +3,7 @@
 Per problem, once: the :class:`~.vocabulary.Vocabulary`, the dimension of every symbol, and
 :class:`Point` s -- random exact points ``(parameters, t, q, q')`` where the reference model is
 regular, with the true accelerations (solved from the reference model by exact Gauss--Jordan,
-:mod:`dualmech.verify.linalg`) and the reactions of every direct or multiplier model fitted at
+:mod:`dualmech.exact.linalg`) and the reactions of every direct or multiplier model fitted at
 those accelerations.  The models are evaluated by the same exact evaluator as the answers
 (:mod:`.formula`: rational functions of the symbols and of ``sin``/``cos`` at rational points of
 the unit circle), so an answer and the truth see the same value of every angle.  An answer is
@@ -16,7 +16,7 @@ state, possibly depending on the parameters) can be told apart from a state-depe
 
 A problem whose models leave that world (``sqrt``, ``Abs``, ...) has no exact points
 (:attr:`ProblemContext.method` is ``"slow"``): its answers are decided by
-:func:`dualmech.compare.compare_models` (:mod:`.slow`).  Real points in the declared ranges
+:func:`dualmech.verify.check.compare_models` (:mod:`.slow`).  Real points in the declared ranges
 (``points("mpmath")``) only show values to a student, never decide.
 
 Example
@@ -37,11 +37,11 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from dualmech.dimensions import TIME
-from dualmech.equations import state_symbols, to_plain
-from dualmech.exact import MP_DIGITS, SAMPLE_BITS
-from dualmech.kinematics import t
-from dualmech.verify import linalg as la
+from dualmech.model.dimensions import TIME
+from dualmech.model.equations import state_symbols, to_plain
+from dualmech.exact.form import MP_DIGITS, SAMPLE_BITS
+from dualmech.model.kinematics import t
+from dualmech.exact import linalg as la
 from dualmech.grade.audit import reduced
 from dualmech.grade.formula import Env, Formula, seeded_draw
 from dualmech.grade.vocabulary import Vocabulary
@@ -224,7 +224,7 @@ class ProblemContext:
     def method(self) -> str:
         """``exact`` when every model of the problem evaluates exactly (rational functions of
         the symbols and of sines and cosines of angles), else ``slow`` (answers are then
-        decided by :func:`dualmech.compare.compare_models`)."""
+        decided by :func:`dualmech.verify.check.compare_models`)."""
         return "exact" if self._formulas()[1] and not self.static_rows() else "slow"
 
     def points(self, method: str) -> list[Point]:

@@ -1,7 +1,7 @@
 r"""The ingredients of a problem's Lagrange model, sorted by what they are.
 
 A Lagrange model records, per equation, the piece each ingredient contributes
-(:attr:`dualmech.equations.EquationSet.contributions`): ``d/dt dT/dq' - dT/dq`` for a kinetic
+(:attr:`dualmech.model.equations.EquationSet.contributions`): ``d/dt dT/dq' - dT/dq`` for a kinetic
 energy, ``dV/dq`` for a potential, ``dR/dq'`` for a dissipation function, ``-Q`` for a
 generalised force, ``-lambda dg/dq`` for a constraint.  The grader sorts them by their
 symbols, which needs no knowledge of how the problem named them:
@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech.kinematics import t
+from dualmech.model.kinematics import t
 from dualmech.grade.context import GradingUnavailable, ProblemContext, off_motion, zero
 from dualmech.grade.formula import Formula
 

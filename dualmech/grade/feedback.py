@@ -37,10 +37,10 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from dualmech.dimensions import (ACCELERATION, DAMPING, STIFFNESS, TORSIONAL_DAMPING,
-                          TORSIONAL_STIFFNESS)
-from dualmech.exact import MP_DIGITS
-from dualmech.kinematics import t
+from dualmech.model.dimensions import (ACCELERATION, DAMPING, STIFFNESS, TORSIONAL_DAMPING,
+                                      TORSIONAL_STIFFNESS)
+from dualmech.exact.form import MP_DIGITS
+from dualmech.model.kinematics import t
 from dualmech.grade.context import ProblemContext, zero
 from dualmech.grade.audit import display, reduced
 from dualmech.grade.formula import Formula

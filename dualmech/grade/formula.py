@@ -3,7 +3,7 @@ r"""Parsed answers made into formulas: resolved names, exact evaluation, degree 
 A :class:`Formula` is a small tree over the problem's own symbols, compiled into closures that
 evaluate it at a sampled point -- exactly, in ``Fraction`` arithmetic, or in high-precision
 floating point (mpmath) where the answer leaves the rational world (``sqrt``, ``exp``,
-``sin(theta/2)``).  The exact method is the one of :mod:`dualmech.exact`: after expanding
+``sin(theta/2)``).  The exact method is the one of :mod:`dualmech.exact.form`: after expanding
 multiple and compound angles, ``sin`` and ``cos`` of each angle monomial ``a`` are taken at a
 rational point of the unit circle, ``(cos a, sin a) = ((1 - u^2), 2u) / (1 + u^2)``, with ``u``
 drawn independently of every other variable -- including ``a`` itself where it also appears
@@ -38,7 +38,7 @@ from typing import Callable
 import mpmath
 import sympy as sp
 
-from dualmech.exact import MP_DIGITS
+from dualmech.exact.form import MP_DIGITS
 from dualmech.grade.parser import LIMITS, AnswerError, AnswerTooLarge, Limits, Node, to_text
 from dualmech.grade.cost import check
 from dualmech.grade.resolve import resolve

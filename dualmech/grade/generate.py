@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.printing.str import StrPrinter
 
-from dualmech.dimensions import DAMPING, LENGTH, TORSIONAL_DAMPING
+from dualmech.model.dimensions import DAMPING, LENGTH, TORSIONAL_DAMPING
 from dualmech.grade.context import ProblemContext
 from dualmech.grade.audit import reduced
 from dualmech.grade.judge import unit_circle

@@ -28,9 +28,9 @@ from dataclasses import dataclass, field, replace
 import mpmath
 import sympy as sp
 
-from dualmech.exact import MP_DIGITS
-from dualmech.kinematics import t
-from dualmech.verify import linalg as la
+from dualmech.exact.form import MP_DIGITS
+from dualmech.model.kinematics import t
+from dualmech.exact import linalg as la
 from dualmech.grade.answers import Quantity
 from dualmech.grade.context import GradingUnavailable, Point, ProblemContext, build_seconds, zero
 from dualmech.grade.feedback import Diagnosis, best_edit, concrete_state
@@ -242,7 +242,7 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
                        "equation of motion must involve the accelerations on the motion",
                        dimension_issues=dims, method="exact" if method == "exact" else "slow")
     if method == "slow":
-        from dualmech.grade.slow import slow_equations
+        from dualmech.grade.comparator_fallback import slow_equations
         v = slow_equations(ctx, formulas, single or quantity.coordinate is not None, dims)
         try:
             wrong = _off_at_real_points(ctx, formulas, [None] * k) if v.status == "wrong" \
@@ -477,7 +477,7 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
     method = method_for(ctx, comps + refs)
     if method == "slow":
         check_real(ctx, comps, need_for(ctx, comps))
-        from dualmech.grade.slow import slow_expression
+        from dualmech.grade.comparator_fallback import slow_expression
         v = slow_expression(ctx, comps, refs, dims, quantity.description)
         if v.status == "wrong":
             try:
@@ -565,7 +565,7 @@ def _off_at_real_points(ctx, formulas, refs) -> list[int]:
     """Indices whose value differs from its reference (None: from zero) at the real display
     points -- only to choose what to explain after the comparator's verdict."""
     import mpmath
-    from dualmech.exact import MP_DIGITS
+    from dualmech.exact.form import MP_DIGITS
     points = ctx.points("mpmath")       # GradingUnavailable: the caller decides
     out = []
     with mpmath.workdps(MP_DIGITS):
@@ -672,7 +672,7 @@ def _solved_rows(ctx, unknown) -> list:
 
 
 def _recovered(ctx, u) -> list:
-    from dualmech.compare import recover_reactions
+    from dualmech.verify.check import recover_reactions
 
     def build():
         try:

@@ -30,7 +30,7 @@ from dualmech.grade.notation import in_their_words
 from dualmech.grade.formula import Formula
 from dualmech.grade.judge import Deadline, Verdict, factor_edit, method_for
 from dualmech.grade.parser import AnswerError
-from dualmech.dimensions import ENERGY
+from dualmech.model.dimensions import ENERGY
 
 __all__ = ["judge_kinetic", "judge_potential", "judge_lagrangian", "judge_force"]
 

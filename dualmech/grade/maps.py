@@ -28,11 +28,11 @@ from dataclasses import dataclass, field
 import mpmath
 import sympy as sp
 
-from dualmech.equations import state_symbols, to_plain
-from dualmech.exact import MP_DIGITS
-from dualmech.kinematics import coordinate, t
-from dualmech.verify import linalg as la
-from dualmech.dimensions import TIME
+from dualmech.model.equations import state_symbols, to_plain
+from dualmech.exact.form import MP_DIGITS
+from dualmech.model.kinematics import coordinate, t
+from dualmech.exact import linalg as la
+from dualmech.model.dimensions import TIME
 from dualmech.grade.audit import expected_dimension, reduced
 from dualmech.grade.context import ProblemContext, _dsub
 from dualmech.grade.formula import Formula

@@ -1,6 +1,6 @@
 """Feedback as the student wrote the answer: their notation for rates (primes, dots, ``_d``,
 ``\\dot{}``), the aliases they used (``l`` for the source's ``a``), and every term as MathML for
-web pages (:func:`dualmech.notation.mathml`).
+web pages (:func:`dualmech.model.notation.mathml`).
 
 Example
 -------
@@ -16,7 +16,7 @@ from dataclasses import replace
 
 import sympy as sp
 
-from dualmech.kinematics import t
+from dualmech.model.kinematics import t
 from dualmech.grade.audit import notation_of, restyle
 from dualmech.grade.context import ProblemContext
 from dualmech.grade.formula import Formula
@@ -96,7 +96,7 @@ def _mathml(ctx: ProblemContext, text: str) -> str:
     """MathML of a term the feedback wrote (read back by the answer parser), or ''."""
     if not text:
         return ""
-    from dualmech import notation
+    from dualmech.model import notation
     from dualmech.grade.parser import parse
     try:
         expr = Formula.from_node(parse(text)[0].lhs, ctx.vocabulary).sympy()

@@ -123,7 +123,7 @@ class Grade:
 
     def _repr_html_(self) -> str:
         """Jupyter: the verdict in colour, the summary and the smallest edit."""
-        from dualmech.jupyter import grade_html
+        from dualmech.report.jupyter import grade_html
         return grade_html(self)
 
     def to_dict(self) -> dict:

@@ -93,7 +93,7 @@ def _load(problem: str, quantity, about, limits: Limits, loaded: set):
             grader.grade("0", quantity, about)
         except Exception:
             pass
-        from dualmech.grade.stored import save
+        from dualmech.grade.stored_contexts import save
         try:
             save(ctx)   # the next run of this problem starts from here (see .stored)
         except Exception:   # noqa: BLE001 - a cache that cannot be written changes nothing

@@ -15,7 +15,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from dualmech.kinematics import t
+from dualmech.model.kinematics import t
 from dualmech.grade.context import GradingUnavailable, ProblemContext, zero
 from dualmech.grade.formula import Env, Formula, seeded_draw
 

@@ -2,7 +2,7 @@ r"""The names an answer may use for one problem, with their accepted aliases.
 
 A :class:`Vocabulary` maps what a student types to the problem's own sympy symbols: the
 coordinates and their first and second derivatives (as the plain symbols of
-:func:`dualmech.equations.state_symbols`), the parameters, the reactions and multipliers, time
+:func:`dualmech.model.equations.state_symbols`), the parameters, the reactions and multipliers, time
 ``t``, ``pi`` and, for vector answers, the basis vectors of the quantity asked for.
 
 Aliases, for a coordinate ``theta``: ``θ``, ``\theta``, ``th``; derivatives ``theta'``,
@@ -31,8 +31,8 @@ from typing import Sequence
 
 import sympy as sp
 
-from dualmech.equations import state_symbols
-from dualmech.kinematics import t as TIME
+from dualmech.model.equations import state_symbols
+from dualmech.model.kinematics import t as TIME
 from dualmech.grade.parser import GREEK
 
 __all__ = ["Ref", "Vocabulary", "UnknownName", "symbol_table"]

@@ -4,7 +4,7 @@
   (static coefficients hoisted, common subexpressions eliminated), cached on disk across
   processes (:func:`cache_dir`);
 * :class:`NumericModel` solves ``A [q''; lambda] = b`` of an
-  :class:`~dualmech.equations.EquationSet` at one state or many, with a right-hand side
+  :class:`~dualmech.model.equations.EquationSet` at one state or many, with a right-hand side
   ``rhs(t, y)`` for :func:`scipy.integrate.solve_ivp` (also vectorised); a singular mass
   matrix stops the work with :class:`SingularityError` naming the state, never a silent
   wrong number;

@@ -30,7 +30,7 @@ from typing import Mapping, Sequence
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from dualmech.dimensions import ANGLE, reduce
+from dualmech.model.dimensions import ANGLE, reduce
 from dualmech.numeric.model import NumericModel, SingularityError
 from dualmech.numeric.simulation import default_initial_state, direct_models, problem_parameters
 

@@ -1,6 +1,6 @@
 r"""The direct form as a DAE in maximal coordinates: index 3 reduced to index 1, kept on the manifold.
 
-A multiplier model (:meth:`Lagrangian.constraint <dualmech.lagrange.Lagrangian.constraint>`)
+A multiplier model (:meth:`Lagrangian.constraint <dualmech.model.lagrange.Lagrangian.constraint>`)
 holds, besides its equations of motion ``M q'' - G^T lambda = f``, each constraint at the
 acceleration level, ``G q'' + (d/dt G) q' = 0``: that square system is the index-1 form of
 the index-3 DAE ``M q'' - G^T lambda = f, g(q) = 0``, and it gives ``q''`` and the reactions
@@ -37,8 +37,8 @@ from typing import Mapping, Sequence
 import numpy as np
 import sympy as sp
 
-from dualmech.equations import EquationSet, ModelError, from_plain, state_symbols
-from dualmech.kinematics import t
+from dualmech.model.equations import EquationSet, ModelError, from_plain, state_symbols
+from dualmech.model.kinematics import t
 from dualmech.numeric.energy import dynamic_rows, identically_zero
 from dualmech.numeric.model import NumericModel, StateFunction
 

@@ -45,7 +45,7 @@ from typing import Sequence
 
 import numpy as np
 
-from dualmech.equations import ModelError
+from dualmech.model.equations import ModelError
 from dualmech.numeric.integrators import Run
 
 __all__ = ["DAE_FORMS", "DAE_METHODS", "IDASolver"]

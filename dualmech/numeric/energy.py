@@ -10,7 +10,7 @@ A Lagrange model of a scleronomic system with only conservative loads has rows
 * ``Phi(q) = b(q, 0)`` is a gradient, ``Phi = -dV/dq`` (its Jacobian is symmetric).
 
 :func:`conservative_reason` decides these identities with the library's exact comparator
-(:mod:`dualmech.exact`) and says which one fails; :class:`EnergyFunction` then gives
+(:mod:`dualmech.exact.form`) and says which one fails; :class:`EnergyFunction` then gives
 ``E = T + V`` along a trajectory, with ``V`` differences integrated along the path
 (Gauss--Legendre on short straight pieces: a gradient's line integral does not depend on the
 path) -- so no problem needs to state its energy.  Rows labelled ``constraint ...`` (the
@@ -40,10 +40,10 @@ from typing import Mapping
 import numpy as np
 import sympy as sp
 
-from dualmech.equations import EquationSet, ModelError, from_plain, state_symbols
-from dualmech.exact import ExactForm, is_zero
-from dualmech.kinematics import t
-from dualmech.verify.world import Undecidable
+from dualmech.model.equations import EquationSet, ModelError, from_plain, state_symbols
+from dualmech.exact.form import ExactForm, is_zero
+from dualmech.model.kinematics import t
+from dualmech.exact.sample_space import Undecidable
 from dualmech.numeric.model import StateFunction
 
 __all__ = ["EnergyFunction", "conservative_reason", "dynamic_rows", "identically_zero"]

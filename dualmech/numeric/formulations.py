@@ -14,7 +14,7 @@ A **formulation** is one model of a problem made into ``y' = f(t, y)``:
   (:mod:`~dualmech.numeric.daesolve`, method ``"IDA"``).
 
 Each formulation starts from the problem's initial state mapped into its own coordinates
-(:meth:`Problem.coordinate_maps <dualmech.problem.Problem.coordinate_maps>`) and can map any
+(:meth:`Problem.coordinate_maps <dualmech.model.problem.Problem.coordinate_maps>`) and can map any
 reference trajectory the same way, so all of them are compared in their own coordinates
 against one reference motion.  Reactions come from the formulation itself when it has them
 (direct models, multipliers), else from the problem's direct models at its states.
@@ -32,9 +32,9 @@ from typing import Callable, Mapping, Sequence
 
 import numpy as np
 
-from dualmech._expr import as_expr
-from dualmech.equations import EquationSet, ModelError
-from dualmech.kinematics import t
+from dualmech.model._expr import as_expr
+from dualmech.model.equations import EquationSet, ModelError
+from dualmech.model.kinematics import t
 from dualmech.numeric.dae import STABILISATIONS, ConstrainedModel, constraints_of
 from dualmech.numeric.daesolve import DAE_FORMS, IDASolver
 from dualmech.numeric.energy import EnergyFunction, conservative_reason, dynamic_rows

@@ -1,7 +1,7 @@
 """Compiled equation sets: ``A [q''; lambda] = b`` at one state or at many states at once.
 
 :class:`NumericModel` binds parameter values to the generated code of an
-:class:`~dualmech.equations.EquationSet` (see :mod:`dualmech.numeric.codegen`): one evaluation
+:class:`~dualmech.model.equations.EquationSet` (see :mod:`dualmech.numeric.codegen`): one evaluation
 of the generated function per call gives ``A``, ``b`` and the scale used by the singularity
 detector.  One state is solved with a closed form (``n <= 2``) or LAPACK's ``dgesv``; arrays
 of states (in the columns, like :func:`scipy.integrate.solve_ivp`'s ``y``) with elementwise
@@ -33,9 +33,9 @@ import numpy as np
 import sympy as sp
 from scipy.linalg.lapack import dgesv
 
-from dualmech._expr import as_expr
-from dualmech.equations import EquationSet, ModelError, state_symbols, to_plain
-from dualmech.kinematics import t
+from dualmech.model._expr import as_expr
+from dualmech.model.equations import EquationSet, ModelError, state_symbols, to_plain
+from dualmech.model.kinematics import t
 from dualmech.numeric import cbackend, codegen
 from dualmech.numeric._cache import digest, load_module
 

@@ -25,7 +25,7 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from dualmech.kinematics import t
+from dualmech.model.kinematics import t
 from dualmech.numeric.model import NumericModel, SingularityError
 
 __all__ = ["Trajectory", "simulate", "reactions_at", "reactions_along", "direct_models",

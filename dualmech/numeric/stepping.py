@@ -34,7 +34,7 @@ import numpy as np
 from scipy.integrate import BDF, DOP853, RK45, Radau
 
 from dualmech.numeric.integrators import Run
-from dualmech.equations import ModelError
+from dualmech.model.equations import ModelError
 
 __all__ = ["projected_run", "PROJECTABLE"]
 

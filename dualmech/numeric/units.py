@@ -2,14 +2,15 @@
 
 Example
 -------
->>> from dualmech.dimensions import ANGLE, FORCE, STIFFNESS
+>>> from dualmech.model.dimensions import ANGLE, FORCE, STIFFNESS
 >>> unit(ANGLE), unit(FORCE), unit(STIFFNESS), unit(FORCE / ANGLE)
 ('rad', 'N', 'N/m', 'N/rad')
 """
 from __future__ import annotations
 
-from dualmech.dimensions import (ACCELERATION, ANGLE, DAMPING, ENERGY, FORCE, FREQUENCY, INERTIA,
-                          LENGTH, MASS, STIFFNESS, TIME, VELOCITY, as_dimension, reduce)
+from dualmech.model.dimensions import (ACCELERATION, ANGLE, DAMPING, ENERGY, FORCE, FREQUENCY,
+                                      INERTIA, LENGTH, MASS, STIFFNESS, TIME, VELOCITY,
+                                      as_dimension, reduce)
 
 __all__ = ["unit", "rate_unit", "work_conjugate_unit"]
 

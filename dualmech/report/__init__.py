@@ -1,6 +1,6 @@
 """The report a teacher reads: ``report.md``, ``report.html`` and a chart per problem.
 
-:func:`write_report` takes the comparisons of :func:`dualmech.compare.compare` (anything with
+:func:`write_report` takes the comparisons of :func:`dualmech.verify.check.compare` (anything with
 ``problem``, ``equivalent``, ``method``, ``str()``; ``published``, ``reactions`` and
 ``verdict_line()`` when present, so a stand-in for a problem that could not be compared
 works too), draws each problem's chart (:mod:`.charts`: one panel per unit, units on every
@@ -10,7 +10,7 @@ to fit the scene) and writes both pages (:mod:`.pages`).
 Example
 -------
 >>> import tempfile
->>> from dualmech.compare import compare
+>>> from dualmech.verify.check import compare
 >>> from dualmech.problems import get
 >>> with tempfile.TemporaryDirectory() as out:
 ...     w = write_report([compare(get("simple_pendulum"))], Path(out), 1.0)
@@ -55,7 +55,7 @@ def write_report(comparisons: Sequence, out_dir: Path, duration: float = 5.0,
     in every expression of both pages.  Raises ``OSError`` when ``out_dir`` cannot be written.
     """
     check_audience(audience)
-    from dualmech.notation import check_notation
+    from dualmech.model.notation import check_notation
     check_notation(notation)
     if not duration > 0:
         raise ValueError(f"`duration` must be positive, got {duration!r}.")

@@ -10,8 +10,8 @@ leaves its declared range or a one-sided contact would have to pull) and draws
 * reactions that stay zero along the whole motion, and curves that stay constant, not drawn
   but said in words on their panel ("identically zero along the whole motion: ...");
 * every name in textbook notation: legends and panel texts in mathtext from the problem's
-  symbols (``theta1`` as θ₁, :func:`~dualmech.notation.mathtext`), the caption in the
-  page's one-line text (:func:`~dualmech.notation.symbol_text`).
+  symbols (``theta1`` as θ₁, :func:`~dualmech.model.notation.mathtext`), the caption in the
+  page's one-line text (:func:`~dualmech.model.notation.symbol_text`).
 
 The notes (:attr:`Chart.notes`) are the chart's caption; the page prints them once, under it
 (:attr:`Chart.notes_html`: the same sentences with each name typeset in MathML).
@@ -37,8 +37,8 @@ import numpy as np
 import sympy as sp
 
 from dualmech.report.mathml import inline
-from dualmech.dimensions import ANGLE
-from dualmech.notation import mathtext, symbol_text
+from dualmech.model.dimensions import ANGLE
+from dualmech.model.notation import mathtext, symbol_text
 from dualmech.numeric.units import unit
 
 __all__ = ["Chart", "trajectory_chart", "group_curves"]
@@ -66,7 +66,7 @@ class Chart:
 
     def _repr_html_(self) -> str:
         """Jupyter: the picture and its one caption."""
-        from dualmech.jupyter import chart_html
+        from dualmech.report.jupyter import chart_html
         return chart_html(self)
 
 

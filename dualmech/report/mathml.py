@@ -2,7 +2,7 @@
 
 Coordinates are printed as plain letters with dots for their rates (``theta'`` as a theta
 with a dot above, ``theta''`` with two), Greek names as Greek letters and trailing digits as
-subscripts, so an equation reads like the worked solution (:func:`dualmech.notation.mathml`).
+subscripts, so an equation reads like the worked solution (:func:`dualmech.model.notation.mathml`).
 Dimensions in a sentence's text (``has dimension M L^2 T^-2``) are typeset too: upright base
 letters with their exponents as superscripts (:func:`dimension`, :func:`text_html`).
 
@@ -22,11 +22,11 @@ from __future__ import annotations
 import html
 import re
 
-from dualmech import notation
+from dualmech.model import notation
 
 __all__ = ["expression", "equation", "inline", "sentence", "dimension", "text_html"]
 
-#: the base dimensions as :func:`dualmech.dimensions.format_dimension` writes them, in its order
+#: the base dimensions as :func:`dualmech.model.dimensions.format_dimension` writes them, in its order
 _BASES = ("M", "L", "T", "current", "temperature", "amount_of_substance", "luminous_intensity")
 _TOKEN = rf"(?:{'|'.join(_BASES)})(?:\^-?\d+(?:/\d+)?)?"
 #: a dimension where the library's sentences write one: after "dimension", "has", "be",

@@ -13,7 +13,7 @@ Two audiences: ``"teachers"`` see why each wrong printed answer is wrong (typese
 text report; ``"students"`` see which printed answers are right and which are wrong, with the
 corrections left for them to find.
 
-Every expression a person reads is in the textbook's notation (:mod:`dualmech.notation`), rates
+Every expression a person reads is in the textbook's notation (:mod:`dualmech.model.notation`), rates
 as dots or primes (``notation``): typeset with MathML on the HTML page, one line of textbook
 text (``m l θ̇^2``, no ``**``) in the Markdown.
 """
@@ -26,7 +26,7 @@ from pathlib import Path
 import sympy as sp
 
 from dualmech.report import mathml
-from dualmech.notation import check_notation
+from dualmech.model.notation import check_notation
 from dualmech.sources import source_name
 
 __all__ = ["markdown_page", "html_page", "summary_rows", "SUMMARY_HEADERS", "AUDIENCES",

@@ -17,7 +17,7 @@ from typing import Sequence
 import symengine as se
 import sympy as sp
 
-from dualmech.equations import EquationSet, ModelError, Rows
+from dualmech.model.equations import EquationSet, ModelError, Rows
 from dualmech.sources import source_fields, source_name
 from dualmech.verify.display import Budget, OverBudget, budget, dotted, solve_display
 from dualmech.verify.explain import Mismatch, explain_model, explain_reaction
@@ -37,7 +37,7 @@ METHOD_NAMES = {
 
 def method_name(method: str) -> str:
     """The human name of a verdict method (the evaluation module may add its own)."""
-    from dualmech import exact
+    from dualmech.exact import form as exact
     names = dict(METHOD_NAMES)
     names.update(getattr(exact, "METHOD_NAMES", {}))
     return names.get(method, method)
@@ -122,7 +122,7 @@ class Comparison:
     @property
     def dimension_issues(self) -> list[str]:
         """The dimension audit's sentences as plain text, terms between backticks."""
-        from dualmech.dimensions import quoted
+        from dualmech.model.dimensions import quoted
         return [quoted(x) for x in self.dimension_audit]
 
     @property
@@ -214,7 +214,7 @@ class Comparison:
         """The readable report, every expression in textbook notation: letters as a worked
         solution writes them, rates as dots (``θ̈``) or, with ``notation="primes"``, primes
         (``θ′′``), powers as ``^`` and products as spaces -- no Python syntax."""
-        from dualmech.notation import check_notation, plain, sentence, symbol_text
+        from dualmech.model.notation import check_notation, plain, sentence, symbol_text
         check_notation(notation)
         pr = self.problem
         ref = pr.model(pr.reference)
@@ -270,7 +270,7 @@ class Comparison:
 
     def _repr_html_(self) -> str:
         """Jupyter: verdict, accelerations, reactions and printed answers, typeset."""
-        from dualmech.jupyter import comparison_html
+        from dualmech.report.jupyter import comparison_html
         return comparison_html(self)
 
     def to_dict(self) -> dict:
@@ -305,7 +305,7 @@ class Comparison:
     def _machine(self) -> dict:
         """The expressions of :meth:`to_dict` in a form parsers read: ``theta_d``, ``theta_dd``
         for the rates (the grader's parser and sympy's ``parse_expr`` both take it)."""
-        from dualmech.notation import machine
+        from dualmech.model.notation import machine
         pr = self.problem
         coords = pr.model(pr.reference).coordinates
         return {"notation": "q_d = dq/dt, q_dd = d2q/dt2; ** is a power",
@@ -318,7 +318,7 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
     """Judge every derivation of ``problem``, compare shared reactions, check printed answers.
 
     Never raises on a wrong model: a singular or contradictory derivation is a mismatch in
-    the result.  Raises :class:`~dualmech.problem.ProblemError` for a declaration that cannot
+    the result.  Raises :class:`~dualmech.model.problem.ProblemError` for a declaration that cannot
     be used (with every mistake listed) and ``ValueError`` for ``points < 1``.
 
     >>> from dualmech.problems import get
@@ -365,12 +365,12 @@ def _check_problem(problem) -> None:
     """A string (a catalogue name) or anything else that is not a problem: a TypeError that
     shows the fix.  ``compare`` does not look names up itself: the catalogue sits above the
     verifier in the pipeline, and a name may also be a file or ``module:Class``."""
-    from dualmech.problem import Problem
+    from dualmech.model.problem import Problem
     if isinstance(problem, str):
         raise TypeError(f"`problem` must be a Problem, got the string {problem[:60]!r}; "
                         f"look it up first: compare(dualmech.problems.get({problem[:60]!r})).")
     if not isinstance(problem, Problem):
-        raise TypeError(f"`problem` must be a Problem (dualmech.problem.Problem), got "
+        raise TypeError(f"`problem` must be a Problem (dualmech.model.problem.Problem), got "
                         f"{type(problem).__name__}.")
 
 
@@ -398,7 +398,7 @@ def _reaction_dimension_issues(problem) -> list[str]:
     In each equation the reaction's coefficient times its declared dimension must have the
     dimension of the rest of the equation; decided from the structure, without solving.
     """
-    from dualmech.dimensions import dimension_reader, format_dimension, reduce
+    from dualmech.model.dimensions import dimension_reader, format_dimension, reduce
     dims = problem.dimensions()
     declared = problem.reaction_info()
     out, seen = [], set()

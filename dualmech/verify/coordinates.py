@@ -28,9 +28,9 @@ import itertools
 
 import sympy as sp
 
-from dualmech._expr import as_expr
-from dualmech.equations import EquationSet, state_symbols, to_plain
-from dualmech.kinematics import t
+from dualmech.model._expr import as_expr
+from dualmech.model.equations import EquationSet, state_symbols, to_plain
+from dualmech.model.kinematics import t
 from dualmech.verify.display import Budget, OverBudget, budget
 
 __all__ = ["OwnCoordinates"]

@@ -12,9 +12,10 @@ import threading
 
 import sympy as sp
 
-from dualmech._expr import as_expr
-from dualmech.equations import is_zero_expression
-from dualmech.verify.ratfun import NotRational, solve_rational, solve_rational_held, tidy_rational
+from dualmech.model._expr import as_expr
+from dualmech.model.equations import is_zero_expression
+from dualmech.exact.rational_functions import (NotRational, solve_rational, solve_rational_held,
+                                              tidy_rational)
 
 __all__ = ["Budget", "OverBudget", "budget", "tidy", "solve_display", "largest_coupled_block",
            "dotted", "ops_within"]
@@ -158,8 +159,8 @@ def _solve_held(eqs, held, limits: Budget) -> dict:
     import numpy as np
     import symengine as se
 
-    from dualmech._algebra import to_sp
-    from dualmech.equations import _rules
+    from dualmech.model._algebra import to_sp
+    from dualmech.model.equations import _rules
     A, b, names = held
     if A.rows != A.cols:
         raise OverBudget(f"{A.rows} equations for {A.cols} unknowns: not a square system")
@@ -321,5 +322,5 @@ def largest_coupled_block(A) -> int:
 
 def dotted(expr, coordinates=None) -> str:
     """``expr`` as text with ``theta'`` and ``theta''`` for the coordinates' derivatives."""
-    from dualmech._expr import dotted as _dotted
+    from dualmech.model._expr import dotted as _dotted
     return _dotted(as_expr(expr))

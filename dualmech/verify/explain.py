@@ -16,10 +16,10 @@ import random
 import mpmath
 import sympy as sp
 
-from dualmech.equations import from_plain
-from dualmech.exact import is_zero
-from dualmech.kinematics import t
-from dualmech.verify import linalg as la
+from dualmech.model.equations import from_plain
+from dualmech.exact.form import is_zero
+from dualmech.model.kinematics import t
+from dualmech.exact import linalg as la
 from dualmech.verify.coordinates import OwnCoordinates
 from dualmech.verify.display import Budget, OverBudget, dotted, solve_display, tidy
 from dualmech.verify.sampling import Context, System, solve_model
@@ -75,7 +75,7 @@ class Mismatch:
     def text(self, notation: str = "dots") -> str:
         """The readable form in textbook notation: ``θ̈``, powers as ``^`` (``θ′′`` with
         ``notation="primes"``)."""
-        from dualmech.notation import plain, symbol_text
+        from dualmech.model.notation import plain, symbol_text
         show = lambda x: x if isinstance(x, str) else plain(x, notation)  # noqa: E731
         lines = [f"{self.model} [{self.equation}]: {self.reason}"]
         residual = self._resolved()

@@ -1,6 +1,6 @@
 """Checking a source's printed answers against the verified derivations, by evaluation only.
 
-A printed answer is transcribed as a :class:`dualmech.problem.Published` entry.  At the same
+A printed answer is transcribed as a :class:`dualmech.model.problem.Published` entry.  At the same
 kind of random rational points as the verdict, the accelerations come from the verified
 derivations and the reactions from the models that determine them; then
 
@@ -22,12 +22,12 @@ import mpmath
 import symengine as se
 import sympy as sp
 
-from dualmech._expr import as_expr
-from dualmech.dimensions import audit
-from dualmech.equations import EquationSet, ModelError, state_symbols, to_plain, to_plain_se
-from dualmech.exact import MP_DIGITS, is_zero
-from dualmech.kinematics import t
-from dualmech.verify.errors import Undecidable
+from dualmech.model._expr import as_expr
+from dualmech.model.dimensions import audit
+from dualmech.model.equations import EquationSet, ModelError, state_symbols, to_plain, to_plain_se
+from dualmech.exact.form import MP_DIGITS, is_zero
+from dualmech.model.kinematics import t
+from dualmech.exact.errors import Undecidable
 from dualmech.verify.display import Budget, OverBudget, dotted, ops_within, solve_display, tidy
 from dualmech.verify.sampling import MAX_ATTEMPTS, Context, Sampler, System, shared_manifold, solve_model
 
@@ -66,7 +66,7 @@ class PublishedVerdict:
     def text(self, notation: str = "dots") -> str:
         """Why the answer is wrong, in textbook text (``m l θ̇^2``; ``θ′`` with
         ``notation="primes"``): the form a report and ``dualmech check`` show."""
-        from dualmech.notation import sentence
+        from dualmech.model.notation import sentence
         return "; ".join(sentence(s, notation) for s in self.parts)
 
     def __repr__(self) -> str:
@@ -81,7 +81,7 @@ class PublishedVerdict:
 def check_published(problem, points: int = 8, seed: int = 0, context: Context | None = None,
                     limits: Budget | None = None, claims: dict | None = None,
                     printed: list | None = None) -> list[PublishedVerdict]:
-    """Verdict on every printed answer of ``problem`` (see :class:`dualmech.problem.Published`).
+    """Verdict on every printed answer of ``problem`` (see :class:`dualmech.model.problem.Published`).
 
     ``limits`` is the display budget for explaining wrong answers (when first read);
     ``claims`` as for :func:`~dualmech.verify.verdicts.judge`; ``printed`` the answers when
@@ -251,7 +251,7 @@ class _Plain:
 
     One walk over the sympy tree, each distinct subexpression converted once for all the
     printed answers of a problem (they share most of theirs: ``sin(theta)``, ``m R``,
-    ``theta'``); what the walk does not know is left to :func:`~dualmech.equations.to_plain_se`.
+    ``theta'``); what the walk does not know is left to :func:`~dualmech.model.equations.to_plain_se`.
     """
 
     _FUNCTIONS: dict = {}   # sympy function -> symengine's (made on first use)
@@ -399,7 +399,7 @@ def _detail(problem, pub, which, limits: Budget, shared: _Explaining | None = No
             if near is not None:
                 label, alpha, rest = near
                 # the derived row named in words (never its internal label), typeset
-                from dualmech.notation import equation_words   # (display only: imported when read)
+                from dualmech.model.notation import equation_words   # (display only: imported when read)
                 row = equation_words(label, problem.reference, ref.coordinates)
                 lines.append((f"{what} is closest to ",)
                              + ((alpha, " \u00d7 ") if alpha != 1 else ()) + row

@@ -2,7 +2,7 @@
 
 All derivations of a problem are brought to the reference model's coordinates and to plain
 symbols; their matrices ``[A | b]`` (``A [q''; lambda] = b``) and any extra expressions (printed
-answers) are compiled into ONE :class:`~dualmech.exact.ExactForm`, so a point is drawn and
+answers) are compiled into ONE :class:`~dualmech.exact.form.ExactForm`, so a point is drawn and
 evaluated once for everything that is decided there.  At a point, :func:`solve_model` says
 what each model determines: its accelerations (or that it does not determine them, or
 contradicts itself) and its reactions.
@@ -16,12 +16,12 @@ from typing import Iterator, Sequence
 import symengine as se
 import sympy as sp
 
-from dualmech._algebra import Bridge, linear_coefficients, to_se, total_derivative
-from dualmech._expr import as_expr
-from dualmech.equations import EquationSet, ModelError, state_symbols
-from dualmech.exact import ExactForm, is_zero
-from dualmech.kinematics import t
-from dualmech.verify import linalg as la
+from dualmech.model._algebra import Bridge, linear_coefficients, to_se, total_derivative
+from dualmech.model._expr import as_expr
+from dualmech.model.equations import EquationSet, ModelError, state_symbols
+from dualmech.exact.form import ExactForm, is_zero
+from dualmech.model.kinematics import t
+from dualmech.exact import linalg as la
 
 __all__ = ["Context", "System", "Solution", "solve_model", "same_values", "Sampler",
            "MAX_ATTEMPTS"]

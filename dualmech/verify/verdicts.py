@@ -37,9 +37,9 @@ from typing import Mapping, Sequence
 
 import mpmath
 
-from dualmech.equations import ModelError
-from dualmech.exact import MP_DIGITS, is_zero
-from dualmech.verify.errors import Undecidable
+from dualmech.model.equations import ModelError
+from dualmech.exact.form import MP_DIGITS, is_zero
+from dualmech.exact.errors import Undecidable
 from dualmech.verify.sampling import (MAX_ATTEMPTS, Context, Sampler, System, same_values,
                        shared_manifold, solve_model)
 

@@ -30,11 +30,11 @@ def unit(dimension) -> str:
     """The SI unit of a dimension, as text (``kg m s⁻²``); ``rad`` for an angle, ``1`` for a
     pure number.
 
-    >>> from dualmech.dimensions import FORCE, ANGLE
+    >>> from dualmech.model.dimensions import FORCE, ANGLE
     >>> unit(FORCE), unit(ANGLE)
     ('kg m s⁻²', 'rad')
     """
-    from dualmech.dimensions import as_dimension, reduce
+    from dualmech.model.dimensions import as_dimension, reduce
     dimension = as_dimension(dimension)
     if dimension.power("angle") and not reduce(dimension):
         return "rad"

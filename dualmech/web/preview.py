@@ -35,8 +35,8 @@ from dualmech.grade.audit import dimension_issues
 from dualmech.grade.formula import Formula, difference
 from dualmech.grade.parser import LIMITS, AnswerError, Limits, Node, parse
 from dualmech.grade.vocabulary import UnknownName
-from dualmech.kinematics import t
-from dualmech import notation
+from dualmech.model.kinematics import t
+from dualmech.model import notation
 from dualmech.report.mathml import text_html
 
 __all__ = ["preview", "term_mathml", "PREVIEW_CHARS"]

@@ -1,0 +1,1 @@
+"""The ``dualmech`` command: every subcommand, one error and exit-code convention."""

@@ -1,0 +1,228 @@
+"""The ``chart``, ``atlas`` and ``fidelity`` subcommands of ``dualmech``.
+
+::
+
+    dualmech chart NAME [NAME...] | --all [--out DIR] [--quick]   work-precision diagrams
+    dualmech atlas NAME [--out DIR] [--section S ...]              where methods fail
+    dualmech fidelity NAME [--out DIR]                             the fidelity ladder
+    ... --json                                                     JSON instead of text
+
+NAME is anything :func:`dualmech.problems.get` takes: a catalogue name, ``path.py[:Class]``
+or ``module:Class``.
+
+:func:`register` adds them to an :mod:`argparse` sub-parser set; each handler returns an exit
+status -- 0 done, 1 a problem could not be charted (the others were), 2 a usage error (an
+unknown problem, an unwritable directory, a section that does not exist) -- and prints
+errors as one line on stderr, never a traceback.  Progress goes to stderr (a bar on a
+terminal, one line per problem otherwise).
+
+Example
+-------
+>>> import argparse
+>>> parser = argparse.ArgumentParser(prog="dualmech")
+>>> register(parser.add_subparsers(dest="command"))
+>>> args = parser.parse_args(["atlas", "nonexistent_problem"])
+>>> args.func(args)
+2
+"""
+from __future__ import annotations
+
+import argparse
+import functools
+import sys
+from pathlib import Path
+
+__all__ = ["register", "EXIT_OK", "EXIT_FAILED", "EXIT_USAGE"]
+
+EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
+
+
+class _Usage(Exception):
+    """A command-line mistake; the message says what to do instead."""
+
+
+def register(subparsers) -> None:
+    """Add ``chart``, ``atlas`` and ``fidelity`` to ``subparsers`` (from ``add_subparsers``)."""
+    p = subparsers.add_parser(
+        "chart", help="work-precision diagrams: error against CPU time",
+        description="Integrate every formulation of each problem with every integrator over "
+                    "a sweep of tolerances and chart the error against a high-accuracy "
+                    "reference versus CPU time; write DIR/NAME_workprecision.{csv,json,png,svg}.")
+    p.add_argument("names", nargs="*", metavar="NAME", help="problems to chart")
+    p.add_argument("--all", action="store_true", help="chart every problem")
+    _out(p)
+    p.add_argument("--duration", metavar="T", type=_positive, default=5.0,
+                   help="simulated seconds, cut to fit the scene (default: %(default)s)")
+    p.add_argument("--quick", action="store_true",
+                   help="three tolerances and two step counts instead of the full sweep")
+    p.add_argument("--repeats", metavar="K", type=_repeats, default=5,
+                   help="runs per point; its CPU time is their median (default: %(default)s)")
+    p.set_defaults(func=_guard(_chart))
+
+    p = subparsers.add_parser(
+        "atlas", help="where methods fail: singularities, drift, stiffness, ...",
+        description="Find and report where the problem's formulations and integrators fail: "
+                    "coordinate singularities, DAE drift, stiffness, linearisation, chaos; "
+                    "write DIR/NAME_atlas.{json,txt} and a chart per section.")
+    p.add_argument("name", metavar="NAME", help="the problem")
+    _out(p)
+    p.add_argument("--section", action="append", metavar="S", dest="sections",
+                   help="run only this section (repeatable): singularities, dae_drift, "
+                        "stiffness, linearisation, floquet, chaos")
+    p.set_defaults(func=_guard(_atlas))
+
+    p = subparsers.add_parser(
+        "fidelity", help="the fidelity ladder: what each simplification costs",
+        description="Print each rung's derivation time, right-hand-side cost and error "
+                    "against the richest model along a standard trajectory; write "
+                    "DIR/NAME_fidelity.{json,png,svg}.")
+    p.add_argument("name", metavar="NAME", help="the problem")
+    _out(p)
+    p.set_defaults(func=_guard(_fidelity))
+
+
+def _out(p) -> None:
+    p.add_argument("--out", metavar="DIR", type=Path, default=Path("out"),
+                   help="output directory (default: %(default)s)")
+    p.add_argument("--json", action="store_true",
+                   help="print JSON (the results and the files written) instead of text")
+
+
+def _print_json(obj) -> None:
+    import json
+    print(json.dumps(obj, indent=1, default=str))
+
+
+def _positive(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}") from None
+    if not 0 < value < float("inf"):
+        raise argparse.ArgumentTypeError(f"expected a positive finite number, got {text!r}")
+    return value
+
+
+def _guard(handler):
+    """Run ``handler``; turn every exception into one line on stderr and an exit status."""
+    @functools.wraps(handler)
+    def run(args) -> int:
+        command = getattr(args, "command", None) or handler.__name__.strip("_")
+        try:
+            return handler(args)
+        except _Usage as exc:
+            print(f"dualmech {command}: error: {exc}", file=sys.stderr)
+            return EXIT_USAGE
+        except OSError as exc:
+            where = f" {exc.filename}" if getattr(exc, "filename", None) else ""
+            print(f"dualmech {command}: error: cannot write{where}: {exc.strerror or exc}",
+                  file=sys.stderr)
+            return EXIT_USAGE
+        except KeyboardInterrupt:
+            print(f"dualmech {command}: interrupted", file=sys.stderr)
+            return 130
+        except Exception as exc:  # noqa: BLE001 - no traceback reaches a user
+            print(f"dualmech {command}: error: {type(exc).__name__}: {exc}", file=sys.stderr)
+            return EXIT_FAILED
+    return run
+
+
+def _problem(name: str):
+    """The problem ``name`` names: a catalogue name, ``path.py[:Class]`` or ``module:Class``."""
+    from dualmech import problems
+    try:
+        return problems.get(name)
+    except KeyError as exc:   # SpecError: what to fix, with close matches
+        raise _Usage(exc.args[0] if exc.args else str(exc)) from None
+
+
+def _writable(out: Path) -> Path:
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise _Usage(f"cannot create the output directory {out}: {exc.strerror or exc}") \
+            from None
+    return out
+
+
+def _repeats(text: str) -> int:
+    """``--repeats``: a whole number from 1 to 50."""
+    try:
+        k = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if not 1 <= k <= 50:
+        raise argparse.ArgumentTypeError(f"{k} is outside 1..50")
+    return k
+
+
+def _chart(args) -> int:
+    from dualmech.progress import progress
+    from dualmech.numeric.studies.workprecision import STEPS, TOLERANCES, work_precision
+    if args.all and args.names:
+        raise _Usage("give problem names or --all, not both.")
+    if not args.all and not args.names:
+        raise _Usage("name at least one problem, or use --all.")
+    from dualmech import problems
+    names = [d.name for d in problems.declarations()] if args.all else list(args.names)
+    chosen = [_problem(n) for n in names]
+    out = _writable(args.out)
+    tolerances = (1e-3, 1e-6, 1e-9) if args.quick else TOLERANCES
+    steps = (32, 256) if args.quick else STEPS
+    failed, done = [], []
+    for p in progress(chosen, "charting"):
+        try:
+            wp = work_precision(p, duration=args.duration, tolerances=tolerances, steps=steps,
+                                repeats=args.repeats)
+            paths = wp.write(out)
+        except OSError:
+            raise
+        except Exception as exc:  # noqa: BLE001 - one problem's failure does not stop --all
+            failed.append(f"{p.name}: {type(exc).__name__}: {exc}")
+            continue
+        if args.json:
+            done.append({**wp.to_dict(), "files": [str(x) for x in paths]})
+            continue
+        print(f"{p.name}: {len(wp.runs)} runs over t in [0, {wp.span[1]:.3g}] s"
+              + (f" ({wp.span_note})" if wp.span_note else "") + "; wrote "
+              + ", ".join(str(x) for x in paths))
+    if args.json:
+        _print_json(done[0] if len(done) == 1 and not args.all and not failed else done)
+    for line in failed:
+        print(f"dualmech chart: no chart for {line}", file=sys.stderr)
+    return EXIT_FAILED if failed else EXIT_OK
+
+
+def _atlas(args) -> int:
+    from dualmech.numeric.studies.atlas import SECTIONS, atlas
+    bad = [s for s in (args.sections or []) if s not in SECTIONS]
+    if bad:
+        raise _Usage(f"unknown section(s) {', '.join(bad)}; choose from {', '.join(SECTIONS)}.")
+    p = _problem(args.name)
+    out = _writable(args.out)
+    result = atlas(p, sections=tuple(args.sections or SECTIONS))
+    paths = result.write(out)
+    if args.json:
+        _print_json({**result.to_dict(), "files": [str(x) for x in paths]})
+        return EXIT_OK
+    print(result)
+    print(f"\nwrote {', '.join(str(x) for x in paths)}")
+    return EXIT_OK
+
+
+def _fidelity(args) -> int:
+    from dualmech.numeric.studies.fidelity import has_ladder, ladder
+    p = _problem(args.name)
+    if not has_ladder(p):
+        raise _Usage(f"`{p.name}` has no fidelity ladder: no simpler model in the sources and "
+                     "no stable equilibrium to linearise about; try mobile_robot, "
+                     "n_link_pendulum or a pendulum.")
+    out = _writable(args.out)
+    result = ladder(p)
+    paths = result.write(out)
+    if args.json:
+        _print_json({**result.to_dict(), "files": [str(x) for x in paths]})
+        return EXIT_OK
+    print(result)
+    print(f"\nwrote {', '.join(str(x) for x in paths)}")
+    return EXIT_OK

@@ -1,0 +1,1 @@
+"""Exact evaluation: rational points, trigonometric values, surds and radicals, intervals."""

@@ -1,0 +1,291 @@
+"""The direct form: free-body diagrams and momentum balances (Newton--Euler).
+
+Each body gets a free-body diagram: applied forces and torques, gravity, springs and dampers,
+and *unknown* reactions (a magnitude along a known direction, or unknown components of a
+vector).  Equations are ``sum F = m a_C`` and the angular-momentum balance about the mass
+centre, a fixed point or a moving point B::
+
+    sum tau_B = d/dt H_B + m v_B x v_C,     H_B = I_B w + m r_BC x v_B
+
+projected on unit vectors the user chooses.  The result is an :class:`EquationSet` linear in
+``(q'', reactions)``.
+
+Example
+-------
+A mass on a spring, with the floor's normal force as an unknown reaction:
+
+>>> import sympy as sp
+>>> from dualmech import Frame, Point, Particle, coordinate
+>>> from dualmech.model.direct import NewtonEuler
+>>> x = coordinate("x"); m, k, g = sp.symbols("m k g", positive=True)
+>>> O = Frame.ground(); P = Point.origin(O).locate("P", x*O.x)
+>>> block = Particle("block", m, P)
+>>> ne = NewtonEuler(coordinates=[x], ground=O)
+>>> ne.gravity(-g*O.y)
+>>> N = ne.reaction("N", block, O.y)
+>>> ne.linear_spring("spring", block, k, x, O.x)
+>>> ne.linear_momentum(block, O.x); ne.linear_momentum(block, O.y)
+>>> eqs = ne.equations()
+>>> eqs.equations
+(-k*x(t) - m*Derivative(x(t), (t, 2)), N - g*m)
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Sequence
+
+import sympy as sp
+
+from dualmech.model._algebra import merge_names, names_of, to_se
+from dualmech.model._expr import as_expr, refuse_text_in
+
+from dualmech.model.bodies import Particle, RigidBody
+from dualmech.model.equations import EquationSet, ModelError, Rows
+from dualmech.model.kinematics import Frame, Point, Vector
+
+__all__ = ["NewtonEuler", "Load"]
+
+Body = Particle | RigidBody
+
+
+@dataclass(frozen=True)
+class Load:
+    """One entry of a free-body diagram: a force applied at a point, and/or a torque."""
+
+    key: str
+    force: Vector | None = None
+    point: Point | None = None
+    torque: Vector | None = None
+
+
+@refuse_text_in
+class NewtonEuler:
+    """Builder of the direct form; see the module docstring."""
+
+    def __init__(self, name: str = "newton_euler", *, coordinates: Sequence, ground: Frame,
+                 description: str = ""):
+        self.name = name
+        self.coordinates = tuple(coordinates)
+        self.ground = ground
+        self.description = description
+        self._loads: dict[int, list[Load]] = {}
+        self._bodies: dict[int, Body] = {}
+        self._unknowns: list[sp.Symbol] = []
+        self._equations: list[tuple[str, dict]] = []   # parts held in symengine
+        self._names: dict = {}
+
+    # -- free-body diagrams ------------------------------------------------------------
+    def _add(self, body: Body, load: Load) -> None:
+        if not isinstance(body, (Particle, RigidBody)):
+            raise ModelError(f"`body` must be a Particle or RigidBody, got {type(body).__name__}.")
+        self._bodies[id(body)] = body
+        self._loads.setdefault(id(body), []).append(load)
+
+    def force(self, key: str, body: Body, vector: Vector, at: Point | None = None) -> None:
+        """Force ``vector`` on ``body`` applied at ``at`` (default: its mass centre)."""
+        self._add(body, Load(key, vector, at or body.masscenter))
+
+    def torque(self, key: str, body: Body, vector: Vector) -> None:
+        """Pure torque (couple) ``vector`` on ``body``."""
+        if not isinstance(body, RigidBody):
+            raise ModelError(f"a torque needs a rigid body; `{body.name}` is a particle.")
+        self._add(body, Load(key, torque=vector))
+
+    def gravity(self, g: Vector, bodies: Sequence[Body] | None = None) -> None:
+        """Weight ``m g`` at the mass centre of each body (default: bodies added so far and later)."""
+        self._gravity = (g, None if bodies is None else list(bodies))
+
+    def linear_spring(self, key: str, body: Body, k, extension, direction: Vector,
+                      at: Point | None = None, against: Body | None = None,
+                      against_at: Point | None = None) -> None:
+        """Spring force ``-k * extension * direction`` on ``body`` (and the opposite on ``against``).
+
+        ``direction`` is the unit vector along which ``extension`` grows for ``body``.
+        """
+        f = -k * extension * direction
+        self.force(key, body, f, at)
+        if against is not None:
+            self.force(key, against, -f, against_at)
+
+    def spring_between(self, key: str, k, free_length, a: tuple, b: tuple) -> None:
+        """Spring of stiffness ``k`` and free length ``free_length`` between two points.
+
+        ``a`` and ``b`` are ``(body, point)`` pairs; ``body`` may be ``None`` for a fixed
+        anchor.  The force on ``a``'s body is ``-k (|r_ab| - free_length) e_ab`` with ``e_ab``
+        the unit vector from ``b`` to ``a`` (and the opposite on ``b``'s body).  The length is
+        a square root, so the comparator decides such models in high precision (mpmath).
+        """
+        (body_a, pa), (body_b, pb) = a, b
+        r = pa.pos_from(pb)
+        length = sp.sqrt(r.dot(r))
+        f = -k * (length - free_length) / length * r
+        if body_a is not None:
+            self.force(key, body_a, f, pa)
+        if body_b is not None:
+            self.force(key, body_b, -f, pb)
+
+    def linear_damper(self, key: str, body: Body, c, rate, direction: Vector,
+                      at: Point | None = None, against: Body | None = None,
+                      against_at: Point | None = None) -> None:
+        """Damper force ``-c * rate * direction`` on ``body`` (opposite on ``against``)."""
+        self.linear_spring(key, body, c, rate, direction, at, against, against_at)
+
+    def torsional_spring(self, key: str, body: Body, kt, angle, axis: Vector,
+                         against: Body | None = None) -> None:
+        """Torque ``-kt * angle * axis`` on ``body`` (opposite on ``against``)."""
+        tau = -kt * angle * axis
+        self._torque_pair(key, body, tau, against)
+
+    def torsional_damper(self, key: str, body: Body, ct, rate, axis: Vector,
+                         against: Body | None = None) -> None:
+        """Torque ``-ct * rate * axis`` on ``body`` (opposite on ``against``)."""
+        self._torque_pair(key, body, -ct * rate * axis, against)
+
+    def _torque_pair(self, key, body, tau, against):
+        self._add(body, Load(key, torque=tau))
+        if against is not None:
+            self._add(against, Load(key, torque=-tau))
+
+    def reaction(self, name: str, on: Body, direction: Vector, at: Point | None = None,
+                 against: Body | None = None, against_at: Point | None = None) -> sp.Symbol:
+        """An unknown force ``R * direction`` on ``on`` (and ``-R * direction`` on ``against``).
+
+        Returns the unknown magnitude ``R`` (a symbol named ``name``).
+        """
+        R = self._unknown(name)
+        self.force(f"reaction {name}", on, R * direction, at)
+        if against is not None:
+            self.force(f"reaction {name}", against, -R * direction, against_at)
+        return R
+
+    def reaction_vector(self, name: str, on: Body, frame: Frame, axes: str = "xyz",
+                        at: Point | None = None, against: Body | None = None,
+                        against_at: Point | None = None) -> Vector:
+        """Unknown force components ``name_x, name_y, ...`` along ``frame``'s ``axes``."""
+        comps = []
+        for a in "xyz":
+            comps.append(self._unknown(f"{name}_{a}") if a in axes else 0)
+        F = frame.vector(*comps)
+        self.force(f"reaction {name}", on, F, at)
+        if against is not None:
+            self.force(f"reaction {name}", against, -F, against_at)
+        return F
+
+    def reaction_torque(self, name: str, on: RigidBody, direction: Vector,
+                        against: Body | None = None) -> sp.Symbol:
+        """An unknown couple ``M * direction`` on ``on`` (opposite on ``against``)."""
+        M = self._unknown(name)
+        self._torque_pair(f"reaction {name}", on, M * direction, against)
+        return M
+
+    def _unknown(self, name: str) -> sp.Symbol:
+        if any(u.name == name for u in self._unknowns):
+            raise ModelError(f"reaction `{name}` is declared twice in `{self.name}`.")
+        s = sp.Symbol(name, real=True)
+        self._unknowns.append(s)
+        return s
+
+    # -- balances ----------------------------------------------------------------------
+    def _all_loads(self, body: Body) -> list[Load]:
+        loads = list(self._loads.get(id(body), []))
+        grav = getattr(self, "_gravity", None)
+        if grav is not None:
+            g, which = grav
+            if which is None or any(b is body for b in which):
+                loads.append(Load(f"gravity on {body.name}", body.mass * g, body.masscenter))
+        return loads
+
+    def linear_momentum(self, body: Body | Sequence[Body], direction: Vector,
+                        label: str | None = None) -> None:
+        """``(sum F - sum m a_C) . direction = 0`` for one body or a system of bodies."""
+        bodies = _as_list(body)
+        parts: dict = {}
+        for b in bodies:
+            self._bodies[id(b)] = b
+            for ld in self._all_loads(b):
+                if ld.force is not None:
+                    self._acc(parts, ld.key, ld.force.dot_se(direction))
+            a = b.masscenter.acc(self.ground)
+            self._acc(parts, f"inertia of {b.name}", a.dot_se(direction), -b.mass)
+        self._equations.append((label or f"sum F . {_dir_name(direction)} ({_names(bodies)})", parts))
+
+    def angular_momentum(self, body: Body | Sequence[Body], direction: Vector,
+                         about: Point | None = None, label: str | None = None) -> None:
+        """``(sum tau_B - dH_B/dt - m v_B x v_C) . direction = 0`` about point ``about``.
+
+        ``about`` defaults to the mass centre of a single body; give it for a system.
+        """
+        bodies = _as_list(body)
+        if about is None:
+            if len(bodies) != 1:
+                raise ModelError("give `about` for the angular momentum of a system of bodies.")
+            about = bodies[0].masscenter
+        parts: dict = {}
+        vB = about.vel(self.ground)
+        for b in bodies:
+            self._bodies[id(b)] = b
+            for ld in self._all_loads(b):
+                moment, names = to_se(0), {}
+                if ld.force is not None:
+                    moment, names = ld.point.pos_from(about).cross(ld.force).dot_se(direction)
+                if ld.torque is not None:
+                    m2, n2 = ld.torque.dot_se(direction)
+                    moment, names = moment + m2, merge_names(names, n2)
+                if moment != 0:
+                    self._acc(parts, ld.key, (moment, names))
+            H = b.angular_momentum(about, self.ground)
+            rate = H.dt(self.ground) + b.mass * vB.cross(b.masscenter.vel(self.ground))
+            self._acc(parts, f"inertia of {b.name}", rate.dot_se(direction), -1)
+        self._equations.append(
+            (label or f"sum tau_{about.name} . {_dir_name(direction)} ({_names(bodies)})", parts))
+
+    def equation(self, label: str, parts: dict) -> None:
+        """Add an equation given directly as ``{ingredient: expression}`` (sum = 0)."""
+        mine: dict = {}
+        for key, value in parts.items():
+            value = as_expr(value)
+            self._acc(mine, key, (to_se(value), names_of(value)))
+        self._equations.append((label, mine))
+
+    def equations(self) -> EquationSet:
+        """The :class:`EquationSet` (see :meth:`EquationSet.simplified` for a tidier form)."""
+        if not self._equations:
+            raise ModelError(f"`{self.name}` has no equations: call linear_momentum or "
+                             "angular_momentum for each body.")
+        contributions = [dict(parts) for _, parts in self._equations]
+        eqs = [sum(c.values(), to_se(0)) for c in contributions]
+        names = self._names
+        for u in self._unknowns:
+            names = merge_names(names, {u.name: u})
+        return EquationSet(self.name, self.coordinates,
+                           Rows(eqs, names, self.coordinates, plain=False),
+                           tuple(self._unknowns),
+                           tuple(label for label, _ in self._equations),
+                           Rows(contributions, names, self.coordinates, plain=False),
+                           self.description)
+
+    def _acc(self, parts: dict, key: str, value_names: tuple, factor=None) -> None:
+        """Add a symengine term (``(value, names)``, times the sympy ``factor``) to ``parts``."""
+        value, names = value_names
+        if factor is not None:
+            factor = as_expr(factor)
+            value = to_se(factor) * value
+            names = merge_names(names, names_of(factor))
+        self._names = merge_names(self._names, names)
+        parts[key] = parts.get(key, 0) + value
+
+
+def _as_list(body) -> list:
+    return list(body) if isinstance(body, (list, tuple)) else [body]
+
+
+def _names(bodies) -> str:
+    return ", ".join(b.name for b in bodies)
+
+
+def _dir_name(v: Vector) -> str:
+    c = list(v.components)
+    axes = [a for a, x in zip("xyz", c) if x != 0]
+    if len(axes) == 1 and c["xyz".index(axes[0])] == 1:
+        return f"{v.frame.name}.{axes[0]}"
+    return f"{v.frame.name}{list(c)}"

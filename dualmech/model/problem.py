@@ -1,0 +1,380 @@
+"""What a problem declares: parameters, coordinates, reactions, its models and the source's answers.
+
+A problem module subclasses :class:`Problem`, declares its quantities with their physical
+dimensions, default values and admissible ranges, and implements one method per derivation
+(each returning an :class:`~dualmech.model.equations.EquationSet`), written independently of each
+other.  The source's printed answers are transcribed as :class:`Published` entries; the
+comparator decides for each whether it is right.
+
+Example
+-------
+>>> import sympy as sp
+>>> from dualmech import coordinate, t, Lagrangian
+>>> from dualmech.model.problem import Problem, Parameter, Coordinate
+>>> from dualmech.model.dimensions import MASS, STIFFNESS, LENGTH
+>>> m, k = sp.symbols("m k", positive=True); x = coordinate("x")
+>>> class Oscillator(Problem):
+...     name, title, source = "oscillator", "Mass on a spring", "000: example 11"
+...     parameters = (Parameter(m, MASS, 2, (0.1, 10)), Parameter(k, STIFFNESS, 50, (1, 500)))
+...     coordinates = (Coordinate(x, LENGTH, (-1, 1)),)
+...     def lagrange(self):
+...         lg = Lagrangian(coordinates=[x])
+...         lg.kinetic("T", m*x.diff(t)**2/2); lg.potential("V", k*x**2/2)
+...         return lg.equations()
+>>> Oscillator().validate()
+>>> list(Oscillator().models())
+['lagrange']
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from dualmech.model._expr import as_expr
+from dualmech.model.dimensions import ENERGY, Dimension, as_dimension, audit_rows, quoted, reduce
+from dualmech.model.equations import EquationSet, ModelError, Rows
+from dualmech.model.kinematics import t
+
+__all__ = ["Parameter", "Coordinate", "Reaction", "Published", "Problem", "ProblemError"]
+
+
+class ProblemError(ModelError):
+    """A problem declaration with one or more mistakes (all listed in the message)."""
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """A constant of the problem: symbol, dimension, default value and admissible range."""
+
+    symbol: sp.Symbol
+    dimension: Dimension
+    default: float
+    range: tuple[float, float]
+    description: str = ""
+
+    def __post_init__(self):
+        if isinstance(self.symbol, str):
+            raise TypeError(f"`Parameter` needs a sympy symbol, got the text {self.symbol!r}: "
+                            f"use `sp.Symbol({self.symbol!r}, positive=True)` (or the "
+                            "assumptions it has).")
+        if not isinstance(self.symbol, sp.Symbol):
+            raise TypeError(f"`Parameter` needs a sympy Symbol, got {self.symbol!r} "
+                            f"({type(self.symbol).__name__}).")
+        if isinstance(self.default, (str, bytes, bool)) or not isinstance(
+                self.default, (int, float, sp.Number)):
+            raise TypeError(f"parameter `{self.symbol}`: the default must be a number, got "
+                            f"{self.default!r}.")
+        _check_range(f"parameter `{self.symbol}`", self.range)
+        _own_dimension(self)
+
+
+@dataclass(frozen=True)
+class Coordinate:
+    """A generalised coordinate ``q(t)`` with its dimension and the ranges of ``q`` and ``q'``."""
+
+    function: sp.Expr
+    dimension: Dimension
+    range: tuple[float, float]
+    rate_range: tuple[float, float] = (-2.0, 2.0)
+    description: str = ""
+    domain: tuple | None = None
+
+    def __post_init__(self):
+        if isinstance(self.function, str):
+            raise TypeError(f"`Coordinate` needs a coordinate, got the text {self.function!r}: "
+                            f"use `dualmech.coordinate({self.function!r})`.")
+        if not (isinstance(self.function, sp.core.function.AppliedUndef)
+                and len(self.function.args) == 1 and self.function.args[0].is_Symbol):
+            raise TypeError(f"`Coordinate` needs a function of time made by "
+                            f"`dualmech.coordinate(name)`, got {self.function!r}.")
+        _check_range(f"coordinate `{self.function.func.__name__}`", self.range)
+        _check_range(f"coordinate `{self.function.func.__name__}` rate", self.rate_range)
+        if self.domain is not None:
+            _check_range(f"coordinate `{self.function.func.__name__}` domain", self.domain,
+                         finite=False)
+        _own_dimension(self)
+
+    @property
+    def name(self) -> str:
+        return self.function.func.__name__
+
+
+@dataclass(frozen=True)
+class Reaction:
+    """An unknown reaction (or multiplier) named as in the direct model, with its meaning."""
+
+    name: str
+    dimension: Dimension
+    direction: str
+
+    def __post_init__(self):
+        _own_dimension(self)
+
+
+def _own_dimension(declared) -> None:
+    """A sympy Dimension declared for a quantity, converted to ours (what is no dimension is
+    left for :meth:`Problem.validate` to report)."""
+    try:
+        dimension = as_dimension(declared.dimension)
+    except (TypeError, ValueError):
+        return
+    object.__setattr__(declared, "dimension", dimension)
+
+
+@dataclass(frozen=True)
+class Published:
+    """A printed answer from the source, transcribed for checking.
+
+    ``kind``:
+      * ``"equation"`` -- ``printed`` are left sides of equations (``= 0``) that must follow
+        from the equations of motion (any combination of them is accepted); they may use the
+        coordinates' derivatives and the reaction symbols;
+      * ``"motion"`` -- ``printed`` claims to *be* the equations of motion: each must follow
+        from the derivations, and together they must determine every acceleration (a set
+        such as ``(e1, 2*e1)`` or ``0 = 0`` is wrong: it determines nothing);
+      * ``"expression"`` -- ``printed`` must equal ``reference`` (our own derivation, in the
+        same order) at every state of motion.
+
+    ``coordinates`` names the model whose coordinates the printed answer uses (default: the
+    reference model's).  ``where`` says where in the source it is printed.
+    """
+
+    label: str
+    kind: str
+    printed: tuple
+    reference: tuple = ()
+    where: str = ""
+    coordinates: str | None = None
+
+    def __post_init__(self):
+        if self.kind not in ("equation", "motion", "expression"):
+            raise ValueError(f"`kind` must be 'equation', 'motion' or 'expression', got "
+                             f"{self.kind!r}.")
+        object.__setattr__(self, "printed", tuple(as_expr(p) for p in _tuple(self.printed)))
+        object.__setattr__(self, "reference", tuple(as_expr(p) for p in _tuple(self.reference)))
+        if self.kind == "expression" and len(self.reference) != len(self.printed):
+            raise ValueError(f"published `{self.label}`: {len(self.printed)} printed expressions "
+                             f"but {len(self.reference)} reference expressions.")
+
+
+def _check_range(what: str, rng, finite: bool = True) -> None:
+    import math
+    if isinstance(rng, (str, bytes)) or any(isinstance(x, (str, bytes, bool)) for x in rng):
+        raise TypeError(f"{what}: range must be two numbers (low, high), got the text "
+                        f"{rng!r:.60}.")
+    try:
+        lo, hi = (float(x) for x in rng)
+    except (TypeError, ValueError):
+        raise TypeError(f"{what}: range must be two numbers (low, high), got {rng!r}.") \
+            from None
+    if finite and not (math.isfinite(lo) and math.isfinite(hi)):
+        raise ValueError(f"{what}: range {rng!r} must be finite.")
+    if math.isnan(lo) or math.isnan(hi):
+        raise ValueError(f"{what}: range {rng!r} must be numbers, not NaN.")
+
+
+def _tuple(x) -> tuple:
+    if isinstance(x, (list, tuple)):
+        return tuple(x)
+    if isinstance(x, sp.MatrixBase):
+        return tuple(x)
+    return (x,)
+
+
+class Problem:
+    """Base class of every problem; see the module docstring.
+
+    Class attributes to set: ``name``, ``title``, ``source`` (file and place), ``parameters``,
+    ``coordinates``, ``reactions``, ``singular`` (expressions whose zeros are the singular set,
+    e.g. ``cos(theta)``), ``reference`` (the model the others are compared with, default
+    ``"lagrange"``).  Each model is a method listed in ``model_names`` (default: the methods
+    among ``newton_euler``, ``lagrange`` and those in ``extra_models``).  ``aliases`` maps
+    names students use to the source's symbols (``{"l": "a"}`` where the source writes ``a``
+    for a length students call ``l``); the grader accepts an alias only when no symbol of the
+    problem has that name.
+    """
+
+    name: str = ""
+    title: str = ""
+    source: str = ""
+    summary: str = ""
+    parameters: tuple = ()
+    coordinates: tuple = ()
+    reactions: tuple = ()
+    singular: tuple = ()
+    reference: str = "lagrange"
+    extra_models: tuple = ()
+    aliases: dict = {}
+
+    # -- to be provided by subclasses --------------------------------------------------
+    def coordinate_maps(self) -> dict:
+        """``{model name: {that model's q(t): expression in the reference coordinates}}``."""
+        return {}
+
+    def published(self) -> list[Published]:
+        return []
+
+    # -- derived -----------------------------------------------------------------------
+    @property
+    def model_names(self) -> list[str]:
+        names = [n for n in ("newton_euler", "lagrange") if callable(getattr(self, n, None))]
+        return names + [n for n in self.extra_models if n not in names]
+
+    def models(self) -> dict[str, EquationSet]:
+        """Every derivation, built once per problem instance."""
+        if "_models" not in self.__dict__:
+            built = {}
+            for n in self.model_names:
+                eqs = getattr(self, n)()
+                if not isinstance(eqs, EquationSet):
+                    raise ProblemError(f"`{type(self).__name__}.{n}()` must return an "
+                                       f"EquationSet, got {type(eqs).__name__}.")
+                built[n] = eqs
+            self.__dict__["_models"] = built
+        return self.__dict__["_models"]
+
+    def model(self, name: str) -> EquationSet:
+        try:
+            return self.models()[name]
+        except KeyError:
+            raise KeyError(f"problem `{self.name}` has no model {name!r}; it has "
+                           f"{list(self.models())}.") from None
+
+    @property
+    def parameter_symbols(self) -> tuple:
+        return tuple(p.symbol for p in self.parameters)
+
+    @property
+    def coordinate_functions(self) -> tuple:
+        return tuple(c.function for c in self.coordinates)
+
+    def defaults(self) -> dict:
+        return {p.symbol: p.default for p in self.parameters}
+
+    def dimensions(self) -> dict:
+        """Declared dimension of every symbol and coordinate (and ``t``)."""
+        dims = {p.symbol: p.dimension for p in self.parameters}
+        for c in self.all_coordinates():
+            dims[c.function] = c.dimension
+        for r in self.reactions:
+            dims[sp.Symbol(r.name, real=True)] = r.dimension
+        return dims
+
+    def all_coordinates(self) -> list[Coordinate]:
+        """Coordinates of the reference model plus those of other models (``extra_coordinates``)."""
+        return list(self.coordinates) + list(getattr(self, "extra_coordinates", ()))
+
+    def coordinate_info(self, q) -> Coordinate:
+        for c in self.all_coordinates():
+            if c.function == q:
+                return c
+        raise ProblemError(f"problem `{self.name}`: coordinate {q} is not declared.")
+
+    def reaction_info(self) -> dict:
+        return {r.name: r for r in self.reactions}
+
+    def in_reference_coordinates(self, eqs: EquationSet) -> EquationSet:
+        """``eqs`` rewritten in the reference model's coordinates (if it uses others)."""
+        ref = self.model(self.reference)
+        if set(eqs.coordinates) == set(ref.coordinates):
+            return eqs
+        cache = self.__dict__.setdefault("_mapped", {})
+        hit = cache.get(id(eqs))
+        if hit is not None and hit[0] is eqs:
+            return hit[1]
+        maps = self.coordinate_maps()
+        if eqs.name not in maps:
+            raise ProblemError(f"problem `{self.name}`: model `{eqs.name}` uses coordinates "
+                               f"{list(eqs.coordinates)}, the reference uses "
+                               f"{list(ref.coordinates)}; give the map in coordinate_maps().")
+        mapped = eqs.change_coordinates(ref.coordinates, maps[eqs.name], name=eqs.name)
+        cache[id(eqs)] = (eqs, mapped)  # keep eqs alive so its id is not reused
+        return mapped
+
+    # -- validation --------------------------------------------------------------------
+    def validate(self) -> None:
+        """Check the declaration; raise one :class:`ProblemError` listing every mistake."""
+        errors: list[str] = []
+        for attr in ("name", "title", "source"):
+            if not getattr(self, attr):
+                errors.append(f"`{attr}` is empty")
+        declared = set(self.parameter_symbols) | {t}
+        for p in self.parameters:
+            lo, hi = p.range
+            if not lo < hi:
+                errors.append(f"parameter `{p.symbol}`: range {p.range} must have low < high")
+            elif not lo <= p.default <= hi:
+                errors.append(f"parameter `{p.symbol}`: default {p.default} is outside {p.range}")
+            try:
+                reduce(p.dimension)
+            except (TypeError, ValueError) as exc:
+                errors.append(f"parameter `{p.symbol}`: {exc}")
+        for c in self.all_coordinates():
+            if not c.range[0] < c.range[1]:
+                errors.append(f"coordinate `{c.name}`: range {c.range} must have low < high")
+        try:
+            models = self.models()
+        except ModelError as exc:
+            raise ProblemError(f"problem `{self.name}`: {exc}") from exc
+        if self.reference not in models:
+            errors.append(f"reference model `{self.reference}` is not among {list(models)}")
+        dims = self.dimensions()
+        reaction_names = {r.name for r in self.reactions}
+        for mname, eqs in models.items():
+            for u in eqs.unknowns:
+                if u.name not in reaction_names:
+                    errors.append(f"model `{mname}`: reaction `{u}` is not declared in "
+                                  "`reactions`")
+            for s in sorted(eqs.free_symbols() - declared - set(eqs.unknowns), key=str):
+                errors.append(f"model `{mname}`: symbol `{s}` is not a declared parameter")
+            for q in eqs.coordinates:
+                if q not in dims:
+                    errors.append(f"model `{mname}`: coordinate {q} is not declared")
+        used_unknowns = {u.name for eqs in models.values() for u in eqs.unknowns}
+        for r in self.reactions:
+            if r.name not in used_unknowns:
+                errors.append(f"reaction `{r.name}` is declared but no model uses it (a typo "
+                              "in the model's reaction name, or a stale declaration)")
+        used_coords = {q for eqs in models.values() for q in eqs.coordinates}
+        for c in self.all_coordinates():
+            if c.function not in used_coords:
+                errors.append(f"coordinate `{c.name}` is declared but no model uses it")
+        if errors:
+            raise ProblemError(f"problem `{self.name or type(self).__name__}` has "
+                               f"{len(errors)} mistake(s):\n  - " + "\n  - ".join(errors))
+
+    def dimension_issues(self) -> list[str]:
+        """Dimensional inconsistencies of every derived equation (empty when all consistent),
+        as plain text; :meth:`dimension_audit` gives the same sentences with their terms as
+        expressions."""
+        return [quoted(s) for s in self.dimension_audit()]
+
+    def dimension_audit(self) -> list[tuple]:
+        """Dimensional inconsistencies of every derived equation, each a sentence: a tuple of
+        text and the sympy expressions of the terms it names (empty when all consistent)."""
+        dims = self.dimensions()
+        out = []
+        for mname, eqs in self.models().items():
+            rows = eqs.equations
+            held = isinstance(rows, Rows)   # audited in symengine, as the derivation left them
+            names = rows.names if held else None
+            expected = []
+            for label in eqs.labels:
+                x = None
+                if label.startswith("Lagrange, "):
+                    q = next(q for q in eqs.coordinates if q.func.__name__ == label[10:])
+                    x = ENERGY / dims[q]
+                expected.append(x)
+            found = audit_rows(rows.se if held else rows, dims, expected, names=names)
+            for label, issues in zip(eqs.labels, found):
+                out += [(f"{mname} [{label}]: ",) + issue.sentence() for issue in issues]
+        return out
+
+    def __repr__(self) -> str:
+        return f"<Problem {self.name}: {self.title}>"
+
+    def _repr_html_(self) -> str:
+        """Jupyter: the problem's card (symbols, models, equations typeset)."""
+        from dualmech.report.jupyter import problem_html
+        return problem_html(self)

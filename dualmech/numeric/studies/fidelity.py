@@ -1,0 +1,264 @@
+"""Model no more than a scene needs: fidelity ladders and what each simplification buys and costs.
+
+A **ladder** is a list of models of one scene, from the simplest to the richest, where the
+sources offer one:
+
+* linear against nonlinear -- the small-oscillation model about a stable equilibrium (the
+  Jacobian of the richest model there) below the nonlinear model;
+* point mass against rigid body -- :class:`dualmech.problems.n_link_pendulum.NLinkPendulum` (masses
+  on massless rods) below :class:`~dualmech.problems.n_link_pendulum.NLinkRigidPendulum` (uniform rods);
+* the mobile robot's simplified model, which neglects the pivot reaction ``H`` in the base's
+  balance, below the detailed one (a neglected reaction);
+* a source's own model below the richer variant the catalogue adds to it: the restrained
+  pendulum's arc-length spring and dashpot (Example 12's energies) below horizontal ones,
+  the helicopter blade without its weight (as the source) below the blade with it.
+
+For each rung, :func:`ladder` measures its **derivation time** (building its equations from a
+fresh problem instance), its **right-hand-side cost** (CPU per call of the generated code at
+states of the standard trajectory) and its **error against the richest model** along a
+standard trajectory (the richest problem's initial state over a span that fits its scene),
+each coordinate's error divided by the width of its declared range -- and names the reactions
+a rung neglects, with their size along that trajectory.
+
+Example
+-------
+>>> from dualmech.problems import get
+>>> lad = ladder(get("simple_pendulum"), duration=1.0)
+>>> [(r.label, r.error_path > 0) for r in lad.rungs]
+[('linearised (small oscillations about [0.0])', True), ('nonlinear', False)]
+"""
+from __future__ import annotations
+
+import json
+import re
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from dualmech.model.notation import mathtext
+from dualmech.numeric.contacts import scene_span
+from dualmech.numeric.formulations import formulations
+from dualmech.numeric.integrators import integrate
+from dualmech.numeric.model import NumericModel
+from dualmech.numeric.studies.regimes import stable_equilibrium, jacobian
+from dualmech.numeric.simulation import default_initial_state, direct_models, problem_parameters
+
+__all__ = ["Rung", "Ladder", "ladder", "LADDERS", "has_ladder"]
+
+#: Explicit ladders: problem name -> ``[(rung label, problem factory, what it neglects,
+#: the richest model's reactions it neglects)]``, simplest first; the last is the richest.
+LADDERS: dict = {
+    "mobile_robot": [("simplified: pivot reaction H neglected in the base's balance",
+                      lambda: _problem("mobile_robot_simplified"), "the pivot reaction H",
+                      ("H",)),
+                     ("detailed: H kept (2.6-9 to 2.6-13)", lambda: _problem("mobile_robot"),
+                      "", ())],
+    "n_link_pendulum": [("point masses on massless rods",
+                         lambda: _problem("n_link_pendulum", n=3), "the rods' mass "
+                         "distribution (each rod's mass lumped at its lower end)", ()),
+                        ("uniform rigid rods", lambda: _problem("n_link_rigid_pendulum", n=3),
+                         "", ())],
+}
+LADDERS.update({
+    "restrained_pendulum": [("source: spring and dashpot along their arcs (Example 12's U, R)",
+                             lambda: _problem("restrained_pendulum"), "the elements' turn away "
+                             "from horizontal (travel b th for b sin th, rate a th' for "
+                             "a th' cos th)", ()),
+                            ("spring and dashpot horizontal",
+                             lambda: _problem("restrained_pendulum_horizontal"), "", ())],
+    "helicopter_blade": [("source: weight neglected", lambda: _problem("helicopter_blade"),
+                          "the blade's weight, M g L^2 cos(beta)/2 about the hinge", ()),
+                         ("blade's weight kept", lambda: _problem("helicopter_blade_weighted"),
+                          "", ())],
+})
+LADDERS["restrained_pendulum_horizontal"] = LADDERS["restrained_pendulum"]
+LADDERS["helicopter_blade_weighted"] = LADDERS["helicopter_blade"]
+LADDERS["mobile_robot_simplified"] = LADDERS["mobile_robot"]
+LADDERS["n_link_rigid_pendulum"] = LADDERS["n_link_pendulum"]
+
+
+def _problem(name: str, **options):
+    from dualmech import problems
+    return problems.get(name, **options)
+
+
+@dataclass
+class Rung:
+    """One model of the ladder and what it costs and misses."""
+
+    label: str
+    problem: str
+    model: str
+    derivation_s: float
+    rhs_us: float
+    error_final: float
+    error_path: float
+    neglects: str = ""
+    neglected: dict = field(default_factory=dict)
+    by_coordinate: dict = field(default_factory=dict)
+    times: list = field(default_factory=list, repr=False)
+    error_curve: list = field(default_factory=list, repr=False)
+
+
+@dataclass
+class Ladder:
+    """Rungs simplest first; the last is the richest (its errors are zero by definition)."""
+
+    scene: str
+    span: tuple
+    span_note: str
+    rungs: list
+
+    def __str__(self) -> str:
+        head = (f"fidelity ladder of {self.scene}, t in [{self.span[0]:g}, {self.span[1]:.3g}] s"
+                + (f" ({self.span_note})" if self.span_note else "") + "; errors relative "
+                "to each coordinate's declared range, against the richest rung")
+        rows = [("rung", "model", "derivation [s]", "RHS [us/call]", "error at end",
+                 "max error", "neglects")]
+        for r in self.rungs:
+            miss = r.neglects
+            if r.neglected:
+                miss += " (" + ", ".join(f"max |{k}| = {v:.4g} N" for k, v in
+                                         r.neglected.items()) + ")"
+            rows.append((r.label, f"{r.problem}.{r.model}", f"{r.derivation_s:.3f}",
+                         f"{r.rhs_us:.1f}", f"{r.error_final:.3g}", f"{r.error_path:.3g}",
+                         miss or "-"))
+        widths = [max(len(str(row[i])) for row in rows) for i in range(len(rows[0]))]
+        lines = [head] + ["  " + "  ".join(str(c).ljust(w) for c, w in zip(row, widths))
+                          .rstrip() for row in rows]
+        return "\n".join(lines)
+
+    def to_dict(self) -> dict:
+        return {"scene": self.scene, "span": list(self.span), "span_note": self.span_note,
+                "rungs": [{k: v for k, v in asdict(r).items()
+                           if k not in ("times", "error_curve")} for r in self.rungs]}
+
+    def write(self, out_dir: Path) -> list[Path]:
+        from dualmech.numeric.charts import panels, save
+        out_dir = Path(out_dir)
+        out_dir.mkdir(parents=True, exist_ok=True)
+        stem = out_dir / f"{self.scene}_fidelity"
+        stem.with_suffix(".json").write_text(json.dumps(self.to_dict(), indent=1) + "\n")
+        fig, (ax,) = panels(1, f"{self.scene}: each rung against the richest model",
+                            height=3.4)
+        for r in self.rungs[:-1]:
+            ax.plot(r.times, np.maximum(r.error_curve, 1e-17), label=_legend(r))
+        ax.set_yscale("log")
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("state error [relative to range]")
+        ax.legend(fontsize="small")
+        return [stem.with_suffix(".json")] + save(fig, stem)
+
+
+def _legend(rung: Rung) -> str:
+    """The rung's label for the chart, each reaction it neglects named as a symbol (the
+    label's ``H`` as :math:`H`, :func:`~dualmech.model.notation.mathtext`)."""
+    label = rung.label.replace("$", r"\$")
+    for name in rung.neglected:
+        label = re.sub(rf"(?<![\w$\\{{]){re.escape(name)}(?![\w$}}])",
+                       lambda _m, n=name: mathtext(n), label)
+    return label
+
+
+def has_ladder(problem) -> bool:
+    """Whether :func:`ladder` has something to compare for ``problem``."""
+    if problem.name in LADDERS:
+        return True
+    try:
+        f = formulations(problem, models=[problem.reference], stabilisations=())[0][0]
+        stable_equilibrium(problem, f)
+        return True
+    except (ValueError, IndexError):
+        return False
+
+
+def _derive(factory: Callable, model: str | None):
+    """A fresh problem and the CPU seconds its model ``model`` (default: the reference) takes
+    to derive -- that model's method alone, not the problem's other models."""
+    p = factory()
+    name = model or p.reference
+    start = time.process_time()
+    eqs = getattr(p, name)()
+    return p, eqs, time.process_time() - start
+
+
+def _rhs_cost(rhs: Callable, states: np.ndarray, calls: int = 2000) -> float:
+    """CPU microseconds per call of ``rhs`` on one state, cycling through ``states``."""
+    cols = [states[:, j].copy() for j in range(states.shape[1])]
+    start = time.process_time()
+    for i in range(calls):
+        rhs(0.0, cols[i % len(cols)])
+    return 1e6 * (time.process_time() - start) / calls
+
+
+def ladder(problem, duration: float = 5.0, rtol: float = 1e-10, samples: int = 201) -> Ladder:
+    """The fidelity ladder of ``problem``'s scene (see the module docstring)."""
+    spec = LADDERS.get(problem.name, [("nonlinear", lambda: type(problem)(), "", ())])
+    richest_label, richest_factory, _, _ = spec[-1]
+    fresh, top_eqs, top_time = _derive(richest_factory, None)
+    # the numbers use the given problem when it is the richest (its models may be built)
+    top = problem if problem.name == fresh.name and \
+        getattr(problem, "n", None) == getattr(fresh, "n", None) else fresh
+    q0, qd0 = default_initial_state(top)
+    y0 = np.array(q0 + qd0, dtype=float)
+    scene = scene_span(top, duration, y0)
+    te = np.linspace(scene.t0, scene.t_end, samples)
+    ref = formulations(top, y0=y0, models=[top.reference], stabilisations=())[0][0]
+    truth = integrate(ref.rhs, (te[0], te[-1]), y0, "DOP853", t_eval=te, rtol=rtol,
+                      atol=rtol * ref.scales)
+    truth_reactions = _reactions(top, truth.y)
+    rungs = []
+    entries = list(spec[:-1])
+    try:
+        q_eq, J = stable_equilibrium(top, ref)
+        entries.insert(0, ("linearised (small oscillations about "
+                           f"{[round(float(x), 4) for x in q_eq]})", ("linear", q_eq, J),
+                           "every term of higher order in the motion", ()))
+    except ValueError:
+        pass
+    for label, factory, neglects, dropped in entries + [(richest_label, None, "", ())]:
+        if factory is None:
+            p, eqs, secs, rhs = top, top_eqs, top_time, ref.rhs
+        elif isinstance(factory, tuple):
+            _, q_eq, J = factory
+            start = time.process_time()
+            y_eq = np.concatenate([q_eq, np.zeros(len(q_eq))])
+            J = jacobian(ref.rhs, 0.0, y_eq)   # what deriving the linear model costs here
+            secs = top_time + time.process_time() - start
+            p, eqs = top, top_eqs
+            rhs = (lambda t, y, J=J, y_eq=y_eq: J @ (y - y_eq))
+        else:
+            p, eqs, secs = _derive(factory, None)
+            rhs = NumericModel(eqs, problem_parameters(p)).rhs
+        run = integrate(rhs, (te[0], te[-1]), y0, "DOP853", t_eval=te, rtol=rtol,
+                        atol=rtol * ref.scales)
+        k = run.y.shape[1]
+        each = np.abs(run.y - truth.y[:, :k]) / ref.scales[:, None]
+        err = each.max(axis=0)
+        name = "linearised" if isinstance(factory, tuple) else eqs.name
+        rung = Rung(label, p.name, name, secs, _rhs_cost(rhs, truth.y[:, ::10]),
+                    float(err[-1]) if k == te.size else float("inf"),
+                    float(err.max()) if k else float("inf"), neglects,
+                    times=list(te[:k]), error_curve=list(err))
+        rung.neglected = {name: float(np.abs(truth_reactions[name]).max()) for name in dropped
+                          if name in truth_reactions}
+        names = [q.func.__name__ for q in ref.coordinates]
+        names += [f"{c}'" for c in names]
+        rung.by_coordinate = {c: float(e.max()) for c, e in zip(names, each)} if k else {}
+        rungs.append(rung)
+    return Ladder(top.name, (float(te[0]), float(te[-1])), scene.reason, rungs)
+
+
+def _reactions(problem, Y: np.ndarray) -> dict:
+    """The problem's direct-model reactions along states ``Y`` (reference coordinates)."""
+    values = problem_parameters(problem)
+    out = {}
+    for m in direct_models(problem, square=True):
+        n = m.n
+        sol = NumericModel(m, values).solve(0.0, Y[:n], Y[n:])
+        for u, row in zip(m.unknowns, sol[n:]):
+            out.setdefault(u.name, row)
+    return out

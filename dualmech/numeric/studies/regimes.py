@@ -1,0 +1,411 @@
+"""Where methods fail beyond coordinates: stiffness, linearisation, chaos, DAE drift.
+
+* :func:`stiffness` -- a stiffness parameter swept past its declared range (a stand-in for a
+  stiff contact), from a state that leaves the fast mode at rest: the exact motion is smooth,
+  so any growth of the step count is stability, not accuracy.  Each explicit method's
+  minimal step count is predicted from the fastest eigenvalue of the Jacobian and the size of
+  the method's stability region along its direction (from the method's own Butcher tableau);
+  the implicit methods' cost is measured beside it.
+* :func:`linearisation` -- the small-oscillation model about a stable equilibrium (Jacobian
+  at the equilibrium) against the nonlinear model, released along the slowest mode: the
+  error over one linear period as a function of the amplitude, and the amplitudes where it
+  passes 1 % and 10 %.
+* :func:`chaos` -- two formulations of one problem from one state at each tolerance: how
+  long their trajectories agree, and the Lyapunov exponent that explains it.
+* :func:`dae_drift` -- the constraint residual over time for each DAE stabilisation, with
+  its growth exponent (``|g| ~ t^p``).
+
+Example
+-------
+Two stiffnesses and two methods, to keep the example fast (``dualmech atlas`` sweeps more):
+
+>>> from dualmech.problems import get
+>>> s = stiffness(get("falling_container"), values=(100.0, 1e6), methods=("RK45", "Radau"))
+>>> sorted({(r["value"], r["method"]) for r in s.rows})
+[(100.0, 'RK45'), (100.0, 'Radau'), (1000000.0, 'RK45'), (1000000.0, 'Radau')]
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Mapping, Sequence
+
+import numpy as np
+from scipy.integrate import RK45, DOP853, solve_ivp
+from scipy.optimize import brentq, root
+
+from dualmech.model.dimensions import STIFFNESS, reduce
+from dualmech.numeric.formulations import formulations
+from dualmech.numeric.integrators import EXPLICIT
+from dualmech.numeric.simulation import problem_parameters
+
+__all__ = ["stability_radius", "stable_equilibrium", "jacobian", "Stiffness", "stiffness",
+           "STIFF_SCENES",
+           "Linearisation", "linearisation", "Chaos", "chaos", "Drift", "dae_drift"]
+
+#: Scenes for :func:`stiffness`: ``problem: (parameter, initial state, span, why smooth)``.
+STIFF_SCENES = {
+    "falling_container": ("k", [2.2, 2.5, 0.0, 0.0], 0.5,
+                          "released at rest with the spring at its free length (x2 - x1 = "
+                          "l0): both masses fall freely, the spring never stretches"),
+}
+
+
+def stability_radius(method: str, direction: float) -> float:
+    """Largest ``r`` with ``|R(r e^{i direction})| <= 1`` for scipy's explicit ``method``
+    (``R`` the stability function of its Butcher tableau, ``R(z) = 1 + z b^T (I - zA)^-1 1``)."""
+    cls = {"RK45": RK45, "DOP853": DOP853}[method]
+    raw = np.asarray(cls.A, dtype=float)[: cls.n_stages, : cls.n_stages]
+    A = np.zeros((cls.n_stages, cls.n_stages), dtype=complex)
+    A[:, : raw.shape[1]] = raw  # scipy stores RK45's A without its (zero) last column
+    b = np.asarray(cls.B, dtype=complex)[: cls.n_stages]
+    one = np.ones(cls.n_stages)
+    unit = np.exp(1j * direction)
+
+    def growth(r):
+        z = r * unit
+        return abs(1 + z * b @ np.linalg.solve(np.eye(cls.n_stages) - z * A, one)) - 1
+    r = np.geomspace(1e-3, 50, 4000)
+    g = np.array([growth(x) for x in r])
+    k = np.flatnonzero(g > 1e-12)
+    k = k[r[k] > 0.5]  # past the origin, where |R| = 1 - O(r^p) may be flat
+    if not k.size:
+        return float(r[-1])
+    j = k[0]
+    return float(brentq(growth, r[j - 1], r[j], xtol=1e-12))
+
+
+def jacobian(rhs, t0: float, y0: np.ndarray) -> np.ndarray:
+    """Central finite differences of ``rhs`` at ``y0`` (error O(h^2), h ~ 1e-6 |y|)."""
+    y0 = np.asarray(y0, dtype=float)
+    J = np.empty((y0.size, y0.size))
+    for j in range(y0.size):
+        h = 1e-6 * max(1.0, abs(y0[j]))
+        e = np.zeros_like(y0)
+        e[j] = h
+        J[:, j] = (rhs(t0, y0 + e) - rhs(t0, y0 - e)) / (2 * h)
+    return J
+
+
+# -- stiffness ---------------------------------------------------------------------------------
+@dataclass
+class Stiffness:
+    """Per parameter value: the fastest eigenvalue and each method's work and error."""
+
+    problem: str
+    parameter: str
+    unit: str
+    declared: tuple
+    scene: str
+    span: tuple
+    rtol: float
+    rows: list = field(default_factory=list)
+
+    def crossover(self, explicit: str = "RK45", implicit: str = "Radau") -> float | None:
+        """Smallest swept value where ``explicit`` needs more right-hand sides than ``implicit``."""
+        by = {(r["value"], r["method"]): r for r in self.rows}
+        for v in sorted({r["value"] for r in self.rows}):
+            e, i = by.get((v, explicit)), by.get((v, implicit))
+            if e and i and e["evaluations"] > i["evaluations"]:
+                return v
+        return None
+
+    def __str__(self) -> str:
+        lines = [f"{self.problem}: stiffness in {self.parameter} [{self.unit}] (declared "
+                 f"range {self.declared}); {self.scene}; rtol {self.rtol:g}"]
+        for r in self.rows:
+            pred = f", stability boundary: ~{r['min_steps']:.0f}" if r["min_steps"] else ""
+            lines.append(f"  {self.parameter} = {r['value']:.3g}: |lambda| = "
+                         f"{r['lambda_max']:.3g} 1/s, {r['method']:6s} {r['steps']:7d} steps "
+                         f"{r['evaluations']:8d} evaluations {r['cpu']:.3f} s error "
+                         f"{r['error']:.2g}{pred}")
+        c = self.crossover()
+        if c is not None:
+            lines.append(f"  explicit RK45 costs more than implicit Radau from "
+                         f"{self.parameter} = {c:.3g} {self.unit} on")
+        return "\n".join(lines)
+
+
+def _free_fall(problem, values, y0, t):
+    """Exact motion of the stiffness scene: every coordinate falls with g from rest."""
+    g = next(v for s, v in values.items() if s.name == "g")
+    y0 = np.asarray(y0, dtype=float)
+    n = y0.size // 2
+    q = y0[:n, None] + y0[n:, None] * t - g * t**2 / 2
+    qd = y0[n:, None] - g * t
+    return np.vstack([q, np.broadcast_to(qd, q.shape)])
+
+
+def stiffness(problem, values: Sequence[float] = tuple(10.0 ** k for k in range(2, 9)),
+              methods: Sequence[str] = ("RK45", "DOP853", "Radau", "BDF", "LSODA"),
+              rtol: float = 1e-6, samples: int = 51) -> Stiffness:
+    """The stiffness sweep of the module docstring (scene from :data:`STIFF_SCENES`)."""
+    name, y0, duration, why = STIFF_SCENES[problem.name]
+    decl = {p.symbol.name: p for p in problem.parameters}[name]
+    assert reduce(decl.dimension) == reduce(STIFFNESS)
+    out = Stiffness(problem.name, name, "N/m", tuple(decl.range), why, (0.0, duration), rtol)
+    te = np.linspace(0.0, duration, samples)
+    for v in values:
+        f = formulations(problem, {name: v}, y0, models=[problem.reference],
+                         strict=False)[0][0]
+        lam = np.linalg.eigvals(jacobian(f.rhs, 0.0, f.y0))
+        fast = lam[np.argmax(np.abs(lam))]
+        exact = _free_fall(problem, problem_parameters(problem), f.y0, te)
+        for m in methods:
+            run = f.run(m, (0.0, duration), te, rtol=rtol)
+            err = float(np.abs(run.y - exact[:, : run.y.shape[1]]).max()) if run.success \
+                else float("nan")
+            bound = 0.0
+            if m in EXPLICIT:
+                bound = duration * abs(fast) / stability_radius(m, float(np.angle(fast)))
+            out.rows.append({"value": float(v), "method": m, "steps": run.steps,
+                             "evaluations": run.evaluations, "cpu": run.cpu, "error": err,
+                             "success": run.success, "lambda_max": float(abs(fast)),
+                             "lambda": [float(fast.real), float(fast.imag)],
+                             "min_steps": bound})
+    return out
+
+
+# -- linearisation ------------------------------------------------------------------------------
+@dataclass
+class Linearisation:
+    """Error of the small-oscillation model against amplitude; the 1 % and 10 % amplitudes."""
+
+    problem: str
+    equilibrium: list
+    frequency: float
+    mode: list
+    coordinate: str
+    unit: str
+    amplitudes: list
+    errors: list
+    thresholds: dict
+    times: np.ndarray = field(repr=False, default=None)
+
+    def __str__(self) -> str:
+        marks = "; ".join(f"{100 * lv:g} % at amplitude {a:.4g} {self.unit}" if a is not None
+                          else f"{100 * lv:g} % not reached" for lv, a in
+                          self.thresholds.items())
+        return (f"{self.problem}: small-oscillation model about {self.equilibrium} "
+                f"(omega = {self.frequency:.5g} rad/s, mode {self.mode} led by "
+                f"{self.coordinate}): error over one period passes {marks}")
+
+
+def stable_equilibrium(problem, f) -> tuple[np.ndarray, np.ndarray]:
+    """The first stable equilibrium found from ``q = 0``, the initial state and the middle
+    of the declared ranges; with the Jacobian there."""
+    n = f.n
+    mids = [np.mean(problem.coordinate_info(q).range) for q in f.coordinates]
+    found, why = [], ""
+    for guess in (np.zeros(n), f.y0[:n], np.array(mids)):
+        try:
+            q = _equilibrium(f, guess)
+        except ValueError as exc:
+            why = why or str(exc)
+            continue
+        if any(np.allclose(q, p) for p in found):
+            continue
+        found.append(q)
+        J = jacobian(f.rhs, 0.0, np.concatenate([q, np.zeros(n)]))
+        lam = np.linalg.eigvals(J)
+        if lam.real.max() <= 1e-6 * np.abs(lam).max():
+            return q, J
+    if not found:
+        raise ValueError(f"`{problem.name}` has no equilibrium near q = 0, its initial state "
+                         f"or the middle of its ranges ({why})")
+    raise ValueError(f"every equilibrium found of `{problem.name}` "
+                     f"({', '.join(str([round(float(x), 6) for x in q]) for q in found)}) is "
+                     "unstable: there is no small oscillation to linearise about")
+
+
+def _equilibrium(f, q_guess) -> np.ndarray:
+    n = f.n
+
+    def acc(q):
+        return f.rhs(0.0, np.concatenate([q, np.zeros(n)]))[n:]
+    sol = root(acc, q_guess, tol=1e-14)
+    if not sol.success or np.abs(acc(sol.x)).max() > 1e-9:
+        raise ValueError(f"none near {[round(float(x), 6) for x in q_guess]}: "
+                         f"{' '.join(str(sol.message).split())}")
+    return sol.x
+
+
+def linearisation(problem, levels: Sequence[float] = (0.01, 0.1), params: Mapping | None = None,
+                  rtol: float = 1e-11, samples: int = 201) -> Linearisation:
+    """The amplitude sweep of the module docstring, about the equilibrium nearest ``q = 0``."""
+    f = formulations(problem, params, models=[problem.reference])[0][0]
+    n = f.n
+    q_eq, J = stable_equilibrium(problem, f)
+    y_eq = np.concatenate([q_eq, np.zeros(n)])
+    lam, vec = np.linalg.eig(J)
+    osc = [k for k in range(lam.size) if lam[k].imag > 1e-9 * np.abs(lam).max()]
+    if not osc:
+        raise ValueError(f"`{problem.name}` does not oscillate about {list(q_eq)}.")
+    k = min(osc, key=lambda j: lam[j].imag)
+    w = float(lam[k].imag)
+    v = vec[:n, k]
+    lead = int(np.argmax(np.abs(v)))
+    mode = np.real(v / v[lead])
+    period = 2 * np.pi / w
+    te = np.linspace(0.0, period, samples)
+    info = problem.coordinate_info(f.coordinates[lead])
+    top = min(abs(info.range[1] - q_eq[lead]), abs(q_eq[lead] - info.range[0]))
+
+    def error(a: float) -> float:
+        y0 = np.concatenate([q_eq + a * mode, np.zeros(n)])
+        size = a * np.abs(mode).max()          # tolerances scaled with the motion's size
+        atol = rtol * size * np.concatenate([np.ones(n), np.full(n, w)])
+        nl = solve_ivp(f.rhs, (0.0, period), y0, method="DOP853", rtol=rtol, atol=atol,
+                       t_eval=te).y[:n]
+        lin = _linear(J, y0 - y_eq, te)[:n] + q_eq[:, None]
+        return float(np.abs(nl - lin).max() / (a * np.abs(mode).max()))
+    amps = list(np.geomspace(top * 1e-3, top, 25))
+    errs = [error(a) for a in amps]
+    marks = {}
+    for lv in levels:
+        j = next((i for i, e in enumerate(errs) if e > lv), None)
+        marks[lv] = None if j in (None, 0) else \
+            float(brentq(lambda a: np.log(error(a) / lv), amps[j - 1], amps[j], xtol=1e-12))
+    from dualmech.numeric.units import unit as unit_of
+    return Linearisation(problem.name, [round(float(x), 9) for x in q_eq], w,
+                         [round(float(x), 6) + 0.0 for x in mode], info.name, unit_of(info.dimension),
+                         amps, errs, marks, te)
+
+
+def _linear(J, dy0, te) -> np.ndarray:
+    """``exp(J t) dy0`` at the times ``te`` (eigen-decomposition; ``J`` diagonalisable)."""
+    lam, V = np.linalg.eig(J)
+    c = np.linalg.solve(V, dy0.astype(complex))
+    return np.real(V @ (c[:, None] * np.exp(lam[:, None] * te[None, :])))
+
+
+# -- chaos -------------------------------------------------------------------------------------
+@dataclass
+class Chaos:
+    """How long two formulations agree at each tolerance; the Lyapunov exponent."""
+
+    problem: str
+    pair: tuple
+    y0: list
+    span: tuple
+    threshold: float
+    rows: list
+    lyapunov: float
+
+    def __str__(self) -> str:
+        lines = [f"{self.problem}: {self.pair[0]} against {self.pair[1]} from {self.y0}; "
+                 f"agreement = every coordinate within {self.threshold:g} of its declared "
+                 f"range; largest Lyapunov exponent {self.lyapunov:.3g} 1/s"]
+        for r in self.rows:
+            lines.append(f"  rtol {r['rtol']:.0e}: agree until t = {r['horizon']:.3g} s")
+        return "\n".join(lines)
+
+
+def chaos(problem, pair: Sequence[str] | None = None, y0=None, duration: float = 20.0,
+          tolerances: Sequence[float] = tuple(10.0 ** -k for k in range(4, 13, 2)),
+          threshold: float = 0.01, samples: int = 2001) -> Chaos:
+    """Agreement horizon of two formulations against tolerance (see the module docstring).
+
+    ``threshold`` is the disagreement, as a fraction of each coordinate's declared range,
+    beyond which two runs no longer describe the same motion.
+    """
+    forms, _ = formulations(problem, y0=y0, stabilisations=())
+    odes = [f for f in forms if f.kind == "ode" and
+            tuple(f.coordinates) == tuple(forms[0].coordinates)]
+    chosen = [f for f in odes if pair is None or f.name in pair][:2]
+    if len(chosen) < 2:
+        raise ValueError(f"`{problem.name}` has no two ODE formulations in the reference "
+                         "coordinates to compare.")
+    a, b = chosen
+    te = np.linspace(0.0, duration, samples)
+    n = a.n
+    rows = []
+    for tol in tolerances:
+        ra, rb = a.run("DOP853", (0.0, duration), te, rtol=tol), \
+            b.run("DOP853", (0.0, duration), te, rtol=tol)
+        k = min(ra.y.shape[1], rb.y.shape[1])
+        gap = (np.abs(ra.y[:n, :k] - rb.y[:n, :k]) / a.scales[:n, None]).max(axis=0)
+        out = np.flatnonzero(gap > threshold)
+        rows.append({"rtol": tol, "horizon": float(te[out[0]]) if out.size else duration,
+                     "diverged": bool(out.size)})
+    return Chaos(problem.name, (a.name, b.name), [float(x) for x in a.y0], (0.0, duration),
+                 threshold, rows, _lyapunov(a, duration))
+
+
+def _lyapunov(f, duration: float, d0: float = 1e-8, every: float = 0.5) -> float:
+    """Benettin's estimate: a companion ``d0`` away, renormalised every ``every`` seconds."""
+    y, z = f.y0.copy(), f.y0.copy()
+    z[0] += d0
+    total, t = 0.0, 0.0
+    while t < duration - 1e-12:
+        span = (t, min(t + every, duration))
+        y = solve_ivp(f.rhs, span, y, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
+        z = solve_ivp(f.rhs, span, z, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
+        d = np.linalg.norm((z - y) / f.scales)
+        total += np.log(d / (d0 / f.scales[0]))
+        z = y + (z - y) * (d0 / f.scales[0]) / d
+        t = span[1]
+    return total / duration
+
+
+# -- DAE drift --------------------------------------------------------------------------------
+@dataclass
+class Drift:
+    """Constraint residual ``|g|`` over time per stabilisation (``times``, ``residual``), its
+    growth exponent, and why a run stopped early (``stopped``)."""
+
+    problem: str
+    model: str
+    method: str
+    rtol: float
+    unit: str
+    times: dict = field(repr=False, default_factory=dict)
+    residual: dict = field(repr=False, default_factory=dict)
+    growth: dict = field(default_factory=dict)
+    stopped: dict = field(default_factory=dict)
+
+    def __str__(self) -> str:
+        lines = [f"{self.problem}: drift of {self.model}'s constraints, {self.method} at rtol "
+                 f"{self.rtol:g}"]
+        for k, g in self.residual.items():
+            if g.size:
+                lines.append(f"  {k:10s} max |g| = {np.abs(g).max():.3g} {self.unit}, at the "
+                             f"end {np.abs(g[-1]):.3g} {self.unit}; |g| ~ t^{self.growth[k]:.2f}")
+            if k in self.stopped:
+                lines.append(f"  {k:10s} stopped: {self.stopped[k]}")
+        return "\n".join(lines)
+
+
+def dae_drift(problem, model: str | None = None, duration: float = 20.0, method: str = "RK45",
+              rtol: float = 1e-6, samples: int = 401) -> Drift:
+    """The drift of each stabilisation of a multiplier model (see the module docstring)."""
+    from dualmech.numeric.units import work_conjugate_unit
+    forms = [f for f in formulations(problem)[0] if f.kind == "dae"
+             and (model is None or f.model.name == model)]
+    if not forms:
+        raise ValueError(f"`{problem.name}` has no DAE formulation" +
+                         (f" named {model!r}." if model else "."))
+    name = forms[0].model.name
+    forms = [f for f in forms if f.model.name == name]
+    te = np.linspace(0.0, duration, samples)
+    info = problem.reaction_info()
+    lam = forms[0].constrained.constraints.multipliers[0].name
+    unit = work_conjugate_unit(info[lam].dimension) if lam in info else ""
+    out = Drift(problem.name, name, method, rtol, unit)
+    for f in forms:
+        run = f.run(method, (0.0, duration), te, rtol=rtol)
+        k = f.stabilisation
+        g = np.abs(f.drift(run.y)[0]).max(axis=0) if run.y.shape[1] else np.zeros(0)
+        out.times[k], out.residual[k] = run.t, g
+        out.growth[k] = growth_exponent(run.t, g)
+        if not run.success or run.t.size < te.size:
+            out.stopped[k] = f"at t = {run.t_end:.4g} s: {run.message}"
+    return out
+
+
+def growth_exponent(t: np.ndarray, g: np.ndarray, start: float = 1.0) -> float:
+    """``p`` of ``|g| ~ t^p``: least squares on the running maximum of ``|g|`` for ``t >= start``."""
+    env = np.maximum.accumulate(np.abs(g))
+    keep = (t >= start) & (env > 0)
+    if keep.sum() < 2:
+        return 0.0
+    return float(np.polyfit(np.log(t[keep]), np.log(env[keep]), 1)[0])

@@ -1,0 +1,307 @@
+r"""sympy.physics.mechanics in and out: a Kane or Lagrange model built there, checked as one more
+derivation of a problem; a problem's equations handed back for simulation.
+
+* :func:`from_mechanics` turns a ``KanesMethod``, ``LagrangesMethod`` or ``System`` into an
+  :class:`~dualmech.model.equations.EquationSet` in the problem's coordinates and symbols (matched by
+  name; the kinematic differential equations ``q' = f(u, q)`` are inverted, so a Kane model's
+  generalised speeds become the coordinates' rates);
+* :func:`with_derivation` gives the problem with that set as one more model, and
+  :func:`check_mechanics` compares it with the problem's own derivations exactly -- a wrong
+  Kane model is named as the odd one out, term by term, like any other derivation;
+* :func:`to_mechanics` exports a model in state-space form (``mass_matrix_full``,
+  ``forcing_full`` in ``dynamicsymbols``, the constants with their defaults), the inputs of
+  PyDy's ``generate_ode_function``; :func:`lagranges_method` builds a ``LagrangesMethod`` from a
+  Lagrangian written in the problem's coordinates.
+
+Example
+-------
+>>> import sympy as sp
+>>> import sympy.physics.mechanics as me
+>>> from dualmech.problems import get
+>>> pendulum = get("simple_pendulum")
+>>> th = me.dynamicsymbols("theta"); M, a, g = sp.symbols("M a g")
+>>> L = M * a**2 * th.diff()**2 / 2 + M * g * a * sp.cos(th)
+>>> lm = me.LagrangesMethod(L, [th]); _ = lm.form_lagranges_equations()
+>>> check_mechanics(pendulum, lm).equivalent
+True
+"""
+from __future__ import annotations
+
+import types
+from dataclasses import dataclass
+
+import sympy as sp
+from sympy.core.function import AppliedUndef
+
+from dualmech.model.equations import EquationSet, ModelError
+from dualmech.model.kinematics import t as T_DUALMECH
+
+__all__ = ["from_mechanics", "with_derivation", "check_mechanics", "to_mechanics",
+           "lagranges_method", "MechanicsForm"]
+
+
+def _mechanics():
+    import sympy.physics.mechanics as me
+    return me
+
+
+def _time():
+    return _mechanics().dynamicsymbols._t
+
+
+def _method_of(model):
+    """The ``KanesMethod`` or ``LagrangesMethod`` behind ``model`` (a ``System`` forms its
+    equations first when it has not)."""
+    me = _mechanics()
+    if isinstance(model, me.System):
+        if model.eom_method is None:
+            model.form_eoms()
+        return model.eom_method
+    if isinstance(model, (me.KanesMethod, me.LagrangesMethod)):
+        return model
+    raise TypeError(f"from_mechanics takes a KanesMethod, a LagrangesMethod or a System of "
+                    f"sympy.physics.mechanics, got {type(model).__name__}.")
+
+
+def _kane_rows(km) -> tuple[list, list]:
+    """``M u' - f`` with ``u`` and ``u'`` written through the coordinates' rates."""
+    q, u = list(km.q), list(km.u)
+    if len(u) != len(q):
+        raise ModelError(f"the KanesMethod has {len(q)} coordinates and {len(u)} generalised "
+                         "speeds: dependent speeds or coordinates (nonholonomic or configuration "
+                         "constraints) are not supported; give a model in independent "
+                         "coordinates.")
+    try:
+        M, f = km.mass_matrix, km.forcing
+    except (AttributeError, ValueError, TypeError):
+        raise ModelError("the KanesMethod has no equations yet: call "
+                         "kanes_equations(bodies, loads) first.") from None
+    tt = _time()
+    kd = km.kindiffdict()   # {q': f(u, q)}
+    rates = [kd[qi.diff(tt)] - qi.diff(tt) for qi in q]
+    A, b = sp.linear_eq_to_matrix(rates, u)
+    if A.det() == 0:
+        raise ModelError("the kinematic differential equations do not determine the "
+                         "generalised speeds from the coordinates' rates.")
+    u_of = A.LUsolve(b)
+    rule = {}
+    for ui, expr in zip(u, u_of):
+        rule[ui.diff(tt)] = sp.diff(expr, tt)
+        rule[ui] = expr
+    rows = [sp.expand(e.xreplace(rule)) for e in (M * sp.Matrix(u).diff(tt) - f)]
+    return rows, [f"Kane, {getattr(ui, 'name', None) or ui.func.__name__}" for ui in u]
+
+
+def _lagrange_rows(lm) -> tuple[list, list]:
+    """``M [q''; lambda] - f`` of a ``LagrangesMethod`` (forming its equations if needed)."""
+    try:
+        M, f = lm.mass_matrix, lm.forcing
+    except (AttributeError, ValueError, TypeError):
+        lm.form_lagranges_equations()
+        M, f = lm.mass_matrix, lm.forcing
+    q = list(lm.q)
+    lam = list(getattr(lm, "lam_vec", []) or [])
+    tt = _time()
+    x = sp.Matrix([qi.diff(tt, 2) for qi in q] + lam)
+    rows = list(M * x - f)
+    labels = [f"Lagrange (mechanics), {qi.func.__name__}" for qi in q]
+    labels += [f"constraint {i + 1} (acceleration level)" for i in range(len(rows) - len(q))]
+    return rows, labels
+
+
+def _by_name(things) -> dict:
+    return {getattr(x, "name", None) or x.func.__name__: x for x in things}
+
+
+def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=None,
+                   symbols=None, reactions=None) -> EquationSet:
+    """``model`` (``KanesMethod``, ``LagrangesMethod`` or ``System``) as an :class:`EquationSet`.
+
+    Parameters
+    ----------
+    model : sympy.physics.mechanics KanesMethod, LagrangesMethod or System
+        A Kane model with its equations formed (``kanes_equations``), a Lagrange model, or a
+        system (its equations are formed when they are not).
+    problem : Problem, optional
+        Whose coordinates (``theta(t)`` of ``dynamicsymbols("theta")``) and parameters (``m``)
+        the model's are matched with, by name.
+    name : str
+        The derivation's name (``"mechanics"``).
+    coordinates, symbols : dict, optional
+        Explicit matches ``{model's object or its name: problem's object}`` where the names
+        differ (``{"q1": theta}``, ``{"l": R}``).
+    reactions : dict, optional
+        ``{multiplier or its name: reaction name}`` for a Lagrange model with constraints.
+
+    Raises :class:`~dualmech.model.equations.ModelError` naming what cannot be matched.
+    """
+    method = _method_of(model)
+    me = _mechanics()
+    rows, labels = (_kane_rows(method) if isinstance(method, me.KanesMethod)
+                    else _lagrange_rows(method))
+    tt = _time()
+    mech_q = list(method.q)
+    known_q = {}
+    if problem is not None:
+        known_q = _by_name(c.function for c in problem.all_coordinates())
+    explicit_q = {(k if isinstance(k, str) else k.func.__name__): v
+                  for k, v in (coordinates or {}).items()}
+    qmap = {}
+    for qi in mech_q:
+        qname = qi.func.__name__
+        target = explicit_q.get(qname, known_q.get(qname))
+        if target is None:
+            if problem is not None:
+                raise ModelError(f"coordinate `{qname}` of the {type(method).__name__} is not a "
+                                 f"coordinate of `{problem.name}` (it has "
+                                 f"{', '.join(known_q)}); pass coordinates={{'{qname}': ...}}.")
+            from dualmech.model.kinematics import coordinate
+            target = coordinate(qname)
+        qmap[qi] = target
+    rule = {}
+    for qi, target in qmap.items():
+        rule[qi.diff(tt, 2)] = target.diff(T_DUALMECH, 2)
+        rule[qi.diff(tt)] = target.diff(T_DUALMECH)
+        rule[qi] = target
+    def _name(x) -> str:
+        return x if isinstance(x, str) else (getattr(x, "name", None) or x.func.__name__)
+
+    lam_names = {_name(k): v for k, v in (reactions or {}).items()}
+    unknowns = []
+    for lam in list(getattr(method, "lam_vec", []) or []):   # lam1(t), ...: the multipliers
+        target = sp.Symbol(str(lam_names.get(_name(lam), _name(lam))), real=True)
+        rule[lam] = target
+        unknowns.append(target)
+    stray = {f for r in rows for f in r.atoms(AppliedUndef)} - set(mech_q) \
+        - set(rule)
+    if stray:
+        raise ModelError(f"the {type(method).__name__} uses functions of time that are not its "
+                         f"coordinates: {', '.join(sorted(map(str, stray)))}; specified inputs "
+                         "are not supported (write them as functions of t).")
+    free = set().union(*(r.free_symbols for r in rows)) - {tt}
+    params = _by_name(problem.parameter_symbols) if problem is not None else {}
+    explicit_s = {_name(k): v for k, v in (symbols or {}).items()}
+    missing = []
+    for s in free:
+        target = explicit_s.get(s.name, params.get(s.name))
+        if target is not None:
+            rule[s] = target
+        elif problem is not None:
+            missing.append(s.name)
+    if missing:
+        raise ModelError(f"symbol(s) {', '.join(sorted(missing))} of the "
+                         f"{type(method).__name__} are not parameters of `{problem.name}` (it "
+                         f"has {', '.join(params)}); pass symbols={{'{sorted(missing)[0]}': "
+                         "...} naming the problem's symbol it stands for, or declare it as a "
+                         "parameter of the problem.")
+    rule[tt] = T_DUALMECH
+    equations = tuple(r.xreplace(rule) for r in rows)
+    return EquationSet(name, tuple(qmap.values()), equations,
+                       unknowns=tuple(unknowns),
+                       labels=tuple(labels), description=f"{type(method).__name__} of "
+                       "sympy.physics.mechanics")
+
+
+def with_derivation(problem, equations: EquationSet, coordinate_map: dict | None = None):
+    """``problem`` with ``equations`` as one more model (named ``equations.name``); the models
+    already derived are kept.  ``coordinate_map`` (``{its q: expression in the reference
+    coordinates}``) is needed when the set uses other coordinates."""
+    name = equations.name
+    if name in problem.model_names:
+        raise ValueError(f"problem `{problem.name}` already has a model {name!r}; give the new "
+                         "derivation another name.")
+    cls = type(problem)
+
+    def coordinate_maps(self):
+        maps = dict(cls.coordinate_maps(self))
+        if coordinate_map is not None:
+            maps[name] = coordinate_map
+        return maps
+
+    sub = types.new_class(cls.__name__, (cls,), {}, lambda ns: ns.update(
+        {"extra_models": tuple(cls.extra_models) + (name,), name: lambda self: equations,
+         "coordinate_maps": coordinate_maps, "__module__": cls.__module__,
+         "__qualname__": cls.__qualname__, "__doc__": cls.__doc__}))
+    new = object.__new__(sub)
+    new.__dict__.update({k: v for k, v in problem.__dict__.items()
+                         if k not in ("_models", "_mapped")})
+    new.__dict__["_models"] = {**problem.models(), name: equations}
+    return new
+
+
+def check_mechanics(problem, model, *, points: int = 8, seed: int = 0, **match):
+    """Compare ``model`` (a sympy.physics.mechanics model) with every derivation of ``problem``,
+    exactly; ``match`` goes to :func:`from_mechanics` (``name``, ``coordinates``, ...)."""
+    from dualmech.verify.check import compare
+    eqs = from_mechanics(model, problem, **match)
+    return compare(with_derivation(problem, eqs), points=points, seed=seed)
+
+
+@dataclass(frozen=True)
+class MechanicsForm:
+    """A model in sympy.physics.mechanics' state-space form, ``M_full x' = f_full`` for
+    ``x = [q; u]`` with ``u = q'``: what PyDy's ``generate_ode_function(forcing_full, q, u,
+    constants, mass_matrix=mass_matrix_full)`` takes."""
+
+    q: tuple
+    u: tuple
+    mass_matrix_full: sp.Matrix
+    forcing_full: sp.Matrix
+    constants: dict
+
+    def rhs(self) -> sp.Matrix:
+        """``x'`` solved symbolically (small models only)."""
+        return self.mass_matrix_full.LUsolve(self.forcing_full)
+
+
+def to_mechanics(problem, model: str | None = None) -> MechanicsForm:
+    """``problem``'s model (default: its reference) in ``dynamicsymbols`` named after the
+    coordinates (``u_theta`` for the rate of ``theta``), in state-space form.
+
+    >>> from dualmech.problems import get
+    >>> form = to_mechanics(get("simple_pendulum"))
+    >>> form.q, form.u
+    ((theta(t),), (u_theta(t),))
+    >>> form.forcing_full.T
+    Matrix([[u_theta(t), -M*a*g*sin(theta(t))]])
+    """
+    me = _mechanics()
+    eqs = problem.model(model or problem.reference)
+    if eqs.unknowns or not eqs.is_square:
+        raise ModelError(f"model `{eqs.name}` of `{problem.name}` has unknown reactions "
+                         f"({', '.join(map(str, eqs.unknowns))}); export a model without "
+                         f"them, e.g. its reference `{problem.reference}`.")
+    tt = _time()
+    q = tuple(me.dynamicsymbols(c.func.__name__) for c in eqs.coordinates)
+    u = tuple(me.dynamicsymbols(f"u_{c.func.__name__}") for c in eqs.coordinates)
+    rule = {T_DUALMECH: tt}
+    for c, qi, ui in zip(eqs.coordinates, q, u):
+        rule[c.diff(T_DUALMECH)] = ui
+        rule[c] = qi
+    n = len(q)
+    M = eqs.mass_matrix().xreplace(rule)
+    f = eqs.forcing().xreplace(rule)
+    full = sp.zeros(2 * n, 2 * n)
+    full[:n, :n] = sp.eye(n)
+    full[n:, n:] = M
+    return MechanicsForm(q, u, full, sp.Matrix(list(u) + list(f)),
+                         {p.symbol: p.default for p in problem.parameters})
+
+
+def lagranges_method(problem, lagrangian, forcelist=None, frame=None):
+    """A ``LagrangesMethod`` of the Lagrangian ``lagrangian`` written in ``problem``'s
+    coordinates (``theta(t)`` made by :func:`dualmech.coordinate`), in ``dynamicsymbols``;
+    ``forcelist`` and ``frame`` go to ``LagrangesMethod`` unchanged."""
+    me = _mechanics()
+    tt = _time()
+    coords = [c.function for c in problem.coordinates]
+    q = [me.dynamicsymbols(c.func.__name__) for c in coords]
+    rule = {T_DUALMECH: tt}
+    for c, qi in zip(coords, q):
+        rule[c.diff(T_DUALMECH)] = qi.diff(tt)
+        rule[c] = qi
+    if isinstance(lagrangian, str):
+        raise TypeError("`lagrangian` must be a sympy expression built from the problem's "
+                        "coordinates, not text (text is never evaluated).")
+    L = sp.sympify(lagrangian, strict=True).xreplace(rule)
+    return me.LagrangesMethod(L, q, forcelist=forcelist, frame=frame)
