@@ -1,35 +1,56 @@
 """dualmech: every mechanics problem written twice -- Newton--Euler and Lagrange -- and proved equal.
 
-The public API, in one list (``__all__``).  Names are imported when first used, so the
-``dualmech`` command starts without loading sympy for work that does not need it
-(``dualmech list`` reads declarations only).
+The public API is this one list; every name is a function or a class (no module), so a problem
+file needs one import line::
+
+    from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, Problem, Parameter,
+                          Coordinate, Reaction, Published, EquationSet, coordinate, rate, rot_z,
+                          t, MASS, LENGTH, ACCELERATION, ANGLE, FORCE)
+
+Names are imported when first used, so ``import dualmech`` is quick and the ``dualmech``
+command never loads sympy for work that does not need it (``dualmech list`` reads
+declarations only).  The stages behind it, arrows pointing one way: ``cli`` -> ``web``,
+``grade``, ``report`` -> ``numeric`` -> ``verify`` -> ``exact`` -> ``model``.
+
+Example
+-------
+>>> from dualmech import compare, get
+>>> result = compare(get("simple_pendulum"))
+>>> result.equivalent, result.method
+(True, 'exact rational-point test')
 """
-from importlib import import_module
+from dualmech._lazy import exports
 
 _HOME = {
-    "model.kinematics": ("Frame", "Point", "RelativeMotion", "Vector", "coordinate", "rot_axis",
-                   "rot_x", "rot_y", "rot_z", "skew", "t"),
-    "model.bodies": ("MassProperties", "Particle", "RigidBody", "composite", "cuboid",
-               "parallel_axis", "point_mass", "solid_cylinder", "solid_sphere", "thin_disk",
-               "thin_rod"),
-    "model.equations": ("EquationSet", "ModelError"),
+    # building a model: frames, points, bodies, the two forms, the equations they end in
+    "model.kinematics": ("t", "coordinate", "rate", "Frame", "Point", "Vector", "RelativeMotion",
+                         "rot_x", "rot_y", "rot_z", "rot_axis", "skew"),
+    "model.bodies": ("Particle", "RigidBody", "MassProperties", "composite", "parallel_axis",
+                     "point_mass", "thin_rod", "thin_disk", "solid_cylinder", "solid_sphere",
+                     "cuboid"),
     "model.direct": ("NewtonEuler",),
     "model.lagrange": ("Lagrangian",),
+    "model.equations": ("EquationSet", "ModelError"),
+    # declaring a problem: its parameters, coordinates, reactions and printed answers
+    "model.problem": ("Problem", "Parameter", "Coordinate", "Reaction", "Published",
+                      "ProblemError"),
+    "model.dimensions": ("Dimension", "DIMENSIONLESS", "MASS", "LENGTH", "TIME", "ANGLE",
+                         "FORCE", "TORQUE", "ENERGY", "VELOCITY", "ACCELERATION", "STIFFNESS",
+                         "DAMPING", "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA",
+                         "FREQUENCY"),
+    # finding problems: a catalogue name, a file, module:Class or a course package's entry
+    "problems": ("get", "load"),
+    # checking: the verdict, the reactions, a model made in sympy.physics.mechanics
+    "verify.check": ("compare", "compare_models", "recover_reactions", "Comparison"),
+    "verify.interop": ("check_mechanics", "from_mechanics"),
+    "verify.mutation": ("mutation_report",),
+    # numbers, grading, reports
+    "numeric.simulation": ("simulate", "Trajectory"),
+    "grade.api": ("grade", "Grader"),
+    "report": ("write_report",),
 }
-_WHERE = {name: module for module, names in _HOME.items() for name in names}
 
 __all__ = [name for names in _HOME.values() for name in names]
 __version__ = "0.2.0"
 
-
-def __getattr__(name):
-    module = _WHERE.get(name)
-    if module is None:
-        raise AttributeError(f"module 'dualmech' has no attribute {name!r}")
-    value = getattr(import_module(f".{module}", __name__), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__():
-    return sorted(list(globals()) + __all__)
+__getattr__, __dir__ = exports(__name__, _HOME, globals())

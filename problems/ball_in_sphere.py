@@ -79,10 +79,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_y, rot_z, t
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, VELOCITY
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, coordinate, rate, rot_y, rot_z, t,
+                      ACCELERATION, ANGLE, FORCE, LENGTH, MASS, VELOCITY)
 
 __all__ = ["BallInSphere", "PROBLEMS", "m", "a", "g", "v", "theta0", "theta", "phi", "r",
            "hand_normal_force", "printed_momentum", "printed_energy", "initial_state"]
@@ -91,23 +90,20 @@ m, a, g, v, theta0 = sp.symbols("m a g v theta0", positive=True)
 theta, phi = coordinate("theta"), coordinate("phi")
 r = coordinate("r")  # distance of the ball from the centre, only in the multiplier model
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
-
 
 def hand_normal_force() -> sp.Expr:
     """The sphere's push on the ball (inwards), by hand: ``m a (th'^2 + sin^2 th ph'^2) - m g cos th``."""
-    return m * a * (D(theta)**2 + sp.sin(theta)**2 * D(phi)**2) - m * g * sp.cos(theta)
+    return m * a * (rate(theta)**2 + sp.sin(theta)**2 * rate(phi)**2) - m * g * sp.cos(theta)
 
 
 def printed_momentum() -> sp.Expr:
     """The source's conserved momentum, ``dT/dphi' = m a^2 sin^2(theta) phi'``."""
-    return m * a**2 * sp.sin(theta)**2 * D(phi)
+    return m * a**2 * sp.sin(theta)**2 * rate(phi)
 
 
 def printed_energy() -> sp.Expr:
     """The left side of the source's energy equation, ``T + V``."""
-    return (m * (a**2 * D(theta)**2 + a**2 * sp.sin(theta)**2 * D(phi)**2) / 2
+    return (m * (a**2 * rate(theta)**2 + a**2 * sp.sin(theta)**2 * rate(phi)**2) / 2
             + m * g * a * sp.cos(theta))
 
 
@@ -116,8 +112,8 @@ def initial_state(phi_rate=None) -> dict:
 
     ``phi_rate`` defaults to the printed ``v / (a sin theta0)``.
     """
-    rate = v / (a * sp.sin(theta0)) if phi_rate is None else phi_rate
-    return {D(theta): 0, D(phi): rate, theta: theta0, phi: 0}
+    phi_dot = v / (a * sp.sin(theta0)) if phi_rate is None else phi_rate
+    return {rate(theta): 0, rate(phi): phi_dot, theta: theta0, phi: 0}
 
 
 def _at(expr, state: dict):
@@ -192,7 +188,7 @@ class BallInSphere(Problem):
     def lagrange(self) -> EquationSet:
         """``T = m a^2 (theta'^2 + sin^2 theta phi'^2)/2``, ``V = m g a cos theta`` by hand."""
         lg = Lagrangian("lagrange", coordinates=[theta, phi], description="T and V by hand")
-        lg.kinetic("T of ball", m * a**2 * (D(theta)**2 + sp.sin(theta)**2 * D(phi)**2) / 2)
+        lg.kinetic("T of ball", m * a**2 * (rate(theta)**2 + sp.sin(theta)**2 * rate(phi)**2) / 2)
         lg.potential("gravity", m * g * a * sp.cos(theta))
         return lg.equations()
 
@@ -200,8 +196,8 @@ class BallInSphere(Problem):
         """``(theta, phi, r)`` with the sphere as the constraint ``a - r = 0`` (multiplier ``N``)."""
         lg = Lagrangian("multiplier", coordinates=[theta, phi, r],
                         description="the ball freed from the sphere, held by a multiplier")
-        lg.kinetic("T of ball", m * (D(r)**2 + r**2 * D(theta)**2
-                                     + r**2 * sp.sin(theta)**2 * D(phi)**2) / 2)
+        lg.kinetic("T of ball", m * (rate(r)**2 + r**2 * rate(theta)**2
+                                     + r**2 * sp.sin(theta)**2 * rate(phi)**2) / 2)
         lg.potential("gravity", m * g * r * sp.cos(theta))
         lg.constraint("N", a - r)
         return lg.equations()
@@ -214,16 +210,16 @@ class BallInSphere(Problem):
         V_ref = m * g * sc.P.pos_from(sc.o).dot(sc.O.z)
         energy = T_ref + V_ref
         # the start: horizontal speed v at latitude theta0 fixes phi'0 (from the frames)
-        rate0 = v / v_phi.diff(D(phi)).subs(theta, theta0)
+        rate0 = v / v_phi.diff(rate(phi)).subs(theta, theta0)
         start = initial_state(rate0)
         T_printed = printed_energy() - m * g * a * sp.cos(theta)
         qs = (theta, phi)
-        lagrange_sum = sum(D(q) * (T_ref.diff(D(q)).diff(t) - T_ref.diff(q) + V_ref.diff(q))
+        lagrange_sum = sum(rate(q) * (T_ref.diff(rate(q)).diff(t) - T_ref.diff(q) + V_ref.diff(q))
                            for q in qs)
         where = "section 3, ball in a sphere"
         return [
             Published("longitudinal and circumferential velocity", "expression",
-                      (a * D(theta), a * sp.sin(theta) * D(phi)), (v_theta, v_phi), where=where),
+                      (a * rate(theta), a * sp.sin(theta) * rate(phi)), (v_theta, v_phi), where=where),
             # Right: dT/dphi' is the angular momentum about the N-S axis.
             Published("momentum dT/dphi'", "expression", (printed_momentum(),),
                       (sc.ball.angular_momentum(sc.o, sc.O).dot(sc.O.z),),
@@ -235,7 +231,7 @@ class BallInSphere(Problem):
                       (rate0,), where=where + ": at t = 0 phi' = v / (a sin theta0)"),
             # Right: the printed left side at the start is sin^2 theta0 * v/(a sin theta0).
             Published("value of the momentum", "expression", (v / a * sp.sin(theta0),),
-                      (_at(sp.sin(theta)**2 * D(phi), start),),
+                      (_at(sp.sin(theta)**2 * rate(phi), start),),
                       where=where + ": sin^2 theta phi' = (v/a) sin theta0"),
             Published("energy T + V", "expression", (printed_energy(),), (energy,),
                       where=where + " (printed '2m [...]' for m/2 [...], theta' for phi')"),
@@ -248,7 +244,7 @@ class BallInSphere(Problem):
                       where=where + ": right side of the energy equation"),
             # Section 3.2, applied to the ball: T is quadratic in the rates, so the sum is 2T.
             Published("sum q' dT/dq' = 2T", "expression",
-                      (sum(D(q) * T_printed.diff(D(q)) for q in qs),),
+                      (sum(rate(q) * T_printed.diff(rate(q)) for q in qs),),
                       (2 * T_ref,), where="section 3.2, applied"),
             # Section 3.2: the sum of q'_i times Lagrange's equations vanishes on the motion.
             Published("sum q' (Lagrange's equation)", "equation", (lagrange_sum,),

@@ -78,11 +78,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_y, rot_z,
-                      t)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, FREQUENCY, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, coordinate, rate, rot_y, rot_z, t,
+                      ACCELERATION, ANGLE, FORCE, FREQUENCY, LENGTH, MASS)
 
 __all__ = ["BeadOnHoop", "PROBLEMS", "hand_reactions", "m", "R", "g", "omega", "theta", "psi",
            "r", "w"]
@@ -92,13 +90,10 @@ theta = coordinate("theta")
 psi = coordinate("psi")            # hoop angle, prescribed as omega t
 r, w = coordinate("r"), coordinate("w")  # bead off the wire, multiplier model only
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
-
 
 def hand_reactions() -> dict:
     """``{"N": ..., "N_b": ...}`` from the free-body diagram (module docstring)."""
-    s, co, thd = sp.sin(theta), sp.cos(theta), D(theta)
+    s, co, thd = sp.sin(theta), sp.cos(theta), rate(theta)
     return {"N": m * g * co + m * R * (thd**2 + omega**2 * s**2),
             "N_b": 2 * m * R * omega * thd * co}
 
@@ -161,7 +156,7 @@ class BeadOnHoop(Problem):
         """``T`` and ``U`` as the source writes them, the hoop angle prescribed."""
         lg = Lagrangian("lagrange", coordinates=[theta, psi],
                         description="T and U of Example 13, psi = omega t prescribed")
-        lg.kinetic("T of bead", m * ((R * D(theta))**2 + (R * D(psi) * sp.sin(theta))**2) / 2)
+        lg.kinetic("T of bead", m * ((R * rate(theta))**2 + (R * rate(psi) * sp.sin(theta))**2) / 2)
         lg.potential("gravity", m * g * R * (1 - sp.cos(theta)))
         lg.prescribe(psi, omega * t)
         return lg.equations()
@@ -172,7 +167,7 @@ class BeadOnHoop(Problem):
                         description="bead off the wire, closed by two multipliers")
         in_hoop = sp.Matrix([r * sp.sin(theta), w, -r * sp.cos(theta)])
         pos = sp.Matrix(rot_z(psi)) * in_hoop
-        lg.kinetic("T of bead", m * (D(pos).T * D(pos))[0, 0] / 2)
+        lg.kinetic("T of bead", m * (rate(pos).T * rate(pos))[0, 0] / 2)
         lg.potential("gravity", m * g * pos[2])
         lg.constraint("N", R - r)
         lg.constraint("N_b", w)
@@ -191,20 +186,20 @@ class BeadOnHoop(Problem):
         where = "Example 13"
         return [
             Published("velocity of bead, velocity of hoop", "expression",
-                      (R * D(theta), R * s * omega),
+                      (R * rate(theta), R * s * omega),
                       (v_rel.dot(B.x), v_hoop.dot(H.y)),
                       where=where + ": R th' along the wire; rho omega = R sin(th) omega "
                       "normal to the hoop plane"),
             Published("T", "expression",
-                      (m * ((R * D(theta))**2 + (R * omega * s)**2) / 2,),
+                      (m * ((R * rate(theta))**2 + (R * omega * s)**2) / 2,),
                       (sc.bead.kinetic_energy(O),), where=where),
             Published("U", "expression", (m * g * R - m * g * R * co,), (m * g * height,),
                       where=where + ", relative to the bottom of the hoop"),
             Published("equation of motion", "motion",
-                      (m * R**2 * DD(theta) - m * R**2 * omega**2 * s * co
+                      (m * R**2 * rate(theta, 2) - m * R**2 * omega**2 * s * co
                        + m * g * R * s,), where=where),
             Published("angular acceleration", "expression",
-                      ((omega**2 * co - g / R) * s,), (DD(theta),),
+                      ((omega**2 * co - g / R) * s,), (rate(theta, 2),),
                       where=where + ", 'Solving for the angular acceleration'"),
         ]
 

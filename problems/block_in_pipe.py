@@ -73,11 +73,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate,
-                      rot_z, t)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, RigidBody, coordinate, rate, rot_z,
+                      ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS)
 
 __all__ = ["BlockInPipe", "PROBLEMS", "frames", "multiplier_model", "m", "k", "d", "y0", "g",
            "theta", "y", "w"]
@@ -85,9 +83,6 @@ __all__ = ["BlockInPipe", "PROBLEMS", "frames", "multiplier_model", "m", "k", "d
 m, k, d, y0, g = sp.symbols("m k d y0 g", positive=True)
 theta, y = coordinate("theta"), coordinate("y")
 w = coordinate("w")
-
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 def frames() -> SimpleNamespace:
@@ -112,10 +107,10 @@ def multiplier_model() -> EquationSet:
     r = y * e_r + w * e_th
     lg = Lagrangian("multiplier", coordinates=[theta, y, w],
                     description="block freed from the pipe's axis, held by N")
-    lg.kinetic("T of block", m * (D(r).T * D(r))[0, 0] / 2)
+    lg.kinetic("T of block", m * (rate(r).T * rate(r))[0, 0] / 2)
     lg.potential("gravity", m * g * r[1])
     lg.spring("spring", k, y - y0)
-    damper = -d * D(y) * e_r  # on the block; its other end is at the fixed pivot
+    damper = -d * rate(y) * e_r  # on the block; its other end is at the fixed pivot
     lg.generalized_force("damper", [damper.dot(r.diff(q)) for q in (theta, y, w)])
     lg.constraint("N", w)
     return lg.equations()
@@ -158,7 +153,7 @@ class BlockInPipe(Problem):
                          description="block: sum F = m a; pipe: sum of moments about O = 0")
         ne.gravity(-g * f.O.y, bodies=[f.block])
         ne.linear_spring("spring", f.block, k, y - y0, f.e_r, against=f.pipe, against_at=f.o)
-        ne.linear_damper("damper", f.block, d, D(y), f.e_r, against=f.pipe, against_at=f.o)
+        ne.linear_damper("damper", f.block, d, rate(y), f.e_r, against=f.pipe, against_at=f.o)
         ne.reaction("N", f.block, f.e_th, against=f.pipe, against_at=f.b)
         ne.linear_momentum(f.block, f.e_r)
         ne.linear_momentum(f.block, f.e_th)
@@ -168,10 +163,10 @@ class BlockInPipe(Problem):
     def lagrange(self) -> EquationSet:
         """The source's Lagrangian and the damper's generalised force ``(0, -d y')``."""
         lg = Lagrangian("lagrange", coordinates=[theta, y], description="the source's L, Q")
-        lg.kinetic("T of block", m * (D(y)**2 + y**2 * D(theta)**2) / 2)
+        lg.kinetic("T of block", m * (rate(y)**2 + y**2 * rate(theta)**2) / 2)
         lg.potential("gravity", -m * g * y * sp.cos(theta))
         lg.spring("spring", k, y - y0)
-        lg.generalized_force("damper", [0, -d * D(y)])
+        lg.generalized_force("damper", [0, -d * rate(y)])
         return lg.equations()
 
     def multiplier(self) -> EquationSet:
@@ -181,16 +176,16 @@ class BlockInPipe(Problem):
     def published(self) -> list[Published]:
         f = frames()
         v = f.b.vel(f.O)
-        damper = -d * D(y) * f.e_r
-        Q = tuple(damper.dot(v.diff(D(q), f.O)) for q in (theta, y))
+        damper = -d * rate(y) * f.e_r
+        Q = tuple(damper.dot(v.diff(rate(q), f.O)) for q in (theta, y))
         L = f.block.kinetic_energy(f.O) - (m * g * f.b.pos_from(f.o).dot(f.O.y)
                                            + k * (y - y0)**2 / 2)
         return [
-            Published("generalised forces", "expression", (0, -d * D(y)), Q,
+            Published("generalised forces", "expression", (0, -d * rate(y)), Q,
                       where="Block in a pipe I: theta and -d y' (garbled: 'theta and -d.y'); "
                       "reference: the damper force's virtual power"),
             Published("Lagrangian", "expression",
-                      (m * (D(y)**2 + y**2 * D(theta)**2) / 2 + m * g * y * sp.cos(theta)
+                      (m * (rate(y)**2 + y**2 * rate(theta)**2) / 2 + m * g * y * sp.cos(theta)
                        - k * (y - y0)**2 / 2,), (L,), where="Block in a pipe II"),
         ]
 

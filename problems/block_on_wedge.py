@@ -90,19 +90,15 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_z, t
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, coordinate, rate, rot_z, ACCELERATION,
+                      ANGLE, FORCE, LENGTH, MASS)
 
 __all__ = ["BlockOnWedge", "PROBLEMS", "hand_reactions", "hand_accelerations"]
 
 m, M, g, alpha = sp.symbols("m M g alpha", positive=True)
 q1, q2 = coordinate("q1"), coordinate("q2")
 d1, d2 = coordinate("d1"), coordinate("d2")
-
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 def _delta():
@@ -112,14 +108,12 @@ def _delta():
 def hand_accelerations() -> dict:
     """``{q1'': ..., q2'': ...}`` solved by hand (see the module docstring)."""
     s, c = sp.sin(alpha), sp.cos(alpha)
-    return {DD(q1): (M + m) * g * s / _delta(), DD(q2): -m * g * s * c / _delta()}
+    return {rate(q1, 2): (M + m) * g * s / _delta(), rate(q2, 2): -m * g * s * c / _delta()}
 
 
 def hand_reactions() -> dict:
     """``{"N1": ..., "N2": ...}`` solved by hand (see the module docstring)."""
     return {"N1": m * M * g * sp.cos(alpha) / _delta(), "N2": M * (M + m) * g / _delta()}
-
-
 
 
 class _Scene:
@@ -182,8 +176,8 @@ class BlockOnWedge(Problem):
         """``T`` and ``V`` as the source writes them."""
         s, c = sp.sin(alpha), sp.cos(alpha)
         lg = Lagrangian("lagrange", coordinates=[q1, q2])
-        lg.kinetic("T of wedge", M * D(q2)**2 / 2)
-        lg.kinetic("T of block", m * ((D(q2) + D(q1) * c)**2 + (D(q1) * s)**2) / 2)
+        lg.kinetic("T of wedge", M * rate(q2)**2 / 2)
+        lg.kinetic("T of block", m * ((rate(q2) + rate(q1) * c)**2 + (rate(q1) * s)**2) / 2)
         lg.potential("gravity", -m * g * q1 * s)
         return lg.equations()
 
@@ -193,8 +187,8 @@ class BlockOnWedge(Problem):
         wedge = sp.Matrix([q2, d2])
         block = wedge + q1 * sp.Matrix([c, -s]) + d1 * sp.Matrix([s, c])
         lg = Lagrangian("lagrange_multipliers", coordinates=[q1, q2, d1, d2])
-        lg.kinetic("T of wedge", M * (D(wedge).T * D(wedge))[0, 0] / 2)
-        lg.kinetic("T of block", m * (D(block).T * D(block))[0, 0] / 2)
+        lg.kinetic("T of wedge", M * (rate(wedge).T * rate(wedge))[0, 0] / 2)
+        lg.kinetic("T of block", m * (rate(block).T * rate(block))[0, 0] / 2)
         lg.potential("gravity", M * g * wedge[1] + m * g * block[1])
         lg.constraint("N1", d1)
         lg.constraint("N2", d2)
@@ -211,15 +205,15 @@ class BlockOnWedge(Problem):
         return [
             # Right: v_P = q2' i + q1' S.x, S.x = (cos a, -sin a).
             Published("v_block^2", "expression",
-                      ((D(q2) + D(q1) * c)**2 + (D(q1) * s)**2,), (v.dot(v),), where=where),
+                      ((rate(q2) + rate(q1) * c)**2 + (rate(q1) * s)**2,), (v.dot(v),), where=where),
             # Right: the block is q1 sin a below A; the wedge keeps its height.
             Published("U", "expression", (-m * g * q1 * s,),
                       (m * g * sc.P.pos_from(sc.A).dot(sc.O.y),), where=where),
             # Right: (M + m) - m cos^2 a = M + m sin^2 a (see the docstring).
-            Published("q1''", "expression", (g * s / (1 - m / (M + m) * c**2),), (DD(q1),),
+            Published("q1''", "expression", (g * s / (1 - m / (M + m) * c**2),), (rate(q1, 2),),
                       where=where),
             # Right: it is the q2 Lagrange equation (horizontal momentum) divided by M + m.
-            Published("q2''", "expression", (-m / (M + m) * DD(q1) * c,), (DD(q2),),
+            Published("q2''", "expression", (-m / (M + m) * rate(q1, 2) * c,), (rate(q2, 2),),
                       where=where),
         ]
 

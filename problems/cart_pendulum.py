@@ -106,12 +106,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate,
-                      rot_z, t)
-from dualmech.model.dimensions import (ACCELERATION, ANGLE, DAMPING, FORCE, FREQUENCY, LENGTH, MASS,
-                                      STIFFNESS, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS)
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, RigidBody, coordinate, rate, rot_z, t,
+                      ACCELERATION, ANGLE, DAMPING, FORCE, FREQUENCY, LENGTH, MASS, STIFFNESS,
+                      TORSIONAL_DAMPING, TORSIONAL_STIFFNESS)
 
 __all__ = ["CartPendulum", "PROBLEMS", "direct_form", "hand_reactions"]
 
@@ -120,20 +118,16 @@ m, m0, l, k, c, k_t, c_t, g, F0, omega = sp.symbols("m m0 l k c k_t c_t g F0 ome
 x, theta = coordinate("x"), coordinate("theta")
 y, r, phi = coordinate("y"), coordinate("r"), coordinate("phi")
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 drive = F0 * sp.sin(omega * t)
 
 
 def hand_reactions(xdd, thdd) -> dict:
     """Reactions solved by hand, given the true accelerations ``xdd``, ``thdd`` (see above)."""
-    th, thd = theta, D(theta)
+    th, thd = theta, rate(theta)
     S = -(k_t * th + c_t * thd) / l
     T = m0 * g * sp.cos(th) + drive * sp.sin(th) + m0 * l * thd**2 - m0 * xdd * sp.sin(th)
     N = (m + m0) * g + m0 * l * (thdd * sp.sin(th) + thd**2 * sp.cos(th))
     return {"N": N, "T": T, "S": S}
-
-
 
 
 class _Scene:
@@ -158,7 +152,7 @@ def direct_form() -> tuple[NewtonEuler, _Scene]:
     ne.gravity(-g * O.y)
     ne.reaction("N", sc.cart, O.y)
     ne.linear_spring("spring", sc.cart, k, x, O.x)
-    ne.linear_damper("dashpot", sc.cart, c, D(x), O.x)
+    ne.linear_damper("dashpot", sc.cart, c, rate(x), O.x)
     ne.force("drive", sc.bob, drive * O.x)
     for name, direction in (("T", R.y), ("S", R.x)):
         f = ne.reaction(name, sc.bob, direction, against=sc.rod, against_at=sc.B) * direction
@@ -166,7 +160,7 @@ def direct_form() -> tuple[NewtonEuler, _Scene]:
         ne.force(f"reaction {name}", sc.rod, f, at=sc.P)
         ne.force(f"reaction {name}", sc.cart, -f, at=sc.P)
     ne.torsional_spring("torsional spring", sc.rod, k_t, theta, O.z, against=sc.cart)
-    ne.torsional_damper("torsional dashpot", sc.rod, c_t, D(theta), O.z, against=sc.cart)
+    ne.torsional_damper("torsional dashpot", sc.rod, c_t, rate(theta), O.z, against=sc.cart)
     return ne, sc
 
 
@@ -220,15 +214,15 @@ class CartPendulum(Problem):
     def lagrange(self) -> EquationSet:
         """``T``, ``V``, ``R`` and the virtual work of the drive, as the source writes them."""
         lg = Lagrangian("lagrange", coordinates=[x, theta])
-        lg.kinetic("T of cart", m * D(x)**2 / 2)
+        lg.kinetic("T of cart", m * rate(x)**2 / 2)
         # the source's expanded form (sin^2 + cos^2 = 1 already used)
-        lg.kinetic("T of bob", m0 * (D(x)**2 + (l * D(theta))**2
-                                     + 2 * D(x) * l * D(theta) * sp.cos(theta)) / 2)
+        lg.kinetic("T of bob", m0 * (rate(x)**2 + (l * rate(theta))**2
+                                     + 2 * rate(x) * l * rate(theta) * sp.cos(theta)) / 2)
         lg.potential("spring", k * x**2 / 2)
         lg.potential("torsional spring", k_t * theta**2 / 2)
         lg.potential("gravity", m0 * g * l * (1 - sp.cos(theta)))
-        lg.dissipation("dashpot", c * D(x)**2 / 2)
-        lg.dissipation("torsional dashpot", c_t * D(theta)**2 / 2)
+        lg.dissipation("dashpot", c * rate(x)**2 / 2)
+        lg.dissipation("torsional dashpot", c_t * rate(theta)**2 / 2)
         bob = sp.Matrix([x + l * sp.sin(theta), -l * sp.cos(theta)])  # from the pivot's x = 0
         force = sp.Matrix([drive, 0])
         lg.generalized_force("drive", [force.dot(bob.diff(q)) for q in (x, theta)])
@@ -238,13 +232,13 @@ class CartPendulum(Problem):
         """Contacts freed (``y``, ``r``, ``phi``) and closed again by the multipliers N, T, S."""
         lg = Lagrangian("lagrange_multipliers", coordinates=[x, theta, y, r, phi])
         bob = sp.Matrix([x + r * sp.sin(phi), y - r * sp.cos(phi)])
-        lg.kinetic("T of cart", m * (D(x)**2 + D(y)**2) / 2)
-        lg.kinetic("T of bob", m0 * (D(bob).T * D(bob))[0, 0] / 2)
+        lg.kinetic("T of cart", m * (rate(x)**2 + rate(y)**2) / 2)
+        lg.kinetic("T of bob", m0 * (rate(bob).T * rate(bob))[0, 0] / 2)
         lg.potential("spring", k * x**2 / 2)
         lg.potential("torsional spring", k_t * theta**2 / 2)
         lg.potential("gravity", m * g * y + m0 * g * bob[1])
-        lg.dissipation("dashpot", c * D(x)**2 / 2)
-        lg.dissipation("torsional dashpot", c_t * D(theta)**2 / 2)
+        lg.dissipation("dashpot", c * rate(x)**2 / 2)
+        lg.dissipation("torsional dashpot", c_t * rate(theta)**2 / 2)
         force = sp.Matrix([drive, 0])
         lg.generalized_force("drive", [force.dot(bob.diff(q)) for q in lg.coordinates])
         lg.constraint("N", y)
@@ -273,20 +267,20 @@ class CartPendulum(Problem):
                       where=where),
             # Right: v_B = (x' + l th' cos th) i + l th' sin th j.
             Published("T_pendulum", "expression",
-                      (m0 * ((D(x) + l * D(theta) * co)**2 + (l * D(theta) * s)**2) / 2,),
+                      (m0 * ((rate(x) + l * rate(theta) * co)**2 + (l * rate(theta) * s)**2) / 2,),
                       (sc.bob.kinetic_energy(sc.O),), where=where),
             # Right: the expanded form of the same.
             Published("T_pendulum (expanded)", "expression",
-                      (m0 * (D(x)**2 + (l * D(theta))**2 + 2 * D(x) * l * D(theta) * co) / 2,),
+                      (m0 * (rate(x)**2 + (l * rate(theta))**2 + 2 * rate(x) * l * rate(theta) * co) / 2,),
                       (sc.bob.kinetic_energy(sc.O),), where=where),
             # Right: d/dt dT/dx' = (m + m0) x'' + m0 l (th'' cos th - th'^2 sin th).
             Published("equation of motion, x", "equation",
-                      ((m + m0) * DD(x) + c * D(x) + k * x
-                       + m0 * l * (DD(theta) * co - D(theta)**2 * s) - drive,), where=where),
+                      ((m + m0) * rate(x, 2) + c * rate(x) + k * x
+                       + m0 * l * (rate(theta, 2) * co - rate(theta)**2 * s) - drive,), where=where),
             # Wrong: m0 l th'' must be m0 l^2 th'' (a force among torques; see the errata).
             Published("equation of motion, theta", "equation",
-                      (m0 * l * DD(theta) + c_t * D(theta) + k_t * theta + m0 * g * l * s
-                       + m0 * DD(x) * l * co - drive * l * co,), where=where),
+                      (m0 * l * rate(theta, 2) + c_t * rate(theta) + k_t * theta + m0 * g * l * s
+                       + m0 * rate(x, 2) * l * co - drive * l * co,), where=where),
         ]
 
 

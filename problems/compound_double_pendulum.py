@@ -89,10 +89,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_z, t)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
+                      Problem, Published, Reaction, RigidBody, coordinate, rate, rot_z, t,
+                      ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS)
 
 __all__ = ["CompoundDoublePendulum", "PROBLEMS", "m", "a", "b", "I0", "g", "theta1", "theta2",
            "printed_reduced", "scene"]
@@ -101,16 +100,13 @@ m, a, b, I0, g = sp.symbols("m a b I0 g", positive=True)
 theta1, theta2 = coordinate("theta1"), coordinate("theta2")
 u, v = coordinate("u"), coordinate("v")   # the hinge freed (multiplier model only)
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
-
 
 def printed_reduced() -> tuple[sp.Expr, sp.Expr]:
     """The two equations the source prints last ("divided through"), left sides."""
     d = theta1 - theta2
-    e1 = (a * DD(theta1) + b * DD(theta2) * sp.cos(d) + b * D(theta2)**2 * sp.sin(d)
+    e1 = (a * rate(theta1, 2) + b * rate(theta2, 2) * sp.cos(d) + b * rate(theta2)**2 * sp.sin(d)
           + g * a * sp.sin(theta1))
-    e2 = (3 * b * DD(theta2) + a * DD(theta1) * sp.cos(d) - a * D(theta1)**2 * sp.sin(d)
+    e2 = (3 * b * rate(theta2, 2) + a * rate(theta1, 2) * sp.cos(d) - a * rate(theta1)**2 * sp.sin(d)
           + g * b * sp.sin(theta2))
     return e1, e2
 
@@ -198,8 +194,8 @@ class CompoundDoublePendulum(Problem):
                         description="hinge freed by (u, v), held by R_x and R_y")
         G = sp.Matrix([a * sp.sin(theta1) + u + b * sp.sin(theta2),
                        -a * sp.cos(theta1) + v - b * sp.cos(theta2)])
-        lg.kinetic("T of body (translation)", m * (D(G).T * D(G))[0, 0] / 2)
-        lg.kinetic("T of body (rotation)", I0 * D(theta2)**2 / 2)
+        lg.kinetic("T of body (translation)", m * (rate(G).T * rate(G))[0, 0] / 2)
+        lg.kinetic("T of body (rotation)", I0 * rate(theta2)**2 / 2)
         lg.potential("gravity", m * g * G[1])
         lg.constraint("R_x", u)
         lg.constraint("R_y", v)
@@ -209,9 +205,9 @@ class CompoundDoublePendulum(Problem):
         """The source's second form of ``T`` and its ``V``."""
         lg = Lagrangian("lagrange", coordinates=[theta1, theta2], description="T and V by hand")
         lg.kinetic("T of body (translation)",
-                   m * (a**2 * D(theta1)**2 + b**2 * D(theta2)**2
-                        + 2 * a * b * D(theta1) * D(theta2) * sp.cos(theta1 - theta2)) / 2)
-        lg.kinetic("T of body (rotation)", I0 * D(theta2)**2 / 2)
+                   m * (a**2 * rate(theta1)**2 + b**2 * rate(theta2)**2
+                        + 2 * a * b * rate(theta1) * rate(theta2) * sp.cos(theta1 - theta2)) / 2)
+        lg.kinetic("T of body (rotation)", I0 * rate(theta2)**2 / 2)
         lg.potential("gravity", -m * g * (a * sp.cos(theta1) + b * sp.cos(theta2)))
         return lg.equations()
 
@@ -222,8 +218,8 @@ class CompoundDoublePendulum(Problem):
         V_ref = m * g * rG.dot(sc.O.y)
         d = theta1 - theta2
         c, s = sp.cos(d), sp.sin(d)
-        th1, th2, w1, w2, al1, al2 = (theta1, theta2, D(theta1), D(theta2), DD(theta1),
-                                      DD(theta2))
+        th1, th2, w1, w2, al1, al2 = (theta1, theta2, rate(theta1), rate(theta2), rate(theta1, 2),
+                                      rate(theta2, 2))
         e1, e2 = printed_reduced()
         where = "section 3, double pendulum"
         return [

@@ -92,10 +92,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate, t
-from dualmech.model.dimensions import ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, RigidBody, coordinate, rate, t, ANGLE,
+                      DAMPING, FORCE, LENGTH, MASS, STIFFNESS)
 
 __all__ = ["CopyingMachine", "PROBLEMS", "effective_stiffness", "m2", "k1", "k2", "a", "L",
            "b", "F", "y", "theta", "w"]
@@ -103,9 +102,6 @@ __all__ = ["CopyingMachine", "PROBLEMS", "effective_stiffness", "m2", "k1", "k2"
 m2, k1, k2, a, L, b, F = sp.symbols("m2 k1 k2 a L b F", positive=True)
 y, theta = coordinate("y"), coordinate("theta")
 w = coordinate("w")  # pivot travel along j, multiplier model only
-
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 def effective_stiffness() -> sp.Expr:
@@ -169,7 +165,7 @@ class CopyingMachine(Problem):
         ne.linear_spring("spring k2", sc.mass, k2, ext["spring k2"], O.y,
                          against=sc.bar, against_at=sc.E)
         ne.linear_spring("spring k1", sc.bar, k1, ext["spring k1"], O.y, at=sc.A)
-        ne.linear_damper("dashpot", sc.mass, b, D(y), O.y)
+        ne.linear_damper("dashpot", sc.mass, b, rate(y), O.y)
         ne.force("drive", sc.mass, F * O.y)
         ne.reaction("R_O", sc.bar, O.y, at=sc.o)
         ne.linear_momentum(sc.mass, O.y)
@@ -182,10 +178,10 @@ class CopyingMachine(Problem):
         """The source's ``T``, ``U``, ``R`` and ``Q``; the ``theta`` row comes out static."""
         lg = Lagrangian("lagrange", coordinates=[y, theta],
                         description="T, U, R, Q of Example 14 (bar massless)")
-        lg.kinetic("T of m2", m2 * D(y)**2 / 2)
+        lg.kinetic("T of m2", m2 * rate(y)**2 / 2)
         lg.spring("spring k2", k2, L * theta - y)
         lg.spring("spring k1", k1, a * theta)
-        lg.damper("dashpot", b, D(y))
+        lg.damper("dashpot", b, rate(y))
         lg.generalized_force("drive", [F, 0])
         return lg.equations()
 
@@ -193,10 +189,10 @@ class CopyingMachine(Problem):
         """The pivot freed by ``w`` and held by the multiplier ``R_O``."""
         lg = Lagrangian("multiplier", coordinates=[y, theta, w],
                         description="pivot freed along j, closed by a multiplier")
-        lg.kinetic("T of m2", m2 * D(y)**2 / 2)
+        lg.kinetic("T of m2", m2 * rate(y)**2 / 2)
         lg.spring("spring k2", k2, y - (w + L * theta))
         lg.spring("spring k1", k1, w + a * theta)
-        lg.damper("dashpot", b, D(y))
+        lg.damper("dashpot", b, rate(y))
         lg.generalized_force("drive", [F, 0, 0])
         lg.constraint("R_O", w)
         return lg.equations()
@@ -205,9 +201,9 @@ class CopyingMachine(Problem):
         """``theta`` eliminated by hand: ``m2`` on the effective spring ``k_e``."""
         lg = Lagrangian("reduced", coordinates=[y],
                         description="one coordinate, theta eliminated by the static row")
-        lg.kinetic("T of m2", m2 * D(y)**2 / 2)
+        lg.kinetic("T of m2", m2 * rate(y)**2 / 2)
         lg.spring("effective spring", effective_stiffness(), y)
-        lg.damper("dashpot", b, D(y))
+        lg.damper("dashpot", b, rate(y))
         lg.generalized_force("drive", [F])
         return lg.equations()
 
@@ -220,28 +216,28 @@ class CopyingMachine(Problem):
         U = k2 * ext["spring k2"]**2 / 2 + k1 * ext["spring k1"]**2 / 2
         Rd = b * sc.mass.point.vel(O).dot(O.y)**2 / 2
         v = sc.mass.point.vel(O)
-        Q = tuple((F * O.y).dot(v.diff(D(q), O)) for q in (y, theta))
-        lagrange_theta = (T.diff(D(theta)).diff(t) - T.diff(theta) + Rd.diff(D(theta))
+        Q = tuple((F * O.y).dot(v.diff(rate(q), O)) for q in (y, theta))
+        lagrange_theta = (T.diff(rate(theta)).diff(t) - T.diff(theta) + Rd.diff(rate(theta))
                           + U.diff(theta) - Q[1])
         D_ = k2 * L**2 + k1 * a**2
-        y_eq = m2 * DD(y) + b * D(y) - k2 * (L * theta - y) - F
+        y_eq = m2 * rate(y, 2) + b * rate(y) - k2 * (L * theta - y) - F
         th_eq = (k2 * L**2 + k1 * a**2) * theta - k2 * L * y
         where = "Example 14"
         return [
-            Published("T", "expression", (m2 * D(y)**2 / 2,), (T,), where=where),
+            Published("T", "expression", (m2 * rate(y)**2 / 2,), (T,), where=where),
             Published("U", "expression",
                       (k2 * (L * theta - y)**2 / 2 + k1 * (a * theta)**2 / 2,), (U,),
                       where=where),
-            Published("R", "expression", (b * D(y)**2 / 2,), (Rd,), where=where),
+            Published("R", "expression", (b * rate(y)**2 / 2,), (Rd,), where=where),
             Published("Q1, Q2", "expression", (F, 0), Q, where=where),
             Published("derivatives", "expression",
-                      (m2 * D(y), m2 * DD(y), -k2 * (L * theta - y), 0, b * D(y), 0),
-                      (T.diff(D(y)), T.diff(D(y)).diff(t), U.diff(y), U.diff(D(theta)),
-                       Rd.diff(D(y)), T.diff(D(theta))),
+                      (m2 * rate(y), m2 * rate(y, 2), -k2 * (L * theta - y), 0, b * rate(y), 0),
+                      (T.diff(rate(y)), T.diff(rate(y)).diff(t), U.diff(y), U.diff(rate(theta)),
+                       Rd.diff(rate(y)), T.diff(rate(theta))),
                       where=where + ", table of derivatives (scrambled by the extraction): "
                       "dT/dy', d/dt dT/dy', dU/dy, dU/dtheta', dR/dy', dT/dtheta'"),
             Published("Lagrange's equation for theta", "expression",
-                      (T.diff(D(theta)).diff(t) - U.diff(theta),), (lagrange_theta,),
+                      (T.diff(rate(theta)).diff(t) - U.diff(theta),), (lagrange_theta,),
                       where=where + ": WRONG, d/dt(dT/dtheta') - dU/dtheta; Lagrange's "
                       "equation has + dU/dtheta (harmless: the right side is 0)"),
             Published("static equation", "equation",
@@ -253,7 +249,7 @@ class CopyingMachine(Problem):
             Published("equations of motion", "motion", (y_eq, th_eq),
                       where=where + ": the y equation with the static theta equation"),
             Published("one-coordinate equation", "equation",
-                      (m2 * DD(y) + b * D(y) + k2 * y - k2 * L * k2 * L / D_ * y - F,),
+                      (m2 * rate(y, 2) + b * rate(y) + k2 * y - k2 * L * k2 * L / D_ * y - F,),
                       where=where + ": after substituting theta"),
         ]
 

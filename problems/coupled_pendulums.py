@@ -72,18 +72,15 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_z, t)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
+                      Problem, Published, RigidBody, coordinate, rate, rot_z, ACCELERATION, ANGLE,
+                      LENGTH, MASS, STIFFNESS)
 
 __all__ = ["CoupledPendulums", "PROBLEMS", "scene", "geometric_spring_model", "m", "k", "l",
            "d", "g", "theta1", "theta2"]
 
 m, k, l, d, g = sp.symbols("m k l d g", positive=True)
 theta1, theta2 = coordinate("theta1"), coordinate("theta2")
-
-D = lambda q, n=1: q.diff(t, n)  # noqa: E731
 
 
 def scene() -> SimpleNamespace:
@@ -152,8 +149,8 @@ class CoupledPendulums(Problem):
     def lagrange(self) -> EquationSet:
         """``T`` and ``V`` by hand."""
         lg = Lagrangian(coordinates=[theta1, theta2], description="T and V by hand")
-        lg.kinetic("T of bob 1", 9 * m * l**2 * D(theta1)**2 / 2)
-        lg.kinetic("T of bob 2", 9 * m * l**2 * D(theta2)**2 / 2)
+        lg.kinetic("T of bob 1", 9 * m * l**2 * rate(theta1)**2 / 2)
+        lg.kinetic("T of bob 2", 9 * m * l**2 * rate(theta2)**2 / 2)
         lg.potential("gravity", 3 * m * g * l * (2 - sp.cos(theta1) - sp.cos(theta2)))
         lg.spring("spring", k, l * (sp.sin(theta1) - sp.sin(theta2)))
         return lg.equations()

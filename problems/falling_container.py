@@ -102,19 +102,15 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, t
-from dualmech.model.dimensions import ACCELERATION, DAMPING, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, coordinate, rate, t, ACCELERATION,
+                      DAMPING, FORCE, LENGTH, MASS, STIFFNESS)
 
 __all__ = ["FallingContainer", "PROBLEMS"]
 
 m1, m2, k, c, l0, g = sp.symbols("m1 m2 k c l0 g", positive=True)
 x1, x2 = coordinate("x1"), coordinate("x2")
 y1, y2 = coordinate("y1"), coordinate("y2")
-
-D = lambda q: q.diff(t)  # noqa: E731  (a rate, for reading the formulas)
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 class FallingContainer(Problem):
@@ -162,21 +158,21 @@ class FallingContainer(Problem):
     def lagrange(self) -> EquationSet:
         """``T``, ``V``, ``R`` in absolute heights."""
         lg = Lagrangian("lagrange", coordinates=[x1, x2])
-        lg.kinetic("T of container", m1 * D(x1)**2 / 2)
-        lg.kinetic("T of m2", m2 * D(x2)**2 / 2)
+        lg.kinetic("T of container", m1 * rate(x1)**2 / 2)
+        lg.kinetic("T of m2", m2 * rate(x2)**2 / 2)
         lg.potential("spring", k * (x2 - x1 - l0)**2 / 2)
         lg.potential("gravity", m1 * g * x1 + m2 * g * x2)
-        lg.dissipation("dashpot", c * (D(x2) - D(x1))**2 / 2)
+        lg.dissipation("dashpot", c * (rate(x2) - rate(x1))**2 / 2)
         return lg.equations()
 
     def lagrange_y(self) -> EquationSet:
         """``T``, ``V``, ``R`` in the container height and the relative displacement."""
         lg = Lagrangian("lagrange_y", coordinates=[y1, y2])
-        lg.kinetic("T of container", m1 * D(y1)**2 / 2)
-        lg.kinetic("T of m2", m2 * (D(y1) + D(y2))**2 / 2)
+        lg.kinetic("T of container", m1 * rate(y1)**2 / 2)
+        lg.kinetic("T of m2", m2 * (rate(y1) + rate(y2))**2 / 2)
         lg.potential("spring", k * y2**2 / 2)
         lg.potential("gravity", m1 * g * y1 + m2 * g * (y1 + y2 + l0))
-        lg.dissipation("dashpot", c * D(y2)**2 / 2)
+        lg.dissipation("dashpot", c * rate(y2)**2 / 2)
         return lg.equations()
 
     def coordinate_maps(self) -> dict:
@@ -187,8 +183,8 @@ class FallingContainer(Problem):
     def published(self) -> list[Published]:
         where = "Example 15, Lagrange's equations in x1, x2"
         where_y = "Example 15, Lagrange's equations in y1, y2"
-        eq1 = m1 * DD(x1) + c * (D(x1) - D(x2)) + k * (x1 - x2) + m1 * g       # as printed
-        eq2 = m1 * DD(x2) + c * (D(x2) - D(x1)) + k * (x2 - x1) + m2 * g
+        eq1 = m1 * rate(x1, 2) + c * (rate(x1) - rate(x2)) + k * (x1 - x2) + m1 * g       # as printed
+        eq2 = m1 * rate(x2, 2) + c * (rate(x2) - rate(x1)) + k * (x2 - x1) + m2 * g
 
         def free(e):
             """``e`` with its ``x2`` read from the spring's free length: x2_printed = x2 - l0."""
@@ -211,11 +207,11 @@ class FallingContainer(Problem):
                       where=where + ": WRONG in this reading too, m1 x2'' for m2 x2''"),
             # Right: d/dt dT/dy1' = (m1 + m2) y1'' + m2 y2'', dV/dy1 = (m1 + m2) g.
             Published("y-equation 1", "equation",
-                      ((m1 + m2) * DD(y1) + m2 * DD(y2) + m1 * g + m2 * g,),
+                      ((m1 + m2) * rate(y1, 2) + m2 * rate(y2, 2) + m1 * g + m2 * g,),
                       where=where_y, coordinates="lagrange_y"),
             # Right: d/dt dT/dy2' = m2 (y1'' + y2''), dR/dy2' = c y2', dV/dy2 = k y2 + m2 g.
             Published("y-equation 2", "equation",
-                      (m2 * DD(y1) + m2 * DD(y2) + c * D(y2) + k * y2 + m2 * g,),
+                      (m2 * rate(y1, 2) + m2 * rate(y2, 2) + c * rate(y2) + k * y2 + m2 * g,),
                       where=where_y, coordinates="lagrange_y"),
         ]
 

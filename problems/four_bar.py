@@ -74,10 +74,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_z, t
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, coordinate, rate, rot_z, ACCELERATION,
+                      ANGLE, FORCE, LENGTH, MASS, STIFFNESS)
 
 __all__ = ["FourBar", "PROBLEMS", "scene", "m1", "m2", "r", "d", "k", "g", "phi",
            "xa", "ya", "xb", "yb"]
@@ -85,8 +84,6 @@ __all__ = ["FourBar", "PROBLEMS", "scene", "m1", "m2", "r", "d", "k", "g", "phi"
 m1, m2, r, d, k, g = sp.symbols("m1 m2 r d k g", positive=True)
 phi = coordinate("phi")
 xa, ya, xb, yb = (coordinate(n) for n in ("xa", "ya", "xb", "yb"))
-
-D = lambda q, n=1: q.diff(t, n)  # noqa: E731  (q', q'')
 
 
 def scene() -> SimpleNamespace:
@@ -161,7 +158,7 @@ class FourBar(Problem):
     def lagrange(self) -> EquationSet:
         """``T`` and ``V`` in ``phi`` by hand (both pins move alike)."""
         lg = Lagrangian(coordinates=[phi], description="T, V in the crank angle, by hand")
-        lg.kinetic("T of m1, m2", (m1 + m2) * r**2 * D(phi)**2 / 2)
+        lg.kinetic("T of m1, m2", (m1 + m2) * r**2 * rate(phi)**2 / 2)
         lg.potential("gravity", (m1 + m2) * g * r * sp.sin(phi))
         lg.spring("spring", k, r * sp.cos(phi))
         return lg.equations()
@@ -170,8 +167,8 @@ class FourBar(Problem):
         """A and B free in the plane; the three bar lengths as constraints."""
         lg = Lagrangian("multiplier", coordinates=[xa, ya, xb, yb],
                         description="pins in Cartesian coordinates, bars as constraints")
-        lg.kinetic("T of m1", m1 * (D(xa)**2 + D(ya)**2) / 2)
-        lg.kinetic("T of m2", m2 * (D(xb)**2 + D(yb)**2) / 2)
+        lg.kinetic("T of m1", m1 * (rate(xa)**2 + rate(ya)**2) / 2)
+        lg.kinetic("T of m2", m2 * (rate(xb)**2 + rate(yb)**2) / 2)
         lg.potential("gravity", g * (m1 * ya + m2 * yb))
         lg.spring("spring", k, xb - d)
         lg.constraint("F1", (xa**2 + ya**2 - r**2) / (2 * r))
@@ -184,10 +181,10 @@ class FourBar(Problem):
         c, s = sp.cos(phi), sp.sin(phi)
         return [
             Published("equation of motion", "equation",
-                      ((m1 + m2) * r * D(phi, 2) + (m1 + m2) * g * c - k * r * c * s,),
+                      ((m1 + m2) * r * rate(phi, 2) + (m1 + m2) * g * c - k * r * c * s,),
                       where="module docstring: sum of the j_A balances"),
             Published("m1 along j_A", "equation",
-                      (m1 * r * D(phi, 2) - sp.Symbol("F3", real=True) * s + m1 * g * c,),
+                      (m1 * r * rate(phi, 2) - sp.Symbol("F3", real=True) * s + m1 * g * c,),
                       where="module docstring: m1's balance across its crank"),
         ]
 

@@ -56,18 +56,15 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, t
-from dualmech.model.dimensions import DAMPING, FORCE, FREQUENCY, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, coordinate, rate, t, DAMPING, FORCE, FREQUENCY,
+                      LENGTH, MASS, STIFFNESS)
 
 __all__ = ["FrequencyResponse", "PROBLEMS", "amplitude", "m", "c", "k", "F0", "omega", "x"]
 
 m, c, k, F0, omega = sp.symbols("m c k F0 omega", positive=True)
 x = coordinate("x")
 drive = F0 * sp.cos(omega * t)
-
-D = lambda q, n=1: q.diff(t, n)  # noqa: E731
 
 
 def amplitude(eqs: EquationSet, w) -> sp.Expr:
@@ -107,7 +104,7 @@ class FrequencyResponse(Problem):
         block = Particle("block", m, Point.origin(O).locate("P", x * O.x))
         ne = NewtonEuler(coordinates=[x], ground=O, description="sum F = m a along I")
         ne.linear_spring("spring", block, k, x, O.x)
-        ne.linear_damper("dashpot", block, c, D(x), O.x)
+        ne.linear_damper("dashpot", block, c, rate(x), O.x)
         ne.force("drive", block, drive * O.x)
         ne.linear_momentum(block, O.x)
         return ne.equations()
@@ -115,9 +112,9 @@ class FrequencyResponse(Problem):
     def lagrange(self) -> EquationSet:
         """``T``, ``V``, ``R`` and the drive's generalised force."""
         lg = Lagrangian(coordinates=[x], description="T, V, R, Q")
-        lg.kinetic("T of block", m * D(x)**2 / 2)
+        lg.kinetic("T of block", m * rate(x)**2 / 2)
         lg.spring("spring", k, x)
-        lg.damper("dashpot", c, D(x))
+        lg.damper("dashpot", c, rate(x))
         lg.generalized_force("drive", [drive])
         return lg.equations()
 
@@ -126,7 +123,7 @@ class FrequencyResponse(Problem):
         (w_n,) = lag.substitute({F0: 0}).natural_frequencies()
         where = "final exam, problem 2 (a)"
         return [
-            Published("(a) model", "motion", (m * D(x, 2) + c * D(x) + k * x - drive,),
+            Published("(a) model", "motion", (m * rate(x, 2) + c * rate(x) + k * x - drive,),
                       where="final exam, problem 2: m x'' + c x' + k x = F(t)"),
             Published("(a) X(0) = F0/k", "expression", (F0 / k,), (amplitude(lag, 0),),
                       where=where),

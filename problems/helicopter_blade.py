@@ -83,11 +83,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_y, rot_z, t
-from dualmech.model.bodies import thin_rod
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FREQUENCY, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
+                      Problem, Published, RigidBody, coordinate, rate, rot_y, rot_z, t, thin_rod,
+                      ACCELERATION, ANGLE, FREQUENCY, LENGTH, MASS)
 
 __all__ = ["HelicopterBlade", "HelicopterBladeWeighted", "PROBLEMS", "frames", "lift_per_length", "first_order", "M", "L",
            "Omega", "A", "alpha0", "g", "beta", "x"]
@@ -96,8 +94,6 @@ M, L, Omega, A, g = sp.symbols("M L Omega A g", positive=True)
 alpha0 = sp.Symbol("alpha0", real=True)
 beta = coordinate("beta")
 x = sp.Symbol("x", positive=True)   # station along the blade (integration variable)
-
-_d = lambda q, n=1: q.diff(t, n)  # noqa: E731
 
 
 def frames() -> SimpleNamespace:
@@ -111,16 +107,16 @@ def frames() -> SimpleNamespace:
 
 def lift_per_length():
     """The source's lift per unit length at station ``x`` (beta small), along ``z_b``."""
-    return A * (alpha0 * Omega**2 * x**2 - Omega * x**2 * _d(beta))
+    return A * (alpha0 * Omega**2 * x**2 - Omega * x**2 * rate(beta))
 
 
 def first_order(expr):
     """``expr`` to first order in ``beta`` and ``beta'`` about 0 (the source's "beta small")."""
     b0, b1 = sp.symbols("b0 b1", real=True)
-    e = expr.subs(_d(beta), b1).subs(beta, b0)
+    e = expr.subs(rate(beta), b1).subs(beta, b0)
     at0 = {b0: 0, b1: 0}
     out = e.subs(at0) + b0 * e.diff(b0).subs(at0) + b1 * e.diff(b1).subs(at0)
-    return sp.expand(out.subs({b0: beta, b1: _d(beta)}))
+    return sp.expand(out.subs({b0: beta, b1: rate(beta)}))
 
 
 class HelicopterBlade(Problem):
@@ -170,7 +166,7 @@ class HelicopterBlade(Problem):
         """T, V by hand; Q from the virtual work of the lift, ``int w(x) x dx``."""
         lg = Lagrangian(coordinates=[beta], description="T, V of the blade by hand; lift by "
                                                         "virtual work")
-        lg.kinetic("T of blade", M * L**3 * (_d(beta)**2 + Omega**2 * sp.cos(beta)**2) / 6)
+        lg.kinetic("T of blade", M * L**3 * (rate(beta)**2 + Omega**2 * sp.cos(beta)**2) / 6)
         if self.weight:
             lg.potential("gravity", M * g * L**2 * sp.sin(beta) / 2)
         lg.generalized_force("lift", [sp.integrate(lift_per_length() * x, (x, 0, L))])
@@ -184,14 +180,14 @@ class HelicopterBlade(Problem):
         alpha = alpha0 - sp.atan(sp.cancel(v_n / v_t))
         lift = A * alpha * v.dot(v)                     # angle of attack x speed^2
         at_tip = {x: L}
-        printed_lift = A * (alpha0 + x * _d(beta) / (x * Omega)) * (x * Omega)**2
-        expanded = A * (alpha0 * x**2 * Omega**2 - x * _d(beta) * x * Omega)
-        Q_printed = sp.integrate(A * alpha0 * x**3 * Omega**2 - A * Omega * x**3 * _d(beta),
+        printed_lift = A * (alpha0 + x * rate(beta) / (x * Omega)) * (x * Omega)**2
+        expanded = A * (alpha0 * x**2 * Omega**2 - x * rate(beta) * x * Omega)
+        Q_printed = sp.integrate(A * alpha0 * x**3 * Omega**2 - A * Omega * x**3 * rate(beta),
                                  (x, 0, L))
-        Q_ref = sp.integrate(lift_per_length() * f.b.z.dot(v.diff(_d(beta), f.b)), (x, 0, L))
+        Q_ref = sp.integrate(lift_per_length() * f.b.z.dot(v.diff(rate(beta), f.b)), (x, 0, L))
         return [
             Published("angle of attack", "expression",
-                      (alpha0 + x * _d(beta) / (x * Omega),), (first_order(alpha),),
+                      (alpha0 + x * rate(beta) / (x * Omega),), (first_order(alpha),),
                       where="helicopter example, lift line: WRONG as extracted, alpha0 + x beta'"
                       "/(x Omega); a rising blade meets the air from above: alpha0 - beta'/Omega"),
             Published("lift per unit length, factored (at the tip)", "expression",

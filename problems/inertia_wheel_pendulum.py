@@ -78,10 +78,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_z, t)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS, TORQUE
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
+                      Problem, Published, Reaction, RigidBody, coordinate, rate, rot_z,
+                      ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS, TORQUE)
 
 __all__ = ["InertiaWheelPendulum", "PROBLEMS", "frames", "hand_reactions", "m1", "m2", "l1",
            "l_c1", "I1", "I2", "g", "tau", "q1", "q2"]
@@ -90,13 +89,10 @@ m1, m2, l1, l_c1, I1, I2, g, tau = sp.symbols("m1 m2 l1 l_c1 I1 I2 g tau", posit
 q1, q2 = coordinate("q1"), coordinate("q2")
 xp, yp, dx, dy = (coordinate(n) for n in ("xp", "yp", "dx", "dy"))
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
-
 
 def hand_reactions(q1dd) -> dict:
     """Pivot and bearing forces by hand (module docstring), given the true ``q1''``."""
-    s, c, w2 = sp.sin(q1), sp.cos(q1), D(q1)**2
+    s, c, w2 = sp.sin(q1), sp.cos(q1), rate(q1)**2
     M = m1 * l_c1 + m2 * l1
     return {"R_x": -M * (q1dd * s + w2 * c) - (m1 + m2) * g,
             "R_y": M * (q1dd * c - w2 * s),
@@ -177,8 +173,8 @@ class InertiaWheelPendulum(Problem):
     def lagrange(self) -> EquationSet:
         """The source's ``T``, ``U`` and generalised forces ``(0, tau)``."""
         lg = Lagrangian("lagrange", coordinates=[q1, q2], description="(c), (d) by hand")
-        lg.kinetic("T of rod", m1 * (l_c1 * D(q1))**2 / 2 + I1 * D(q1)**2 / 2)
-        lg.kinetic("T of disc", m2 * (l1 * D(q1))**2 / 2 + I2 * (D(q1) + D(q2))**2 / 2)
+        lg.kinetic("T of rod", m1 * (l_c1 * rate(q1))**2 / 2 + I1 * rate(q1)**2 / 2)
+        lg.kinetic("T of disc", m2 * (l1 * rate(q1))**2 / 2 + I2 * (rate(q1) + rate(q2))**2 / 2)
         lg.potential("gravity", -m1 * l_c1 * g * sp.cos(q1) - m2 * l1 * g * sp.cos(q1))
         lg.generalized_force("motor", [0, tau])
         return lg.equations()
@@ -191,8 +187,8 @@ class InertiaWheelPendulum(Problem):
         c2 = end + l1 * b1 + sp.Matrix([dx, dy])
         lg = Lagrangian("multiplier", coordinates=[q1, q2, xp, yp, dx, dy],
                         description="pivot and bearing freed, held by multipliers")
-        lg.kinetic("T of rod", m1 * (D(c1).T * D(c1))[0, 0] / 2 + I1 * D(q1)**2 / 2)
-        lg.kinetic("T of disc", m2 * (D(c2).T * D(c2))[0, 0] / 2 + I2 * (D(q1) + D(q2))**2 / 2)
+        lg.kinetic("T of rod", m1 * (rate(c1).T * rate(c1))[0, 0] / 2 + I1 * rate(q1)**2 / 2)
+        lg.kinetic("T of disc", m2 * (rate(c2).T * rate(c2))[0, 0] / 2 + I2 * (rate(q1) + rate(q2))**2 / 2)
         lg.potential("gravity", -m1 * g * c1[0] - m2 * g * c2[0])
         lg.generalized_force("motor", [0, tau, 0, 0, 0, 0])
         for name, q in (("R_x", xp), ("R_y", yp), ("F_x", dx), ("F_y", dy)):
@@ -203,7 +199,7 @@ class InertiaWheelPendulum(Problem):
         f = frames()
         O, B = f.O, f.B
         w_rod, w_disc = B.ang_vel_in(O), f.C.ang_vel_in(O)
-        torque_pair = [tau * O.z.dot(w_disc.diff(D(q), O)) - tau * O.z.dot(w_rod.diff(D(q), O))
+        torque_pair = [tau * O.z.dot(w_disc.diff(rate(q), O)) - tau * O.z.dot(w_rod.diff(rate(q), O))
                        for q in (q1, q2)]
         inO = lambda v: tuple(v.express(O).components)  # noqa: E731
         xy = lambda v: inO(v)[:2]  # noqa: E731
@@ -211,7 +207,7 @@ class InertiaWheelPendulum(Problem):
         U = -g * (m1 * f.c1.pos_from(f.o).dot(O.x) + m2 * f.c2.pos_from(f.o).dot(O.x))
         L = T - U
         s, c = sp.sin(q1), sp.cos(q1)
-        a1, a2, v1, v2 = DD(q1), DD(q2), D(q1), D(q2)
+        a1, a2, v1, v2 = rate(q1, 2), rate(q2, 2), rate(q1), rate(q2)
         return [
             Published("(a) generalised forces", "expression", (0, tau), tuple(torque_pair),
                       where="(a): 0; tau (virtual power of the motor's torque pair)"),

@@ -62,19 +62,15 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_z, t
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
+                      Problem, Published, Reaction, RigidBody, coordinate, rate, rot_z, t,
+                      ACCELERATION, ANGLE, FORCE, LENGTH, MASS, STIFFNESS)
 
 __all__ = ["InvertedPendulumSprings", "PROBLEMS", "frames", "m", "l", "a", "k", "g", "theta"]
 
 m, l, a, k, g = sp.symbols("m l a k g", positive=True)
 theta = coordinate("theta")
 xp, yp = coordinate("xp"), coordinate("yp")
-
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 def frames() -> SimpleNamespace:
@@ -138,7 +134,7 @@ class InvertedPendulumSprings(Problem):
     def lagrange(self) -> EquationSet:
         """The source's ``T`` and ``V``."""
         lg = Lagrangian("lagrange", coordinates=[theta], description="(a), (b) by hand")
-        lg.kinetic("T of tip mass", m * (l * D(theta))**2 / 2)
+        lg.kinetic("T of tip mass", m * (l * rate(theta))**2 / 2)
         lg.spring("spring 1", k, a * sp.sin(theta))
         lg.spring("spring 2", k, a * sp.sin(theta))
         lg.potential("gravity", m * g * l * sp.cos(theta))
@@ -150,7 +146,7 @@ class InvertedPendulumSprings(Problem):
         x_s = xp - a * sp.sin(theta)
         lg = Lagrangian("multiplier", coordinates=[theta, xp, yp],
                         description="hinge freed, held by two multipliers")
-        lg.kinetic("T of tip mass", m * (D(tip).T * D(tip))[0, 0] / 2)
+        lg.kinetic("T of tip mass", m * (rate(tip).T * rate(tip))[0, 0] / 2)
         lg.spring("spring 1", k, x_s)
         lg.spring("spring 2", k, x_s)
         lg.potential("gravity", m * g * tip[1])
@@ -162,13 +158,13 @@ class InvertedPendulumSprings(Problem):
         f = frames()
         O = f.O
         s, c = sp.sin(theta), sp.cos(theta)
-        th1, th2 = D(theta), DD(theta)
+        th1, th2 = rate(theta), rate(theta, 2)
         T = f.body.kinetic_energy(O)
         V_springs = 2 * k * f.s.pos_from(f.o).dot(O.x)**2 / 2
         V_gravity = m * g * f.tip.pos_from(f.o).dot(O.y)
         L = T - V_springs - V_gravity
         lg = self.model("lagrange")
-        rate = lg.accelerations_solved()[th2]          # theta'' as a function of the state
+        accel = lg.accelerations_solved()[th2]          # theta'' as a function of the state
         M, _, K = lg.linearize()
         where = "question 4"
         return [
@@ -194,7 +190,7 @@ class InvertedPendulumSprings(Problem):
                       where=where + " c: U' = ..."),
             Published("(c) Jacobian entry", "expression",
                       (-2 * k * a**2 / (m * l**2) * sp.cos(2 * theta) + g / l * c,),
-                      (rate.diff(theta),), where=where + " c: d(U')/d(theta)"),
+                      (accel.diff(theta),), where=where + " c: d(U')/d(theta)"),
             Published("(c) Jacobian at theta = 0", "expression",
                       (-2 * k * a**2 / (m * l**2) + g / l,), (-K[0, 0] / M[0, 0],),
                       where=where + " c: reference from EquationSet.linearize"),

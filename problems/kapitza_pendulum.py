@@ -66,10 +66,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_z, t
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, FREQUENCY, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, coordinate, rate, rot_z, t,
+                      ACCELERATION, ANGLE, FORCE, FREQUENCY, LENGTH, MASS)
 
 __all__ = ["KapitzaPendulum", "PROBLEMS", "m", "l", "a", "Omega", "g", "theta", "r",
            "pivot_height", "hand_tension", "mathieu_parameters"]
@@ -78,8 +77,6 @@ m, l, a, Omega, g = sp.symbols("m l a Omega g", positive=True)
 theta = coordinate("theta")
 r = coordinate("r")  # distance of the bob from the pivot, only in the multiplier model
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 #: Height of the pivot above O.
 pivot_height = a * sp.cos(Omega * t)
@@ -87,7 +84,7 @@ pivot_height = a * sp.cos(Omega * t)
 
 def hand_tension() -> sp.Expr:
     """The rod's pull on the bob, solved by hand: ``m ((g + y_p'') cos theta + l theta'^2)``."""
-    return m * ((g + DD(pivot_height)) * sp.cos(theta) + l * D(theta)**2)
+    return m * ((g + rate(pivot_height, 2)) * sp.cos(theta) + l * rate(theta)**2)
 
 
 def mathieu_parameters(values: dict, inverted: bool = True) -> tuple[float, float]:
@@ -154,8 +151,8 @@ class KapitzaPendulum(Problem):
         """``T`` and ``V`` by hand, the pivot's motion prescribed."""
         yp = pivot_height
         lg = Lagrangian("lagrange", coordinates=[theta], description="T and V by hand")
-        lg.kinetic("T of bob", m * ((l * D(theta))**2 + D(yp)**2
-                                    + 2 * l * D(yp) * D(theta) * sp.sin(theta)) / 2)
+        lg.kinetic("T of bob", m * ((l * rate(theta))**2 + rate(yp)**2
+                                    + 2 * l * rate(yp) * rate(theta) * sp.sin(theta)) / 2)
         lg.potential("gravity", m * g * (yp - l * sp.cos(theta)))
         return lg.equations()
 
@@ -164,7 +161,7 @@ class KapitzaPendulum(Problem):
         bob = sp.Matrix([r * sp.sin(theta), pivot_height - r * sp.cos(theta)])
         lg = Lagrangian("multiplier", coordinates=[theta, r],
                         description="the bob freed from the rod, held by a multiplier")
-        lg.kinetic("T of bob", m * (D(bob).T * D(bob))[0, 0] / 2)
+        lg.kinetic("T of bob", m * (rate(bob).T * rate(bob))[0, 0] / 2)
         lg.potential("gravity", m * g * bob[1])
         lg.constraint("T", l - r)
         return lg.equations()
@@ -176,7 +173,7 @@ class KapitzaPendulum(Problem):
         return [
             # Right: Lagrange's equation of their Lagrangian, with their a = -(our a).
             Published("equation of motion", "motion",
-                      (m * l**2 * DD(theta)
+                      (m * l**2 * rate(theta, 2)
                        + m * l * (g + a_ll * Omega**2 * sp.cos(Omega * t)) * sp.sin(theta),),
                       where=where),
         ]

@@ -54,18 +54,14 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, t
-from dualmech.model.dimensions import ACCELERATION, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, coordinate, rate, ACCELERATION, FORCE, LENGTH,
+                      MASS, STIFFNESS)
 
 __all__ = ["MassSpringGravity", "PROBLEMS", "M", "k", "g", "F", "x", "static_equilibrium"]
 
 M, k, g, F = sp.symbols("M k g F", positive=True)
 x = coordinate("x")
-
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 def static_equilibrium() -> sp.Expr:
@@ -118,7 +114,7 @@ class MassSpringGravity(Problem):
         """``T = M x'^2/2``, ``V = k x^2/2 + M g x``, ``Q = F``, as the source writes them."""
         lg = Lagrangian("lagrange", coordinates=[x],
                         description="gravity as a potential (the source's choice)")
-        lg.kinetic("T of mass", M * D(x)**2 / 2)
+        lg.kinetic("T of mass", M * rate(x)**2 / 2)
         lg.spring("spring", k, x)
         lg.potential("gravity", M * g * x)
         lg.generalized_force("applied force", [F])
@@ -129,7 +125,7 @@ class MassSpringGravity(Problem):
         sc = _Scene()
         lg = Lagrangian("gravity_as_force", coordinates=[x],
                         description="gravity as a generalised force (the source's closing note)")
-        lg.kinetic("T of mass", M * D(x)**2 / 2)
+        lg.kinetic("T of mass", M * rate(x)**2 / 2)
         lg.spring("spring", k, x)
         lg.force_at("gravity", -M * g * sc.O.y, sc.P, sc.O)
         lg.force_at("applied force", F * sc.O.y, sc.P, sc.O)
@@ -141,19 +137,19 @@ class MassSpringGravity(Problem):
         where = "section 2.2, mass/spring system"
         return [
             # Right: v = x' j.
-            Published("T", "expression", (M * D(x)**2 / 2,), (sc.mass.kinetic_energy(sc.O),),
+            Published("T", "expression", (M * rate(x)**2 / 2,), (sc.mass.kinetic_energy(sc.O),),
                       where=where + " (printed 'T = M x^2/2', dot lost in the extraction)"),
             # Right: the spring's extension is the height x; the mass is x above the datum.
             Published("U", "expression", (k * x**2 / 2 + M * g * x,),
                       (k * height**2 / 2 + M * g * height,), where=where),
             # Right: d/dt (M x') + k x + M g = F.
-            Published("Lagrange's equation", "motion", (DD(M * x) + k * x + M * g - F,),
+            Published("Lagrange's equation", "motion", (rate(M * x, 2) + k * x + M * g - F,),
                       where=where + ": d/dt[M x'] + k x + M g = F"),
             # Right: the same, rearranged.
-            Published("equation of motion", "motion", (M * DD(x) + k * x - (F - M * g),),
+            Published("equation of motion", "motion", (M * rate(x, 2) + k * x - (F - M * g),),
                       where=where + ": M x'' + k x = F - M g"),
             # Right: dT/dx' = M x' is the linear momentum of the mass.
-            Published("generalised momentum", "expression", (M * D(x),),
+            Published("generalised momentum", "expression", (M * rate(x),),
                       (sc.mass.linear_momentum(sc.O).dot(sc.O.y),),
                       where="section 3.1: dT/dx' = M x', the linear momentum"),
         ]

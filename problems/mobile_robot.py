@@ -130,11 +130,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, composite,
-                      coordinate, point_mass, rot_z, t)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, TORQUE
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, RigidBody, composite, coordinate,
+                      point_mass, rate, rot_z, t, ACCELERATION, ANGLE, FORCE, LENGTH, MASS, TORQUE)
 
 __all__ = ["MobileRobotSimplified", "MobileRobot", "PROBLEMS", "arm_properties",
            "base_profile", "arm_profile", "M", "m1", "m2", "D1", "D2", "r2", "g", "f", "T",
@@ -144,9 +142,6 @@ M, m1, m2, D1, D2, r2, g = sp.symbols("M m1 m2 D1 D2 r2 g", positive=True)
 f, T = sp.symbols("f T", real=True)
 x, phi = coordinate("x"), coordinate("phi")
 u = coordinate("u")   # slip of the pivot along the base, multiplier model only
-
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 def arm_properties():
@@ -212,19 +207,19 @@ def _published_common(sc) -> list[Published]:
     a_P = sc.P.acc(sc.O)
     r_x, r_y = -L * sp.sin(phi), L * sp.cos(phi)
     s, co = sp.sin(phi), sp.cos(phi)
-    moment = I_P * DD(phi) + m * r_x * 0 - m * r_y * DD(x) - T - m * g * L * s
+    moment = I_P * rate(phi, 2) + m * r_x * 0 - m * r_y * rate(x, 2) - T - m * g * L * s
     return [
         Published("L", "expression", ((m1 * D1 + m2 * (r2 + D2)) / (m1 + m2),), (L,),
                   where="Preliminary Design Model: L = (m1 D1 + m2 (r2 + D2)) / (m1 + m2)"),
         Published("I_P", "expression", (m1 * D1**2 + m2 * (D2 + r2)**2,), (I_P,),
                   where="Preliminary Design Model: I_P = m1 D1^2 + m2 (D2 + r2)^2"),
-        Published("r_x, r_y, a_Px, a_Py", "expression", (r_x, r_y, DD(x), 0),
+        Published("r_x, r_y, a_Px, a_Py", "expression", (r_x, r_y, rate(x, 2), 0),
                   (r.dot(sc.O.x), r.dot(sc.O.y), a_P.dot(sc.O.x), a_P.dot(sc.O.y)),
                   where="Preliminary Design Model, below the moment equation"),
         Published("moment equation about P", "equation", (moment,),
                   where="I_P phi'' + m r_x a_Py - m r_y a_Px = T + m g L sin(phi)"),
         Published("(2.6-2)", "equation",
-                  (I_P * DD(phi) - m * L * DD(x) * co - T - m * g * L * s,),
+                  (I_P * rate(phi, 2) - m * L * rate(x, 2) * co - T - m * g * L * s,),
                   where="(2.6-2) = (2.6-10): I_P phi'' - m L x'' cos(phi) = T + m g L sin(phi)"),
     ]
 
@@ -260,7 +255,7 @@ class MobileRobotSimplified(Problem):
     def lagrange(self) -> EquationSet:
         """One Lagrangian per subsystem: the lumped base gives ``x``, the arm gives ``phi``."""
         base = Lagrangian("lagrange", coordinates=[x, phi])
-        base.kinetic("T of base, arm and hand (lumped)", (M + m1 + m2) * D(x)**2 / 2)
+        base.kinetic("T of base, arm and hand (lumped)", (M + m1 + m2) * rate(x)**2 / 2)
         base.generalized_force("motor force", [f, 0])
         arm = Lagrangian("lagrange", coordinates=[x, phi])
         _arm_energies(arm)
@@ -274,8 +269,8 @@ class MobileRobotSimplified(Problem):
         m = sc.props.mass
         L, I_P = sc.props.center[1], sc.props.inertia_about(sp.zeros(3, 1))[2, 2]
         s, co = sp.sin(phi), sp.cos(phi)
-        base = (M + m1 + m2) * DD(x) - f
-        arm = I_P * DD(phi) - m * L * DD(x) * co - T - m * g * L * s
+        base = (M + m1 + m2) * rate(x, 2) - f
+        arm = I_P * rate(phi, 2) - m * L * rate(x, 2) * co - T - m * g * L * s
         return [
             Published("(2.6-1)", "equation", (base,), where="(2.6-1): (M + m1 + m2) x'' = f"),
             *_published_common(sc),
@@ -327,7 +322,7 @@ class MobileRobot(Problem):
         """``T``, ``V`` and ``Q`` of base and arm written by hand."""
         lg = Lagrangian("lagrange", coordinates=[x, phi],
                         description="base and arm as one system")
-        lg.kinetic("T of base", M * D(x)**2 / 2)
+        lg.kinetic("T of base", M * rate(x)**2 / 2)
         _arm_energies(lg)
         lg.generalized_force("motor force", [f, 0])
         lg.generalized_force("motor torque", [0, T])
@@ -337,7 +332,7 @@ class MobileRobot(Problem):
         """The pivot free to slide on the base by ``u``; ``u = 0`` held by ``H``."""
         lg = Lagrangian("multiplier", coordinates=[x, phi, u],
                         description="pivot freed along i, closed by the multiplier H")
-        lg.kinetic("T of base", M * D(x)**2 / 2)
+        lg.kinetic("T of base", M * rate(x)**2 / 2)
         _arm_energies(lg, slip=u)
         lg.generalized_force("motor force", [f, 0, 0])
         lg.generalized_force("motor torque", [0, T, 0])
@@ -351,10 +346,10 @@ class MobileRobot(Problem):
         H = sp.Symbol("H", real=True)
         s, co = sp.sin(phi), sp.cos(phi)
         C = sc.C.pos_from()
-        arm = I_P * DD(phi) - m * L * DD(x) * co - T - m * g * L * s
-        base = (m + M) * DD(x) - m * L * (co * DD(phi) - s * D(phi)**2) - f
+        arm = I_P * rate(phi, 2) - m * L * rate(x, 2) * co - T - m * g * L * s
+        base = (m + M) * rate(x, 2) - m * L * (co * rate(phi, 2) - s * rate(phi)**2) - f
         den = I_P * (m + M) + m * L * co * (-m * L * co)
-        xdd = (I_P * (-m * L * s * D(phi)**2 + f) + m * L * co * (T + m * g * L * s)) / den
+        xdd = (I_P * (-m * L * s * rate(phi)**2 + f) + m * L * co * (T + m * g * L * s)) / den
         phidd = (T + m * g * L * s) / I_P + m * L * co / I_P * xdd
         sim = "Case Study Simulation Model (m g l read as m g L)"
         return [
@@ -365,17 +360,17 @@ class MobileRobot(Problem):
             Published("(2.6-9)", "equation", (m * (x - L * s).diff(t, 2) - H,),
                       where="(2.6-9): m d^2/dt^2 (x - L sin(phi)) = H"),
             *_published_common(sc),
-            Published("(2.6-11)", "equation", (M * DD(x) - f + H,),
+            Published("(2.6-11)", "equation", (M * rate(x, 2) - f + H,),
                       where="(2.6-11): M x'' = f - H"),
             Published("(2.6-12)", "equation",
-                      (m * DD(x) - m * L * (co * D(phi)).diff(t) - H,
-                       m * DD(x) - m * L * (-s * D(phi)**2 + co * DD(phi)) - H),
+                      (m * rate(x, 2) - m * L * (co * rate(phi)).diff(t) - H,
+                       m * rate(x, 2) - m * L * (-s * rate(phi)**2 + co * rate(phi, 2)) - H),
                       where="(2.6-12), both forms"),
-            Published("H = f - M x''", "expression", (f - M * DD(x),), (H,),
+            Published("H = f - M x''", "expression", (f - M * rate(x, 2),), (H,),
                       where="A More Detailed Model, solving (2.6-11)"),
             Published("detailed model (2.6-10), (2.6-13)", "motion", (arm, base),
                       where="'The equations of motion are (2.6-10) and (2.6-13)'"),
-            Published("x'' and phi'' solved", "expression", (xdd, phidd), (DD(x), DD(phi)),
+            Published("x'' and phi'' solved", "expression", (xdd, phidd), (rate(x, 2), rate(phi, 2)),
                       where=sim),
         ]
 

@@ -67,16 +67,13 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate,
-                      rot_z, t, thin_rod)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Reaction, RigidBody, coordinate, rate, rot_z, thin_rod,
+                      ACCELERATION, ANGLE, FORCE, LENGTH, MASS)
 
 __all__ = ["NLinkPendulum", "NLinkRigidPendulum", "PROBLEMS"]
 
 g = sp.Symbol("g", positive=True)
-_d = lambda q, n=1: q.diff(t, n)  # noqa: E731
 
 
 def _check_n(n) -> int:
@@ -168,8 +165,8 @@ class NLinkPendulum(_Chain):
         lg = Lagrangian(coordinates=list(self.q), description="T and V of the chain by hand")
         vx = vy = height = 0
         for i, q in enumerate(self.q):
-            vx += self.l[i] * _d(q) * sp.cos(q)
-            vy += self.l[i] * _d(q) * sp.sin(q)
+            vx += self.l[i] * rate(q) * sp.cos(q)
+            vy += self.l[i] * rate(q) * sp.sin(q)
             height -= self.l[i] * sp.cos(q)
             lg.kinetic(f"T of mass {i + 1}", self.m[i] * (vx**2 + vy**2) / 2)
             lg.potential(f"gravity on mass {i + 1}", self.m[i] * g * height)
@@ -182,7 +179,7 @@ class NLinkPendulum(_Chain):
         px = py = 0
         for i in range(self.n):
             x, y = self.x[i], self.y[i]
-            lg.kinetic(f"T of mass {i + 1}", self.m[i] * (_d(x)**2 + _d(y)**2) / 2)
+            lg.kinetic(f"T of mass {i + 1}", self.m[i] * (rate(x)**2 + rate(y)**2) / 2)
             lg.potential(f"gravity on mass {i + 1}", self.m[i] * g * y)
             lg.constraint(f"T{i + 1}", (self.l[i]**2 - (x - px)**2 - (y - py)**2)
                           / (2 * self.l[i]))
@@ -252,13 +249,13 @@ class NLinkRigidPendulum(_Chain):
         vx = vy = height = 0          # of the joint above rod i
         for i, q in enumerate(self.q):
             l, m = self.l[i], self.m[i]
-            cx = vx + l / 2 * _d(q) * sp.cos(q)
-            cy = vy + l / 2 * _d(q) * sp.sin(q)
+            cx = vx + l / 2 * rate(q) * sp.cos(q)
+            cy = vy + l / 2 * rate(q) * sp.sin(q)
             lg.kinetic(f"T of rod {i + 1}", m * (cx**2 + cy**2) / 2
-                       + m * l**2 / 12 * _d(q)**2 / 2)
+                       + m * l**2 / 12 * rate(q)**2 / 2)
             lg.potential(f"gravity on rod {i + 1}", m * g * (height - l / 2 * sp.cos(q)))
-            vx += l * _d(q) * sp.cos(q)
-            vy += l * _d(q) * sp.sin(q)
+            vx += l * rate(q) * sp.cos(q)
+            vy += l * rate(q) * sp.sin(q)
             height -= l * sp.cos(q)
         return lg.equations()
 
@@ -270,8 +267,8 @@ class NLinkRigidPendulum(_Chain):
         bottom = (0, 0)                 # of the rod above (O for the first)
         for i, q in enumerate(self.q):
             x, y, l, m = self.xc[i], self.yc[i], self.l[i], self.m[i]
-            lg.kinetic(f"T of rod {i + 1}", m * (_d(x)**2 + _d(y)**2) / 2
-                       + m * l**2 / 12 * _d(q)**2 / 2)
+            lg.kinetic(f"T of rod {i + 1}", m * (rate(x)**2 + rate(y)**2) / 2
+                       + m * l**2 / 12 * rate(q)**2 / 2)
             lg.potential(f"gravity on rod {i + 1}", m * g * y)
             top = (x - l / 2 * sp.sin(q), y + l / 2 * sp.cos(q))
             lg.constraint(f"X{i + 1}", top[0] - bottom[0])

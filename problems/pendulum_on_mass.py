@@ -80,12 +80,10 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, composite,
-                      coordinate, rot_z, t, thin_disk, thin_rod)
-from dualmech.model.bodies import MassProperties
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, MassProperties, NewtonEuler,
+                      Parameter, Particle, Point, Problem, Published, Reaction, RigidBody,
+                      composite, coordinate, rate, rot_z, t, thin_disk, thin_rod, ACCELERATION,
+                      ANGLE, FORCE, LENGTH, MASS, STIFFNESS)
 
 __all__ = ["PendulumOnMass", "PROBLEMS", "frames", "pendulum_mass_properties", "kinetic_energy",
            "potential_energy",
@@ -96,10 +94,6 @@ y, theta = coordinate("y"), coordinate("theta")
 # multiplier model only: M off the shaft by x; the pendulum's pivot off M by the gap (p, q)
 x, p, q = coordinate("x"), coordinate("p"), coordinate("q")
 F_N, F_Rx, F_Ry = sp.symbols("F_N F_Rx F_Ry", real=True)
-
-_d = lambda q, n=1: q.diff(t, n)  # noqa: E731  (q', q'')
-
-
 
 
 def pendulum_mass_properties() -> MassProperties:
@@ -194,10 +188,10 @@ class PendulumOnMass(Problem):
         s, c = sp.sin(theta), sp.cos(theta)
         A_M = sp.Matrix([x, -(l0 + y)])                     # M (and its pin)
         C = A_M + sp.Matrix([p, q]) + 4 * r * sp.Matrix([s, -c])   # pendulum's mass centre
-        lg.kinetic("T of M", M * (_d(A_M).T * _d(A_M))[0, 0] / 2)
-        lg.kinetic("T of pendulum (mass centre)", 3 * m * (_d(C).T * _d(C))[0, 0] / 2)
+        lg.kinetic("T of M", M * (rate(A_M).T * rate(A_M))[0, 0] / 2)
+        lg.kinetic("T of pendulum (mass centre)", 3 * m * (rate(C).T * rate(C))[0, 0] / 2)
         lg.kinetic("T of pendulum (spin about C)", sp.Rational(25, 3) * m * r**2
-                   * _d(theta)**2 / 2)
+                   * rate(theta)**2 / 2)
         lg.potential("gravity", M * g * A_M[1] + 3 * m * g * C[1])
         lg.spring("spring", k, y)
         lg.constraint("F_N", -x)        # shaft on M along -I: gradient -I at M
@@ -219,7 +213,7 @@ class PendulumOnMass(Problem):
         f = frames()
         O, A, pend = f.O, f.A, f.pendulum
         s, c = sp.sin(theta), sp.cos(theta)
-        y1, y2, th1, th2 = _d(y), _d(y, 2), _d(theta), _d(theta, 2)
+        y1, y2, th1, th2 = rate(y), rate(y, 2), rate(theta), rate(theta, 2)
         mr2 = m * r**2
         I_A = pend.inertia_about(f.a).applyfunc(sp.trigsimp)  # A r_C in A axes: (0, -4r, 0)
         T_ref = (f.mass.kinetic_energy(O) + pend.kinetic_energy(O))
@@ -279,7 +273,7 @@ class PendulumOnMass(Problem):
 
 def kinetic_energy() -> dict:
     """``T`` by hand, as the source writes it: M, the pendulum's mass centre, its spin about C."""
-    y1, th1 = _d(y), _d(theta)
+    y1, th1 = rate(y), rate(theta)
     s, c = sp.sin(theta), sp.cos(theta)
     return {
         "T of M": M * y1**2 / 2,

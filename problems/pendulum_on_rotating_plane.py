@@ -93,11 +93,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_y, rot_z,
-                      t)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, FREQUENCY, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, coordinate, rate, rot_y, rot_z, t,
+                      ACCELERATION, ANGLE, FORCE, FREQUENCY, LENGTH, MASS)
 
 __all__ = ["PendulumOnRotatingPlane", "PROBLEMS", "frames", "plane_angle", "hand_rod_force",
            "on_plane", "m", "l", "c", "g", "beta0", "Omega", "alpha", "theta", "N"]
@@ -111,9 +109,6 @@ z = coordinate("z")          # the mass's height off the plane
 rho = coordinate("rho")      # the mass's distance from the pivot (rod freed), multiplier only
 N = sp.Symbol("N", real=True)
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
-
 
 def plane_angle():
     """The prescribed ``beta(t) = beta0 + Omega t + alpha t^2``."""
@@ -123,14 +118,14 @@ def plane_angle():
 def hand_rod_force():
     """The rod force ``S`` by hand (the ``e_r`` balance of the module docstring)."""
     bd = plane_angle().diff(t)
-    return (m * l * (D(theta)**2 + bd**2 * sp.cos(theta)**2) - m * bd**2 * c * sp.cos(theta)
+    return (m * l * (rate(theta)**2 + bd**2 * sp.cos(theta)**2) - m * bd**2 * c * sp.cos(theta)
             + m * g * sp.cos(theta) * sp.sin(plane_angle()))
 
 
 def on_plane(expr):
     """``expr`` with the coordinate ``beta`` and its rates replaced by the prescribed motion."""
     bt = plane_angle()
-    return sp.sympify(expr).xreplace({DD(beta): bt.diff(t, 2), D(beta): bt.diff(t)}).xreplace(
+    return sp.sympify(expr).xreplace({rate(beta, 2): bt.diff(t, 2), rate(beta): bt.diff(t)}).xreplace(
         {beta: bt})
 
 
@@ -148,7 +143,7 @@ def frames() -> SimpleNamespace:
 def _energies(angle):
     """The source's ``T`` and ``V`` with the plane (or the mass) at ``angle`` about ``Y``."""
     lever = c - l * sp.cos(theta)
-    T = m * (l**2 * D(theta)**2 + D(angle)**2 * lever**2) / 2
+    T = m * (l**2 * rate(theta)**2 + rate(angle)**2 * lever**2) / 2
     V = m * g * lever * sp.sin(angle)
     return T, V
 
@@ -217,7 +212,7 @@ class PendulumOnRotatingPlane(Problem):
         r = rot_y(beta) * r_plane               # inertial X, Y, Z components
         lg = Lagrangian("multiplier", coordinates=[theta, z, rho, beta],
                         description="mass freed from the plane and the rod, held by N and S")
-        lg.kinetic("T of mass", m * (D(r).T * D(r))[0, 0] / 2)
+        lg.kinetic("T of mass", m * (rate(r).T * rate(r))[0, 0] / 2)
         lg.potential("gravity", m * g * r[2])
         lg.constraint("N", z)
         lg.constraint("S", l - rho)             # gradient -e_r: S pulls towards the pivot
@@ -240,7 +235,7 @@ class PendulumOnRotatingPlane(Problem):
         O, P = f.O, f.P
         s, co = sp.sin(theta), sp.cos(theta)
         sb, cb = sp.sin(beta), sp.cos(beta)
-        th1, th2, b1, b2 = D(theta), DD(theta), D(beta), DD(beta)
+        th1, th2, b1, b2 = rate(theta), rate(theta, 2), rate(beta), rate(beta, 2)
         lever = c - l * co
         inP = lambda v: tuple(v.express(P).components)  # noqa: E731
         inO = lambda v: tuple(v.express(O).components)  # noqa: E731

@@ -90,10 +90,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_z, t
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, coordinate, rate, rot_z, ACCELERATION,
+                      ANGLE, FORCE, LENGTH, MASS)
 
 __all__ = ["PendulumParticle", "PROBLEMS", "frames", "hand_rod_force", "m", "l", "g", "theta",
            "x", "y", "S"]
@@ -103,13 +102,10 @@ theta = coordinate("theta")
 x, y = coordinate("x"), coordinate("y")
 S = sp.Symbol("S", real=True)
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
-
 
 def hand_rod_force():
     """``S = m (g cos(theta) + l theta'^2)``: the b2 balance of the body form, solved by hand."""
-    return m * (g * sp.cos(theta) + l * D(theta)**2)
+    return m * (g * sp.cos(theta) + l * rate(theta)**2)
 
 
 def frames() -> SimpleNamespace:
@@ -176,7 +172,7 @@ class PendulumParticle(Problem):
     def lagrange(self) -> EquationSet:
         """``T = m (l theta')^2/2``, ``U = -m g l cos(theta)``, by hand."""
         lg = Lagrangian("lagrange", coordinates=[theta], description="T and U of the bob by hand")
-        lg.kinetic("T of bob", m * (l * D(theta))**2 / 2)
+        lg.kinetic("T of bob", m * (l * rate(theta))**2 / 2)
         lg.potential("gravity", -m * g * l * sp.cos(theta))
         return lg.equations()
 
@@ -184,7 +180,7 @@ class PendulumParticle(Problem):
         """The index-3 DAE: ``(x, y)`` with the rod as constraint, multiplier ``S``."""
         lg = Lagrangian("cartesian", coordinates=[x, y],
                         description="bob in inertial coordinates, rod length by a multiplier")
-        lg.kinetic("T of bob", m * (D(x)**2 + D(y)**2) / 2)
+        lg.kinetic("T of bob", m * (rate(x)**2 + rate(y)**2) / 2)
         lg.potential("gravity", -m * g * y)
         lg.constraint("S", (l**2 - x**2 - y**2) / (2 * l))
         return lg.equations()
@@ -195,7 +191,7 @@ class PendulumParticle(Problem):
         O, B = f.O, f.B
         i2, b1, b2 = O.y, B.x, B.y
         s, c = sp.sin(theta), sp.cos(theta)
-        th1, th2 = D(theta), DD(theta)
+        th1, th2 = rate(theta), rate(theta, 2)
         inB = lambda v: tuple(v.express(B).components)  # noqa: E731
         v = f.bob.vel(O)
         a = f.bob.acc(O)
@@ -204,23 +200,23 @@ class PendulumParticle(Problem):
         law = m * (l * th2 * b1 + l * th1**2 * b2) - (S * b2 - m * g * i2)
         return [
             Published("inertial (1), (2)", "equation",
-                      (m * DD(x) + S * s, -m * DD(y) - S * c + m * g),
+                      (m * rate(x, 2) + S * s, -m * rate(y, 2) - S * c + m * g),
                       where="Pendulum - inertial: i1 and i2 components",
                       coordinates=inertial),
-            Published("x, x'", "expression", (l * s, l * c * th1), (x, D(x)),
+            Published("x, x'", "expression", (l * s, l * c * th1), (x, rate(x)),
                       where="Pendulum - inertial", coordinates=inertial),
-            Published("x''", "expression", (-l * c * th2 - l * s * th1**2,), (DD(x),),
+            Published("x''", "expression", (-l * c * th2 - l * s * th1**2,), (rate(x, 2),),
                       where="Pendulum - inertial: WRONG, -l cos(theta) theta''; it is "
                       "+l cos(theta) theta''", coordinates=inertial),
             Published("constraint, 1st derivative", "equation",
-                      (2 * D(x) * DD(x) + 2 * D(y) * DD(y),),
+                      (2 * rate(x) * rate(x, 2) + 2 * rate(y) * rate(y, 2),),
                       where="Differential index II: WRONG as extracted, 2 x' x'' + 2 y' y''; "
                       "the derivative of x^2 + y^2 is 2 x x' + 2 y y'", coordinates=inertial),
             Published("constraint, 2nd derivative", "equation",
-                      (D(x)**2 + x * DD(x) + D(y)**2 + y * DD(y),),
+                      (rate(x)**2 + x * rate(x, 2) + rate(y)**2 + y * rate(y, 2),),
                       where="Differential index II", coordinates=inertial),
             Published("rod force from the 2nd derivative", "expression",
-                      (m * l * (D(x)**2 + D(y)**2 + y * g) / (x**2 + y**2),), (S,),
+                      (m * l * (rate(x)**2 + rate(y)**2 + y * g) / (x**2 + y**2),), (S,),
                       where="Differential index II, result", coordinates=inertial),
             Published("velocity, body", "expression", inB(l * th1 * b1), inB(v),
                       where="Pendulum - body I: theta' b3 x (-l b2)"),

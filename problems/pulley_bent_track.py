@@ -75,12 +75,10 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate,
-                      rot_z, t, thin_disk)
-from dualmech.model.dimensions import (ACCELERATION, ANGLE, DAMPING, FORCE, FREQUENCY, LENGTH, MASS,
-                                      STIFFNESS)
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, RigidBody, coordinate, rate, rot_z, t,
+                      thin_disk, ACCELERATION, ANGLE, DAMPING, FORCE, FREQUENCY, LENGTH, MASS,
+                      STIFFNESS)
 
 __all__ = ["PulleyBentTrack", "PROBLEMS", "scene", "hand_reactions", "drive", "M1", "M2", "m",
            "k", "c", "r", "theta0", "g", "F0", "omega", "x"]
@@ -91,8 +89,6 @@ x = coordinate("x")
 x1, x2, phi = coordinate("x1"), coordinate("x2"), coordinate("phi")
 y1, y2 = coordinate("y1"), coordinate("y2")
 drive = F0 * sp.cos(omega * t)   # F(t)
-
-D = lambda q, n=1: q.diff(t, n)  # noqa: E731
 
 
 def scene() -> SimpleNamespace:
@@ -112,8 +108,8 @@ def scene() -> SimpleNamespace:
 
 def hand_reactions() -> dict:
     """``{name: expression}`` by hand, in ``x, x', x''`` (module docstring)."""
-    T1 = M1 * D(x, 2) + c * D(x) + k * x
-    return {"T1": T1, "T2": T1 + m * D(x, 2) / 2, "N1": M1 * g,
+    T1 = M1 * rate(x, 2) + c * rate(x) + k * x
+    return {"T1": T1, "T2": T1 + m * rate(x, 2) / 2, "N1": M1 * g,
             "N2": M2 * g * sp.cos(theta0) - drive * sp.sin(theta0)}
 
 
@@ -168,7 +164,7 @@ class PulleyBentTrack(Problem):
                          description="two sliders and the pulley, each a free body")
         ne.gravity(-g * O.y)
         ne.linear_spring("spring", s.mass1, k, x, O.x)
-        ne.linear_damper("dashpot", s.mass1, c, D(x), O.x)
+        ne.linear_damper("dashpot", s.mass1, c, rate(x), O.x)
         ne.force("F(t)", s.mass2, drive * O.x)
         ne.reaction("N1", s.mass1, O.y)
         ne.reaction("N2", s.mass2, S.y)
@@ -185,12 +181,12 @@ class PulleyBentTrack(Problem):
     def lagrange(self) -> EquationSet:
         """``T``, ``V``, ``R`` and ``Xi_x`` by hand, as the source writes them."""
         lg = Lagrangian(coordinates=[x], description="T, V, R and Xi by hand")
-        lg.kinetic("T of M1", M1 * D(x)**2 / 2)
-        lg.kinetic("T of M2", M2 * D(x)**2 / 2)
-        lg.kinetic("T of pulley", (m * r**2 / 2) * (D(x) / r)**2 / 2)
+        lg.kinetic("T of M1", M1 * rate(x)**2 / 2)
+        lg.kinetic("T of M2", M2 * rate(x)**2 / 2)
+        lg.kinetic("T of pulley", (m * r**2 / 2) * (rate(x) / r)**2 / 2)
         lg.spring("spring", k, x)
         lg.potential("gravity", -M2 * g * x * sp.sin(theta0))
-        lg.damper("dashpot", c, D(x))
+        lg.damper("dashpot", c, rate(x))
         lg.generalized_force("F(t)", [drive * sp.cos(theta0)])
         return lg.equations()
 
@@ -199,11 +195,11 @@ class PulleyBentTrack(Problem):
         q = [x1, x2, phi, y1, y2]
         lg = Lagrangian("multiplier", coordinates=q,
                         description="string and tracks closed by multipliers")
-        lg.kinetic("T of M1", M1 * (D(x1)**2 + D(y1)**2) / 2)
-        lg.kinetic("T of M2", M2 * (D(x2)**2 + D(y2)**2) / 2)
-        lg.kinetic("T of pulley", m * r**2 * D(phi)**2 / 4)
+        lg.kinetic("T of M1", M1 * (rate(x1)**2 + rate(y1)**2) / 2)
+        lg.kinetic("T of M2", M2 * (rate(x2)**2 + rate(y2)**2) / 2)
+        lg.kinetic("T of pulley", m * r**2 * rate(phi)**2 / 4)
         lg.spring("spring", k, x1)
-        lg.damper("dashpot", c, D(x1))
+        lg.damper("dashpot", c, rate(x1))
         s0, c0 = sp.sin(theta0), sp.cos(theta0)
         lg.potential("gravity", M1 * g * y1 + M2 * g * (-x2 * s0 + y2 * c0))
         # F(t) I at M2 = x2 e + y2 n: Q = F I . d(M2)/dq
@@ -218,7 +214,7 @@ class PulleyBentTrack(Problem):
     def published(self) -> list[Published]:
         s = scene()
         O = s.O
-        x1d, x2d = D(x), D(x, 2)
+        x1d, x2d = rate(x), rate(x, 2)
         T = sum(b.kinetic_energy(O) for b in (s.mass1, s.mass2, s.pulley))
         V = k * x**2 / 2 + M2 * g * s.p2.pos_from(Point.origin(O)).dot(O.y)
         Xi = ((-c * x1d * O.x).dot(s.p1.vel(O).diff(x1d, O))

@@ -103,11 +103,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate,
-                      rot_z, t)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, RigidBody, coordinate, rate, rot_z,
+                      ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS)
 
 __all__ = ["RestrainedPendulum", "RestrainedPendulumHorizontal", "PROBLEMS", "hand_reactions",
            "hand_reactions_horizontal", "m", "l", "k", "c", "a", "b", "g", "theta", "u", "v"]
@@ -116,13 +114,10 @@ m, l, k, c, a, b, g = sp.symbols("m l k c a b g", positive=True)
 theta = coordinate("theta")
 u, v = coordinate("u"), coordinate("v")  # pivot displacement, multiplier model only
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
-
 
 def hand_reactions(thdd) -> dict:
     """``{"H": ..., "V": ...}`` of the source's model (tangential elements), given ``theta''``."""
-    s, co, thd = sp.sin(theta), sp.cos(theta), D(theta)
+    s, co, thd = sp.sin(theta), sp.cos(theta), rate(theta)
     tangential = k * b * theta + c * a * thd
     return {"H": tangential * co + m * l * (thdd * co - thd**2 * s),
             "V": m * g + tangential * s + m * l * (thdd * s + thd**2 * co)}
@@ -130,7 +125,7 @@ def hand_reactions(thdd) -> dict:
 
 def hand_reactions_horizontal(thdd) -> dict:
     """``{"H": ..., "V": ...}`` of the horizontal variant, given the true ``theta''``."""
-    s, co, thd = sp.sin(theta), sp.cos(theta), D(theta)
+    s, co, thd = sp.sin(theta), sp.cos(theta), rate(theta)
     return {"H": k * b * s + c * a * thd * co + m * l * (thdd * co - thd**2 * s),
             "V": m * g + m * l * (thdd * s + thd**2 * co)}
 
@@ -187,7 +182,7 @@ class RestrainedPendulum(Problem):
     def _elements(self, sc) -> tuple:
         """``(spring travel, its direction, dashpot rate, its direction)`` on the link: here
         along the arc (the variant overrides this)."""
-        return b * theta, sc.A.x, a * D(theta), sc.A.x
+        return b * theta, sc.A.x, a * rate(theta), sc.A.x
 
     def newton_euler(self) -> EquationSet:
         """Link + bob: ``sum F = m a_B`` on ``i`` and ``j``, moments about the pivot on ``k``."""
@@ -196,9 +191,9 @@ class RestrainedPendulum(Problem):
         ne = NewtonEuler("newton_euler", coordinates=[theta], ground=O,
                          description="free-body diagram of link and bob together")
         ne.gravity(-g * O.y, bodies=[sc.bob])
-        travel, along_s, rate, along_d = self._elements(sc)
+        travel, along_s, speed, along_d = self._elements(sc)
         ne.linear_spring("spring", sc.link, k, travel, along_s, at=sc.S)
-        ne.linear_damper("dashpot", sc.link, c, rate, along_d, at=sc.D)
+        ne.linear_damper("dashpot", sc.link, c, speed, along_d, at=sc.D)
         ne.reaction("H", sc.link, O.x, at=sc.pivot)
         ne.reaction("V", sc.link, O.y, at=sc.pivot)
         system = [sc.link, sc.bob]
@@ -212,10 +207,10 @@ class RestrainedPendulum(Problem):
         """The source's ``T``, ``U`` and ``R`` (arc-length spring and dashpot)."""
         lg = Lagrangian("lagrange", coordinates=[theta],
                         description="the source's T, U, R: spring travel b th, dashpot rate a th'")
-        lg.kinetic("T of bob", m * (l * D(theta))**2 / 2)
+        lg.kinetic("T of bob", m * (l * rate(theta))**2 / 2)
         lg.potential("gravity", m * g * l * (1 - sp.cos(theta)))
         lg.spring("spring", k, b * theta)
-        lg.damper("dashpot", c, a * D(theta))
+        lg.damper("dashpot", c, a * rate(theta))
         return lg.equations()
 
     def multiplier(self) -> EquationSet:
@@ -224,10 +219,10 @@ class RestrainedPendulum(Problem):
         lg = Lagrangian("multiplier", coordinates=[theta, u, v],
                         description="pivot freed, closed again by two multipliers")
         bob = sp.Matrix([u + l * sp.sin(theta), v - l * sp.cos(theta)])
-        lg.kinetic("T of bob", m * (D(bob).T * D(bob))[0, 0] / 2)
+        lg.kinetic("T of bob", m * (rate(bob).T * rate(bob))[0, 0] / 2)
         lg.potential("gravity", m * g * bob[1])
         s, co = sp.sin(theta), sp.cos(theta)
-        for key, force, arm in (("spring", k * b * theta, b), ("dashpot", c * a * D(theta), a)):
+        for key, force, arm in (("spring", k * b * theta, b), ("dashpot", c * a * rate(theta), a)):
             # -F A.x at distance `arm`: virtual work -F (cos th du + sin th dv + arm dth)
             lg.generalized_force(key, [-force * arm, -force * co, -force * s])
         lg.constraint("H", u)
@@ -244,15 +239,15 @@ class RestrainedPendulum(Problem):
         M, C, K = self.model("lagrange").linearize()
         where = "Example 12"
         return [
-            Published("T", "expression", (m * (l * D(theta))**2 / 2,),
+            Published("T", "expression", (m * (l * rate(theta))**2 / 2,),
                       (sc.bob.kinetic_energy(O),), where=where),
-            Published("R", "expression", (c * (a * D(theta))**2 / 2,), (c * speed_D**2 / 2,),
+            Published("R", "expression", (c * (a * rate(theta))**2 / 2,), (c * speed_D**2 / 2,),
                       where=where),
             Published("U", "expression",
                       (m * g * l - m * g * l * sp.cos(theta) + k * (b * theta)**2 / 2,),
                       (m * g * height_B + k * arc_S**2 / 2,), where=where),
             Published("equation of motion", "motion",
-                      (m * l**2 * DD(theta) + c * a**2 * D(theta) + m * g * l * sp.sin(theta)
+                      (m * l**2 * rate(theta, 2) + c * a**2 * rate(theta) + m * g * l * sp.sin(theta)
                        + k * b**2 * theta,), where=where),
             Published("linearised equation: M, C, K", "expression",
                       (m * l**2, c * a**2, m * g * l + k * b**2),
@@ -290,10 +285,10 @@ class RestrainedPendulumHorizontal(RestrainedPendulum):
         """``T``, ``U`` and ``R`` by hand, horizontal spring and dashpot."""
         lg = Lagrangian("lagrange", coordinates=[theta],
                         description="T, U, R with the spring and dashpot horizontal")
-        lg.kinetic("T of bob", m * (l * D(theta))**2 / 2)
+        lg.kinetic("T of bob", m * (l * rate(theta))**2 / 2)
         lg.potential("gravity", m * g * l * (1 - sp.cos(theta)))
         lg.spring("spring", k, b * sp.sin(theta))
-        lg.damper("dashpot", c, a * D(theta) * sp.cos(theta))
+        lg.damper("dashpot", c, a * rate(theta) * sp.cos(theta))
         return lg.equations()
 
     def multiplier(self) -> EquationSet:
@@ -301,10 +296,10 @@ class RestrainedPendulumHorizontal(RestrainedPendulum):
         lg = Lagrangian("multiplier", coordinates=[theta, u, v],
                         description="pivot freed, closed again by two multipliers")
         bob = sp.Matrix([u + l * sp.sin(theta), v - l * sp.cos(theta)])
-        lg.kinetic("T of bob", m * (D(bob).T * D(bob))[0, 0] / 2)
+        lg.kinetic("T of bob", m * (rate(bob).T * rate(bob))[0, 0] / 2)
         lg.potential("gravity", m * g * bob[1])
         lg.spring("spring", k, u + b * sp.sin(theta))
-        lg.damper("dashpot", c, D(u) + a * D(theta) * sp.cos(theta))
+        lg.damper("dashpot", c, rate(u) + a * rate(theta) * sp.cos(theta))
         lg.constraint("H", u)
         lg.constraint("V", v)
         return lg.equations()
@@ -319,9 +314,9 @@ class RestrainedPendulumHorizontal(RestrainedPendulum):
         M, C, K = self.model("lagrange").linearize()
         where = "Example 12, read with horizontal elements"
         return [
-            Published("T", "expression", (m * (l * D(theta))**2 / 2,),
+            Published("T", "expression", (m * (l * rate(theta))**2 / 2,),
                       (sc.bob.kinetic_energy(O),), where=where),
-            Published("R", "expression", (c * (a * D(theta))**2 / 2,), (c * rate_D**2 / 2,),
+            Published("R", "expression", (c * (a * rate(theta))**2 / 2,), (c * rate_D**2 / 2,),
                       where=where + ": WRONG for this reading beyond first order, the "
                       "dashpot's rate is a th' cos(th)"),
             Published("U", "expression",
@@ -330,7 +325,7 @@ class RestrainedPendulumHorizontal(RestrainedPendulum):
                       where=where + ": WRONG for this reading beyond first order, the "
                       "spring's travel is b sin(th)"),
             Published("equation of motion", "motion",
-                      (m * l**2 * DD(theta) + c * a**2 * D(theta) + m * g * l * sp.sin(theta)
+                      (m * l**2 * rate(theta, 2) + c * a**2 * rate(theta) + m * g * l * sp.sin(theta)
                        + k * b**2 * theta,),
                       where=where + ": WRONG for this reading beyond first order; exact: "
                       "k b^2 sin(th) cos(th), c a^2 th' cos^2(th)"),

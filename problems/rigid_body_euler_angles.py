@@ -81,10 +81,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_y, rot_z, t
-from dualmech.model.dimensions import ANGLE, INERTIA, TORQUE
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
+                      Problem, Published, RigidBody, coordinate, rate, rot_y, rot_z, ANGLE,
+                      INERTIA, TORQUE)
 
 __all__ = ["RigidBodyEulerAngles", "PROBLEMS", "frames", "body_rates", "A", "B", "C", "Q1",
            "Q2", "Q3", "phi", "theta", "psi"]
@@ -93,8 +92,6 @@ A, B, C = sp.symbols("A B C", positive=True)
 Q1, Q2, Q3 = sp.symbols("Q1 Q2 Q3", real=True)
 phi, theta, psi = coordinate("phi"), coordinate("theta"), coordinate("psi")
 _mass = sp.Symbol("m", positive=True)  # never enters: moments about the mass centre
-
-_d = lambda q, n=1: q.diff(t, n)  # noqa: E731
 
 
 def frames() -> SimpleNamespace:
@@ -108,9 +105,9 @@ def frames() -> SimpleNamespace:
 
 def body_rates() -> tuple:
     """``(w1, w2, w3)`` written by hand from the z-y-z angles (source, section 5)."""
-    return (_d(theta) * sp.sin(psi) - _d(phi) * sp.sin(theta) * sp.cos(psi),
-            _d(theta) * sp.cos(psi) + _d(phi) * sp.sin(theta) * sp.sin(psi),
-            _d(psi) + _d(phi) * sp.cos(theta))
+    return (rate(theta) * sp.sin(psi) - rate(phi) * sp.sin(theta) * sp.cos(psi),
+            rate(theta) * sp.cos(psi) + rate(phi) * sp.sin(theta) * sp.sin(psi),
+            rate(psi) + rate(phi) * sp.cos(theta))
 
 
 class RigidBodyEulerAngles(Problem):
@@ -170,16 +167,16 @@ class RigidBodyEulerAngles(Problem):
         R3 = sp.Matrix([[sp.cos(psi), sp.sin(psi), 0], [-sp.sin(psi), sp.cos(psi), 0],
                         [0, 0, 1]])
         w = tuple(f.b.ang_vel_in(f.O).express(f.b).components)
-        spin = (R3 * sp.Matrix([0, 0, _d(psi)]) + R3 * R2 * sp.Matrix([0, _d(theta), 0])
-                + R3 * R2 * R1 * sp.Matrix([0, 0, _d(phi)]))
-        w1, w2, w3 = (_d(theta) * sp.sin(psi) - _d(phi) * st * sp.cos(psi),
-                      _d(theta) * sp.cos(psi) + _d(phi) * st * sp.sin(psi),
-                      _d(psi) + _d(phi) * ct)
+        spin = (R3 * sp.Matrix([0, 0, rate(psi)]) + R3 * R2 * sp.Matrix([0, rate(theta), 0])
+                + R3 * R2 * R1 * sp.Matrix([0, 0, rate(phi)]))
+        w1, w2, w3 = (rate(theta) * sp.sin(psi) - rate(phi) * st * sp.cos(psi),
+                      rate(theta) * sp.cos(psi) + rate(phi) * st * sp.sin(psi),
+                      rate(psi) + rate(phi) * ct)
         body = RigidBody("body", _mass, f.G, f.b, sp.diag(A, B, C))
         T_ref = body.kinetic_energy(f.O)
-        euler = (A * _d(w1) - (B - C) * w2 * w3 - Q1,
-                 B * _d(w2) - (C - A) * w3 * w1 - Q2,
-                 C * _d(w3) - (A - B) * w1 * w2 - Q3)
+        euler = (A * rate(w1) - (B - C) * w2 * w3 - Q1,
+                 B * rate(w2) - (C - A) * w3 * w1 - Q2,
+                 C * rate(w3) - (A - B) * w1 * w2 - Q3)
         return [
             Published("(5) Euler's equations", "motion", euler,
                       where="section 5, first display: A w1' - (B - C) w2 w3 = Q1 and cyclic, "
@@ -200,7 +197,7 @@ class RigidBodyEulerAngles(Problem):
             Published("(5) kinetic energy", "expression",
                       ((A * w1**2 + B * w2**2 + C * w3**2) / 2,), (T_ref,),
                       where="section 5: T = (A w1^2 + B w2^2 + C w3^2)/2"),
-            Published("(5) dT/dpsi'", "expression", (C * w3,), (T_ref.diff(_d(psi)),),
+            Published("(5) dT/dpsi'", "expression", (C * w3,), (T_ref.diff(rate(psi)),),
                       where="section 5, psi derivation: '= C w3' (the extraction drops the dot)"),
         ]
 

@@ -65,11 +65,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_z, t,
-                      thin_rod)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
+                      Problem, Published, Reaction, RigidBody, coordinate, rate, rot_z, thin_rod,
+                      ACCELERATION, ANGLE, FORCE, LENGTH, MASS)
 
 __all__ = ["RigidRodPendulum", "PROBLEMS", "frames", "hand_reactions", "m", "l", "g", "theta"]
 
@@ -77,13 +75,10 @@ m, l, g = sp.symbols("m l g", positive=True)
 theta = coordinate("theta")
 xp, yp = coordinate("xp"), coordinate("yp")
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
-
 
 def hand_reactions() -> dict:
     """``{"R_x": ..., "R_y": ...}`` solved by hand (module docstring)."""
-    s, c, w2 = sp.sin(theta), sp.cos(theta), D(theta)**2
+    s, c, w2 = sp.sin(theta), sp.cos(theta), rate(theta)**2
     return {"R_x": -sp.Rational(3, 4) * m * g * s * c - m * l / 2 * w2 * s,
             "R_y": m * g * (1 - sp.Rational(3, 4) * s**2) + m * l / 2 * w2 * c}
 
@@ -142,8 +137,8 @@ class RigidRodPendulum(Problem):
     def lagrange(self) -> EquationSet:
         """The source's ``T`` and ``U``, by hand."""
         lg = Lagrangian("lagrange", coordinates=[theta], description="T and U of the rod by hand")
-        lg.kinetic("T of rod, translation", m * (l / 2 * D(theta))**2 / 2)
-        lg.kinetic("T of rod, rotation about C", m * l**2 / 12 * D(theta)**2 / 2)
+        lg.kinetic("T of rod, translation", m * (l / 2 * rate(theta))**2 / 2)
+        lg.kinetic("T of rod, rotation about C", m * l**2 / 12 * rate(theta)**2 / 2)
         lg.potential("gravity", -m * g * l / 2 * sp.cos(theta))
         return lg.equations()
 
@@ -152,8 +147,8 @@ class RigidRodPendulum(Problem):
         C = sp.Matrix([xp + l / 2 * sp.sin(theta), yp - l / 2 * sp.cos(theta)])
         lg = Lagrangian("multiplier", coordinates=[theta, xp, yp],
                         description="the rod's end freed, held at O by two multipliers")
-        lg.kinetic("T of rod, translation", m * (D(C).T * D(C))[0, 0] / 2)
-        lg.kinetic("T of rod, rotation about C", m * l**2 / 12 * D(theta)**2 / 2)
+        lg.kinetic("T of rod, translation", m * (rate(C).T * rate(C))[0, 0] / 2)
+        lg.kinetic("T of rod, rotation about C", m * l**2 / 12 * rate(theta)**2 / 2)
         lg.potential("gravity", m * g * C[1])
         lg.constraint("R_x", xp)
         lg.constraint("R_y", yp)
@@ -162,7 +157,7 @@ class RigidRodPendulum(Problem):
     def published(self) -> list[Published]:
         f = frames()
         O, B = f.O, f.B
-        th1, th2 = D(theta), DD(theta)
+        th1, th2 = rate(theta), rate(theta, 2)
         inB = lambda v: tuple(v.express(B).components)  # noqa: E731
         Iz = f.rod.inertia[2, 2]
         T = f.rod.kinetic_energy(O)

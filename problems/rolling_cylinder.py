@@ -78,11 +78,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RigidBody, coordinate,
-                      rot_z, t, thin_disk)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, RigidBody, coordinate, rate, rot_z,
+                      thin_disk, ACCELERATION, ANGLE, FORCE, LENGTH, MASS)
 
 __all__ = ["RollingCylinder", "PROBLEMS", "scene", "hand_reactions", "M", "m", "R", "r", "g",
            "theta", "xc", "yc"]
@@ -90,8 +88,6 @@ __all__ = ["RollingCylinder", "PROBLEMS", "scene", "hand_reactions", "M", "m", "
 M, m, R, r, g = sp.symbols("M m R r g", positive=True)
 theta = coordinate("theta")
 xc, yc = coordinate("x_c"), coordinate("y_c")   # centre of the cylinder, multiplier model only
-
-D = lambda q, n=1: q.diff(t, n)  # noqa: E731
 
 
 def scene() -> SimpleNamespace:
@@ -110,7 +106,7 @@ def scene() -> SimpleNamespace:
 
 def hand_reactions() -> dict:
     """``{"F": ..., "N": ...}`` by hand, in ``theta, theta', theta''`` (module docstring)."""
-    th1, th2 = D(theta), D(theta, 2)
+    th1, th2 = rate(theta), rate(theta, 2)
     s, c = sp.sin(theta), sp.cos(theta)
     return {"F": -(M + m) * R * th2 + m * r * (th2 * c - th1**2 * s),
             "N": (M + m) * g + m * r * (th2 * s + th1**2 * c)}
@@ -167,8 +163,8 @@ class RollingCylinder(Problem):
     def lagrange(self) -> EquationSet:
         """``T`` and ``V`` by hand, rolling built in (``v_C = -R theta'``)."""
         lg = Lagrangian(coordinates=[theta], description="T and V by hand")
-        lg.kinetic("T of cylinder", M * (R * D(theta))**2 / 2 + M * R**2 * D(theta)**2 / 4)
-        lg.kinetic("T of m", m * D(theta)**2 * (R**2 + r**2 - 2 * r * R * sp.cos(theta)) / 2)
+        lg.kinetic("T of cylinder", M * (R * rate(theta))**2 / 2 + M * R**2 * rate(theta)**2 / 4)
+        lg.kinetic("T of m", m * rate(theta)**2 * (R**2 + r**2 - 2 * r * R * sp.cos(theta)) / 2)
         lg.potential("gravity", m * g * (R - r * sp.cos(theta)))
         return lg.equations()
 
@@ -177,8 +173,8 @@ class RollingCylinder(Problem):
         lg = Lagrangian("multiplier", coordinates=[theta, xc, yc],
                         description="contact freed, closed by multipliers F and N")
         P = sp.Matrix([xc + r * sp.sin(theta), yc - r * sp.cos(theta)])
-        lg.kinetic("T of cylinder", M * (D(xc)**2 + D(yc)**2) / 2 + M * R**2 * D(theta)**2 / 4)
-        lg.kinetic("T of m", m * (D(P).T * D(P))[0, 0] / 2)
+        lg.kinetic("T of cylinder", M * (rate(xc)**2 + rate(yc)**2) / 2 + M * R**2 * rate(theta)**2 / 4)
+        lg.kinetic("T of m", m * (rate(P).T * rate(P))[0, 0] / 2)
         lg.potential("gravity", M * g * yc + m * g * P[1])
         lg.constraint("F", xc + R * theta)
         lg.constraint("N", yc - R)
@@ -190,7 +186,7 @@ class RollingCylinder(Problem):
         O = s.O
         I, J = O.x, O.y
         st, ct = sp.sin(theta), sp.cos(theta)
-        th1, th2 = D(theta), D(theta, 2)
+        th1, th2 = rate(theta), rate(theta, 2)
         inO = lambda v: tuple(v.express(O).components[:2])  # noqa: E731
         T = s.cylinder.kinetic_energy(O) + s.mass.kinetic_energy(O)
         V = m * g * s.P.pos_from(s.o).dot(J)       # the source's -m r_P . g

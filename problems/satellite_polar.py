@@ -59,17 +59,14 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_z, t
-from dualmech.model.dimensions import ANGLE, LENGTH, MASS, TIME
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, coordinate, rate, rot_z, ANGLE, LENGTH, MASS,
+                      TIME)
 
 __all__ = ["SatellitePolar", "PROBLEMS", "frames", "angular_momentum", "m", "mu", "r", "theta"]
 
 m, mu = sp.symbols("m mu", positive=True)
 r, theta = coordinate("r"), coordinate("theta")
-
-_d = lambda q, n=1: q.diff(t, n)  # noqa: E731
 
 
 def frames() -> SimpleNamespace:
@@ -82,7 +79,7 @@ def frames() -> SimpleNamespace:
 
 def angular_momentum() -> sp.Expr:
     """``p_theta = dT/dtheta' = m r^2 theta'`` (by hand)."""
-    return m * r**2 * _d(theta)
+    return m * r**2 * rate(theta)
 
 
 class SatellitePolar(Problem):
@@ -121,7 +118,7 @@ class SatellitePolar(Problem):
         """``T`` and ``V`` by hand (module docstring)."""
         lg = Lagrangian(coordinates=[r, theta], description="T = m(r'^2 + r^2 theta'^2)/2, "
                                                              "V = -m mu / r")
-        lg.kinetic("T of satellite", m * (_d(r)**2 + r**2 * _d(theta)**2) / 2)
+        lg.kinetic("T of satellite", m * (rate(r)**2 + r**2 * rate(theta)**2) / 2)
         lg.potential("gravity", -m * mu / r)
         return lg.equations()
 
@@ -131,7 +128,7 @@ class SatellitePolar(Problem):
         sat = Particle("satellite", m, f.sat)
         return [
             Published("(3) kinetic energy", "expression",
-                      (sp.Rational(1, 2) * m * (r**2 * _d(theta)**2 + _d(r)**2),),
+                      (sp.Rational(1, 2) * m * (r**2 * rate(theta)**2 + rate(r)**2),),
                       (sat.kinetic_energy(f.O),),
                       where="examples, 3 Satellite: T = 1/2 m (r^2 theta'^2 + r'^2) (the "
                       "extraction shows 2/2)"),

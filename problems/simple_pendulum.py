@@ -60,10 +60,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_z, t
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, coordinate, rate, rot_z, ACCELERATION,
+                      ANGLE, FORCE, LENGTH, MASS)
 
 __all__ = ["SimplePendulum", "PROBLEMS", "M", "a", "g", "theta", "r", "hand_tension"]
 
@@ -71,13 +70,10 @@ M, a, g = sp.symbols("M a g", positive=True)
 theta = coordinate("theta")
 r = coordinate("r")  # distance of the bob from the pivot, only in the multiplier model
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
-
 
 def hand_tension() -> sp.Expr:
     """The string's pull on the bob, solved by hand: ``M (g cos theta + a theta'^2)``."""
-    return M * (g * sp.cos(theta) + a * D(theta)**2)
+    return M * (g * sp.cos(theta) + a * rate(theta)**2)
 
 
 class _Scene:
@@ -141,7 +137,7 @@ class SimplePendulum(Problem):
     def lagrange(self) -> EquationSet:
         """``T = M (a theta')^2/2``, ``V = M g a (1 - cos theta)``, as the source writes them."""
         lg = Lagrangian("lagrange", coordinates=[theta], description="T and V by hand")
-        lg.kinetic("T of bob", M * (a * D(theta))**2 / 2)
+        lg.kinetic("T of bob", M * (a * rate(theta))**2 / 2)
         lg.potential("gravity", M * g * a * (1 - sp.cos(theta)))
         return lg.equations()
 
@@ -149,7 +145,7 @@ class SimplePendulum(Problem):
         """Lagrange in ``(theta, r)`` with the string as the constraint ``a - r = 0``."""
         lg = Lagrangian("multiplier", coordinates=[theta, r],
                         description="the bob freed from the string, held by a multiplier")
-        lg.kinetic("T of bob", M * (D(r)**2 + r**2 * D(theta)**2) / 2)
+        lg.kinetic("T of bob", M * (rate(r)**2 + r**2 * rate(theta)**2) / 2)
         lg.potential("gravity", -M * g * r * sp.cos(theta))
         lg.constraint("T", a - r)
         return lg.equations()
@@ -161,14 +157,14 @@ class SimplePendulum(Problem):
         where = "section 2.2, simple pendulum"
         return [
             # Right: the bob moves on a circle of radius a, |v| = a theta'.
-            Published("T", "expression", (M * (a * D(theta))**2 / 2,),
+            Published("T", "expression", (M * (a * rate(theta))**2 / 2,),
                       (sc.bob.kinetic_energy(sc.O),), where=where),
             # Right: the bob is a (1 - cos theta) above its lowest point.
             Published("V", "expression", (M * g * a * (1 - sp.cos(theta)),), (M * g * height,),
                       where=where),
             # Right.
             Published("equation of motion", "motion",
-                      (M * a**2 * DD(theta) + M * g * a * sp.sin(theta),), where=where),
+                      (M * a**2 * rate(theta, 2) + M * g * a * sp.sin(theta),), where=where),
             # Right: the moment balance about O linearised at theta = 0; it reads
             # tau - dh/dt = 0, Lagrange's equation dh/dt - tau = 0, hence the signs.
             Published("small angles: coefficients of theta'', theta", "expression",
@@ -177,7 +173,7 @@ class SimplePendulum(Problem):
             # Right: h_O . k = M a^2 theta' = dT/dtheta'.
             Published("generalised momentum is the angular momentum", "expression",
                       (sc.bob.angular_momentum(sc.o, sc.O).dot(sc.O.z),),
-                      (sp.diff(M * (a * D(theta))**2 / 2, D(theta)),),
+                      (sp.diff(M * (a * rate(theta))**2 / 2, rate(theta)),),
                       where="section 3.1, stated in words (the formula is missing from the "
                       "extraction): dT/dtheta' equals the angular momentum about the pivot"),
         ]

@@ -54,19 +54,15 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, t
-from dualmech.model.dimensions import DAMPING, FORCE, FREQUENCY, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, coordinate, rate, t, DAMPING, FORCE, FREQUENCY,
+                      LENGTH, MASS, STIFFNESS)
 
 __all__ = ["SpringMassDamper", "PROBLEMS", "forcing", "steady_state", "m", "k", "b", "F0",
            "Omega", "x"]
 
 m, k, b, F0, Omega = sp.symbols("m k b F0 Omega", positive=True)
 x = coordinate("x")
-
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 def forcing() -> sp.Expr:
@@ -89,7 +85,7 @@ def _scene() -> SimpleNamespace:
 def _loads(sc: SimpleNamespace) -> dict:
     """The forces on the block as vectors: spring, dashpot, drive."""
     i = sc.O.x
-    return {"spring": -k * x * i, "dashpot": -b * D(x) * i, "drive": forcing() * i}
+    return {"spring": -k * x * i, "dashpot": -b * rate(x) * i, "drive": forcing() * i}
 
 
 class SpringMassDamper(Problem):
@@ -126,9 +122,9 @@ class SpringMassDamper(Problem):
         """``T``, ``U``, ``R`` and ``Q`` exactly as the source writes them."""
         lg = Lagrangian("lagrange", coordinates=[x],
                         description="T, U, R and Q of Example 11")
-        lg.kinetic("T of block", m * D(x)**2 / 2)
+        lg.kinetic("T of block", m * rate(x)**2 / 2)
         lg.spring("spring", k, x)
-        lg.damper("dashpot", b, D(x))
+        lg.damper("dashpot", b, rate(x))
         lg.generalized_force("drive", [forcing()])
         return lg.equations()
 
@@ -143,19 +139,19 @@ class SpringMassDamper(Problem):
         spring_f = loads["spring"].dot(i)
         damper_f = loads["dashpot"].dot(i)
         U_ref = -sp.integrate(spring_f.subs(x, v), (v, 0, x))
-        R_ref = -sp.integrate(damper_f.subs(D(x), v), (v, 0, D(x)))
-        Q_ref = loads["drive"].dot(sc.P.vel(sc.O).diff(D(x), sc.O))
+        R_ref = -sp.integrate(damper_f.subs(rate(x), v), (v, 0, rate(x)))
+        Q_ref = loads["drive"].dot(sc.P.vel(sc.O).diff(rate(x), sc.O))
         where = "Example 11 (f(t) represented by F0 cos(Omega t))"
         return [
-            Published("T", "expression", (m * D(x)**2 / 2,),
+            Published("T", "expression", (m * rate(x)**2 / 2,),
                       (sc.block.kinetic_energy(sc.O),), where=where),
             Published("U", "expression", (k * x**2 / 2,), (U_ref,), where=where),
-            Published("R", "expression", (b * D(x)**2 / 2,), (R_ref,), where=where),
+            Published("R", "expression", (b * rate(x)**2 / 2,), (R_ref,), where=where),
             Published("Q", "expression", (forcing(),), (Q_ref,), where=where),
-            Published("dR/dx', dU/dx", "expression", (b * D(x), k * x),
+            Published("dR/dx', dU/dx", "expression", (b * rate(x), k * x),
                       (-damper_f, -spring_f), where=where),
             Published("equation of motion", "motion",
-                      (m * DD(x) + b * D(x) + k * x - forcing(),), where=where),
+                      (m * rate(x, 2) + b * rate(x) + k * x - forcing(),), where=where),
         ]
 
 

@@ -86,10 +86,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_y, rot_z, t
-from dualmech.model.dimensions import ACCELERATION, ANGLE, INERTIA, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
+                      Problem, Published, RigidBody, coordinate, rate, rot_y, rot_z, ACCELERATION,
+                      ANGLE, INERTIA, LENGTH, MASS)
 from dualmech.model.steady import steady_rates
 
 __all__ = ["SymmetricTop", "PROBLEMS", "frames", "steady_precession_rates", "momenta",
@@ -97,8 +96,6 @@ __all__ = ["SymmetricTop", "PROBLEMS", "frames", "steady_precession_rates", "mom
 
 A, C, M, g, h = sp.symbols("A C M g h", positive=True)
 phi, theta, psi = coordinate("phi"), coordinate("theta"), coordinate("psi")
-
-_d = lambda q, n=1: q.diff(t, n)  # noqa: E731
 
 
 def frames() -> SimpleNamespace:
@@ -118,8 +115,8 @@ def _top(f: SimpleNamespace) -> RigidBody:
 
 def momenta() -> tuple:
     """``(p_phi, p_psi)``: the momenta of the ignorable angles, by hand from T."""
-    w3 = _d(psi) + _d(phi) * sp.cos(theta)
-    return A * _d(phi) * sp.sin(theta)**2 + C * w3 * sp.cos(theta), C * w3
+    w3 = rate(psi) + rate(phi) * sp.cos(theta)
+    return A * rate(phi) * sp.sin(theta)**2 + C * w3 * sp.cos(theta), C * w3
 
 
 def steady_precession_rates(eqs: EquationSet, values: dict | None = None) -> list:
@@ -132,7 +129,7 @@ def steady_precession_rates(eqs: EquationSet, values: dict | None = None) -> lis
     >>> sorted(map(str, rates))
     ['0', 'C*Derivative(psi(t), t)/((A - C)*cos(theta(t)))']
     """
-    return [sp.factor(r) for r in steady_rates(eqs, [theta], _d(phi), values)]
+    return [sp.factor(r) for r in steady_rates(eqs, [theta], rate(phi), values)]
 
 
 class SymmetricTop(Problem):
@@ -186,8 +183,8 @@ class SymmetricTop(Problem):
         """T and V by hand (see the module docstring); nothing of the frames is reused."""
         lg = Lagrangian(coordinates=[phi, theta, psi],
                         description="T = A(theta'^2 + phi'^2 sin^2)/2 + C w3^2/2, V = M g h cos")
-        lg.kinetic("T of top", A * (_d(theta)**2 + _d(phi)**2 * sp.sin(theta)**2) / 2
-                   + C * (_d(psi) + _d(phi) * sp.cos(theta))**2 / 2)
+        lg.kinetic("T of top", A * (rate(theta)**2 + rate(phi)**2 * sp.sin(theta)**2) / 2
+                   + C * (rate(psi) + rate(phi) * sp.cos(theta))**2 / 2)
         lg.potential("gravity", M * g * h * sp.cos(theta))
         return lg.equations()
 
@@ -195,9 +192,9 @@ class SymmetricTop(Problem):
     def published(self) -> list[Published]:
         f = frames()
         st = sp.sin(theta)
-        w1 = _d(theta) * sp.sin(psi) - _d(phi) * st * sp.cos(psi)
-        w2 = _d(theta) * sp.cos(psi) + _d(phi) * st * sp.sin(psi)
-        w3 = _d(psi) + _d(phi) * sp.cos(theta)
+        w1 = rate(theta) * sp.sin(psi) - rate(phi) * st * sp.cos(psi)
+        w2 = rate(theta) * sp.cos(psi) + rate(phi) * st * sp.sin(psi)
+        w3 = rate(psi) + rate(phi) * sp.cos(theta)
         return [
             Published("(5) T with A = B", "expression",
                       ((A * w1**2 + A * w2**2 + C * w3**2) / 2,),

@@ -69,19 +69,14 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, t
-from dualmech.model.dimensions import FORCE, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, coordinate, rate, FORCE, LENGTH, MASS)
 
 __all__ = ["TautStringMasses", "PROBLEMS", "m", "P", "a", "x1", "x2", "exact_geometry",
            "segment_lengths", "string_pulls"]
 
 m, P, a = sp.symbols("m P a", positive=True)
 x1, x2 = coordinate("x1"), coordinate("x2")
-
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 class _Scene:
@@ -131,7 +126,7 @@ def exact_geometry() -> EquationSet:
     """
     lg = Lagrangian("exact_geometry", coordinates=[x1, x2],
                     description="constant tension P, exact segment lengths")
-    lg.kinetic("T of masses", m * (D(x1)**2 + D(x2)**2) / 2)
+    lg.kinetic("T of masses", m * (rate(x1)**2 + rate(x2)**2) / 2)
     lg.potential("string", P * (sum(segment_lengths()) - 3 * a))
     return lg.equations()
 
@@ -168,7 +163,7 @@ class TautStringMasses(Problem):
     def lagrange(self) -> EquationSet:
         """``T`` and ``V = P Delta`` as the source writes them."""
         lg = Lagrangian("lagrange", coordinates=[x1, x2], description="V = P Delta, by hand")
-        lg.kinetic("T of masses", m * D(x1)**2 / 2 + m * D(x2)**2 / 2)
+        lg.kinetic("T of masses", m * rate(x1)**2 / 2 + m * rate(x2)**2 / 2)
         lg.potential("string", P / (2 * a) * (x1**2 + (x2 - x1)**2 + x2**2))
         return lg.equations()
 
@@ -201,11 +196,11 @@ class TautStringMasses(Problem):
             Published("U = P Delta", "expression",
                       (P / (2 * a) * (x1**2 + (x2 - x1)**2 + x2**2),), (P * Delta,),
                       where=where),
-            Published("T", "expression", (m * D(x1)**2 / 2 + m * D(x2)**2 / 2,), (T_ref,),
+            Published("T", "expression", (m * rate(x1)**2 / 2 + m * rate(x2)**2 / 2,), (T_ref,),
                       where=where),
             Published("equations of motion", "motion",
-                      (m * DD(x1) + P / a * (x1 - (x2 - x1)),
-                       m * DD(x2) + P / a * (x2 + (x2 - x1))), where=where),
+                      (m * rate(x1, 2) + P / a * (x1 - (x2 - x1)),
+                       m * rate(x2, 2) + P / a * (x2 + (x2 - x1))), where=where),
             # Right: the free-body diagram's equations, linearised, have these matrices.
             Published("mass and stiffness matrices", "expression",
                       (m, 0, 0, m, 2 * P / a, -P / a, -P / a, 2 * P / a),

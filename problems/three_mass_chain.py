@@ -74,10 +74,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, t
-from dualmech.model.dimensions import ACCELERATION, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, coordinate, rate, ACCELERATION, LENGTH, MASS,
+                      STIFFNESS)
 
 __all__ = ["ThreeMassChain", "PROBLEMS", "m1", "m2", "m3", "k1", "k2", "k3", "g",
            "x1", "x2", "x3", "printed_matrices"]
@@ -85,9 +84,6 @@ __all__ = ["ThreeMassChain", "PROBLEMS", "m1", "m2", "m3", "k1", "k2", "k3", "g"
 m1, m2, m3, k1, k2, k3, g = sp.symbols("m1 m2 m3 k1 k2 k3 g", positive=True)
 x1, x2, x3 = coordinate("x1"), coordinate("x2"), coordinate("x3")
 XS = (x1, x2, x3)
-
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 def printed_matrices() -> tuple[sp.Matrix, sp.Matrix]:
@@ -156,7 +152,7 @@ class ThreeMassChain(Problem):
         lg = Lagrangian("lagrange", coordinates=list(XS),
                         description="about the static equilibrium, gravity neglected")
         for i, (mi, q) in enumerate(zip((m1, m2, m3), XS), start=1):
-            lg.kinetic(f"T of mass {i}", mi * D(q)**2 / 2)
+            lg.kinetic(f"T of mass {i}", mi * rate(q)**2 / 2)
         lg.spring("spring 1", k1, x1)
         lg.spring("spring 2", k2, x2 - x1)
         lg.spring("spring 3", k3, x3 - x2)
@@ -168,20 +164,20 @@ class ThreeMassChain(Problem):
         U_ref = sum(k * sc.stretch(i)**2 / 2 for i, k in enumerate((k1, k2, k3), start=1))
         M_ne, _, K_ne = self.model("newton_euler").linearize()
         M, K = printed_matrices()
-        q, qd, qdd = sp.Matrix(XS), sp.Matrix([D(x) for x in XS]), sp.Matrix([DD(x) for x in XS])
+        q, qd, qdd = sp.Matrix(XS), sp.Matrix([rate(x) for x in XS]), sp.Matrix([rate(x, 2) for x in XS])
         where = "section 4, three mass system"
         return [
-            Published("dT/dx_i'", "expression", (m1 * D(x1), m2 * D(x2), m3 * D(x3)),
-                      tuple(T_ref.diff(D(x)) for x in XS), where=where),
+            Published("dT/dx_i'", "expression", (m1 * rate(x1), m2 * rate(x2), m3 * rate(x3)),
+                      tuple(T_ref.diff(rate(x)) for x in XS), where=where),
             Published("dU/dx_i", "expression",
                       (k1 * x1 - k2 * (x2 - x1), k2 * (x2 - x1) - k3 * (x3 - x2),
                        k3 * (x3 - x2)), tuple(U_ref.diff(x) for x in XS), where=where),
-            Published("(1)", "equation", (m1 * DD(x1) + (k1 + k2) * x1 - k2 * x2,),
+            Published("(1)", "equation", (m1 * rate(x1, 2) + (k1 + k2) * x1 - k2 * x2,),
                       where=where + ", equation (1)"),
             Published("(2)", "equation",
-                      (m2 * DD(x2) + (k2 + k3) * x2 - k2 * x1 - k3 * x3,),
+                      (m2 * rate(x2, 2) + (k2 + k3) * x2 - k2 * x1 - k3 * x3,),
                       where=where + ", equation (2)"),
-            Published("(3)", "equation", (m3 * DD(x3) + k3 * (x3 - x2),),
+            Published("(3)", "equation", (m3 * rate(x3, 2) + k3 * (x3 - x2),),
                       where=where + ", equation (3)"),
             Published("matrix form", "motion", tuple(M * qdd + K * q), where=where),
             # Right: the direct form (with gravity) linearised about x = 0 has these matrices.

@@ -80,11 +80,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, RelativeMotion, Vector,
-                      coordinate, rot_x, rot_y, t)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, RelativeMotion, Vector, coordinate,
+                      rate, rot_x, rot_y, ACCELERATION, ANGLE, FORCE, LENGTH, MASS)
 
 __all__ = ["ToyCar", "PROBLEMS", "frames", "coriolis_term", "m", "R", "g", "theta", "phi", "rho"]
 
@@ -93,7 +91,6 @@ theta, phi = coordinate("theta"), coordinate("phi")
 rho = coordinate("rho")  # distance of the car from O, only in the multiplier model
 F_r = sp.Symbol("F_r", real=True)
 
-_d = lambda q, n=1: sp.Derivative(q, (t, n))  # noqa: E731  (q', q'' of a function of t)
 
 
 
@@ -188,7 +185,7 @@ class ToyCar(Problem):
         """
         lg = Lagrangian(coordinates=[theta, phi],
                         description="T and V of the car written by hand")
-        lg.kinetic("T of car", m * R**2 * (_d(theta)**2 + _d(phi)**2 * sp.cos(theta)**2) / 2)
+        lg.kinetic("T of car", m * R**2 * (rate(theta)**2 + rate(phi)**2 * sp.cos(theta)**2) / 2)
         lg.potential("gravity", -m * g * R * sp.cos(theta) * sp.cos(phi))
         return lg.equations()
 
@@ -200,8 +197,8 @@ class ToyCar(Problem):
         """
         lg = Lagrangian("multiplier", coordinates=[theta, phi, rho],
                         description="the car off the track, held on it by a multiplier")
-        lg.kinetic("T of car", m * (_d(rho)**2
-                                    + rho**2 * (_d(theta)**2 + _d(phi)**2 * sp.cos(theta)**2)) / 2)
+        lg.kinetic("T of car", m * (rate(rho)**2
+                                    + rho**2 * (rate(theta)**2 + rate(phi)**2 * sp.cos(theta)**2)) / 2)
         lg.potential("gravity", -m * g * rho * sp.cos(theta) * sp.cos(phi))
         lg.constraint("F_r", R - rho)
         return lg.equations()
@@ -227,7 +224,7 @@ class ToyCar(Problem):
         I, K = O.x, O.z
         iB, jB, kB, kA = B.x, B.y, B.z, A.z
         st, ct, sp_, cp = sp.sin(theta), sp.cos(theta), sp.sin(phi), sp.cos(phi)
-        th1, ph1, th2, ph2 = _d(theta), _d(phi), _d(theta, 2), _d(phi, 2)
+        th1, ph1, th2, ph2 = rate(theta), rate(phi), rate(theta, 2), rate(phi, 2)
         car = Particle("car", m, f.car)
         v = f.car.vel(O)
         a = f.car.acc(O)

@@ -79,10 +79,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_z, t
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, coordinate, rate, rot_z, t,
+                      ACCELERATION, ANGLE, FORCE, LENGTH, MASS)
 
 __all__ = ["TrolleyPendulum", "PROBLEMS", "M", "m", "a", "g", "F", "P", "x", "theta", "X", "r",
            "energies", "hand_generalised_forces", "hand_tension"]
@@ -92,14 +91,11 @@ x, theta = coordinate("x"), coordinate("theta")
 X = coordinate("X")  # horizontal position of the bob (second coordinate option)
 r = coordinate("r")  # distance of the bob from the pivot (multiplier model)
 
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
-
 
 def energies() -> tuple[sp.Expr, sp.Expr]:
     """``(T, V)`` in ``(x, theta)``, by hand (module docstring)."""
     c = sp.cos(theta)
-    T = ((M + m) * D(x)**2 / 2 + m * a * D(x) * D(theta) * c + m * a**2 * D(theta)**2 / 2)
+    T = ((M + m) * rate(x)**2 / 2 + m * a * rate(x) * rate(theta) * c + m * a**2 * rate(theta)**2 / 2)
     return T, -m * g * a * c
 
 
@@ -115,7 +111,7 @@ def hand_generalised_forces(option: str = "x") -> tuple[sp.Expr, sp.Expr]:
 def hand_tension() -> sp.Expr:
     """The rod's pull on the bob in terms of the true ``x''`` (bob's ``arm.y`` balance)."""
     s, c = sp.sin(theta), sp.cos(theta)
-    return m * (a * D(theta)**2 - DD(x) * s) + m * g * c + P * s
+    return m * (a * rate(theta)**2 - rate(x, 2) * s) + m * g * c + P * s
 
 
 class _Scene:
@@ -181,9 +177,9 @@ class TrolleyPendulum(Problem):
         c = sp.cos(theta)
         lg = Lagrangian("lagrange", coordinates=[x, theta],
                         description="coordinate option 1: trolley position and angle")
-        lg.kinetic("T of trolley", M * D(x)**2 / 2)
-        lg.kinetic("T of bob", m * (D(x)**2 + 2 * a * D(x) * D(theta) * c
-                                    + a**2 * D(theta)**2) / 2)
+        lg.kinetic("T of trolley", M * rate(x)**2 / 2)
+        lg.kinetic("T of bob", m * (rate(x)**2 + 2 * a * rate(x) * rate(theta) * c
+                                    + a**2 * rate(theta)**2) / 2)
         lg.potential("gravity", -m * g * a * c)
         lg.generalized_force("F on trolley", [F, 0])       # delta W = F delta x
         lg.generalized_force("P on bob", [P, P * a * c])   # delta W = P delta(x + a sin th)
@@ -194,8 +190,8 @@ class TrolleyPendulum(Problem):
         s, c = sp.sin(theta), sp.cos(theta)
         lg = Lagrangian("bob_coordinates", coordinates=[X, theta],
                         description="coordinate option 2: bob position and angle")
-        lg.kinetic("T of trolley", M * (D(X) - a * D(theta) * c)**2 / 2)
-        lg.kinetic("T of bob", m * (D(X)**2 + a**2 * D(theta)**2 * s**2) / 2)
+        lg.kinetic("T of trolley", M * (rate(X) - a * rate(theta) * c)**2 / 2)
+        lg.kinetic("T of bob", m * (rate(X)**2 + a**2 * rate(theta)**2 * s**2) / 2)
         lg.potential("gravity", -m * g * a * c)
         lg.generalized_force("F on trolley", [F, -F * a * c])  # delta W = F delta(X - a sin th)
         lg.generalized_force("P on bob", [P, 0])               # delta W = P delta X
@@ -206,8 +202,8 @@ class TrolleyPendulum(Problem):
         bob = sp.Matrix([x + r * sp.sin(theta), -r * sp.cos(theta)])
         lg = Lagrangian("multiplier", coordinates=[x, theta, r],
                         description="the bob freed along the rod, held by a multiplier")
-        lg.kinetic("T of trolley", M * D(x)**2 / 2)
-        lg.kinetic("T of bob", m * (D(bob).T * D(bob))[0, 0] / 2)
+        lg.kinetic("T of trolley", M * rate(x)**2 / 2)
+        lg.kinetic("T of bob", m * (rate(bob).T * rate(bob))[0, 0] / 2)
         lg.potential("gravity", m * g * bob[1])
         lg.generalized_force("F on trolley", [F, 0, 0])
         lg.generalized_force("P on bob", [P * bob[0].diff(q) for q in (x, theta, r)])
@@ -220,13 +216,13 @@ class TrolleyPendulum(Problem):
         V = m * g * sc.B.pos_from(sc.pivot).dot(sc.O.y)
         # generalised forces from the loads' virtual work, Q_j = sum F . dv/dq'_j
         loads = ((F * sc.O.x, sc.pivot), (P * sc.O.x, sc.B))
-        Q = [sum(f.dot(pt.vel(sc.O).diff(D(q), sc.O)) for f, pt in loads) for q in (x, theta)]
+        Q = [sum(f.dot(pt.vel(sc.O).diff(rate(q), sc.O)) for f, pt in loads) for q in (x, theta)]
         L = T - V
         form_T, form_L, power = [], [], []
         for q, Qq in zip((x, theta), Q):
-            form_T.append(T.diff(D(q)).diff(t) - T.diff(q) + V.diff(q) - Qq)
-            form_L.append(L.diff(D(q)).diff(t) - L.diff(D(q)) - Qq)
-        power = (T + V).diff(t) - sum(Qq * D(q) for q, Qq in zip((x, theta), Q))
+            form_T.append(T.diff(rate(q)).diff(t) - T.diff(q) + V.diff(q) - Qq)
+            form_L.append(L.diff(rate(q)).diff(t) - L.diff(rate(q)) - Qq)
+        power = (T + V).diff(t) - sum(Qq * rate(q) for q, Qq in zip((x, theta), Q))
         where = "section 2.2, applied to the trolley/pendulum"
         return [
             # Right (printed with '.' for '=').

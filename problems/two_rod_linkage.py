@@ -110,10 +110,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate, rot_z, t
-from dualmech.model.dimensions import ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
+                      Point, Problem, Published, Reaction, coordinate, rate, rot_z, t,
+                      ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS)
 
 __all__ = ["TwoRodLinkage", "PROBLEMS", "scene", "M", "m", "k", "c", "l", "l0", "g", "theta",
            "x", "y", "r"]
@@ -124,8 +123,6 @@ x = coordinate("x")   # the x form's coordinate (and B's freed position in the m
 y = coordinate("y")   # height of M off the shaft, multiplier model only
 r = coordinate("r")   # distance of m from O (rod OA freed), multiplier model only
 F_R = sp.Symbol("F_R", real=True)
-
-D = lambda q, n=1: q.diff(t, n)  # noqa: E731  (q', q'')
 
 
 def scene() -> SimpleNamespace:
@@ -208,33 +205,33 @@ class TwoRodLinkage(Problem):
     def lagrange(self) -> EquationSet:
         """``T``, ``V``, ``R`` in ``theta``, by hand (``x' = -2 l theta' sin(theta)``)."""
         lg = Lagrangian(coordinates=[theta], description="T, V, R in theta, by hand")
-        lg.kinetic("T of m", m * l**2 * D(theta)**2 / 2)
-        lg.kinetic("T of M", 2 * M * l**2 * D(theta)**2 * sp.sin(theta)**2)
+        lg.kinetic("T of m", m * l**2 * rate(theta)**2 / 2)
+        lg.kinetic("T of M", 2 * M * l**2 * rate(theta)**2 * sp.sin(theta)**2)
         lg.potential("gravity", m * g * l * sp.sin(theta))
         lg.spring("spring", k, 2 * l * sp.cos(theta) - l0)
-        lg.dissipation("dashpot", 2 * c * l**2 * D(theta)**2 * sp.sin(theta)**2)
+        lg.dissipation("dashpot", 2 * c * l**2 * rate(theta)**2 * sp.sin(theta)**2)
         return lg.equations()
 
     def lagrange_x(self) -> EquationSet:
         """``T``, ``V``, ``R`` in ``x`` (branch ``sin(theta) > 0``, m above the line)."""
         lg = Lagrangian("lagrange_x", coordinates=[x],
                         description="T, V, R in x; m's height sqrt(D)/2 (m above the line)")
-        lg.kinetic("T of M", M * D(x)**2 / 2)
-        lg.kinetic("T of m", m * l**2 * D(x)**2 / (2 * (4 * l**2 - (l0 + x)**2)))
+        lg.kinetic("T of M", M * rate(x)**2 / 2)
+        lg.kinetic("T of m", m * l**2 * rate(x)**2 / (2 * (4 * l**2 - (l0 + x)**2)))
         lg.potential("gravity", m * g * _branch_height())
         lg.spring("spring", k, x)
-        lg.damper("dashpot", c, D(x))
+        lg.damper("dashpot", c, rate(x))
         return lg.equations()
 
     def multiplier(self) -> EquationSet:
         """Both bars and the shaft as constraints: ``F_L``, ``F_R`` and ``N`` as multipliers."""
         lg = Lagrangian("multiplier", coordinates=[theta, r, x, y],
                         description="bars OA, AB and the shaft as constraints with multipliers")
-        lg.kinetic("T of m", m * (D(r)**2 + r**2 * D(theta)**2) / 2)
-        lg.kinetic("T of M", M * (D(x)**2 + D(y)**2) / 2)
+        lg.kinetic("T of m", m * (rate(r)**2 + r**2 * rate(theta)**2) / 2)
+        lg.kinetic("T of M", M * (rate(x)**2 + rate(y)**2) / 2)
         lg.potential("gravity", m * g * r * sp.sin(theta) + M * g * y)
         lg.spring("spring", k, x)
-        lg.damper("dashpot", c, D(x))
+        lg.damper("dashpot", c, rate(x))
         xB = l0 + x
         lg.constraint("F_L", r - l)
         lg.constraint("F_R", (xB * (xB - 2 * r * sp.cos(theta)) + y * (y - 2 * r * sp.sin(theta))
@@ -248,7 +245,7 @@ class TwoRodLinkage(Problem):
         O = s.O
         I, J = O.x, O.y
         st, ct = sp.sin(theta), sp.cos(theta)
-        th1, th2, x1, x2 = D(theta), D(theta, 2), D(x), D(x, 2)
+        th1, th2, x1, x2 = rate(theta), rate(theta, 2), rate(x), rate(x, 2)
         Dx = 4 * l**2 - (l0 + x)**2
         T = s.bob.kinetic_energy(O) + s.slider.kinetic_energy(O)
         V = m * g * s.pA.pos_from(s.o).dot(J) + k * s.x**2 / 2

@@ -119,11 +119,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Point, RigidBody, coordinate, rot_x, rot_z,
-                      t, thin_disk)
-from dualmech.model.dimensions import ACCELERATION, ANGLE, FORCE, LENGTH, MASS, TORQUE
-from dualmech.model.equations import EquationSet
-from dualmech.model.problem import Coordinate, Parameter, Problem, Published, Reaction
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
+                      Problem, Published, Reaction, RigidBody, coordinate, rate, rot_x, rot_z, t,
+                      thin_disk, ACCELERATION, ANGLE, FORCE, LENGTH, MASS, TORQUE)
 
 __all__ = ["WheelOnPivot", "PROBLEMS", "frames", "direct_form", "m", "a", "l", "g", "tau",
            "phi"]
@@ -134,9 +132,6 @@ phi = coordinate("phi")
 psi, eps = coordinate("psi"), coordinate("eps")
 u_x, u_y, u_z = coordinate("u_x"), coordinate("u_y"), coordinate("u_z")
 F_x, F_y, F_z = sp.symbols("F_x F_y F_z", real=True)
-
-D = lambda q: q.diff(t)  # noqa: E731
-DD = lambda q: q.diff(t, 2)  # noqa: E731
 
 
 def frames() -> SimpleNamespace:
@@ -233,9 +228,9 @@ class WheelOnPivot(Problem):
         """``T`` by hand; the height of G is constant (``V`` drops out)."""
         lg = Lagrangian("lagrange", coordinates=[phi], description="rolling built in: psi' = "
                         "-(l/a) phi'")
-        lg.kinetic("T of wheel, translation", m * (l * D(phi))**2 / 2)
-        lg.kinetic("T of wheel, spin", m * a**2 / 2 * (l / a * D(phi))**2 / 2)
-        lg.kinetic("T of wheel, precession", m * a**2 / 4 * D(phi)**2 / 2)
+        lg.kinetic("T of wheel, translation", m * (l * rate(phi))**2 / 2)
+        lg.kinetic("T of wheel, spin", m * a**2 / 2 * (l / a * rate(phi))**2 / 2)
+        lg.kinetic("T of wheel, precession", m * a**2 / 4 * rate(phi)**2 / 2)
         lg.generalized_force("drive", [tau])
         return lg.equations()
 
@@ -244,9 +239,9 @@ class WheelOnPivot(Problem):
         se, ce = sp.sin(eps), sp.cos(eps)
         lg = Lagrangian("multiplier", coordinates=[phi, psi, eps],
                         description="axle free to tilt, spin free; multipliers F_y, F_z")
-        lg.kinetic("T of wheel, translation", m * l**2 * (D(eps)**2 + D(phi)**2 * ce**2) / 2)
-        lg.kinetic("T of wheel, rotation", m * a**2 / 2 * (D(psi) + D(phi) * se)**2 / 2
-                   + m * a**2 / 4 * (D(eps)**2 + D(phi)**2 * ce**2) / 2)
+        lg.kinetic("T of wheel, translation", m * l**2 * (rate(eps)**2 + rate(phi)**2 * ce**2) / 2)
+        lg.kinetic("T of wheel, rotation", m * a**2 / 2 * (rate(psi) + rate(phi) * se)**2 / 2
+                   + m * a**2 / 4 * (rate(eps)**2 + rate(phi)**2 * ce**2) / 2)
         lg.potential("gravity", m * g * l * se)
         lg.generalized_force("drive", [tau, 0, 0])
         lg.velocity_constraint("F_y", [l * ce + a * se, a, 0])
@@ -263,7 +258,7 @@ class WheelOnPivot(Problem):
         b = -se * i + ce * k                  # up in the wheel's plane
         r_G = u_x * i + u_y * j + u_z * k + l * n
         v_G = r_G.diff(t)
-        w = D(phi) * k - D(eps) * j + D(psi) * n
+        w = rate(phi) * k - rate(eps) * j + rate(psi) * n
         v_C = v_G + w.cross(-a * b)           # the wheel's material point at C
         # |r_G'|^2, w . n and |w|^2 from their components on i, j, k, each with
         # sin^2 + cos^2 = 1 used (the azimuth phi drops out of them, as it must)
@@ -287,14 +282,14 @@ class WheelOnPivot(Problem):
         lg.constraint("R_z", u_z)
         lg.constraint("F_z", (r_G - a * b).dot(k) + a)
         slip = v_C.dot(j)                     # linear in the rates: its gradient is exact
-        lg.velocity_constraint("F_y", [tidy(slip.diff(D(q))) for q in coords])
+        lg.velocity_constraint("F_y", [tidy(slip.diff(rate(q))) for q in coords])
         return lg.equations()
 
     def published(self) -> list[Published]:
         f = frames()
         A, O = f.A, f.O
         i, j, k = A.x, A.y, A.z
-        W1, W2 = D(phi), DD(phi)
+        W1, W2 = rate(phi), rate(phi, 2)
         inA = lambda v: tuple(v.express(A).components)  # noqa: E731
         I_G = f.wheel.inertia
         H_G = f.wheel.angular_momentum(f.G, O)

@@ -157,7 +157,7 @@ def test_dimension_audit_of_a_derivation_held_in_symengine():
     """A Lagrangian with the track radius dropped from the potential (``-m g cos(theta)
     cos(phi)``, a force where an energy belongs) is flagged in the equations as derived
     (held in symengine), with the same findings as the audit of their sympy form."""
-    from dualmech import Lagrangian
+    from dualmech import Lagrangian, rate
     from dualmech.model.dimensions import audit
     from dualmech.model.equations import Rows
     from dualmech.problems import toy_car as tc
@@ -165,9 +165,8 @@ def test_dimension_audit_of_a_derivation_held_in_symengine():
     class NoRadius(tc.ToyCar):
         def lagrange(self):
             lg = Lagrangian(coordinates=[tc.theta, tc.phi])
-            lg.kinetic("T of car", tc.m * tc.R**2 * (tc.theta.diff(tc.t)**2
-                                                    + tc.phi.diff(tc.t)**2
-                                                    * sp.cos(tc.theta)**2) / 2)
+            lg.kinetic("T of car", tc.m * tc.R**2 * (rate(tc.theta)**2
+                                                    + rate(tc.phi)**2 * sp.cos(tc.theta)**2) / 2)
             lg.potential("gravity", -tc.m * tc.g * sp.cos(tc.theta) * sp.cos(tc.phi))
             return lg.equations()
 

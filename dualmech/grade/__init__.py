@@ -13,7 +13,10 @@ Example
 >>> r.right, r.matches
 (True, 'the equation of theta (Lagrange)')
 """
-from importlib import import_module
+import sys
+import types
+
+from dualmech._lazy import exports
 
 _HOME = {
     "answers": ("Quantity", "UnknownQuantity", "catalogue"),
@@ -24,17 +27,23 @@ _HOME = {
     "result": ("STATUSES", "Edit", "Grade"),
     "vocabulary": ("UnknownName",),
 }
-_WHERE = {name: module for module, names in _HOME.items() for name in names}
 
 __all__ = ["grade", "Grader", "Grade", "Edit", "STATUSES", "Quantity", "catalogue",
            "Limits", "LIMITS", "parse", "AnswerError", "AnswerSyntaxError", "AnswerTooLarge",
            "UnknownName", "UnknownQuantity", "GradingUnavailable"]
 
+__getattr__, __dir__ = exports(__name__, _HOME, globals())   # imported when first used
 
-def __getattr__(name):   # imported when first used: `dualmech list` never loads sympy
-    module = _WHERE.get(name)
-    if module is None:
-        raise AttributeError(f"module 'dualmech.grade' has no attribute {name!r}")
-    value = getattr(import_module(f".{module}", __name__), name)
-    globals()[name] = value
-    return value
+
+class _Package(types.ModuleType):
+    """``dualmech.grade`` is this package and, called, :func:`~dualmech.grade.api.grade`.
+
+    ``from dualmech import grade`` must give something callable whether or not the package
+    was imported before (an import of ``dualmech.grade.x`` binds the package to that name).
+    """
+
+    def __call__(self, *args, **kwargs):
+        return self.grade(*args, **kwargs)
+
+
+sys.modules[__name__].__class__ = _Package

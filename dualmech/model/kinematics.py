@@ -38,7 +38,7 @@ from dualmech.model._algebra import merge_names, names_of, time_se, to_se, to_sp
 from dualmech.model._expr import as_expr, as_matrix, refuse_text, refuse_text_in
 
 __all__ = [
-    "t", "coordinate", "rot_x", "rot_y", "rot_z", "rot_axis", "skew", "unskew",
+    "t", "coordinate", "rate", "rot_x", "rot_y", "rot_z", "rot_axis", "skew", "unskew",
     "Frame", "Vector", "Point", "RelativeMotion",
 ]
 
@@ -49,6 +49,24 @@ t = sp.Symbol("t", real=True)
 def coordinate(name: str) -> sp.Expr:
     """A generalised coordinate ``name(t)`` as an undefined function of time."""
     return sp.Function(name, real=True)(t)
+
+
+def rate(q, n: int = 1) -> sp.Expr:
+    """The ``n``-th time derivative of ``q``: ``q'`` for ``n = 1``, ``q''`` for ``n = 2``.
+
+    ``q`` is a coordinate (:func:`coordinate`) or any expression of ``t``.
+
+    Examples
+    --------
+    >>> theta = coordinate("theta")
+    >>> rate(theta)
+    Derivative(theta(t), t)
+    >>> rate(sp.sin(theta), 2) == sp.sin(theta).diff(t, 2)
+    True
+    """
+    if not isinstance(n, int) or isinstance(n, bool) or n < 1:
+        raise ValueError(f"`n` must be a positive integer, got {n!r}.")
+    return as_expr(q).diff(t, n)
 
 
 def rot_x(angle) -> sp.Matrix:

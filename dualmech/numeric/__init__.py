@@ -20,7 +20,7 @@ Example
 >>> traj.reactions["F_r"].shape
 (200,)
 """
-from importlib import import_module
+from dualmech._lazy import exports
 
 _HOME = {
     "_cache": ("cache_dir",),
@@ -28,17 +28,9 @@ _HOME = {
     "simulation": ("Trajectory", "check_t_span", "default_initial_state", "problem_parameters",
                  "reactions_along", "reactions_at", "right_hand_side", "simulate"),
 }
-_WHERE = {name: module for module, names in _HOME.items() for name in names}
 
 __all__ = ["NumericModel", "SingularityError", "StateFunction", "Trajectory", "cache_dir",
            "check_t_span", "default_initial_state", "problem_parameters", "reactions_along",
            "reactions_at", "right_hand_side", "simulate"]
 
-
-def __getattr__(name):   # imported when first used, so the command starts quickly
-    module = _WHERE.get(name)
-    if module is None:
-        raise AttributeError(f"module 'dualmech.numeric' has no attribute {name!r}")
-    value = getattr(import_module(f".{module}", __name__), name)
-    globals()[name] = value
-    return value
+__getattr__, __dir__ = exports(__name__, _HOME, globals())   # imported when first used

@@ -12,19 +12,11 @@ Example
 >>> preview(ProblemInfo.build("simple_pendulum"), "a*theta'' + g*sin(theta) = 0")["ok"]
 True
 """
-from importlib import import_module
+from dualmech._lazy import exports
 
 _HOME = {"app": ("create_app", "served_problems", "WebLimits"), "server": ("serve",),
          "catalog": ("ProblemInfo",), "store": ("Store",)}
-_WHERE = {name: module for module, names in _HOME.items() for name in names}
 
 __all__ = ["create_app", "served_problems", "WebLimits", "serve", "ProblemInfo", "Store"]
 
-
-def __getattr__(name):   # imported when first used: `dualmech --help` never loads starlette
-    module = _WHERE.get(name)
-    if module is None:
-        raise AttributeError(f"module 'dualmech.web' has no attribute {name!r}")
-    value = getattr(import_module(f".{module}", __name__), name)
-    globals()[name] = value
-    return value
+__getattr__, __dir__ = exports(__name__, _HOME, globals())   # imported when first used
