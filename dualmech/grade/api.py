@@ -37,6 +37,15 @@ class Grader:
     """Grades answers to one problem; the problem's models and points are built once.
 
     ``problem`` is a :class:`~dualmech.model.problem.Problem` or a catalogue name.
+
+    Examples
+    --------
+    >>> from dualmech import Grader
+    >>> grader = Grader("simple_pendulum")
+    >>> grader.grade("a*theta'' + g*sin(theta) = 0").right
+    True
+    >>> grader.grade("a*theta'' - g*sin(theta) = 0").right
+    False
     """
 
     _cache: dict = {}
@@ -253,6 +262,15 @@ def grade(problem, answer: str, quantity: str | None = None, *, about: str | Non
     """Grade ``answer`` to ``problem`` (a Problem or a catalogue name); see :class:`Grader`.
 
     An unknown problem name gives an ``invalid`` grade that lists the known ones.
+
+    Examples
+    --------
+    >>> from dualmech import grade
+    >>> result = grade("simple_pendulum", "theta'' = -g/a*sin(theta)")
+    >>> result.right
+    True
+    >>> grade("no_such_problem", "x = 0").status
+    'invalid'
     """
     try:
         grader = Grader.of(problem, limits=limits) if isinstance(problem, str) else \

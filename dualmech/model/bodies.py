@@ -102,7 +102,21 @@ def parallel_axis(inertia_c: sp.Matrix, mass, d: sp.Matrix) -> sp.Matrix:
 @refuse_text_in
 @dataclass(frozen=True)
 class MassProperties:
-    """Mass, mass centre and inertia about the mass centre of a (composite) body."""
+    """Mass, mass centre and inertia about the mass centre of a (composite) body.
+
+    Made by :func:`composite`; components are in the one frame the parts were given in.
+
+    Examples
+    --------
+    Two point masses ``m`` at ``x = 0`` and ``x = L``:
+
+    >>> import sympy as sp
+    >>> from dualmech import composite, point_mass
+    >>> m, L = sp.symbols("m L", positive=True)
+    >>> body = composite([(m, point_mass(m), [0, 0, 0]), (m, point_mass(m), [L, 0, 0])])
+    >>> body.mass, body.center.T, body.inertia[2, 2]
+    (2*m, Matrix([[L/2, 0, 0]]), L**2*m/2)
+    """
 
     mass: sp.Expr
     center: sp.Matrix = field(compare=False)
@@ -132,7 +146,18 @@ def composite(parts: Iterable[tuple]) -> MassProperties:
 @refuse_text_in
 @dataclass(frozen=True, eq=False)
 class Particle:
-    """A point mass at ``point``."""
+    """A point mass ``mass`` at ``point``: no inertia, no rotation (model no more than needed).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from dualmech import Frame, Particle, Point, coordinate, rate
+    >>> x = coordinate("x"); m = sp.Symbol("m", positive=True)
+    >>> O = Frame.ground()
+    >>> block = Particle("block", m, Point.origin(O).locate("block", x * O.x))
+    >>> block.kinetic_energy(O) == m * rate(x)**2 / 2
+    True
+    """
 
     name: str
     mass: sp.Expr
@@ -157,7 +182,25 @@ class Particle:
 @refuse_text_in
 @dataclass(frozen=True, eq=False)
 class RigidBody:
-    """A rigid body fixed in ``frame``, mass centre ``masscenter``, ``inertia`` about it in ``frame`` axes."""
+    """A rigid body fixed in ``frame``: mass centre ``masscenter``, ``inertia`` about it.
+
+    ``inertia`` is the 3x3 inertia matrix about the mass centre in ``frame``'s axes
+    (:func:`thin_rod`, :func:`thin_disk`, :func:`solid_cylinder`, :func:`solid_sphere`,
+    :func:`cuboid`, :func:`composite` give the standard ones).
+
+    Examples
+    --------
+    A uniform rod of length ``L`` hinged at one end: ``T = m L^2 theta'^2 / 6``.
+
+    >>> import sympy as sp
+    >>> from dualmech import Frame, Point, RigidBody, coordinate, rate, rot_z, thin_rod
+    >>> theta = coordinate("theta"); m, L = sp.symbols("m L", positive=True)
+    >>> O = Frame.ground(); rod = O.child("rod", rot_z(theta))
+    >>> G = Point.origin(O).locate("G", L / 2 * rod.x)
+    >>> body = RigidBody("rod", m, G, rod, thin_rod(m, L, axis="x"))
+    >>> sp.simplify(body.kinetic_energy(O) - m * L**2 * rate(theta)**2 / 6)
+    0
+    """
 
     name: str
     mass: sp.Expr

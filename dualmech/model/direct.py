@@ -60,7 +60,53 @@ class Load:
 
 @refuse_text_in
 class NewtonEuler:
-    """Builder of the direct form; see the module docstring."""
+    """The direct form of one model: free-body diagrams, then momentum balances.
+
+    Declare the loads on each body (applied forces and torques, gravity, springs, dampers and
+    the *unknown* reactions), then write one balance per equation you want, projected on a unit
+    vector you choose; :meth:`equations` gives the :class:`EquationSet`, linear in
+    ``(q'', reactions)``.  Every balance is written as *applied minus inertia* (``sum F - m a_C``
+    and ``sum tau_B - dH_B/dt - m v_B x v_C``), equal to zero::
+
+        body C, mass m            sum F . e   -  m a_C . e             = 0   (linear_momentum)
+          F1 \   / R (unknown)    sum tau_B . e - (dH_B/dt + m v_B x v_C) . e = 0
+              \ /                                                        (angular_momentum)
+               C ---> e           B: the mass centre, a fixed or a moving point
+
+    Parameters
+    ----------
+    name : str
+        The derivation's name in reports (``"newton_euler"``).
+    coordinates : sequence of coordinates
+        The generalised coordinates (``coordinate("x")``...), in the order of the equations'
+        accelerations.
+    ground : Frame
+        The inertial frame (``Frame.ground()``); accelerations are taken in it.
+    description : str
+        One line shown beside the name.
+
+    Declaring loads: :meth:`force`, :meth:`torque`, :meth:`gravity`, :meth:`linear_spring`,
+    :meth:`spring_between`, :meth:`linear_damper`, :meth:`torsional_spring`,
+    :meth:`torsional_damper`; reactions: :meth:`reaction` (a magnitude along a direction),
+    :meth:`reaction_vector` (components in a frame), :meth:`reaction_torque`.  Balances:
+    :meth:`linear_momentum`, :meth:`angular_momentum`, or :meth:`equation` given directly.
+
+    Examples
+    --------
+    A bead of mass ``m`` on a pendulum string of length ``l``, the string's pull ``T`` unknown:
+
+    >>> import sympy as sp
+    >>> from dualmech import Frame, NewtonEuler, Particle, Point, coordinate, rot_z
+    >>> theta = coordinate("theta"); m, l, g = sp.symbols("m l g", positive=True)
+    >>> O = Frame.ground(); arm = O.child("arm", rot_z(theta))
+    >>> bob = Particle("bob", m, Point.origin(O).locate("bob", -l * arm.y))
+    >>> ne = NewtonEuler(coordinates=[theta], ground=O)
+    >>> ne.gravity(-g * O.y)
+    >>> T = ne.reaction("T", bob, arm.y)          # the string pulls the bob towards O
+    >>> ne.linear_momentum(bob, arm.x); ne.linear_momentum(bob, arm.y)
+    >>> ne.equations().reactions_solved()
+    {T: m*(g*cos(theta(t)) + l*Derivative(theta(t), t)**2)}
+    """
 
     def __init__(self, name: str = "newton_euler", *, coordinates: Sequence, ground: Frame,
                  description: str = ""):

@@ -184,6 +184,18 @@ class EquationSet:
     contributions : tuple of dict
         Optional: per equation, the additive piece each modelling ingredient contributes
         (used to generate mutants for testing the comparator).
+
+    Examples
+    --------
+    A set written directly (the builders :class:`~dualmech.model.direct.NewtonEuler` and
+    :class:`~dualmech.model.lagrange.Lagrangian` make these for you):
+
+    >>> import sympy as sp
+    >>> from dualmech import EquationSet, coordinate, rate
+    >>> x = coordinate("x"); m, k = sp.symbols("m k", positive=True)
+    >>> eqs = EquationSet("by hand", (x,), (m * rate(x, 2) + k * x,))
+    >>> eqs.accelerations_solved()
+    {Derivative(x(t), (t, 2)): -k*x(t)/m}
     """
 
     name: str

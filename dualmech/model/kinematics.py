@@ -47,7 +47,14 @@ t = sp.Symbol("t", real=True)
 
 
 def coordinate(name: str) -> sp.Expr:
-    """A generalised coordinate ``name(t)`` as an undefined function of time."""
+    """A generalised coordinate ``name(t)`` as an undefined function of time.
+
+    Examples
+    --------
+    >>> theta = coordinate("theta")
+    >>> theta, rate(theta)
+    (theta(t), Derivative(theta(t), t))
+    """
     return sp.Function(name, real=True)(t)
 
 
@@ -84,7 +91,17 @@ def rot_y(angle) -> sp.Matrix:
 
 
 def rot_z(angle) -> sp.Matrix:
-    """Rotation by ``angle`` about the z axis."""
+    """Rotation by ``angle`` about the z axis (columns: the rotated axes in the old frame).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> rot_z(sp.pi / 2)
+    Matrix([
+    [0, -1, 0],
+    [1,  0, 0],
+    [0,  0, 1]])
+    """
     angle = as_expr(angle)
     c, s = sp.cos(angle), sp.sin(angle)
     return sp.Matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])
@@ -130,6 +147,22 @@ class Frame:
     Build frames with :meth:`Frame.ground` and :meth:`Frame.child`; do not call the
     constructor directly.  The products of rotation matrices down a chain are formed in
     symengine (:mod:`dualmech.model._algebra`) and converted to sympy only when asked for.
+
+    Attributes ``x``, ``y``, ``z`` are the frame's unit vectors; :meth:`vector` builds a vector
+    from components along them; :meth:`ang_vel_in` is the angular velocity relative to another
+    frame of the same chain (from the rotation matrices: ``skew(w) = R^T dR/dt``).
+
+    Examples
+    --------
+    A track turning at the rate ``phi'`` about the vertical, and a car tilted on it:
+
+    >>> from dualmech import Frame, coordinate, rot_x, rot_z
+    >>> phi, theta = coordinate("phi"), coordinate("theta")
+    >>> O = Frame.ground("O")
+    >>> A = O.child("A", rot_z(phi))
+    >>> B = A.child("B", rot_x(theta))
+    >>> B.ang_vel_in(O).express(B).components.T
+    Matrix([[Derivative(theta(t), t), sin(theta(t))*Derivative(phi(t), t), cos(theta(t))*Derivative(phi(t), t)]])
     """
 
     def __init__(self, name: str, parent: Frame | None, rotation: sp.Matrix,
@@ -338,6 +371,18 @@ class Vector:
     ``components`` is a sympy column; the arithmetic runs on a symengine copy of it
     (:mod:`dualmech.model._algebra`), so a chain of products and time derivatives builds no sympy
     expression until someone reads the result.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from dualmech import Frame, coordinate, rot_z
+    >>> theta = coordinate("theta")
+    >>> O = Frame.ground(); arm = O.child("arm", rot_z(theta))
+    >>> v = 2 * arm.x + O.y              # components in arm's axes (the left operand's frame)
+    >>> v.express(O).components.applyfunc(sp.simplify).T
+    Matrix([[2*cos(theta(t)), 2*sin(theta(t)) + 1, 0]])
+    >>> arm.x.dot(O.x), arm.x.cross(arm.y).express(O).components.T
+    (cos(theta(t)), Matrix([[0, 0, 1]]))
     """
 
     def __init__(self, frame: Frame, components):
@@ -528,6 +573,20 @@ class Point:
     ``Point.origin(frame)`` is the origin of ``frame``; ``p.locate(name, r)`` makes the point
     at ``p + r``.  Velocities and accelerations are time derivatives of the position from the
     ground origin, seen from the frame asked for.
+
+    Examples
+    --------
+    The bob of a pendulum of length ``l``: its acceleration has the tangential part
+    ``l theta''`` and the centripetal part ``l theta'^2`` towards the pivot.
+
+    >>> import sympy as sp
+    >>> from dualmech import Frame, Point, coordinate, rot_z
+    >>> theta = coordinate("theta"); l = sp.Symbol("l", positive=True)
+    >>> O = Frame.ground(); arm = O.child("arm", rot_z(theta))
+    >>> bob = Point.origin(O, "pivot").locate("bob", -l * arm.y)
+    >>> a = bob.acc(O).express(arm).components
+    >>> a.T
+    Matrix([[l*Derivative(theta(t), (t, 2)), l*Derivative(theta(t), t)**2, 0]])
     """
 
     def __init__(self, name: str, position: Vector):
@@ -575,6 +634,21 @@ class RelativeMotion:
     ``a_P/O = a_Q/O + dw/dt x r + w x (w x r) + 2 w x v_rel + a_rel`` with ``Q`` a point fixed
     in B, ``r = P - Q``, ``w`` the angular velocity of B in O and ``v_rel``, ``a_rel`` the
     velocity and acceleration of P seen from B.  ``coriolis`` is ``2 w x v_rel``.
+
+    Examples
+    --------
+    A bead sliding at ``r(t)`` along a rod that turns at ``phi'``: the Coriolis term is
+    ``2 r' phi'`` across the rod.
+
+    >>> from dualmech import Frame, Point, RelativeMotion, coordinate, rot_z
+    >>> r, phi = coordinate("r"), coordinate("phi")
+    >>> O = Frame.ground(); rod = O.child("rod", rot_z(phi))
+    >>> hub = Point.origin(O); bead = hub.locate("bead", r * rod.x)
+    >>> parts = RelativeMotion.of(bead, hub, rod, O)
+    >>> parts.coriolis.express(rod).components.T
+    Matrix([[0, 2*Derivative(phi(t), t)*Derivative(r(t), t), 0]])
+    >>> (parts.total() - bead.acc(O)).express(O).components.applyfunc(sp.simplify).T
+    Matrix([[0, 0, 0]])
     """
 
     base: Vector

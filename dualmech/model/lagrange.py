@@ -40,7 +40,43 @@ __all__ = ["Lagrangian"]
 
 @refuse_text_in
 class Lagrangian:
-    """Builder of the indirect form; see the module docstring."""
+    """The indirect form of one model: ``T``, ``V``, ``R``, generalised forces, constraints.
+
+    Add named terms, then :meth:`equations` gives, for each coordinate ``q_j``, the row::
+
+        d/dt dT/dq'_j - dT/dq_j + dR/dq'_j + dV/dq_j - Q_j - sum_k lambda_k dg_k/dq_j = 0
+
+    Terms keep their names (``"T of bob"``, ``"gravity"``), so a report can say which term of
+    which energy differs from the direct form.
+
+    Parameters
+    ----------
+    name : str
+        The derivation's name in reports (``"lagrange"``).
+    coordinates : sequence of coordinates
+        The generalised coordinates, in the order of the rows.
+    description : str
+        One line shown beside the name.
+
+    Energies: :meth:`kinetic` (or :meth:`kinetic_of` a body), :meth:`potential`,
+    :meth:`gravity`, :meth:`spring`; dissipation: :meth:`damper`, :meth:`dissipation`;
+    non-conservative loads: :meth:`generalized_force`, :meth:`force_at` and :meth:`torque_on`
+    (virtual work); constraints with multipliers: :meth:`constraint` (position level),
+    :meth:`velocity_constraint` (rolling); prescribed motion: :meth:`prescribe`.
+
+    Examples
+    --------
+    The pendulum of :class:`~dualmech.model.direct.NewtonEuler`'s example, by energies:
+
+    >>> import sympy as sp
+    >>> from dualmech import Lagrangian, coordinate, rate
+    >>> theta = coordinate("theta"); m, l, g = sp.symbols("m l g", positive=True)
+    >>> lg = Lagrangian(coordinates=[theta])
+    >>> lg.kinetic("T of bob", m * (l * rate(theta))**2 / 2)
+    >>> lg.potential("gravity", -m * g * l * sp.cos(theta))
+    >>> lg.equations().equations
+    (g*l*m*sin(theta(t)) + l**2*m*Derivative(theta(t), (t, 2)),)
+    """
 
     def __init__(self, name: str = "lagrange", *, coordinates: Sequence, description: str = ""):
         self.name = name

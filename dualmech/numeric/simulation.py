@@ -34,7 +34,27 @@ __all__ = ["Trajectory", "simulate", "reactions_at", "reactions_along", "direct_
 
 @dataclass
 class Trajectory:
-    """A simulated motion: times ``t`` (N,), ``q`` and ``qd`` (n, N), reactions {name: (N,)}."""
+    """A simulated motion, as :func:`simulate` returns it.
+
+    Attributes
+    ----------
+    t : ndarray, shape (N,)
+        Output times (s).
+    q, qd : ndarray, shape (n, N)
+        Coordinates and their rates at those times, in ``coordinate_names`` order.
+    coordinate_names : list of str
+    reactions : dict of str to ndarray, shape (N,)
+        Each direct model's reactions along the motion.
+    message : str
+        The integrator's message.
+
+    Examples
+    --------
+    >>> from dualmech import get, simulate
+    >>> run = simulate(get("simple_pendulum"), t_span=(0, 1), samples=11)
+    >>> run.q.shape, run.coordinate_names, sorted(run.reactions)
+    ((1, 11), ['theta'], ['T'])
+    """
 
     t: np.ndarray
     q: np.ndarray
@@ -168,6 +188,17 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
     ------
     SingularityError
         The integration reached a state where the mass matrix is singular.
+
+    Examples
+    --------
+    The pendulum's string pull at the lowest point is ``M (g + a theta'^2)``:
+
+    >>> from dualmech import get, simulate
+    >>> p = get("simple_pendulum")
+    >>> run = simulate(p, t_span=(0, 1), y0=[0.0, 1.5], samples=2)
+    >>> v = {str(s): value for s, value in p.defaults().items()}
+    >>> bool(abs(run.reactions["T"][0] - v["M"] * (v["g"] + v["a"] * 1.5**2)) < 1e-9)
+    True
     """
     t0, t1 = check_t_span(t_span)
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:

@@ -53,6 +53,15 @@ def write_report(comparisons: Sequence, out_dir: Path, duration: float = 5.0,
     and the full text report) or ``"students"`` (verdicts only, corrections hidden: a page
     to hand out).  ``notation`` writes rates as ``"dots"`` (``θ̇``) or ``"primes"`` (``θ′``)
     in every expression of both pages.  Raises ``OSError`` when ``out_dir`` cannot be written.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from dualmech import compare, get, write_report
+    >>> with tempfile.TemporaryDirectory() as out:
+    ...     written = write_report([compare(get("simple_pendulum"))], out, 1.0, progress=False)
+    ...     written.markdown.name, written.failed
+    ('report.md', {})
     """
     check_audience(audience)
     from dualmech.model.notation import check_notation
