@@ -263,6 +263,13 @@ def grade(problem, answer: str, quantity: str | None = None, *, about: str | Non
 
     An unknown problem name gives an ``invalid`` grade that lists the known ones.
 
+    Bounds: in this process an answer is bounded by its size, depth and exponents
+    (:class:`~dualmech.grade.parser.Limits`) and by the cost model (:mod:`~dualmech.grade.cost`)
+    before anything is computed, but not by a clock or a memory ceiling.  For answers from
+    people you do not trust, grade in :class:`~dualmech.grade.sandbox.GradingPool` (what the
+    ``dualmech grade`` command and the web page always do): its workers run under a
+    wall-clock and memory ceiling the operating system enforces.
+
     Examples
     --------
     >>> from dualmech import grade

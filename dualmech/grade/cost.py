@@ -41,6 +41,9 @@ EXPLAIN_TERMS = 400
 #: Deepest nesting of transcendental functions graded (``exp(sin(cos(theta)))`` is 3).
 MAX_NESTING = 3
 _CAP = 10 ** 9
+#: A constant power is computed only up to this many bits; past it it stands as ``_HUGE``.
+_POWER_BITS = 256
+_HUGE = Fraction(_CAP) ** 2
 _TRIG = ("sin", "cos", "tan", "cot", "sec", "csc")
 
 
@@ -96,10 +99,23 @@ def _coefficients(node: Node) -> list:
 
 
 def _number(node: Node):
-    """The value of a plain number (possibly negated, bracketed or a ratio), else ``None``."""
+    """The value of a constant sub-expression built from numbers with ``+ - * / ^`` (bracketed,
+    negated), else ``None``.  A power too large to compute (``10^20`` is computed; ``10^10^6``
+    is not) stands as :data:`_HUGE` (or its inverse), beyond every limit, so a multiple written
+    as a power is costed like the number it is."""
     op, a = node.op, node.args
     if op == "num":
         return a[0]
+    if op == "add":
+        out = Fraction(0)
+        for x in a:
+            v = _number(x)
+            if v is None:
+                return None
+            out += v
+        return out
+    if op == "pow":
+        return _power(_number(a[0]), _number(a[1]))
     if op in ("group", "neg"):
         v = _number(a[0])
         return None if v is None else (v if op == "group" else -v)
@@ -115,6 +131,20 @@ def _number(node: Node):
             out *= v
         return out
     return None
+
+
+def _power(base, exponent):
+    """``base ** exponent`` for an integer exponent, :data:`_HUGE` past :data:`_POWER_BITS`."""
+    if base is None or exponent is None or exponent.denominator != 1:
+        return None
+    k = exponent.numerator
+    if base == 0:
+        return None if k < 0 else Fraction(int(k == 0))
+    size = max(abs(base.numerator), base.denominator)
+    if size > 1 and abs(k) * size.bit_length() > _POWER_BITS:
+        big = _HUGE if (abs(base) > 1) == (k > 0) else 1 / _HUGE
+        return -big if base < 0 and k % 2 else big
+    return base ** k
 
 
 def _exponent(node: Node) -> int:
@@ -183,8 +213,8 @@ def _over(cost: Cost, limits: Limits) -> str:
         return (f"nests {cost.nesting} transcendental functions (at most {MAX_NESTING} are "
                 "graded); check the answer")
     if cost.degree > limits.degree:
-        shown = f"{cost.degree}" if cost.degree < _CAP else "beyond 10^9"
-        return (f"has degree about {shown} once its multiple angles and powers are expanded "
+        shown = f"about {cost.degree}" if cost.degree < _CAP else "beyond 10^9"
+        return (f"has degree {shown} once its multiple angles and powers are expanded "
                 f"(at most {limits.degree} are graded); write it with smaller multiples of "
                 "angles and lower powers")
     return ""
