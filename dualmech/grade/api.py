@@ -25,7 +25,7 @@ from dualmech.grade.judge import AnswerTimeout, Deadline, judge_equations, judge
 from dualmech.grade.judge_energy import judge_force, judge_kinetic, judge_lagrangian, judge_potential
 from dualmech.grade.maps import student_map
 from dualmech.grade.parser import LIMITS, AnswerError, Limits, parse, split_where
-from dualmech.grade.result import Grade
+from dualmech.grade.result import Grade, check_feedback
 from dualmech.grade.vocabulary import UnknownName, Vocabulary
 
 __all__ = ["grade", "Grader"]
@@ -91,10 +91,17 @@ class Grader:
         """``{name: description}`` of everything an answer to this problem may be."""
         return {n: q.description for n, q in catalogue(self.context).items()}
 
-    def grade(self, answer: str, quantity: str | None = None, about: str | None = None) -> Grade:
+    def grade(self, answer: str, quantity: str | None = None, about: str | None = None,
+              feedback: str = "full") -> Grade:
         """Grade ``answer`` (text) as ``quantity`` (default: equations of motion, or one
         equation when a single one is given for several coordinates); never raises for a bad
-        answer -- the :class:`~.result.Grade` says what is wrong."""
+        answer -- the :class:`~.result.Grade` says what is wrong, as much as ``feedback``
+        allows (:data:`~dualmech.grade.result.FEEDBACK_LEVELS`: ``verdict``, ``locate``,
+        ``hint``, ``full``)."""
+        check_feedback(feedback)
+        return self._graded(answer, quantity, about).at_level(feedback)
+
+    def _graded(self, answer, quantity, about) -> Grade:
         t0, built = time.thread_time(), build_seconds()
         qname = quantity or "auto"
         shown = answer if isinstance(answer, str) else repr(answer)
@@ -258,8 +265,12 @@ def _components(ctx, f: Formula, q: Quantity) -> list | None:
 
 
 def grade(problem, answer: str, quantity: str | None = None, *, about: str | None = None,
-          limits: Limits = LIMITS) -> Grade:
+          limits: Limits = LIMITS, feedback: str = "full") -> Grade:
     """Grade ``answer`` to ``problem`` (a Problem or a catalogue name); see :class:`Grader`.
+
+    ``feedback`` is how much a wrong answer is told (:meth:`Grade.at_level
+    <dualmech.grade.result.Grade.at_level>`): ``"verdict"``, ``"locate"``, ``"hint"`` or
+    ``"full"`` (the default).
 
     An unknown problem name gives an ``invalid`` grade that lists the known ones.
 
@@ -279,10 +290,11 @@ def grade(problem, answer: str, quantity: str | None = None, *, about: str | Non
     >>> grade("no_such_problem", "x = 0").status
     'invalid'
     """
+    check_feedback(feedback)
     try:
         grader = Grader.of(problem, limits=limits) if isinstance(problem, str) else \
             Grader(problem, limits=limits)
     except AnswerError as exc:
         return Grade(str(problem), quantity or "auto", "", answer if isinstance(answer, str)
-                     else repr(answer), "invalid", str(exc))
-    return grader.grade(answer, quantity, about)
+                     else repr(answer), "invalid", str(exc), feedback=feedback)
+    return grader.grade(answer, quantity, about, feedback)

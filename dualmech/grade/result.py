@@ -9,13 +9,35 @@ Example
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+import re
+from dataclasses import dataclass, field, replace
 
-__all__ = ["Edit", "Grade", "STATUSES"]
+__all__ = ["Edit", "Grade", "STATUSES", "FEEDBACK_LEVELS", "check_feedback"]
 
 #: ``right``: the answer is correct; ``wrong``: it is not (the feedback says why);
 #: ``invalid``: it could not be graded as typed (syntax, unknown name, too large, ...).
 STATUSES = ("right", "wrong", "invalid")
+
+#: How much feedback a wrong answer gets, least first: ``verdict`` (right or wrong only),
+#: ``locate`` (which equation and which kind of term; no term shown), ``hint`` (the wrong term,
+#: not its correction), ``full`` (the smallest edit with the correct terms).  A teacher sets
+#: it per question or assignment: ``full`` for homework, ``verdict`` or ``locate`` for exams.
+FEEDBACK_LEVELS = ("verdict", "locate", "hint", "full")
+
+#: What a located edit says, by kind, when no term may be shown.
+_LOCATED = {"missing": "a term is missing", "extra": "a term does not belong",
+            "sign": "a term has the wrong sign", "coefficient": "a term has a wrong coefficient",
+            "replace": "a term is the wrong function", "swap": "two symbols are swapped",
+            "factor": "the whole answer is off by a constant factor"}
+_RIGHT_VALUE = re.compile(r"the answer is (\S+), the right value \S+$")
+
+
+def check_feedback(level: str) -> str:
+    """``level`` when it is one of :data:`FEEDBACK_LEVELS`; a clear ``ValueError`` otherwise."""
+    if level not in FEEDBACK_LEVELS:
+        raise ValueError(f"`feedback` must be one of {', '.join(FEEDBACK_LEVELS)}, "
+                         f"got {level!r:.40}.")
+    return level
 
 
 @dataclass(frozen=True)
@@ -43,12 +65,24 @@ class Edit:
     where: str = ""
     term_html: str = ""
     correct_html: str = ""
+    shown: str = "full"
+
+    def at_level(self, level: str) -> "Edit":
+        """This edit as ``level`` shows it (:data:`FEEDBACK_LEVELS`): ``hint`` drops the correct
+        term, ``locate`` every term."""
+        if check_feedback(level) == "full":
+            return self
+        keep = level == "hint" and self.kind != "factor"
+        return replace(self, correct="", correct_html="", detail="", shown=level,
+                       term=self.term if keep else "", term_html=self.term_html if keep else "")
 
     def sentence(self) -> str:
         where = f"{self.part} {self.equation + 1}: " if self.equation is not None else ""
         if self.where:
             where = f"{self.where}: "
         cat = f" ({self.category})" if self.category else ""
+        if self.shown != "full":
+            return where + self._partial() + cat
         if self.kind == "missing":
             return f"{where}the term `{self.correct}` is missing{cat}"
         if self.kind == "extra":
@@ -67,11 +101,26 @@ class Edit:
                     "the right one")
         return f"{where}{self.kind}: `{self.term}` -> `{self.correct}`"
 
+    def _partial(self) -> str:
+        """The sentence of a ``hint`` or ``locate`` edit: never the correct term."""
+        if not self.term:
+            return _LOCATED.get(self.kind, "a term is wrong")
+        if self.kind == "extra":
+            return f"the term `{self.term}` does not belong"
+        if self.kind == "sign":
+            return f"the term `{self.term}` has the wrong sign"
+        if self.kind == "coefficient":
+            return f"the coefficient of `{self.term}` is wrong"
+        if self.kind == "swap":
+            return f"two symbols are swapped in `{self.term}`"
+        return f"the term `{self.term}` is wrong"
+
     def to_dict(self) -> dict:
         return {"kind": self.kind, self.part: self.equation, "term": self.term,
                 "correct": self.correct, "category": self.category, "detail": self.detail,
                 "where": self.where, "term_html": self.term_html,
-                "correct_html": self.correct_html, "sentence": self.sentence()}
+                "correct_html": self.correct_html, "shown": self.shown,
+                "sentence": self.sentence()}
 
 
 @dataclass
@@ -100,10 +149,44 @@ class Grade:
     method: str = "none"
     bound: float = math.nan
     seconds: float = 0.0
+    feedback: str = "full"
 
     @property
     def right(self) -> bool:
         return self.status == "right"
+
+    def at_level(self, level: str) -> "Grade":
+        """This grade as a teacher's feedback ``level`` shows it (:data:`FEEDBACK_LEVELS`).
+
+        ``verdict``: right or wrong and nothing else; ``locate``: which equation and which kind
+        of term, no term and no right value shown; ``hint``: also the wrong term, never its
+        correction; ``full``: everything.  A grade that could not be made (``invalid``) keeps
+        its reason at every level: it is about what was typed, not about the answer.
+
+        Examples
+        --------
+        >>> from dualmech import grade
+        >>> g = grade("simple_pendulum", "a*theta'' - g*sin(theta) = 0")
+        >>> print(g.at_level("hint"))  # doctest: +ELLIPSIS
+        WRONG: the equation does not follow from the equations of motion
+          smallest edit that makes it right:
+            - the term `-g*sin(theta)` has the wrong sign (a gravity term)
+        ...
+        >>> print(g.at_level("locate").edits[0].sentence())
+        a term has the wrong sign (a gravity term)
+        >>> print(g.at_level("verdict"))
+        WRONG: the answer is wrong
+        """
+        if check_feedback(level) == "full" or self.status == "invalid":
+            return replace(self, feedback=level)
+        if level == "verdict":
+            summary = "the answer is right" if self.right else "the answer is wrong"
+            return replace(self, summary=summary, details=[], edits=[], dimension_issues=[],
+                           matches="", state={}, feedback=level)
+        details = [_RIGHT_VALUE.sub(r"the answer is \1, not the right value", d)
+                   for d in self.details]
+        return replace(self, details=details, edits=[e.at_level(level) for e in self.edits],
+                       feedback=level)
 
     def __str__(self) -> str:
         head = {"right": "RIGHT", "wrong": "WRONG", "invalid": "NOT GRADED"}[self.status]
@@ -117,7 +200,7 @@ class Grade:
         if self.state:
             shown = ", ".join(f"{k}={_fmt(v)}" for k, v in self.state.items())
             lines.append(f"  at {shown}")
-        if self.status != "invalid":
+        if self.status != "invalid" and self.feedback != "verdict":
             lines.append(f"  (decided by the {self.method}; {self.problem}, {self.quantity})")
         return "\n".join(lines)
 
@@ -133,7 +216,8 @@ class Grade:
                 "edits": [e.to_dict() for e in self.edits],
                 "dimension_issues": list(self.dimension_issues), "matches": self.matches,
                 "state": {k: _json(v) for k, v in self.state.items()}, "method": self.method,
-                "false_right_bound": _json(self.bound), "seconds": self.seconds}
+                "false_right_bound": _json(self.bound), "seconds": self.seconds,
+                "feedback": self.feedback}
 
 
 def _fmt(v) -> str:

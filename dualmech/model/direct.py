@@ -60,7 +60,7 @@ class Load:
 
 @refuse_text_in
 class NewtonEuler:
-    """The direct form of one model: free-body diagrams, then momentum balances.
+    r"""The direct form of one model: free-body diagrams, then momentum balances.
 
     Declare the loads on each body (applied forces and torques, gravity, springs, dampers and
     the *unknown* reactions), then write one balance per equation you want, projected on a unit
