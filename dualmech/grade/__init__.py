@@ -11,7 +11,7 @@ Example
 >>> from dualmech.grade import grade
 >>> r = grade("toy_car", "R*theta'' + R*phi'^2*sin(theta)*cos(theta) + g*cos(phi)*sin(theta) = 0")
 >>> r.right, r.matches
-(True, 'the equation of theta (Lagrange)')
+(True, 'the equation of theta')
 """
 import sys
 import types

@@ -89,22 +89,26 @@ def restyle(text: str, coordinates, notation: str = "primes") -> str:
 
 
 def label_words(label: str) -> str:
-    """A model row's label in words a student reads, without the model's name.
+    """A model row's label in words a student reads: no model name, no frame's axis label.
+
+    A balance along an axis of the ground frame keeps its axis (``along y``); along a moving
+    frame's axis (``B.y``, a name of the model's, not of the student's) it is named by body.
 
     >>> label_words("Lagrange, theta"), label_words("sum F . O.y (m2)")
-    ('the theta equation (Lagrange)', 'the force balance on m2 along y')
+    ('the theta equation', 'the force balance on m2 along y')
     >>> label_words("sum tau_G . b.x (body)")
-    'the moment balance about G on body along b.x'
+    'a moment balance about G on body'
     """
     if label.startswith("Lagrange, "):
-        return f"the {label[10:]} equation (Lagrange)"
+        return f"the {label[10:]} equation"
     if label.startswith("linearised, "):
         return f"the linearised {label[12:]} equation"
     if label.startswith("sum "):   # a force or moment balance, named as a teacher reads it
         from dualmech.model.notation import equation_words   # (only feedback naming a balance needs it)
         words = equation_words(label)
         if len(words) == 1 and not words[0].startswith("the equation "):
-            return words[0]
+            head, along, axis = words[0].rpartition(" along ")
+            return words[0] if "." not in axis else "a " + head[len("the "):]
     if " minus (" in label:
         return "a combination of balances that eliminates the reactions"
     return "a correct equation of the problem"

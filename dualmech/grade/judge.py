@@ -378,7 +378,7 @@ def _words(model: str, labels: list) -> str:
     """Rows of a model in words a student reads (no model or label names)."""
     def one(lb):
         if lb.startswith("Lagrange, "):
-            return f"the equation of {lb[10:]} (Lagrange)"
+            return f"the equation of {lb[10:]}"
         return label_words(lb)
     if len(labels) == 1:
         return one(labels[0])
@@ -445,7 +445,7 @@ def _equation_name(d) -> str:
 
 
 def _target_words(d, ctx) -> str:
-    """The closest correct equation in words: ``the theta equation (Lagrange)``, ``the force
+    """The closest correct equation in words: ``the theta equation``, ``the force
     balance on m2 along y``, times a factor if the answer is scaled."""
     _, _, label = d.label.partition(": ")
     scale = "" if d.scale == 1 else f", times {display(d.scale, ctx.names)}"
