@@ -25,7 +25,7 @@ from dualmech.grade.judge import AnswerTimeout, Deadline, judge_equations, judge
 from dualmech.grade.judge_energy import judge_force, judge_kinetic, judge_lagrangian, judge_potential
 from dualmech.grade.maps import student_map
 from dualmech.grade.parser import LIMITS, AnswerError, Limits, parse, split_where
-from dualmech.grade.result import Grade, check_feedback
+from dualmech.grade.result import Grade, check_feedback, score_of
 from dualmech.grade.vocabulary import UnknownName, Vocabulary
 
 __all__ = ["grade", "Grader"]
@@ -142,9 +142,11 @@ class Grader:
         method = verdict.method_text or _METHODS[verdict.method]
         if verdict.status == "right" and verdict.method == "exact":
             method += f", {len(ctx.points('exact'))} points, P(wrong answer passes) <= {bound:.1e}"
+        score = score_of(verdict.status, verdict.parts, verdict.wrong_parts, verdict.edits,
+                         verdict.credit)
         return Grade(self.problem.name, qname, kind, shown, verdict.status, verdict.summary,
                      verdict.details, verdict.edits, verdict.dimension_issues, verdict.matches,
-                     verdict.state, method, bound, _since(t0, built))
+                     verdict.state, method, bound, _since(t0, built), score=score)
 
     def _grade(self, answer, quantity, about):
         deadline = Deadline(self.limits.seconds)

@@ -39,7 +39,7 @@ from dualmech.grade.terms import answer_coordinates, equation_targets, expressio
 from dualmech.grade.audit import dimension_issues, display, expected_dimension, label_words
 from dualmech.grade.formula import Formula
 from dualmech.grade.parser import AnswerError
-from dualmech.grade.result import Edit
+from dualmech.grade.result import DIMENSIONS_ONLY, Edit
 
 __all__ = ["Verdict", "Deadline", "AnswerTimeout", "judge_equations", "judge_expression",
            "says_nothing", "check_real",
@@ -88,6 +88,9 @@ class Verdict:
     method: str = "exact"
     degree: int = 1
     method_text: str = ""
+    parts: int = 1                    # equations (or components) in the answer
+    wrong_parts: tuple | None = None  # which of them are wrong (None: not known, all)
+    credit: float | None = None       # a score set by the judge itself (see result.score_of)
 
 
 def method_for(ctx: ProblemContext, formulas) -> str:
@@ -316,7 +319,9 @@ def _determines(ctx, formulas, points, need, method, degree, deadline) -> Verdic
             summary = (f"every equation is right, but together they do not determine the "
                        f"accelerations: {what} undetermined (an equation is a combination of "
                        "the others)")
-        return Verdict("wrong", summary, method=method, degree=degree)
+        found = len(cols) - len(missing)
+        return Verdict("wrong", summary, method=method, degree=degree, parts=k,
+                       wrong_parts=(), credit=found / len(cols))
     extra = f" and the reactions {', '.join(map(str, used))}" if used else ""
     return Verdict("right", f"equivalent to {ctx.subject}: every equation follows "
                    f"from them and together they determine the accelerations{extra}",
@@ -433,7 +438,7 @@ def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline,
         summary = (f"equation{'s' if len(wrong) > 1 else ''} {which} "
                    f"do{'es' if len(wrong) == 1 else ''} not follow from {ctx.subject}")
     return Verdict("wrong", summary, details, edits, dims, state=state, method=method,
-                   degree=degree)
+                   degree=degree, parts=k, wrong_parts=tuple(wrong))
 
 
 def _equation_name(d) -> str:
@@ -512,7 +517,8 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
     if not bad_j:
         if dims:
             return Verdict("wrong", "the value is right but the answer is dimensionally "
-                           "inconsistent", dimension_issues=dims, method=method, degree=degree)
+                           "inconsistent", dimension_issues=dims, method=method, degree=degree,
+                           credit=DIMENSIONS_ONLY)
         note = " (up to a constant)" if quantity.up_to_constant else ""
         return Verdict("right", f"{quantity.description}{note}", method=method, degree=degree)
     edits, details, state = _expression_feedback(ctx, comps, refs, quantity, bad_j, deadline,
@@ -520,7 +526,8 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
     which = ("components " + ", ".join(str(j + 1) for j in bad_j)) if len(refs) > 1 else "it"
     return Verdict("wrong", f"{quantity.description}: {which} differ"
                    f"{'s' if which == 'it' else ''} from the right value on the motion",
-                   details, edits, dims, state=state, method=method, degree=degree)
+                   details, edits, dims, state=state, method=method, degree=degree,
+                   parts=len(refs), wrong_parts=tuple(bad_j))
 
 
 def _expression_feedback(ctx, comps, refs, quantity, bad_j, deadline, need):

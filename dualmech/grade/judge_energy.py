@@ -29,6 +29,7 @@ from dualmech.grade.audit import dimension_issues, reduced
 from dualmech.grade.notation import in_their_words
 from dualmech.grade.formula import Formula
 from dualmech.grade.judge import Deadline, Verdict, factor_edit, method_for
+from dualmech.grade.result import DIMENSIONS_ONLY
 from dualmech.grade.parser import AnswerError
 from dualmech.model.dimensions import ENERGY
 
@@ -129,7 +130,8 @@ def judge_kinetic(ctx: ProblemContext, f: Formula, quantity: Quantity,
         if ok:
             return Verdict("wrong" if dims else "right", "the kinetic energy" +
                            (", but dimensionally inconsistent" if dims else ""),
-                           dimension_issues=dims, method=method, degree=f.degree)
+                           dimension_issues=dims, method=method, degree=f.degree,
+                           credit=DIMENSIONS_ONLY if dims else None)
         return _wrong(ctx, f, ref, "this is not the kinetic energy", dims, method, deadline, T)
     kin = parts.total(parts.keys("kinetic"))
     ok, method = _same_lagrange_terms(ctx, f, kin)
@@ -172,7 +174,8 @@ def judge_potential(ctx: ProblemContext, f: Formula, quantity: Quantity,
             note = f" (with {', '.join(chosen)} as a potential)" if chosen else ""
             if dims:
                 return Verdict("wrong", "the potential energy, but dimensionally inconsistent",
-                               dimension_issues=dims, method=method, degree=f.degree)
+                               dimension_issues=dims, method=method, degree=f.degree,
+                               credit=DIMENSIONS_ONLY)
             return Verdict("right", f"the potential energy, up to a constant{note}",
                            method=method, degree=f.degree)
     V = parts.potential_energy()
@@ -235,7 +238,7 @@ def judge_lagrangian(ctx: ProblemContext, f: Formula, quantity: Quantity,
                 if dims:
                     return Verdict("wrong", "the Lagrangian gives the right equations but is "
                                    "dimensionally inconsistent", dimension_issues=dims,
-                                   method=method, degree=f.degree)
+                                   method=method, degree=f.degree, credit=DIMENSIONS_ONLY)
                 return Verdict("right", f"the Lagrangian: it gives the same Lagrange "
                                f"equations{note}", method=method, degree=f.degree)
     return _lagrangian_wrong(ctx, f, parts, dims, method, deadline,
@@ -300,7 +303,8 @@ def judge_force(ctx: ProblemContext, comps: list, quantity: Quantity,
                 f"; left to V or R: {', '.join(left)}" if left else "")
             if dims:
                 return Verdict("wrong", "the generalised force, but dimensionally inconsistent",
-                               dimension_issues=dims, method=method, degree=comps[0].degree)
+                               dimension_issues=dims, method=method, degree=comps[0].degree,
+                               credit=DIMENSIONS_ONLY)
             return Verdict("right", f"{quantity.description}{note}", method=method,
                            degree=max(c.degree for c in comps))
     conventions = [drives, drives + parts.keys("velocity")]

@@ -12,7 +12,8 @@ import math
 import re
 from dataclasses import dataclass, field, replace
 
-__all__ = ["Edit", "Grade", "STATUSES", "FEEDBACK_LEVELS", "check_feedback"]
+__all__ = ["Edit", "Grade", "STATUSES", "FEEDBACK_LEVELS", "check_feedback", "score_of",
+           "ONE_TERM", "FEW_TERMS", "DIMENSIONS_ONLY"]
 
 #: ``right``: the answer is correct; ``wrong``: it is not (the feedback says why);
 #: ``invalid``: it could not be graded as typed (syntax, unknown name, too large, ...).
@@ -30,6 +31,48 @@ _LOCATED = {"missing": "a term is missing", "extra": "a term does not belong",
             "replace": "a term is the wrong function", "swap": "two symbols are swapped",
             "factor": "the whole answer is off by a constant factor"}
 _RIGHT_VALUE = re.compile(r"the answer is (\S+), the right value \S+$")
+
+
+#: Partial credit (:func:`score_of`): a wrong equation (or component, or expression) that one
+#: term's edit makes right, one that two or three terms' edits make right, and a right value
+#: written with inconsistent dimensions.
+ONE_TERM, FEW_TERMS, DIMENSIONS_ONLY = 0.5, 0.25, 0.5
+
+
+def score_of(status: str, parts: int = 1, wrong_parts=None, edits=(), credit=None) -> float:
+    """The score of one answer in [0, 1], by a rule a teacher can explain to a class.
+
+    * a right answer scores 1, one that could not be graded (``invalid``) 0;
+    * a wrong answer of ``parts`` equations (or vector components) scores the mean over its
+      parts: 1 for each right part; for each wrong part, :data:`ONE_TERM` when the smallest
+      edit that makes it right changes one term, :data:`FEW_TERMS` when it changes two or
+      three, 0 when no small edit explains it (``wrong_parts`` None: every part is wrong);
+    * a judge may set the credit itself (``credit``): a system of right equations that does
+      not determine every unknown scores the share of unknowns it determines; a right value
+      with inconsistent dimensions scores :data:`DIMENSIONS_ONLY`.
+
+    Examples
+    --------
+    >>> score_of("right"), score_of("invalid")
+    (1.0, 0.0)
+    >>> e = Edit("sign", 1, "-k*x", "k*x")
+    >>> score_of("wrong", parts=2, wrong_parts=(1,), edits=[e])    # (1 + 1/2) / 2
+    0.75
+    >>> score_of("wrong", parts=2, wrong_parts=(0, 1), edits=[e])  # (0 + 1/2) / 2
+    0.25
+    """
+    if status == "right":
+        return 1.0
+    if status not in ("wrong", "right") or (credit is None and parts < 1):
+        return 0.0
+    if credit is not None:
+        return float(credit)
+    wrong = tuple(range(parts)) if wrong_parts is None else tuple(wrong_parts)
+    total = float(parts - len(wrong))
+    for i in wrong:
+        n = sum(1 for e in edits if e.equation == i or (parts == 1 and e.equation is None))
+        total += ONE_TERM if n == 1 else FEW_TERMS if 2 <= n <= 3 else 0.0
+    return total / parts
 
 
 def check_feedback(level: str) -> str:
@@ -150,6 +193,11 @@ class Grade:
     bound: float = math.nan
     seconds: float = 0.0
     feedback: str = "full"
+    score: float | None = None
+
+    def __post_init__(self):
+        if self.score is None:
+            self.score = score_of(self.status, edits=self.edits)
 
     @property
     def right(self) -> bool:
@@ -200,6 +248,8 @@ class Grade:
         if self.state:
             shown = ", ".join(f"{k}={_fmt(v)}" for k, v in self.state.items())
             lines.append(f"  at {shown}")
+        if self.status == "wrong" and self.feedback != "verdict":
+            lines.append(f"  score: {self.score:.2g} (see dualmech.grade.result.score_of)")
         if self.status != "invalid" and self.feedback != "verdict":
             lines.append(f"  (decided by the {self.method}; {self.problem}, {self.quantity})")
         return "\n".join(lines)
@@ -217,7 +267,7 @@ class Grade:
                 "dimension_issues": list(self.dimension_issues), "matches": self.matches,
                 "state": {k: _json(v) for k, v in self.state.items()}, "method": self.method,
                 "false_right_bound": _json(self.bound), "seconds": self.seconds,
-                "feedback": self.feedback}
+                "feedback": self.feedback, "score": self.score}
 
 
 def _fmt(v) -> str:
