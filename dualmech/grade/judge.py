@@ -40,6 +40,7 @@ from dualmech.grade.audit import dimension_issues, display, expected_dimension, 
 from dualmech.grade.formula import Formula
 from dualmech.grade.parser import AnswerError
 from dualmech.grade.result import DIMENSIONS_ONLY, Edit
+from dualmech.grade.systems import constrained_group, constraint_rows, determines_system
 
 __all__ = ["Verdict", "Deadline", "AnswerTimeout", "judge_equations", "judge_expression",
            "says_nothing", "check_real",
@@ -235,7 +236,10 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
     method = method_for(ctx, formulas)
     if method == "slow":
         check_real(ctx, formulas, need_for(ctx, formulas))
-    empty = says_nothing(ctx, formulas, method, need_for(ctx, formulas), deadline)
+    group = None if single else constrained_group(ctx, formulas)
+    constraints = constraint_rows(ctx, formulas, group) if group else {}
+    empty = [i for i in says_nothing(ctx, formulas, method, need_for(ctx, formulas), deadline)
+             if i not in constraints]
     if empty:
         which = ", ".join(name(i) for i in empty)
         many = len(empty) > 1
@@ -293,6 +297,12 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
     if single:
         return Verdict("right", f"the equation follows from {ctx.subject}; it "
                        f"matches {match}", matches=match, method=method, degree=degree)
+    if group is not None:
+        complete, summary, credit = determines_system(ctx, formulas, points, need, group,
+                                                      constraints)
+        return Verdict("right" if complete else "wrong", summary, method=method,
+                       degree=degree, parts=k, wrong_parts=() if not complete else None,
+                       credit=None if complete else credit)
     return _determines(ctx, formulas, points, need, method, degree, deadline)
 
 
