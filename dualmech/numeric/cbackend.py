@@ -37,7 +37,7 @@ from pathlib import Path
 from dualmech.numeric import codegen
 from dualmech.numeric._cache import cache_dir, private_dir
 
-__all__ = ["c_source", "compiler", "load"]
+__all__ = ["c_source", "compile_library", "compiler", "load"]
 
 _C_FUNCS = {"sin": "sin", "cos": "cos", "tan": "tan", "asin": "asin", "acos": "acos",
             "atan": "atan", "atan2": "atan2", "sinh": "sinh", "cosh": "cosh", "tanh": "tanh",
@@ -218,7 +218,14 @@ def _open(lib: Path, key: str):
 
 
 def _compile(source: str, folder: Path, lib: Path) -> Path | None:
-    """Compile ``source`` into ``lib`` (atomically); the library's path, or ``None``."""
+    return compile_library(source, folder, lib)
+
+
+def compile_library(source: str, folder: Path, lib: Path, flags=()) -> Path | None:
+    """Compile the C ``source`` into the shared library ``lib`` (named in ``folder``, or in a
+    private directory when ``folder`` is not writable), atomically, with ``flags`` (libraries
+    to link, linker options) after the source; the library's path, or ``None`` when there is
+    no compiler or it fails."""
     cc = compiler()
     if cc is None:
         return None
@@ -231,7 +238,7 @@ def _compile(source: str, folder: Path, lib: Path) -> Path | None:
         src = Path(tmp) / "dm.c"
         src.write_text(source, encoding="utf-8")
         out = Path(tmp) / "dm.so"
-        cmd = cc + ["-O2", "-shared", "-fPIC", "-o", str(out), str(src), "-lm"]
+        cmd = cc + ["-O2", "-shared", "-fPIC", "-o", str(out), str(src), *flags, "-lm"]
         try:
             done = subprocess.run(cmd, capture_output=True, timeout=600)
         except (OSError, subprocess.TimeoutExpired):
