@@ -168,10 +168,15 @@ def test_simulate_json_holds_the_run(capsys):
     assert 0 < out["cpu_seconds"] < 5 and out["steps"] > 100 and out["t_final"] == 3.0
 
 
-def test_simulate_refuses_a_misspelt_parameter(capsys):
-    status = main(["simulate", "toy_car", "--param", "mass=2"])
+@pytest.mark.parametrize("argv, message", [
+    (["--param", "mass=2"], "unknown parameter 'mass'"),
+    (["--param", "m=heavy"], "`--param` m: 'heavy' is not a number"),
+    (["--method", "cvode"], "`--method` 'cvode' is not one of auto, CVODE-Adams")],
+    ids=["misspelt-parameter", "not-a-number", "unknown-method"])
+def test_simulate_refuses_bad_options_saying_what_to_fix(capsys, argv, message):
+    status = main(["simulate", "toy_car", *argv])
     assert status == 2
-    assert "unknown parameter 'mass'" in capsys.readouterr().err
+    assert message in capsys.readouterr().err
 
 
 def test_without_a_compiler_simulate_falls_back_and_says_so_in_one_line(tmp_path):

@@ -46,8 +46,8 @@ class _Usage(Exception):
 
 
 def register(subparsers) -> None:
-    """Add ``simulate`` to ``subparsers`` (from ``add_subparsers``)."""
-    from dualmech.numeric.cvode import METHODS
+    """Add ``simulate`` to ``subparsers`` (from ``add_subparsers``; nothing heavy is imported
+    before the command runs)."""
     p = subparsers.add_parser(
         "simulate", help="integrate a problem's equations of motion (CVODE + generated C)",
         description="Integrate the reference model from the problem's initial state and print "
@@ -62,9 +62,10 @@ def register(subparsers) -> None:
                    help="relative tolerance (default: %(default)s)")
     p.add_argument("--atol", metavar="A", type=_positive, default=1e-10,
                    help="absolute tolerance (default: %(default)s)")
-    p.add_argument("--method", metavar="M", choices=METHODS, default="auto",
-                   help=f"one of {', '.join(METHODS)} (default: auto = CVODE-Adams, else "
-                        "DOP853)")
+    p.add_argument("--method", metavar="M", default="auto",
+                   help="auto (default: CVODE-Adams, else DOP853), CVODE-Adams, CVODE-BDF, "
+                        "or scipy's DOP853, RK45, Radau, BDF, LSODA on the generated "
+                        "right-hand side")
     p.add_argument("--param", metavar="NAME=VALUE", action="append", default=[],
                    help="a parameter value instead of the problem's default (repeatable)")
     p.add_argument("--samples", metavar="K", type=_samples, default=None,
@@ -196,6 +197,9 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
 
 
 def _simulate(args) -> int:
+    from dualmech.numeric.cvode import METHODS
+    if args.method not in METHODS:
+        raise _Usage(f"`--method` {args.method!r} is not one of {', '.join(METHODS)}.")
     problem = _load(args)
     try:
         result = summary(problem, args.duration, args.rtol, args.atol, args.method,
