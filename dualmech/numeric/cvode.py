@@ -169,11 +169,13 @@ def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method) -> Run:
     stats = np.zeros(6, dtype=np.int64 if ctypes.sizeof(ctypes.c_long) == 8 else np.int32)
     reached = ctypes.c_double(t0)
     msg = ctypes.create_string_buffer(256)
-    slow_model, failure = model.with_backend("python"), []
+    exact, failure = [], []
 
     def slow(t, y, ydot):  # a state the compiled solve flagged: decided exactly
         try:
-            f = slow_model.rhs(t, np.ctypeslib.as_array(y, (n2,)).copy())
+            if not exact:
+                exact.append(model.with_backend("python"))
+            f = exact[0].rhs(t, np.ctypeslib.as_array(y, (n2,)).copy())
             np.ctypeslib.as_array(ydot, (n2,))[:] = f
             return 0
         except Exception as exc:  # noqa: BLE001 - re-raised below, once CVODE has returned
