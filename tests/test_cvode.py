@@ -196,3 +196,26 @@ def test_without_a_compiler_simulate_falls_back_and_says_so_in_one_line(tmp_path
     ref = integrate(model.with_backend("python"), (0.0, 2.0), y0, rtol=1e-8, atol=1e-10,
                     method="DOP853")
     assert out["final_state"] == ref.y[:, -1].tolist()
+
+
+@pytest.mark.parametrize("method", CVODE_METHODS + ("DOP853",))
+def test_the_run_stops_where_the_motion_reaches_the_declared_singular_set(method):
+    """The toy car's mass matrix diag(m R^2, m R^2 cos^2 theta) is singular at cos(theta) = 0
+    (the car on the track's pivot axis).  Thrown from theta = 1.2 at theta' = 5 with the track
+    at rest (phi = phi' = 0: phi stays 0), the car swings as a pendulum,
+    theta'' = -(g/R) sin(theta), and passes theta = pi/2 at
+    t* = int_1.2^(pi/2) dtheta / sqrt(25 + 2 (g/R)(cos(theta) - cos(1.2)))  (by hand)."""
+    from scipy.integrate import quad
+
+    from dualmech.numeric.model import SingularityError
+    car = problems.load("toy_car")
+    model, _ = _setup("toy_car")
+    gR = 9.81 / 0.5
+    t_star = quad(lambda th: 1 / np.sqrt(25 + 2 * gR * (np.cos(th) - np.cos(1.2))), 1.2,
+                  np.pi / 2, epsabs=1e-14, epsrel=1e-13)[0]
+    with pytest.raises(SingularityError, match=r"reaches the singular set cos\(theta\(t\)\) = 0 "
+                                               r"at t=(\S+), theta=1.5708, phi=0:") as info:
+        integrate(model, (0.0, 2.0), [1.2, 0.0, 5.0, 0.0], rtol=1e-10, atol=1e-12,
+                  method=method, singular=car.singular)
+    t_hit = float(str(info.value).split(" at t=")[1].split(",")[0])
+    assert abs(t_hit - t_star) < 1e-7  # rtol 1e-10 over 0.09 s; t printed to 9 digits

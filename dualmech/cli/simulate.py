@@ -12,7 +12,9 @@ or ``module:Class``.  The reference model is integrated from the problem's initi
 :func:`dualmech.numeric.cvode.integrate`: SUNDIALS CVODE driving the generated C right-hand
 side by default (``--method auto``), with no Python per step.  Where that route cannot run (no
 C compiler, no SUNDIALS libraries) the command says so in one line on stderr and falls back to
-scipy's DOP853 on the generated right-hand side.
+scipy's DOP853 on the generated right-hand side.  The run stops with an error where the motion
+reaches the problem's declared singular set (:attr:`Problem.singular
+<dualmech.model.problem.Problem.singular>`: CVODE's root finding, scipy's terminal events).
 
 The text (or ``--json``) gives the parameters, the state order (coordinates, then their
 rates), the initial and final states, the method that ran and ``cpu_seconds``: the CPU time of
@@ -175,7 +177,7 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
     y0 = [float(v) for v in q0 + qd0]
     t_eval = np.linspace(0.0, duration, samples) if samples else None
     run = integrate(model, (0.0, duration), y0, t_eval=t_eval, rtol=rtol, atol=atol,
-                    method=method)
+                    method=method, singular=problem.singular)
     names = [q.func.__name__ for q in ref.coordinates]
     reached = run.success and run.t.size and run.t[-1] == duration
     fallback = run.message[len("fallback: "):].split("; used scipy")[0] \

@@ -18,7 +18,10 @@ The CVODE route needs a C compiler and SUNDIALS 7's libraries from scikit-sundae
 missing, ``method="auto"`` **falls back** to scipy's ``DOP853`` on the generated right-hand side
 and says so in ``Run.message`` (:data:`FALLBACK`); a CVODE method asked for by name raises
 :class:`CvodeUnavailable` instead.  A state where the mass matrix is singular ends the run
-with :class:`~dualmech.numeric.model.SingularityError`, on either route.
+with :class:`~dualmech.numeric.model.SingularityError`, on either route, and so does the motion
+reaching a declared singular set (``singular``: CVODE's root finding on the expressions
+compiled to C, :mod:`~dualmech.numeric.cvode_events`), which the steps may otherwise cross
+unseen.
 
 Example
 -------
@@ -43,6 +46,7 @@ from scipy.integrate import solve_ivp
 
 from dualmech.numeric import cbackend
 from dualmech.numeric.cvode_driver import CvodeUnavailable, driver
+from dualmech.numeric.cvode_events import SingularSet
 from dualmech.numeric.integrators import SCIPY_METHODS, Run
 from dualmech.numeric.model import _C_MAX, NumericModel
 
@@ -70,7 +74,8 @@ def available() -> str | None:
 
 
 def integrate(model: NumericModel, t_span: Sequence[float], y0, *, t_eval=None,
-              rtol: float = 1e-9, atol: float = 1e-11, method: str = "auto") -> Run:
+              rtol: float = 1e-9, atol: float = 1e-11, method: str = "auto",
+              singular: Sequence = ()) -> Run:
     """Integrate ``model``'s equations of motion over ``t_span`` from ``y0 = [q, q']``.
 
     Parameters
@@ -85,6 +90,10 @@ def integrate(model: NumericModel, t_span: Sequence[float], y0, *, t_eval=None,
     rtol, atol : float
         Relative and absolute tolerances (scalar), as scipy and CVODE define them.
     method : one of :data:`METHODS`
+    singular : expressions in the model's coordinates whose zeros are its singular set
+        (:attr:`Problem.singular <dualmech.model.problem.Problem.singular>`): the run stops
+        where one changes sign (CVODE's root finding, scipy's terminal events) with
+        :class:`SingularityError`, instead of stepping across the set unseen.
 
     Returns
     -------
@@ -97,7 +106,8 @@ def integrate(model: NumericModel, t_span: Sequence[float], y0, *, t_eval=None,
     Raises
     ------
     SingularityError
-        The motion reached a state where the mass matrix is singular.
+        The motion reached a state where the mass matrix is singular, or the declared
+        singular set.
     CvodeUnavailable
         A CVODE method was asked for by name and cannot run here.
     """
@@ -113,16 +123,17 @@ def integrate(model: NumericModel, t_span: Sequence[float], y0, *, t_eval=None,
         raise ValueError(f"model `{model.eqs.name}` is not square ({model.shape}): integrate "
                          "the equations of motion (the reference model), not a direct model "
                          "with its reactions.")
+    events = SingularSet(model, singular)
     if method == "auto":
         try:
-            return _cvode(model, t0, t1, y0, t_eval, rtol, atol, CVODE_METHODS[0])
+            return _cvode(model, t0, t1, y0, t_eval, rtol, atol, CVODE_METHODS[0], events)
         except CvodeUnavailable as exc:
-            run = _scipy(model, t0, t1, y0, t_eval, rtol, atol, FALLBACK)
+            run = _scipy(model, t0, t1, y0, t_eval, rtol, atol, FALLBACK, events)
             run.message = f"fallback: {exc}; used scipy {FALLBACK} instead. " + run.message
             return run
     if method in CVODE_METHODS:
-        return _cvode(model, t0, t1, y0, t_eval, rtol, atol, method)
-    return _scipy(model, t0, t1, y0, t_eval, rtol, atol, method)
+        return _cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events)
+    return _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events)
 
 
 def _samples(t0: float, t1: float, t_eval) -> np.ndarray:
@@ -138,20 +149,24 @@ def _samples(t0: float, t1: float, t_eval) -> np.ndarray:
     return t_eval
 
 
-def _scipy(model, t0, t1, y0, t_eval, rtol, atol, method) -> Run:
+def _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
     fast = model if model.backend != "auto" or cbackend.compiler() is None \
         else model.with_backend("c")
     fast.rhs(t0, y0)  # compiled and loaded before the clock starts
+    stops = events.scipy_events()
     start = _time.process_time()
     sol = solve_ivp(fast.rhs, (t0, t1), y0, method=method, t_eval=t_eval, rtol=rtol,
-                    atol=atol)
+                    atol=atol, events=stops or None)
     cpu = _time.process_time() - start
+    if sol.status == 1:  # a terminal event: the singular set
+        hit = next(i for i, ts in enumerate(sol.t_events) if len(ts))
+        raise events.error(float(sol.t_events[hit][0]), sol.y_events[hit][0])
     return Run(method, sol.t, sol.y, sol.status >= 0, sol.message, cpu, int(sol.nfev),
                int(sol.nfev), max(len(sol.t) - 1, 0), int(sol.njev), int(sol.nlu),
                float(sol.t[-1]) if sol.t.size else t0)
 
 
-def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method) -> Run:
+def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
     if model.shape[1] > _C_MAX:
         raise CvodeUnavailable(f"{model.shape[1]} unknowns: the compiled solve takes at most "
                                f"{_C_MAX}.")
@@ -160,6 +175,9 @@ def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method) -> Run:
     if one is None:
         raise CvodeUnavailable("the model's right-hand side is not compiled and no C compiler "
                                "was found (set $CC, or install gcc).")
+    roots = events.c_function() if len(events) else None
+    if len(events) and roots is None:
+        raise CvodeUnavailable("the singular set's event functions did not compile to C.")
     p, k = (np.ascontiguousarray(a, dtype=float) for a in model._c_args)
     n2 = 2 * model.n
     work = np.zeros(2 * n2 + model.shape[1])
@@ -167,7 +185,7 @@ def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method) -> Run:
     tout = np.ascontiguousarray(t_eval[~first])
     yout = np.zeros((tout.size, n2))
     stats = np.zeros(6, dtype=np.int64 if ctypes.sizeof(ctypes.c_long) == 8 else np.int32)
-    reached = ctypes.c_double(t0)
+    reached, ylast = ctypes.c_double(t0), np.zeros(n2)
     msg = ctypes.create_string_buffer(256)
     exact, failure = [], []
 
@@ -190,10 +208,13 @@ def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method) -> Run:
         flag = run_c(one[0], p.ctypes.data, k.ctypes.data, work.ctypes.data, callback, n2, lmm,
                      t0, y0.ctypes.data, tout.size, tout.ctypes.data, yout.ctypes.data,
                      float(rtol), float(atol), MAX_STEPS, stats.ctypes.data,
-                     ctypes.byref(reached), msg, len(msg))
+                     ctypes.byref(reached), msg, len(msg), roots, len(events),
+                     ylast.ctypes.data)
     cpu = _time.process_time() - start
     if failure:
         raise failure[0]
+    if flag == 2:  # an event function changed sign: the singular set
+        raise events.error(reached.value, ylast)
     done = int(stats[0])
     y = np.concatenate([np.tile(y0, (int(first.sum()), 1)), yout[:done]]).T
     message = "the end of the span was reached" if flag == 0 else \

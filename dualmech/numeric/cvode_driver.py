@@ -43,7 +43,7 @@ __all__ = ["CvodeUnavailable", "driver", "driver_source", "sundials_libraries"]
 #: SUNDIALS major version the declarations below are written for.
 MAJOR = 7
 #: Bumped whenever the driver's C source changes meaning (part of the library's key).
-DRIVER_VERSION = "1"
+DRIVER_VERSION = "2"
 _LIBS = ("core", "nvecserial", "sunmatrixdense", "sunlinsoldense", "cvode")
 
 
@@ -62,6 +62,7 @@ typedef struct _generic_SUNMatrix *SUNMatrix;
 typedef struct _generic_SUNLinearSolver *SUNLinearSolver;
 typedef struct _generic_SUNNonlinearSolver *SUNNonlinearSolver;
 typedef int (*CVRhsFn)(sunrealtype t, N_Vector y, N_Vector ydot, void *user_data);
+typedef int (*CVRootFn)(sunrealtype t, N_Vector y, sunrealtype *gout, void *user_data);
 
 SUNErrCode SUNContext_Create(SUNComm comm, SUNContext *sunctx);
 SUNErrCode SUNContext_Free(SUNContext *sunctx);
@@ -79,6 +80,7 @@ SUNErrCode SUNNonlinSolFree(SUNNonlinearSolver NLS);
 #define CV_ADAMS 1
 #define CV_BDF 2
 #define CV_NORMAL 1
+#define CV_ROOT_RETURN 2
 void *CVodeCreate(int lmm, SUNContext sunctx);
 int CVodeInit(void *cvode_mem, CVRhsFn f, sunrealtype t0, N_Vector y0);
 int CVodeSStolerances(void *cvode_mem, sunrealtype reltol, sunrealtype abstol);
@@ -87,6 +89,7 @@ int CVodeSetMaxNumSteps(void *cvode_mem, long int mxsteps);
 int CVodeSetStopTime(void *cvode_mem, sunrealtype tstop);
 int CVodeSetLinearSolver(void *cvode_mem, SUNLinearSolver LS, SUNMatrix A);
 int CVodeSetNonlinearSolver(void *cvode_mem, SUNNonlinearSolver NLS);
+int CVodeRootInit(void *cvode_mem, int nrtfn, CVRootFn g);
 int CVode(void *cvode_mem, sunrealtype tout, N_Vector yout, sunrealtype *tret, int itask);
 int CVodeGetNumSteps(void *cvode_mem, long int *nsteps);
 int CVodeGetNumRhsEvals(void *cvode_mem, long int *nfevals);
@@ -100,13 +103,22 @@ void CVodeFree(void **cvode_mem);
 _DRIVER = r"""
 /* y' = f(t, y) through a model library's dm_one (state in work[0:n2], f into work[n2:]);
    a state dm_one flags goes to `slow` (Python: decided exactly), which returns 0 or stops
-   the run with a nonzero value. */
+   the run with a nonzero value.  Optional event functions `roots` (cbackend's dm_out) stop
+   the run where one changes sign. */
 typedef int (*dm_one_fn)(double t, const double *p, const double *k, double *work, int rhs);
 typedef int (*dm_slow_fn)(double t, const double *y, double *ydot);
+typedef int (*dm_out_fn)(double t, const double *y, const double *p, double *out);
 
 typedef struct {
     dm_one_fn one; const double *p, *k; double *work; long n2; dm_slow_fn slow; long nslow;
+    dm_out_fn roots;
 } dm_ode;
+
+static int dm_g(sunrealtype t, N_Vector y, sunrealtype *gout, void *user)
+{
+    dm_ode *o = (dm_ode *)user;
+    return o->roots(t, N_VGetArrayPointer(y), o->p, gout);
+}
 
 static int dm_f(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
 {
@@ -127,16 +139,19 @@ const char dm_key[] = DM_KEY;
 /* Integrate from t0 (state y0) through the nout times tout (strictly beyond t0, in order),
    writing each state into yout (nout x n2, row by row).  lmm: 1 Adams (fixed-point
    iteration), 2 BDF (Newton, dense difference-quotient Jacobian).  stats: outputs written,
-   steps, f evaluations, slow (flagged) states, linear-solver setups, Jacobians.  Returns 0,
+   steps, f evaluations, slow (flagged) states, linear-solver setups, Jacobians; the state
+   where the run ended (at *t_reached) into ylast.  Returns 0, 2 when an event function
+   changed sign (the run stops there),
    a CVODE flag (< 0; its name in msg), or -1000 when SUNDIALS could not allocate. */
 int dm_cvode(dm_one_fn one, const double *p, const double *k, double *work, dm_slow_fn slow,
              long n2, int lmm, double t0, const double *y0, long nout, const double *tout,
              double *yout, double rtol, double atol, long max_steps, long *stats,
-             double *t_reached, char *msg, long msglen)
+             double *t_reached, char *msg, long msglen, dm_out_fn roots, int nroots,
+             double *ylast)
 {
     SUNContext ctx = NULL; void *mem = NULL; N_Vector y = NULL; SUNMatrix A = NULL;
     SUNLinearSolver LS = NULL; SUNNonlinearSolver NLS = NULL;
-    dm_ode o = {one, p, k, work, n2, slow, 0};
+    dm_ode o = {one, p, k, work, n2, slow, 0, roots};
     long i = 0, v = 0;
     double tret = t0;
     int flag = -1000;
@@ -153,6 +168,7 @@ int dm_cvode(dm_one_fn one, const double *p, const double *k, double *work, dm_s
     if ((flag = CVodeSStolerances(mem, rtol, atol)) < 0) goto done;
     if ((flag = CVodeSetMaxNumSteps(mem, max_steps)) < 0) goto done;
     if ((flag = CVodeSetStopTime(mem, tout[nout - 1])) < 0) goto done;
+    if (nroots > 0 && (flag = CVodeRootInit(mem, nroots, dm_g)) < 0) goto done;
     flag = -1000;
     if (lmm == CV_BDF) {
         A = SUNDenseMatrix((sunindextype)n2, (sunindextype)n2, ctx);
@@ -166,10 +182,11 @@ int dm_cvode(dm_one_fn one, const double *p, const double *k, double *work, dm_s
     }
     for (i = 0; i < nout; i++) {
         flag = CVode(mem, tout[i], y, &tret, CV_NORMAL);
-        if (flag < 0) break;
+        if (flag < 0 || flag == CV_ROOT_RETURN) break;
         memcpy(yout + i * n2, N_VGetArrayPointer(y), (size_t)n2 * sizeof(double));
     }
-    if (flag > 0) flag = 0;  /* CV_TSTOP_RETURN at the last sample */
+    memcpy(ylast, N_VGetArrayPointer(y), (size_t)n2 * sizeof(double));
+    if (flag > 0 && flag != CV_ROOT_RETURN) flag = 0;  /* CV_TSTOP_RETURN at the end */
     CVodeGetNumSteps(mem, &stats[1]);
     CVodeGetNumRhsEvals(mem, &stats[2]);
     if (lmm == CV_BDF) {
@@ -317,5 +334,5 @@ def _open(lib: Path, key: str):
     P = ctypes.c_void_p
     fn.argtypes = [P, P, P, P, P, ctypes.c_long, ctypes.c_int, ctypes.c_double, P,
                    ctypes.c_long, P, P, ctypes.c_double, ctypes.c_double, ctypes.c_long, P, P,
-                   ctypes.c_char_p, ctypes.c_long]
+                   ctypes.c_char_p, ctypes.c_long, P, ctypes.c_int, P]
     return fn
