@@ -219,3 +219,14 @@ def test_the_run_stops_where_the_motion_reaches_the_declared_singular_set(method
                   method=method, singular=car.singular)
     t_hit = float(str(info.value).split(" at t=")[1].split(",")[0])
     assert abs(t_hit - t_star) < 1e-7  # rtol 1e-10 over 0.09 s; t printed to 9 digits
+
+
+def test_simulate_reports_a_motion_that_reaches_the_singular_set(capsys):
+    """The ball in the sphere, released at rest (phi' = 0), swings through the pole
+    theta = pi where its spherical coordinates fail (sin(theta) = 0, declared)."""
+    status = main(["simulate", "ball_in_sphere", "--json"])
+    captured = capsys.readouterr()
+    out = json.loads(captured.out)
+    assert status == 1 and out["success"] is False and out["final_state"] is None
+    assert "reaches the singular set sin(theta(t)) = 0" in out["message"]
+    assert captured.err == f"dualmech simulate: stopped early: {out['message']}\n"

@@ -166,7 +166,7 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
     """
     import numpy as np
 
-    from dualmech.numeric import NumericModel
+    from dualmech.numeric import NumericModel, SingularityError
     from dualmech.numeric.cvode import CVODE_METHODS, integrate
     from dualmech.numeric.simulation import default_initial_state, problem_parameters
 
@@ -176,23 +176,27 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
     q0, qd0 = default_initial_state(problem)
     y0 = [float(v) for v in q0 + qd0]
     t_eval = np.linspace(0.0, duration, samples) if samples else None
-    run = integrate(model, (0.0, duration), y0, t_eval=t_eval, rtol=rtol, atol=atol,
-                    method=method, singular=problem.singular)
     names = [q.func.__name__ for q in ref.coordinates]
-    reached = run.success and run.t.size and run.t[-1] == duration
-    fallback = run.message[len("fallback: "):].split("; used scipy")[0] \
-        if run.message.startswith("fallback: ") else None
     out = {"name": problem.name,
            "parameters": {s.name: float(v) for s, v in values.items()},
            "coordinates": names + [f"{n}'" for n in names],
-           "initial_state": y0,
-           "final_state": run.y[:, -1].tolist() if reached else None,
-           "t_final": float(run.t[-1]) if run.t.size else 0.0,
-           "duration": duration, "method": run.method, "cpu_seconds": run.cpu,
-           "steps": run.steps if run.method in CVODE_METHODS else None,  # scipy: uncounted
-           "rhs_evaluations": run.evaluations, "rtol": rtol,
-           "atol": atol, "success": bool(run.success), "message": run.message,
-           "fallback": fallback}
+           "initial_state": y0, "final_state": None, "t_final": None, "duration": duration,
+           "method": method, "cpu_seconds": None, "steps": None, "rhs_evaluations": None,
+           "rtol": rtol, "atol": atol, "success": False, "message": "", "fallback": None}
+    try:
+        run = integrate(model, (0.0, duration), y0, t_eval=t_eval, rtol=rtol, atol=atol,
+                        method=method, singular=problem.singular)
+    except SingularityError as exc:  # a singular state, or the declared singular set
+        out["message"] = str(exc)
+        return out
+    reached = run.success and run.t.size and run.t[-1] == duration
+    out.update({"final_state": run.y[:, -1].tolist() if reached else None,
+                "t_final": float(run.t[-1]) if run.t.size else 0.0, "method": run.method,
+                "cpu_seconds": run.cpu, "rhs_evaluations": run.evaluations,
+                "steps": run.steps if run.method in CVODE_METHODS else None,  # scipy: uncounted
+                "success": bool(run.success), "message": run.message})
+    if run.message.startswith("fallback: "):
+        out["fallback"] = run.message[len("fallback: "):].split("; used scipy")[0]
     if samples:
         out["samples"] = {"t": run.t.tolist(), "states": run.y.T.tolist()}
     return out
@@ -214,19 +218,22 @@ def _simulate(args) -> int:
         print(f"dualmech simulate: CVODE cannot run here ({result['fallback']}); fell back to "
               "scipy DOP853 on the generated right-hand side.", file=sys.stderr)
     status = EXIT_OK if result["final_state"] is not None else EXIT_FAILED
+    if status != EXIT_OK:
+        print(f"dualmech simulate: stopped early: {result['message']}", file=sys.stderr)
     if args.json:
         print(json.dumps(result, indent=1))
         return status
-    print(f"{result['name']}: {result['method']}, t = 0 .. {result['t_final']:.6g} s, "
+    if result["cpu_seconds"] is None:  # stopped before any sample: the line above says why
+        return status
+    print(f"{result['name']}: {result['method']}, t = 0 .. {result['t_final'] or 0:.6g} s, "
           f"rtol {args.rtol:g}, atol {args.atol:g}: "
           + (f"{result['steps']} steps, " if result["steps"] is not None else "")
-          + f"{result['rhs_evaluations']} right-hand sides, {result['cpu_seconds']:.4g} s CPU")
+          + f"{result['rhs_evaluations']} right-hand sides, {result['cpu_seconds'] or 0:.4g} s "
+          "CPU")
     print("parameters: " + ", ".join(f"{k} = {v:g}" for k, v in result["parameters"].items()))
     width = max(len(c) for c in result["coordinates"])
     final = result["final_state"] or [float("nan")] * len(result["coordinates"])
     print(f"{'state'.ljust(width)}  {'initial':>22}  {'final':>22}")
     for c, a, b in zip(result["coordinates"], result["initial_state"], final):
         print(f"{c.ljust(width)}  {a:22.15g}  {b:22.15g}")
-    if status != EXIT_OK:
-        print(f"dualmech simulate: stopped early: {result['message']}", file=sys.stderr)
     return status
