@@ -197,9 +197,11 @@ def build_parser() -> argparse.ArgumentParser:
     from dualmech.cli.grade import register as _register_grade
     from dualmech.cli.studies import register as _register_numeric
     from dualmech.cli.serve import register as _register_web
+    from dualmech.cli.simulate import register as _register_simulate
     _register_grade(sub)
     _register_numeric(sub)
     _register_web(sub)
+    _register_simulate(sub)
     return parser
 
 

@@ -1,0 +1,239 @@
+"""The ``simulate`` subcommand of ``dualmech``: integrate a problem's equations of motion.
+
+::
+
+    dualmech simulate NAME [--duration T] [--rtol R] [--atol A] [--method M]
+                           [--param NAME=VALUE ...] [--samples K] [--n N] [--json]
+
+NAME is anything :func:`dualmech.problems.load` takes: a catalogue name, ``path.py[:Class]``
+or ``module:Class``.  The reference model is integrated from the problem's initial state
+(:func:`~dualmech.numeric.simulation.default_initial_state`) with its default parameter values
+(``--param`` overrides them, inside their declared ranges) by
+:func:`dualmech.numeric.cvode.integrate`: SUNDIALS CVODE driving the generated C right-hand
+side by default (``--method auto``), with no Python per step.  Where that route cannot run (no
+C compiler, no SUNDIALS libraries) the command says so in one line on stderr and falls back to
+scipy's DOP853 on the generated right-hand side.  The run stops with an error where the motion
+reaches the problem's declared singular set (:attr:`Problem.singular
+<dualmech.model.problem.Problem.singular>`: CVODE's root finding, scipy's terminal events).
+
+The text (or ``--json``) gives the parameters, the state order (coordinates, then their
+rates), the initial and final states, the method that ran and ``cpu_seconds``: the CPU time of
+the integration alone (deriving, generating and compiling the code come before the clock
+starts).  Exit status: 0 done, 1 the integration stopped early (a singular mass matrix, too
+much work), 2 a usage error.
+
+Example
+-------
+>>> import argparse
+>>> parser = argparse.ArgumentParser(prog="dualmech")
+>>> register(parser.add_subparsers(dest="command"))
+>>> args = parser.parse_args(["simulate", "nonexistent_problem"])
+>>> args.func(args)
+2
+"""
+from __future__ import annotations
+
+import argparse
+import functools
+import json
+import sys
+
+__all__ = ["register", "summary"]
+
+EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
+
+
+class _Usage(Exception):
+    """A command-line mistake; the message says what to do instead."""
+
+
+def register(subparsers) -> None:
+    """Add ``simulate`` to ``subparsers`` (from ``add_subparsers``; nothing heavy is imported
+    before the command runs)."""
+    p = subparsers.add_parser(
+        "simulate", help="integrate a problem's equations of motion (CVODE + generated C)",
+        description="Integrate the reference model from the problem's initial state and print "
+                    "the final state and the CPU time of the integration alone.  Default "
+                    "method: SUNDIALS CVODE (Adams) driving the generated C right-hand side; "
+                    "where it cannot run, scipy's DOP853 (said on stderr).")
+    p.add_argument("name", metavar="NAME",
+                   help="the problem: a catalogue name, path.py[:Class] or module:Class")
+    p.add_argument("--duration", metavar="T", type=_positive, default=10.0,
+                   help="simulated seconds (default: %(default)s)")
+    p.add_argument("--rtol", metavar="R", type=_rtol, default=1e-8,
+                   help="relative tolerance (default: %(default)s)")
+    p.add_argument("--atol", metavar="A", type=_positive, default=1e-10,
+                   help="absolute tolerance (default: %(default)s)")
+    p.add_argument("--method", metavar="M", default="auto",
+                   help="auto (default: CVODE-Adams, else DOP853), CVODE-Adams, CVODE-BDF, "
+                        "or scipy's DOP853, RK45, Radau, BDF, LSODA on the generated "
+                        "right-hand side")
+    p.add_argument("--param", metavar="NAME=VALUE", action="append", default=[],
+                   help="a parameter value instead of the problem's default (repeatable)")
+    p.add_argument("--samples", metavar="K", type=_samples, default=None,
+                   help="also give the state at K evenly spaced times (2 to 100000)")
+    p.add_argument("--n", metavar="N", type=int, default=None,
+                   help="size of a parametric problem (e.g. n_link_pendulum --n 3)")
+    p.add_argument("--json", action="store_true",
+                   help="print JSON: name, parameters, coordinates, initial_state, "
+                        "final_state, t_final, method, cpu_seconds, steps, rhs_evaluations, "
+                        "rtol, atol, success, message, fallback (and samples)")
+    p.set_defaults(func=_guard(_simulate))
+
+
+def _positive(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}") from None
+    if not 0 < value < float("inf"):
+        raise argparse.ArgumentTypeError(f"expected a positive finite number, got {text!r}")
+    return value
+
+
+def _rtol(text: str) -> float:
+    value = _positive(text)
+    if not 1e-14 <= value < 1:
+        raise argparse.ArgumentTypeError(f"expected a relative tolerance in [1e-14, 1), got "
+                                         f"{text!r}")
+    return value
+
+
+def _samples(text: str) -> int:
+    try:
+        k = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if not 2 <= k <= 100_000:
+        raise argparse.ArgumentTypeError(f"{k} is outside 2..100000")
+    return k
+
+
+def _guard(handler):
+    """Run ``handler``; turn every exception into one line on stderr and an exit status."""
+    @functools.wraps(handler)
+    def run(args) -> int:
+        try:
+            return handler(args)
+        except _Usage as exc:
+            print(f"dualmech simulate: error: {exc}", file=sys.stderr)
+            return EXIT_USAGE
+        except KeyboardInterrupt:
+            print("dualmech simulate: interrupted", file=sys.stderr)
+            return 130
+        except Exception as exc:  # noqa: BLE001 - no traceback reaches a user
+            print(f"dualmech simulate: error: {type(exc).__name__}: {exc}", file=sys.stderr)
+            return EXIT_FAILED
+    return run
+
+
+def _load(args):
+    from dualmech import problems
+    try:
+        return problems.load(args.name, **({"n": args.n} if args.n is not None else {}))
+    except KeyError as exc:   # SpecError: what to fix, with close matches
+        raise _Usage(exc.args[0] if exc.args else str(exc)) from None
+    except ValueError as exc:  # options a fixed-size problem does not take
+        raise _Usage(str(exc)) from None
+
+
+def _params(pairs) -> dict:
+    out = {}
+    for pair in pairs:
+        name, sep, value = pair.partition("=")
+        if not sep or not name.strip():
+            raise _Usage(f"`--param` takes NAME=VALUE, got {pair!r}.")
+        try:
+            out[name.strip()] = float(value)
+        except ValueError:
+            raise _Usage(f"`--param` {name.strip()}: {value.strip()!r} is not a number.") \
+                from None
+    return out
+
+
+def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1e-10,
+            method: str = "auto", params: dict | None = None,
+            samples: int | None = None) -> dict:
+    """Integrate ``problem``'s reference model over ``[0, duration]``: what ``dualmech
+    simulate --json`` prints.
+
+    Example
+    -------
+    >>> from dualmech.problems import load
+    >>> s = summary(load("simple_pendulum"), duration=1.0, method="DOP853")
+    >>> s["coordinates"], s["method"], len(s["final_state"])
+    (['theta', "theta'"], 'DOP853', 2)
+    """
+    import numpy as np
+
+    from dualmech.numeric import NumericModel, SingularityError
+    from dualmech.numeric.cvode import CVODE_METHODS, integrate
+    from dualmech.numeric.simulation import default_initial_state, problem_parameters
+
+    values = problem_parameters(problem, params)
+    ref = problem.model(problem.reference)
+    model = NumericModel(ref, values)
+    q0, qd0 = default_initial_state(problem)
+    y0 = [float(v) for v in q0 + qd0]
+    t_eval = np.linspace(0.0, duration, samples) if samples else None
+    names = [q.func.__name__ for q in ref.coordinates]
+    out = {"name": problem.name,
+           "parameters": {s.name: float(v) for s, v in values.items()},
+           "coordinates": names + [f"{n}'" for n in names],
+           "initial_state": y0, "final_state": None, "t_final": None, "duration": duration,
+           "method": method, "cpu_seconds": None, "steps": None, "rhs_evaluations": None,
+           "rtol": rtol, "atol": atol, "success": False, "message": "", "fallback": None}
+    try:
+        run = integrate(model, (0.0, duration), y0, t_eval=t_eval, rtol=rtol, atol=atol,
+                        method=method, singular=problem.singular)
+    except SingularityError as exc:  # a singular state, or the declared singular set
+        out["message"] = str(exc)
+        return out
+    reached = run.success and run.t.size and run.t[-1] == duration
+    out.update({"final_state": run.y[:, -1].tolist() if reached else None,
+                "t_final": float(run.t[-1]) if run.t.size else 0.0, "method": run.method,
+                "cpu_seconds": run.cpu, "rhs_evaluations": run.evaluations,
+                "steps": run.steps if run.method in CVODE_METHODS else None,  # scipy: uncounted
+                "success": bool(run.success), "message": run.message})
+    if run.message.startswith("fallback: "):
+        out["fallback"] = run.message[len("fallback: "):].split("; used scipy")[0]
+    if samples:
+        out["samples"] = {"t": run.t.tolist(), "states": run.y.T.tolist()}
+    return out
+
+
+def _simulate(args) -> int:
+    from dualmech.numeric.cvode import METHODS
+    if args.method not in METHODS:
+        raise _Usage(f"`--method` {args.method!r} is not one of {', '.join(METHODS)}.")
+    problem = _load(args)
+    try:
+        result = summary(problem, args.duration, args.rtol, args.atol, args.method,
+                         _params(args.param), args.samples)
+    except ValueError as exc:  # a misspelt or out-of-range --param
+        if "`params`" in str(exc):
+            raise _Usage(str(exc).replace("`params`", "`--param`")) from None
+        raise
+    if result["fallback"]:
+        print(f"dualmech simulate: CVODE cannot run here ({result['fallback']}); fell back to "
+              "scipy DOP853 on the generated right-hand side.", file=sys.stderr)
+    status = EXIT_OK if result["final_state"] is not None else EXIT_FAILED
+    if status != EXIT_OK:
+        print(f"dualmech simulate: stopped early: {result['message']}", file=sys.stderr)
+    if args.json:
+        print(json.dumps(result, indent=1))
+        return status
+    if result["cpu_seconds"] is None:  # stopped before any sample: the line above says why
+        return status
+    print(f"{result['name']}: {result['method']}, t = 0 .. {result['t_final'] or 0:.6g} s, "
+          f"rtol {args.rtol:g}, atol {args.atol:g}: "
+          + (f"{result['steps']} steps, " if result["steps"] is not None else "")
+          + f"{result['rhs_evaluations']} right-hand sides, {result['cpu_seconds'] or 0:.4g} s "
+          "CPU")
+    print("parameters: " + ", ".join(f"{k} = {v:g}" for k, v in result["parameters"].items()))
+    width = max(len(c) for c in result["coordinates"])
+    final = result["final_state"] or [float("nan")] * len(result["coordinates"])
+    print(f"{'state'.ljust(width)}  {'initial':>22}  {'final':>22}")
+    for c, a, b in zip(result["coordinates"], result["initial_state"], final):
+        print(f"{c.ljust(width)}  {a:22.15g}  {b:22.15g}")
+    return status
