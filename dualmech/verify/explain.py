@@ -95,8 +95,15 @@ class Mismatch:
         if not isinstance(residual, str) or residual:
             lines.append(f"    residual after the best combination: {show(residual)}")
         if self.state:
-            st = ", ".join(f"{_state_name(n, notation, symbol_text)}={v:.6g}"
-                           for n, v in self.state.items())
+            moving = [n for n in self.state if n == "t" or n.endswith("'")
+                      or n + "'" in self.state]
+            fixed = [n for n in self.state if n not in moving]
+            if fixed and moving:
+                lines.append("    with " + ", ".join(
+                    f"{_state_name(n, notation, symbol_text)}={self.state[n]:.6g}"
+                    for n in fixed))
+            st = ", ".join(f"{_state_name(n, notation, symbol_text)}={self.state[n]:.6g}"
+                           for n in (moving or fixed))
             where = " (outside the declared ranges)" if self.outside else ""
             lines.append(f"    at {st}{where}: residual {k * self.value:.6g}")
         terms = self.shown_terms if self.shown_terms is not None else self._terms
