@@ -94,14 +94,17 @@ def diagnose(problem, judgement=None) -> Diagnosis:
                 continue
             check = check_declarations(problem, d, lname, builders)
             out.checks.append(check)
-            if check.note:
-                continue
             for f in check.findings:
                 _merge(out.statements, _finding(f, judgement), f)
-            if check.agree and not _agree(judgement, d, lname):
+            if not check.findings and not _agree(judgement, d, lname) and \
+                    not any(e.model == d for e in out.row_edits):
                 edits = row_edits(problem, d, lname)
                 out.row_edits += edits
                 out.statements += _balances(check, edits)
+    if not out.row_edits and not any(s.kind not in ("balance",) for s in out.statements):
+        for check in out.checks:   # nothing else explains it: a reaction that does work
+            for f in check.working_reactions:
+                _merge(out.statements, _finding(f, judgement), f)
     return out
 
 
@@ -174,13 +177,19 @@ def _source(f: Finding) -> str:
 
 def _balances(check: DeclarationCheck, edits: list[RowEdit]) -> list[Statement]:
     ne, lg = f"`{check.direct}`", f"`{check.lagrange}`"
-    head = (f"{lg} is the Lagrangian of {ne}'s own bodies and loads (T, V and virtual work "
-            "agree term by term), so the error is in a balance of " + ne)
+    proved = check.agree
+    if proved:
+        head = (f"{lg} is the Lagrangian of {ne}'s own bodies and loads (T, V and virtual "
+                "work agree term by term), so the error is in a balance of " + ne)
+    else:
+        head = (f"the kinetic energies of {ne}'s bodies agree with {lg} ({check.note}); the "
+                f"error is probably in a balance of {ne}")
     if not edits:
         return [Statement(check.direct, check.direct,
-                          (head + "; no single-row edit reconciles the two",), True, "balance")]
-    out = [Statement(check.direct, check.direct, (head,), True, "balance")]
-    certain = len(edits) == 1
+                          (head + "; no single-row edit reconciles the two",), proved,
+                          "balance")]
+    out = [Statement(check.direct, check.direct, (head,), proved, "balance")]
+    certain = len(edits) == 1 and proved
     for e in edits:
         subject = f"{e.model} [{e.label}]"
         if e.kind == "sign":

@@ -86,6 +86,11 @@ class DeclarationCheck:
     compared: tuple = ()        # what was compared: "T", "V and δW", "reactions"
     note: str = ""
 
+    #: reactions whose virtual work does not vanish (a contact force declared at a point
+    #: that is not the body's material point does work by the declaration alone): not a
+    #: finding, a hint when nothing else explains the disagreement
+    working_reactions: list = field(default_factory=list)
+
     @property
     def agree(self) -> bool:
         return not self.findings and not self.note
@@ -298,7 +303,12 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
             if f is not None:
                 out.findings.append(f)
     Wd = {k: w for k, w in Wd.items() if not vanishes(w)}   # a load that never works
-    if not vanishes(_sum(Wl, Wl) - _sum(Wd, Wd)):
+    by_hand = _undeclared(problem.model(direct), Wd, Rd, Td)
+    if by_hand:
+        out.compared = ("T",)
+        out.note = ("the loads were not compared: `" + direct + "` writes "
+                    + ", ".join(by_hand) + " by hand, not as declared loads")
+    elif not vanishes(_sum(Wl, Wl) - _sum(Wd, Wd)):
         for keys, loads in _match(Wl, Wd):
             f = _work(ctx, Wl, Wd, Vl, keys, loads, owners)
             if f is not None:
@@ -306,9 +316,22 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
     for name, w in Rd.items():
         if not vanishes(w):
             edits = term_edits(sp.Integer(0), w, states) or []
-            out.findings.append(Finding(name, "does work", lagrange, direct, sp.Integer(0),
-                                        _shown(w, fd), _shown_edits(edits, fd),
-                                        tuple(owners.get(name, ())), (name,), probably=True))
+            out.working_reactions.append(Finding(
+                name, "does work", lagrange, direct, sp.Integer(0), _shown(w, fd),
+                _shown_edits(edits, fd), tuple(owners.get(name, ())), (name,), probably=True))
+    return out
+
+
+def _undeclared(model, Wd: dict, Rd: dict, Td: dict) -> list:
+    """Ingredients of the direct model that are neither a declared load, a reaction nor a
+    body's inertia: terms written by hand, which the declarations do not show."""
+    known = set(Wd) | set(Rd) | {f"inertia of {b}" for b in Td}
+    out = []
+    for parts in model.contributions or ():
+        for key, value in parts.items():
+            if key not in known and key not in out and not key.startswith("gravity on ") \
+                    and sp.sympify(value) != 0:
+                out.append(key)
     return out
 
 
