@@ -19,7 +19,7 @@ import sympy as sp
 
 from dualmech.model.equations import EquationSet, ModelError, Rows
 from dualmech.sources import source_fields, source_name
-from dualmech.verify.display import Budget, OverBudget, budget, dotted, solve_display, width
+from dualmech.verify.display import Budget, OverBudget, budget, dotted, solve_display, width, wrap
 from dualmech.verify.explain import Mismatch, explain_model, explain_reaction
 from dualmech.verify.published import PublishedVerdict, check_published
 from dualmech.verify.sampling import Context
@@ -276,7 +276,7 @@ class Comparison:
                 if v.verdict != "correct":
                     why = v.text(notation) if hasattr(v, "text") else v.detail
                     out.append("              " + why.replace("\n", "\n              "))
-        return "\n".join(out)
+        return "\n".join(wrap(line) for line in "\n".join(out).splitlines())
 
     def __repr__(self) -> str:
         return f"<Comparison {self.problem.name}: {self.verdict_line()}>"

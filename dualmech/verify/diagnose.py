@@ -100,6 +100,8 @@ def diagnose(problem, judgement=None) -> Diagnosis:
                     not any(e.model == d for e in out.row_edits):
                 edits = row_edits(problem, d, lname)
                 out.row_edits += edits
+                for f in check.working_reactions:   # a reaction drawn the wrong way
+                    _merge(out.statements, _finding(f, judgement), f)
                 out.statements += _balances(check, edits)
     if not out.row_edits and not any(s.kind not in ("balance",) for s in out.statements):
         for check in out.checks:   # nothing else explains it: a reaction that does work
@@ -177,8 +179,13 @@ def _source(f: Finding) -> str:
 
 def _balances(check: DeclarationCheck, edits: list[RowEdit]) -> list[Statement]:
     ne, lg = f"`{check.direct}`", f"`{check.lagrange}`"
-    proved = check.agree
-    if proved:
+    proved = check.agree and not check.working_reactions
+    if check.agree and check.working_reactions:
+        names = ", ".join(f.quantity for f in check.working_reactions)
+        head = (f"{lg} is the Lagrangian of {ne}'s own bodies and loads (T, V and virtual "
+                f"work agree term by term), so the error is in a balance of {ne} or in the "
+                f"direction of {names}, which does work")
+    elif proved:
         head = (f"{lg} is the Lagrangian of {ne}'s own bodies and loads (T, V and virtual "
                 "work agree term by term), so the error is in a balance of " + ne)
     else:
@@ -186,9 +193,9 @@ def _balances(check: DeclarationCheck, edits: list[RowEdit]) -> list[Statement]:
                 f"error is probably in a balance of {ne}")
     if not edits:
         return [Statement(check.direct, check.direct,
-                          (head + "; no single-row edit reconciles the two",), proved,
-                          "balance")]
-    out = [Statement(check.direct, check.direct, (head,), proved, "balance")]
+                          (head + "; no single-row edit reconciles the two",),
+                          check.agree, "balance")]
+    out = [Statement(check.direct, check.direct, (head,), check.agree, "balance")]
     certain = len(edits) == 1 and proved
     for e in edits:
         subject = f"{e.model} [{e.label}]"

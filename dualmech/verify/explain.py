@@ -109,7 +109,8 @@ class Mismatch:
         terms = self.shown_terms if self.shown_terms is not None else self._terms
         for term, value in terms:
             lines.append(f"      {k * value:+.6g}  {show(term)}")
-        return "\n".join(wrap(line, None, "    ") for line in lines)
+        from dualmech.verify.display import width
+        return "\n".join(wrap(line, width() - 4, "    ") for line in lines)
 
     def to_dict(self) -> dict:
         return {"model": self.model, "equation": self.equation, "reason": self.reason,
