@@ -276,7 +276,9 @@ class Comparison:
                 if v.verdict != "correct":
                     why = v.text(notation) if hasattr(v, "text") else v.detail
                     out.append("              " + why.replace("\n", "\n              "))
-        return "\n".join(wrap(line) for line in "\n".join(out).splitlines())
+        # every line to the width, but the verdict: one line a script can grep
+        return "\n".join(line if line.startswith("  verdict: ") else wrap(line)
+                         for line in "\n".join(out).splitlines())
 
     def __repr__(self) -> str:
         return f"<Comparison {self.problem.name}: {self.verdict_line()}>"

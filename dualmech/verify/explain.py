@@ -89,10 +89,12 @@ class Mismatch:
         show = lambda x: x if isinstance(x, str) else plain(k * x, notation)  # noqa: E731
         lines = [f"{self.model} [{self.equation}]: {self.reason}"]
         if k == -1:
-            lines.append("    (row shown with its sign reversed: mass times acceleration minus "
-                         "applied = 0)")
+            lines.append("    (row shown with its sign reversed to read: mass times "
+                         "acceleration minus applied = 0)")
         residual = self._resolved()
-        if not isinstance(residual, str) or residual:
+        if isinstance(residual, str) and residual.startswith("("):   # why there is none
+            lines += ["    residual after the best combination:", f"      {residual}"]
+        elif not isinstance(residual, str) or residual:
             lines.append(f"    residual after the best combination: {show(residual)}")
         if self.state:
             moving = [n for n in self.state if n == "t" or n.endswith("'")
