@@ -256,11 +256,11 @@ class Comparison:
                            + ("   (NOT CROSS-CHECKED)" if k in lonely else ""))
         if lonely:
             held = self.reaction_derivations
-            out.append("  not cross-checked (one derivation only): " + ", ".join(
+            out.append(wrap("  not cross-checked (one derivation only): " + ", ".join(
                 f"{plain(sp.Symbol(n), notation)} ({', '.join(held[n]) or 'no model'})"
                 for n in lonely)
                 + "; a second derivation (a multiplier model or another free-body diagram) "
-                "would catch a wrong term in it")
+                "would catch a wrong term in it"))
         for note in self.display_notes:
             out.append(f"  ({note})")
         if self.dimension_audit:
@@ -276,9 +276,7 @@ class Comparison:
                 if v.verdict != "correct":
                     why = v.text(notation) if hasattr(v, "text") else v.detail
                     out.append("              " + why.replace("\n", "\n              "))
-        # every line to the width, but the verdict: one line a script can grep
-        return "\n".join(line if line.startswith("  verdict: ") else wrap(line)
-                         for line in "\n".join(out).splitlines())
+        return "\n".join(out)
 
     def __repr__(self) -> str:
         return f"<Comparison {self.problem.name}: {self.verdict_line()}>"

@@ -83,6 +83,8 @@ def diagnose(problem, judgement=None) -> Diagnosis:
     >>> diagnose(get("trolley_pendulum")).statements
     []
     """
+    if judgement is None:
+        judgement = _judge(problem)
     builders = builders_of(problem)
     direct = [n for n, b in builders.items() if isinstance(b, NewtonEuler)]
     hand = [n for n, b in builders.items() if isinstance(b, Lagrangian)]
@@ -108,6 +110,18 @@ def diagnose(problem, judgement=None) -> Diagnosis:
             for f in check.working_reactions:
                 _merge(out.statements, _finding(f, judgement), f)
     return out
+
+
+def _judge(problem):
+    """The verdict on every model of ``problem`` (as :func:`~dualmech.verify.check.compare`
+    judges them)."""
+    from dualmech.verify.check import claims_of
+    from dualmech.verify.sampling import Context
+    from dualmech.verify.verdicts import judge
+    ref = problem.model(problem.reference)
+    ctx = Context(ref.coordinates, problem.parameter_symbols, problem)
+    mapped = {n: problem.in_reference_coordinates(m) for n, m in problem.models().items()}
+    return judge(mapped, context=ctx, reference=problem.reference, claims=claims_of(problem))
 
 
 def _agree(judgement, a: str, b: str) -> bool:
