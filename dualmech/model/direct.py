@@ -40,6 +40,7 @@ from dualmech.model._algebra import merge_names, names_of, to_se
 from dualmech.model._expr import as_expr, refuse_text_in
 
 from dualmech.model.bodies import Particle, RigidBody
+from dualmech.model.declared import note
 from dualmech.model.equations import EquationSet, ModelError, Rows
 from dualmech.model.kinematics import Frame, Point, Vector
 
@@ -303,12 +304,14 @@ class NewtonEuler:
         names = self._names
         for u in self._unknowns:
             names = merge_names(names, {u.name: u})
-        return EquationSet(self.name, self.coordinates,
-                           Rows(eqs, names, self.coordinates, plain=False),
-                           tuple(self._unknowns),
-                           tuple(label for label, _ in self._equations),
-                           Rows(contributions, names, self.coordinates, plain=False),
-                           self.description)
+        out = EquationSet(self.name, self.coordinates,
+                          Rows(eqs, names, self.coordinates, plain=False),
+                          tuple(self._unknowns),
+                          tuple(label for label, _ in self._equations),
+                          Rows(contributions, names, self.coordinates, plain=False),
+                          self.description)
+        note(self, out)   # the free-body diagrams, for an explanation that asks (declared.py)
+        return out
 
     def _acc(self, parts: dict, key: str, value_names: tuple, factor=None) -> None:
         """Add a symengine term (``(value, names)``, times the sympy ``factor``) to ``parts``."""

@@ -31,6 +31,7 @@ import sympy as sp
 
 from dualmech.model._expr import as_expr, refuse_text_in
 from dualmech.model.bodies import Particle, RigidBody
+from dualmech.model.declared import note
 from dualmech.model._algebra import Bridge, total_derivative
 from dualmech.model.equations import EquationSet, ModelError, Rows, state_symbols, to_plain
 from dualmech.model.kinematics import Frame, Point, Vector, t
@@ -241,8 +242,10 @@ class Lagrangian:
                                   {f"constraint {lam.name}": level}))
         names = dict(br.by_name)
         eqs = [sum(p.values(), se.Integer(0)) for _, p in contributions]
-        return EquationSet(self.name, tuple(free), Rows(eqs, names, free, plain=True),
-                           tuple(lam for lam, _, _ in self._constraints),
-                           tuple(label for label, _ in contributions),
-                           Rows([p for _, p in contributions], names, free, plain=True),
-                           self.description)
+        out = EquationSet(self.name, tuple(free), Rows(eqs, names, free, plain=True),
+                          tuple(lam for lam, _, _ in self._constraints),
+                          tuple(label for label, _ in contributions),
+                          Rows([p for _, p in contributions], names, free, plain=True),
+                          self.description)
+        note(self, out)   # the named T, V, R and Q terms, for an explanation (declared.py)
+        return out

@@ -19,7 +19,7 @@ import sympy as sp
 
 from dualmech.model.equations import EquationSet, ModelError, Rows
 from dualmech.sources import source_fields, source_name
-from dualmech.verify.display import Budget, OverBudget, budget, dotted, solve_display
+from dualmech.verify.display import Budget, OverBudget, budget, dotted, solve_display, width, wrap
 from dualmech.verify.explain import Mismatch, explain_model, explain_reaction
 from dualmech.verify.published import PublishedVerdict, check_published
 from dualmech.verify.sampling import Context
@@ -159,6 +159,16 @@ class Comparison:
         return f"{n} ({k} not cross-checked)" if k else str(n)
 
     @property
+    def diagnosis(self):
+        """What the disagreement is, named (:mod:`~dualmech.verify.diagnose`): computed when
+        first read; ``None`` when the derivations agree."""
+        if "_diagnosis" not in self.__dict__:
+            from dualmech.verify.diagnose import diagnose
+            self._diagnosis = None if self.judgement.equivalent or self.judgement.refusal \
+                else diagnose(self.problem, self.judgement)
+        return self._diagnosis
+
+    @property
     def bound(self) -> float:
         return max((p.bound for p in self.pairs), default=0.0)
 
@@ -224,6 +234,9 @@ class Comparison:
                f"  verdict: {self.verdict_line()}"]
         for p in self.pairs:
             out.append("  " + p.text(notation).replace("\n", "\n  "))
+        if self.diagnosis:
+            out.append("  diagnosis:")
+            out.append("    " + self.diagnosis.text(notation, width() - 4).replace("\n", "\n    "))
         if self.equivalent and self.accelerations:
             out.append("  accelerations:")
             for k, v in self.accelerations.items():
@@ -243,11 +256,11 @@ class Comparison:
                            + ("   (NOT CROSS-CHECKED)" if k in lonely else ""))
         if lonely:
             held = self.reaction_derivations
-            out.append("  not cross-checked (one derivation only): " + ", ".join(
+            out.append(wrap("  not cross-checked (one derivation only): " + ", ".join(
                 f"{plain(sp.Symbol(n), notation)} ({', '.join(held[n]) or 'no model'})"
                 for n in lonely)
                 + "; a second derivation (a multiplier model or another free-body diagram) "
-                "would catch a wrong term in it")
+                "would catch a wrong term in it"))
         for note in self.display_notes:
             out.append(f"  ({note})")
         if self.dimension_audit:
@@ -296,6 +309,7 @@ class Comparison:
             "mismatches": [m.to_dict() for m in self.mismatches],
             "models": {n: [dotted(e) for e in m.equations] for n, m in pr.models().items()},
             "pairs": [p.to_dict() for p in self.pairs],
+            "diagnosis": self.diagnosis.to_dict() if self.diagnosis else None,
             "points": self.points,
             "false_equal_bound": _json_float(self.bound),
             "dimension_issues": list(self.dimension_issues),

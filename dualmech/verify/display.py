@@ -7,7 +7,9 @@ caller shows the structured form (``M``, ``B``, ``f``) or values at a state inst
 from __future__ import annotations
 
 import contextlib
+import shutil
 import signal
+import textwrap
 import threading
 
 import sympy as sp
@@ -18,7 +20,7 @@ from dualmech.exact.rational_functions import (NotRational, solve_rational, solv
                                               tidy_rational)
 
 __all__ = ["Budget", "OverBudget", "budget", "tidy", "solve_display", "largest_coupled_block",
-           "dotted", "ops_within"]
+           "dotted", "ops_within", "wrap", "width"]
 
 #: Default budget for one displayed expression: operations in, seconds spent.
 MAX_OPS = 600
@@ -324,3 +326,29 @@ def dotted(expr, coordinates=None) -> str:
     """``expr`` as text with ``theta'`` and ``theta''`` for the coordinates' derivatives."""
     from dualmech.model._expr import dotted as _dotted
     return _dotted(as_expr(expr))
+
+
+def width() -> int:
+    """The terminal's width, or 100 columns when the output is not a terminal."""
+    import sys
+    if not sys.stdout.isatty():
+        return 100
+    return max(40, shutil.get_terminal_size((100, 24)).columns)
+
+
+def wrap(line: str, columns: int | None = None, indent: str = "    ") -> str:
+    """``line`` wrapped to ``columns`` (default :func:`width`), continuation lines indented
+    by the line's own leading spaces plus ``indent``; words (and expressions) are not broken.
+
+    >>> print(wrap("T of bob: lagrange is missing the term m a x' theta' cos(theta)", 30))
+    T of bob: lagrange is missing
+        the term m a x' theta'
+        cos(theta)
+    """
+    columns = columns or width()
+    lead = line[:len(line) - len(line.lstrip(" "))]
+    if len(line) <= columns:
+        return line
+    return textwrap.fill(line.strip(" "), columns, initial_indent=lead,
+                         subsequent_indent=lead + indent, break_long_words=False,
+                         break_on_hyphens=False)

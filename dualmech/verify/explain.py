@@ -46,6 +46,14 @@ class Mismatch:
         self.value = value
         self.state = dict(state or {})
         self._terms = list(terms or [])
+        #: +1, or -1 for a row written "applied minus mass times acceleration" (the text
+        #: shows every row as "mass times acceleration minus applied = 0"); the data
+        #: (value, terms, residual) stay as the model wrote the row
+        self.sign = 1
+        #: the terms as :meth:`text` shows them: each ingredient simplified (None: terms)
+        self.shown_terms: list | None = None
+        #: whether the state lies outside the declared working ranges
+        self.outside = False
 
     def _resolved(self):
         """The residual: an expression, a text saying why there is none, or ``""``."""
@@ -76,18 +84,35 @@ class Mismatch:
         """The readable form in textbook notation: ``θ̈``, powers as ``^`` (``θ′′`` with
         ``notation="primes"``)."""
         from dualmech.model.notation import plain, symbol_text
-        show = lambda x: x if isinstance(x, str) else plain(x, notation)  # noqa: E731
+        from dualmech.verify.display import wrap
+        k = self.sign
+        show = lambda x: x if isinstance(x, str) else plain(k * x, notation)  # noqa: E731
         lines = [f"{self.model} [{self.equation}]: {self.reason}"]
+        if k == -1:
+            lines.append("    (row shown with its sign reversed to read: mass times "
+                         "acceleration minus applied = 0)")
         residual = self._resolved()
-        if not isinstance(residual, str) or residual:
+        if isinstance(residual, str) and residual.startswith("("):   # why there is none
+            lines += ["    residual after the best combination:", f"      {residual}"]
+        elif not isinstance(residual, str) or residual:
             lines.append(f"    residual after the best combination: {show(residual)}")
         if self.state:
-            st = ", ".join(f"{_state_name(k, notation, symbol_text)}={v:.6g}"
-                           for k, v in self.state.items())
-            lines.append(f"    at {st}: residual {self.value:.6g}")
-        for term, value in self._terms:
-            lines.append(f"      {value:+.6g}  {show(term)}")
-        return "\n".join(lines)
+            moving = [n for n in self.state if n == "t" or n.endswith("'")
+                      or n + "'" in self.state]
+            fixed = [n for n in self.state if n not in moving]
+            if fixed and moving:
+                lines.append("    with " + ", ".join(
+                    f"{_state_name(n, notation, symbol_text)}={self.state[n]:.6g}"
+                    for n in fixed))
+            st = ", ".join(f"{_state_name(n, notation, symbol_text)}={self.state[n]:.6g}"
+                           for n in (moving or fixed))
+            where = " (outside the declared ranges)" if self.outside else ""
+            lines.append(f"    at {st}{where}: residual {k * self.value:.6g}")
+        terms = self.shown_terms if self.shown_terms is not None else self._terms
+        for term, value in terms:
+            lines.append(f"      {k * value:+.6g}  {show(term)}")
+        from dualmech.verify.display import width
+        return "\n".join(wrap(line, width() - 4, "    ") for line in lines)
 
     def to_dict(self) -> dict:
         return {"model": self.model, "equation": self.equation, "reason": self.reason,
@@ -161,11 +186,71 @@ def explain_model(name: str, judgement, against: tuple, ctx: Context,
             continue
         note = f" (shown in the reference coordinates, not in {own.names}: {mm})" if mm else ""
         value, terms, state = _terms(model, i, values, _shown(ctx.base, ctx))
-        out.append(Mismatch(
+        mm = Mismatch(
             name, model.labels[i], reason + note,
             residual=lambda i=i: _symbolic_residual(model, reference_model, i, limits),
-            value=value, state=state, terms=terms))
+            value=value, state=state, terms=terms)
+        _readable(mm, model, i, values, real)
+        out.append(mm)
     return out
+
+
+def _readable(mm: Mismatch, model, i: int, values, real) -> None:
+    """The display side of a row's mismatch: its sign convention, its ingredients each
+    simplified, whether its state is outside the working ranges."""
+    if values is None:
+        return
+    mm.outside = any(v is values and not inside for v, _, inside in real)
+    mm.sign = _row_sign(model, i, values)
+    mm.shown_terms = _ingredient_terms(model, i, values)
+
+
+def _row_sign(model, i: int, values) -> int:
+    """-1 for a row written "applied minus mass times acceleration" (a balance ``sum F -
+    m a``), +1 for "mass times acceleration minus applied" (Lagrange's rows): decided by the
+    sign of the row's largest acceleration coefficient at the state."""
+    label = model.labels[i]
+    if label.startswith("Lagrange, "):
+        return 1
+    if label.startswith("sum F") or label.startswith("sum tau"):
+        return -1
+    A, _ = model.plain_matrix()
+    n = len(model.coordinates)
+    subs = {k: sp.Float(str(v), 30) for k, v in values.items()}
+    try:
+        coeffs = [float(A[i, j].xreplace(subs).evalf(30)) for j in range(n)]
+    except (TypeError, ValueError):
+        return 1
+    big = max(coeffs, key=abs, default=0.0)
+    return -1 if big < 0 else 1
+
+
+def _ingredient_terms(model, i: int, values) -> list | None:
+    """``[(term, value)]`` of row ``i``: each ingredient (a load, an inertia, a potential)
+    simplified as a teacher writes it (``sin^2 + cos^2 = 1`` applied) and split into its
+    terms; ``None`` when the model keeps no ingredients."""
+    if not model.contributions or i >= len(model.contributions):
+        return None
+    coords = model.coordinates
+    subs = {k: sp.Float(str(v), 30) for k, v in values.items()}
+    out = []
+    try:
+        for part in model.contributions[i].values():
+            plain = model.to_plain(part)
+            if plain == 0:
+                continue
+            try:
+                short = tidy(plain)
+            except OverBudget:
+                short = plain
+            short = sp.expand(short) if not isinstance(short, sp.Mul) and \
+                len(sp.Add.make_args(sp.expand(short))) <= 6 else short
+            for term in sp.Add.make_args(short):
+                value = float(term.xreplace(subs).evalf(30))
+                out.append((from_plain(term, coords), value))
+    except (TypeError, ValueError, ZeroDivisionError):
+        return None
+    return out if len(out) <= _MAX_TERMS else None
 
 
 def _in_own_coordinates(name, own, model, i, values, reference, ctx, limits):
@@ -227,6 +312,8 @@ def _real_states(judgement, name, ref, ctx: Context, seed: int, want: int = 8) -
                 if wide and s not in ctx.parameters:   # parameters stay physical
                     mid, half = (lo + hi) / 2, 1.5 * (hi - lo)
                     lo, hi = (-3.14, 3.14) if s in angles else (mid - half, mid + half)
+                    if s == t:
+                        lo = max(lo, 0.0)               # time runs forward
                 point[s] = mpmath.mpf(rng.uniform(lo, hi))
             try:
                 vals = fn(*[point[s] for s in ctx.base])
@@ -242,16 +329,22 @@ def _real_states(judgement, name, ref, ctx: Context, seed: int, want: int = 8) -
             values = dict(point)
             values.update({s: v for s, v in zip(ctx.qdd, sol.qdd)})
             values.update({u: v for u, v in zip(models[name].unknowns, lam)})
-            out.append((values, [abs(r) / scale for r in res]))
+            out.append((values, [abs(r) / scale for r in res], not wide))
             if len(out) == want:
                 break
     return out
 
 
 def _best(states: list, i: int):
-    """The state where equation ``i`` is most visibly wrong (``None`` without states)."""
+    """The state where equation ``i`` is most visibly wrong (``None`` without states):
+    inside the working ranges whenever one there shows it."""
     if not states:
         return None
+    inside = [s for s in states if s[2]]
+    if inside:
+        top = max(inside, key=lambda vr: vr[1][i])
+        if top[1][i] > 1e-12:
+            return top[0]
     return max(states, key=lambda vr: vr[1][i])[0]
 
 

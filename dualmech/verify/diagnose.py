@@ -1,0 +1,247 @@
+"""Name the mistake when two derivations disagree: the body, the load, the term.
+
+With two models a vote names nobody.  Below the vote (DESIGN.md, "Two models, and a
+referee"), :func:`diagnose` compares the direct form's declarations with each hand Lagrangian
+(:mod:`.energies`: ``T`` of each body, ``V`` and virtual work of each load, the work of each
+reaction) and, where they agree, finds the balance of the direct form that does not follow
+from them (:mod:`.edits`).  Each statement says how sure it is: that a quantity differs
+between the two models is decided exactly; *which* of the two holds the slip, and that an
+edit is the one the author should make, is said with "probably" unless the comparison
+proves it (the hand Lagrangian agreeing with every declaration puts the error in a balance
+of the direct form -- given those declarations).
+
+``str()`` is the readable form; :meth:`Diagnosis.to_dict` the JSON.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from dualmech.model.direct import NewtonEuler
+from dualmech.model.lagrange import Lagrangian
+from dualmech.verify.display import wrap
+from dualmech.verify.edits import RowEdit, row_edits
+from dualmech.verify.energies import DeclarationCheck, Finding, builders_of, check_declarations
+
+__all__ = ["Diagnosis", "Statement", "diagnose"]
+
+
+@dataclass
+class Statement:
+    """One thing the diagnosis says: ``subject`` (``"T of bob"``, ``"newton_euler [sum F .
+    O.x (cart)]"``), ``model`` (the model the edit is written for), ``parts`` (a sentence:
+    text and expressions, see :func:`dualmech.model.notation.sentence`), ``certain``
+    (whether the subject is proved to be where the models differ)."""
+
+    subject: str
+    model: str
+    parts: tuple
+    certain: bool
+    kind: str = ""
+    terms: list = field(default_factory=list)   # [(kind, have, right)] expressions
+
+    def text(self, notation: str = "dots") -> str:
+        from dualmech.model.notation import sentence
+        return sentence(self.parts, notation)
+
+    def to_dict(self) -> dict:
+        from dualmech.verify.display import dotted
+        show = lambda e: None if e is None else dotted(e)  # noqa: E731
+        return {"subject": self.subject, "model": self.model, "kind": self.kind,
+                "certain": self.certain, "text": self.text(),
+                "terms": [[k, show(h), show(r)] for k, h, r in self.terms]}
+
+
+@dataclass
+class Diagnosis:
+    """What :func:`diagnose` found: its statements, most specific first."""
+
+    statements: list = field(default_factory=list)
+    checks: list = field(default_factory=list)      # the DeclarationCheck of each pair
+    row_edits: list = field(default_factory=list)   # RowEdit of the balances blamed
+
+    def __bool__(self) -> bool:
+        return bool(self.statements)
+
+    def __str__(self) -> str:
+        return self.text()
+
+    def text(self, notation: str = "dots", width: int | None = None) -> str:
+        lines = []
+        for s in self.statements:
+            mark = "" if s.certain else "(probably) "
+            lines.append(wrap(f"- {s.subject}: {mark}{s.text(notation)}", width, indent="  "))
+        return "\n".join(lines)
+
+    def to_dict(self) -> dict:
+        return {"statements": [s.to_dict() for s in self.statements]}
+
+
+def diagnose(problem, judgement=None) -> Diagnosis:
+    """The diagnosis of a problem whose derivations disagree (empty when nothing is named).
+
+    >>> from dualmech.problems import get
+    >>> diagnose(get("trolley_pendulum")).statements
+    []
+    """
+    if judgement is None:
+        judgement = _judge(problem)
+    builders = builders_of(problem)
+    direct = [n for n, b in builders.items() if isinstance(b, NewtonEuler)]
+    hand = [n for n, b in builders.items() if isinstance(b, Lagrangian)]
+    out = Diagnosis()
+    suspects = set(judgement.odd) if judgement is not None else set(builders)
+    for d in direct:
+        for lname in hand:
+            if judgement is not None and {d, lname}.isdisjoint(suspects):
+                continue
+            check = check_declarations(problem, d, lname, builders)
+            out.checks.append(check)
+            for f in check.findings:
+                _merge(out.statements, _finding(f, judgement), f)
+            if not check.findings and not _agree(judgement, d, lname) and \
+                    not any(e.model == d for e in out.row_edits):
+                edits = row_edits(problem, d, lname)
+                out.row_edits += edits
+                for f in check.working_reactions:   # a reaction drawn the wrong way
+                    _merge(out.statements, _finding(f, judgement), f)
+                out.statements += _balances(check, edits)
+    if not out.row_edits and not any(s.kind not in ("balance",) for s in out.statements):
+        for check in out.checks:   # nothing else explains it: a reaction that does work
+            for f in check.working_reactions:
+                _merge(out.statements, _finding(f, judgement), f)
+    return out
+
+
+def _judge(problem):
+    """The verdict on every model of ``problem`` (as :func:`~dualmech.verify.check.compare`
+    judges them)."""
+    from dualmech.verify.check import claims_of
+    from dualmech.verify.sampling import Context
+    from dualmech.verify.verdicts import judge
+    ref = problem.model(problem.reference)
+    ctx = Context(ref.coordinates, problem.parameter_symbols, problem)
+    mapped = {n: problem.in_reference_coordinates(m) for n, m in problem.models().items()}
+    return judge(mapped, context=ctx, reference=problem.reference, claims=claims_of(problem))
+
+
+def _agree(judgement, a: str, b: str) -> bool:
+    if judgement is None:
+        return False
+    if judgement.equivalent:
+        return True
+    return frozenset((a, b)) in judgement.agreeing and not judgement.fault_of(a) \
+        and not judgement.fault_of(b)
+
+
+def _merge(statements: list, new: Statement, f: Finding) -> None:
+    """Add ``new`` unless the same quantity of the same direct model is already named
+    against another hand model (then that statement names both)."""
+    for s in statements:
+        if s.subject == new.subject and s.kind == new.kind and getattr(s, "_direct", None) \
+                == f.direct:
+            return
+    new._direct = f.direct
+    statements.append(new)
+
+
+def _finding(f: Finding, judgement=None) -> Statement:
+    lg, ne = f"`{f.lagrange}`", f"`{f.direct}`"
+    odd = set(judgement.odd) if judgement is not None and judgement.majority else set()
+    if f.kind == "does work":
+        parts = ("in ", ne, f" it does the virtual work δW = ", f.right,
+                 "; the reaction of an ideal constraint does none: its direction or point "
+                 "is wrong (or the constraint is not ideal)")
+        return Statement(f.quantity, f.direct, _flat(parts), False, f.kind, f.terms)
+    source = _source(f)
+    parts: list = []
+    for e in f.edits:
+        if parts:
+            parts.append("; ")
+        if e.kind == "missing":
+            parts += [lg, " is missing the term ", e.right, f", which {source} gives"]
+        elif e.kind == "extra":
+            parts += [lg, " has the term ", e.have, f", which {source} does not give"]
+        elif e.kind == "sign":
+            parts += ["sign: ", lg, " has ", e.have, f" where {source} gives ", e.right]
+        else:
+            parts += [lg, " has ", e.have, f" where {source} gives ", e.right]
+    if not parts:
+        parts = [lg, " has ", f.have, f" where {source} gives ", f.right]
+    if f.reconciles:
+        parts.append(f"; with the declared value in {lg} the two models agree (checked)")
+    elif f.reconciles is False:
+        parts.append(f"; that alone does not reconcile {lg} with {ne}: more differs")
+    if odd == {f.direct}:
+        parts.append(f" -- {ne} is outvoted: the slip is probably in its declaration")
+        model = f.direct
+    elif odd == {f.lagrange}:
+        parts.append(f" -- {lg} is outvoted: the slip is probably in its term")
+        model = f.lagrange
+    else:
+        parts.append(f" -- the slip is in {lg}'s term or in {ne}'s declaration")
+        model = f.lagrange
+    return Statement(f.quantity, model, _flat(parts), not f.probably, f.kind, f.terms)
+
+
+def _source(f: Finding) -> str:
+    if f.quantity.startswith("T of"):
+        what = ", ".join(f.bodies) or "the bodies"
+        return f"the declaration of {what} in `{f.direct}`"
+    what = ", ".join(f.loads) or "the loads"
+    return f"the load {what} of `{f.direct}`"
+
+
+def _balances(check: DeclarationCheck, edits: list[RowEdit]) -> list[Statement]:
+    ne, lg = f"`{check.direct}`", f"`{check.lagrange}`"
+    proved = check.agree and not check.working_reactions
+    if check.agree and check.working_reactions:
+        names = ", ".join(f.quantity for f in check.working_reactions)
+        head = (f"{lg} is the Lagrangian of {ne}'s own bodies and loads (T, V and virtual "
+                f"work agree term by term), so the error is in a balance of {ne} or in the "
+                f"direction of {names}, which does work")
+    elif proved:
+        head = (f"{lg} is the Lagrangian of {ne}'s own bodies and loads (T, V and virtual "
+                "work agree term by term), so the error is in a balance of " + ne)
+    else:
+        head = (f"the kinetic energies of {ne}'s bodies agree with {lg} ({check.note}); the "
+                f"error is probably in a balance of {ne}")
+    if not edits:
+        return [Statement(check.direct, check.direct,
+                          (head + "; no single-row edit reconciles the two",),
+                          check.agree, "balance")]
+    out = [Statement(check.direct, check.direct, (head,), check.agree, "balance")]
+    certain = len(edits) == 1 and proved
+    for e in edits:
+        subject = f"{e.model} [{e.label}]"
+        if e.kind == "sign":
+            parts = ("the ingredient ", e.ingredient, " has the wrong sign: ", e.term,
+                     " should be ", -e.term)
+            terms = [("sign", e.term, -e.term)]
+        elif e.kind == "dropped":
+            parts = ("the ingredient ", e.ingredient, " does not belong here: ", e.term)
+            terms = [("extra", e.term, None)]
+        else:
+            parts, terms = [], []
+            for x in e.edits:
+                parts += ["; " if parts else ""]
+                parts += (["missing the term ", x.right] if x.kind == "missing" else
+                          ["the term ", x.have, " is extra"] if x.kind == "extra" else
+                          ["has ", x.have, " where ", x.right, " belongs"])
+                terms.append((x.kind, x.have, x.right))
+            parts = tuple(parts)
+            if any(x.kind == "missing" and x.right is not None and _has_acc(x.right)
+                   for x in e.edits):
+                parts += (" (a transport term: a moment about a moving point, or an "
+                          "acceleration of the frame, left out)",)
+        parts = tuple(parts) + (f"; with this edit {ne} agrees with {lg} (checked)",)
+        out.append(Statement(subject, e.model, _flat(parts), certain, e.kind, terms))
+    return out
+
+
+def _has_acc(expr) -> bool:
+    import sympy as sp
+    return any(d.derivative_count == 2 for d in expr.atoms(sp.Derivative))
+
+
+def _flat(parts) -> tuple:
+    return tuple(p for p in parts if not (isinstance(p, str) and p == ""))

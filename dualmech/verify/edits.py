@@ -1,0 +1,136 @@
+"""The smallest edit of one row of a derivation that makes it agree with another.
+
+When the direct form's declarations agree with the hand Lagrangian (:mod:`.energies`), a
+disagreement is in a balance of the direct form.  Each row is tried with the smallest edits a
+person makes -- one ingredient (a load, an inertia term) with its sign flipped or left out,
+or the row rewritten into a multiple of a row of the other model with a term or two
+changed (a moment about a moving point taken as if the point were fixed misses the term
+``m r_BC x a_B``) -- and an edit counts only when the edited model then gives the other's
+motion, decided exactly (:func:`~dualmech.verify.verdicts.judge`).  That the edit reconciles
+the two is certain; that it is the mistake made is a suggestion (another edit could too).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from dualmech.model.equations import EquationSet, from_plain
+from dualmech.model.kinematics import t
+from dualmech.verify.sampling import Context
+from dualmech.verify.termdiff import TermEdit, term_edits, term_table
+from dualmech.verify.verdicts import judge
+
+__all__ = ["RowEdit", "row_edits"]
+
+#: candidate edits tried per model (each one verdict): more is a search, not an explanation
+MAX_TRIES = 80
+
+
+@dataclass
+class RowEdit:
+    """An edit of row ``label`` of ``model`` that makes it agree with ``against``.
+
+    ``kind``: ``"sign"`` or ``"dropped"`` of ingredient ``ingredient`` (``term`` its value),
+    or ``"terms"`` (``edits``: term edits, expressions in q(t)).
+    """
+
+    model: str
+    label: str
+    against: str
+    kind: str
+    ingredient: str = ""
+    term: sp.Expr | None = None
+    edits: list = field(default_factory=list)
+
+
+def row_edits(problem, model: str, against: str, seed: int = 0) -> list[RowEdit]:
+    """Single-row edits of ``model`` (of ``problem``) that make it agree with ``against``
+    (all found among the candidates; empty when none does).
+
+    >>> import dataclasses
+    >>> from dualmech.problems import get
+    >>> p = get("trolley_pendulum")
+    >>> class Flipped(type(p)):
+    ...     def newton_euler(self):
+    ...         m = super().newton_euler()
+    ...         parts = [dict(c) for c in m.contributions]
+    ...         parts[0]["F on trolley"] = -parts[0]["F on trolley"]
+    ...         eqs = [sum(c.values()) for c in parts]
+    ...         return dataclasses.replace(m, equations=tuple(eqs), contributions=tuple(parts))
+    >>> [(e.label, e.kind, e.ingredient) for e in row_edits(Flipped(), "newton_euler", "lagrange")]
+    [('sum F . O.x (trolley)', 'sign', 'F on trolley')]
+    """
+    m = problem.model(model)
+    ref = problem.model(problem.reference).coordinates
+    if set(m.coordinates) != set(ref):
+        return []
+    other = problem.in_reference_coordinates(problem.model(against))
+    ctx = Context(ref, problem.parameter_symbols, problem)
+    eqs = list(m.equations)
+    found, tries = [], 0
+
+    def agrees(i, row) -> bool:
+        nonlocal tries
+        tries += 1
+        rows = eqs[:i] + [row] + eqs[i + 1:]
+        try:
+            edited = EquationSet(m.name, m.coordinates, tuple(rows), m.unknowns, m.labels)
+            j = judge({against: other, "edited": edited}, context=ctx, points=4, seed=seed,
+                      reference=against)
+        except Exception:  # noqa: BLE001 - an edit that breaks the model is no edit
+            return False
+        return not j.faults
+    for i, parts in enumerate(m.contributions or ()):
+        for key, value in parts.items():
+            value = sp.sympify(value)
+            if value == 0 or tries >= MAX_TRIES:
+                continue
+            for kind, factor in (("sign", -1), ("dropped", 0)):
+                if agrees(i, eqs[i] + (factor - 1) * value):
+                    found.append(RowEdit(model, m.labels[i], against, kind, key, value))
+                    break
+    if found:
+        return found
+    for i in range(len(eqs)):
+        if tries >= MAX_TRIES:
+            break
+        edit = _term_edit(m, i, other, agrees)
+        if edit is not None:
+            found.append(RowEdit(model, m.labels[i], against, "terms", edits=edit))
+    return found
+
+
+def _term_edit(m, i, other, agrees) -> list | None:
+    """Term edits turning row ``i`` (free of reactions) into a multiple of a row of
+    ``other`` (also free of reactions) -- at most two terms -- that reconcile the models."""
+    row = m.to_plain(m.equations[i])
+    if row.free_symbols & set(m.unknowns):
+        return None
+    states = {x for s in m.states for x in (s.q, s.qd, s.qdd)} | {t}
+    mine = term_table(row, states)
+    if not mine:
+        return None
+    best = None
+    for target in other.equations:
+        target = other.to_plain(target)
+        if target.free_symbols & set(other.unknowns):
+            continue
+        theirs = term_table(target, states)
+        if not theirs:
+            continue
+        for key in [k for k in mine if k in theirs and k.free_symbols & {s.qdd for s in m.states}]:
+            scale = sp.cancel(mine[key] / theirs[key])
+            if scale.free_symbols & states:
+                continue
+            edits = term_edits(row, scale * target, states)
+            if edits is None or not 0 < len(edits) <= 2:
+                continue
+            if best is None or len(edits) < len(best[0]):
+                best = (edits, scale * target)
+            break
+    if best is None or not agrees(i, from_plain(best[1], m.coordinates)):
+        return None
+    return [TermEdit(e.kind, None if e.have is None else from_plain(e.have, m.coordinates),
+                     None if e.right is None else from_plain(e.right, m.coordinates))
+            for e in best[0]]
