@@ -130,11 +130,12 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
-                      Point, Problem, Published, Reaction, RigidBody, composite, coordinate,
-                      point_mass, rate, rot_z, t, ACCELERATION, ANGLE, FORCE, LENGTH, MASS, TORQUE)
+from dualmech import (Coordinate, EquationSet, FidelityRung, Frame, Lagrangian, NewtonEuler,
+                      Parameter, Particle, Point, Problem, Published, Reaction, RigidBody,
+                      composite, coordinate, point_mass, rate, rot_z, t, ACCELERATION, ANGLE,
+                      FORCE, LENGTH, MASS, TORQUE)
 
-__all__ = ["MobileRobotSimplified", "MobileRobot", "PROBLEMS", "arm_properties",
+__all__ = ["MobileRobotSimplified", "MobileRobot", "PROBLEMS", "LADDER", "arm_properties",
            "base_profile", "arm_profile", "M", "m1", "m2", "D1", "D2", "r2", "g", "f", "T",
            "x", "phi", "u"]
 
@@ -224,12 +225,21 @@ def _published_common(sc) -> list[Published]:
     ]
 
 
+#: The case study's fidelity ladder, shared by both models (the classes are defined below).
+LADDER = (
+    FidelityRung("simplified: pivot reaction H neglected in the base's balance",
+                 lambda: MobileRobotSimplified(), "the pivot reaction H", ("H",)),
+    FidelityRung("detailed: H kept (2.6-9 to 2.6-13)", lambda: MobileRobot()),
+)
+
+
 class MobileRobotSimplified(Problem):
     """Base and arm with the pivot reaction neglected in the base's balance (2.6-1, 2.6-2)."""
 
     name = "mobile_robot_simplified"
     title = "Mobile robot, simplified model (pivot reaction neglected)"
     source = "000_203248afac9714e6.txt: Case Study, Preliminary Design Model (2.6-1)-(2.6-3)"
+    fidelity_ladder = LADDER
     summary = ("Base lumped with arm and hand, arm on an accelerating pivot; the simplified "
                "model's peak motor force 262.5 N reproduced along the base's motion profile.")
     parameters = _parameters()
@@ -285,6 +295,7 @@ class MobileRobot(Problem):
     name = "mobile_robot"
     title = "Mobile robot, detailed model with the pivot reaction H"
     source = "000_203248afac9714e6.txt: Case Study, A More Detailed Model (2.6-9)-(2.6-13)"
+    fidelity_ladder = LADDER
     summary = ("Base and arm coupled through the pivot reaction H, recovered from the "
                "free-body diagrams and as a multiplier; the difference from the simplified "
                "model along the motion profile and the homework's simulations.")
