@@ -239,7 +239,6 @@ class MobileRobotSimplified(Problem):
     name = "mobile_robot_simplified"
     title = "Mobile robot, simplified model (pivot reaction neglected)"
     source = "000_203248afac9714e6.txt: Case Study, Preliminary Design Model (2.6-1)-(2.6-3)"
-    fidelity_ladder = LADDER
     summary = ("Base lumped with arm and hand, arm on an accelerating pivot; the simplified "
                "model's peak motor force 262.5 N reproduced along the base's motion profile.")
     parameters = _parameters()
@@ -247,6 +246,7 @@ class MobileRobotSimplified(Problem):
         Coordinate(x, LENGTH, (-1.0, 6.0), (-3.0, 3.0), "position of the base"),
         Coordinate(phi, ANGLE, (-3.0, 3.0), (-3.0, 3.0), "arm angle from the upward vertical"),
     )
+    fidelity_ladder = LADDER
 
     def newton_euler(self) -> EquationSet:
         """Lumped base along ``i``; the arm's moments about the accelerating pivot P."""
@@ -295,7 +295,6 @@ class MobileRobot(Problem):
     name = "mobile_robot"
     title = "Mobile robot, detailed model with the pivot reaction H"
     source = "000_203248afac9714e6.txt: Case Study, A More Detailed Model (2.6-9)-(2.6-13)"
-    fidelity_ladder = LADDER
     summary = ("Base and arm coupled through the pivot reaction H, recovered from the "
                "free-body diagrams and as a multiplier; the difference from the simplified "
                "model along the motion profile and the homework's simulations.")
@@ -308,6 +307,7 @@ class MobileRobot(Problem):
         Coordinate(u, LENGTH, (-0.05, 0.05), (-0.2, 0.2), "slip of the pivot along the base"),
     )
     reactions = (Reaction("H", FORCE, "pivot on arm, along i (the base gets -H)"),)
+    fidelity_ladder = LADDER
     extra_models = ("multiplier",)
 
     def coordinate_maps(self) -> dict:

@@ -292,8 +292,8 @@ class Problem:
     probes: tuple = ()
     stiff_scene: StiffScene | None = None
     fidelity_ladder: tuple = ()
-    chaotic_state: tuple = ()
-    initial_state: tuple = ()
+    chaotic_state: tuple | dict = ()
+    initial_state: tuple | dict = ()
 
     # -- to be provided by subclasses --------------------------------------------------
     def coordinate_maps(self) -> dict:

@@ -329,6 +329,9 @@ def probe(problem, declared: Probe | None = None, *, methods: Sequence[str] = ("
         if not problem.probes:
             raise ValueError(f"`{problem.name}`: {NO_PROBE}")
         declared = problem.probes[0]
+    if not isinstance(declared, Probe):
+        raise TypeError(f"`declared` must be a Probe(state, formulation, duration, why), got "
+                        f"{declared!r:.60}.")
     y0 = state_vector(problem, declared.state, "`Probe.state`")
     fname, duration, description = declared.formulation, declared.duration, declared.why
     values = problem_parameters(problem, params)
