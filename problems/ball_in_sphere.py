@@ -160,6 +160,7 @@ class BallInSphere(Problem):
     reactions = (Reaction("N", FORCE, "sphere on ball, along -e_r (towards the centre)"),)
     singular = (sp.sin(theta),)
     extra_models = ("angular_momentum", "multiplier")
+    unilateral = {"N": "the ball leaves the sphere's wall"}
 
     def coordinate_maps(self) -> dict:
         return {"multiplier": {theta: theta, phi: phi, r: a}}

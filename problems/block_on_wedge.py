@@ -157,6 +157,8 @@ class BlockOnWedge(Problem):
         Reaction("N2", FORCE, "ground on wedge, along j"),
     )
     extra_models = ("lagrange_multipliers",)
+    unilateral = {"N1": "the block lifts off the incline",
+                  "N2": "the wedge lifts off the ground"}
 
     def newton_euler(self) -> EquationSet:
         """Block along the slope and its normal; wedge along ``i`` and ``j``."""

@@ -199,6 +199,7 @@ class CartPendulum(Problem):
         Reaction("T", FORCE, "rod tension on the bob, along R.y (toward the pivot)"),
         Reaction("S", FORCE, "rod on the bob, transverse, along R.x = e_theta"),
     )
+    unilateral = {"N": "the cart lifts off its bed"}
 
     def newton_euler(self) -> EquationSet:
         """Cart and bob along two directions each; the massless rod's moments about the pivot."""

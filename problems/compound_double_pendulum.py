@@ -160,6 +160,7 @@ class CompoundDoublePendulum(Problem):
         Coordinate(v, LENGTH, (-0.05, 0.05), (-0.2, 0.2), "hinge gap along j (body from link)"),
     )
     extra_models = ("moments", "multiplier")
+    chaotic_state = (2.0, 2.5, 0.0, 0.0)   # both released at rest, high: a chaotic motion
 
     def coordinate_maps(self) -> dict:
         return {"multiplier": {theta1: theta1, theta2: theta2, u: 0, v: 0}}

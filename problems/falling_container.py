@@ -103,14 +103,24 @@ from __future__ import annotations
 import sympy as sp
 
 from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
-                      Point, Problem, Published, Reaction, coordinate, rate, t, ACCELERATION,
-                      DAMPING, FORCE, LENGTH, MASS, STIFFNESS)
+                      Point, Problem, Published, Reaction, StiffScene, coordinate, rate, t,
+                      ACCELERATION, DAMPING, FORCE, LENGTH, MASS, STIFFNESS)
 
-__all__ = ["FallingContainer", "PROBLEMS"]
+__all__ = ["FallingContainer", "PROBLEMS", "free_fall"]
 
 m1, m2, k, c, l0, g = sp.symbols("m1 m2 k c l0 g", positive=True)
 x1, x2 = coordinate("x1"), coordinate("x2")
 y1, y2 = coordinate("y1"), coordinate("y2")
+
+
+def free_fall(values: dict, y0, times) -> list:
+    """The exact motion from a state with the spring at its free length and both masses at
+    the same speed: the spring and dashpot stay idle, so each height falls with ``g``,
+    ``x = x0 + x0' t - g t^2 / 2`` -- the rows ``x1, x2, x1', x2'`` at ``times`` (an array).
+    """
+    fall = values["g"] * times
+    return [y0[0] + y0[2] * times - fall * times / 2, y0[1] + y0[3] * times - fall * times / 2,
+            y0[2] - fall, y0[3] - fall]
 
 
 class FallingContainer(Problem):
@@ -144,6 +154,10 @@ class FallingContainer(Problem):
     )
     reference = "lagrange"
     extra_models = ("lagrange_y", "newton_euler_y")
+    stiff_scene = StiffScene("k", (2.2, 2.5, 0.0, 0.0), 0.5,
+                             "released at rest with the spring at its free length (x2 - x1 = "
+                             "l0): both masses fall freely, the spring never stretches",
+                             exact=free_fall)
 
     # -- direct form ---------------------------------------------------------------------
     def newton_euler(self) -> EquationSet:

@@ -83,9 +83,9 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
-                      Problem, Published, RigidBody, coordinate, rate, rot_y, rot_z, t, thin_rod,
-                      ACCELERATION, ANGLE, FREQUENCY, LENGTH, MASS)
+from dualmech import (Coordinate, EquationSet, FidelityRung, Frame, Lagrangian, NewtonEuler,
+                      Parameter, Point, Problem, Published, RigidBody, coordinate, rate, rot_y,
+                      rot_z, t, thin_rod, ACCELERATION, ANGLE, FREQUENCY, LENGTH, MASS)
 
 __all__ = ["HelicopterBlade", "HelicopterBladeWeighted", "PROBLEMS", "frames", "lift_per_length", "first_order", "M", "L",
            "Omega", "A", "alpha0", "g", "beta", "x"]
@@ -141,6 +141,12 @@ class HelicopterBlade(Problem):
     )
     reactions = ()
     singular = ()
+    # the ladder both variants share (the weighted one is defined below)
+    fidelity_ladder = (
+        FidelityRung("source: weight neglected", lambda: HelicopterBlade(),
+                     "the blade's weight, M g L^2 cos(beta)/2 about the hinge"),
+        FidelityRung("blade's weight kept", lambda: HelicopterBladeWeighted()),
+    )
 
     weight = False   # the source neglects the blade's weight (HelicopterBladeWeighted keeps it)
 

@@ -130,11 +130,12 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
-                      Point, Problem, Published, Reaction, RigidBody, composite, coordinate,
-                      point_mass, rate, rot_z, t, ACCELERATION, ANGLE, FORCE, LENGTH, MASS, TORQUE)
+from dualmech import (Coordinate, EquationSet, FidelityRung, Frame, Lagrangian, NewtonEuler,
+                      Parameter, Particle, Point, Problem, Published, Reaction, RigidBody,
+                      composite, coordinate, point_mass, rate, rot_z, t, ACCELERATION, ANGLE,
+                      FORCE, LENGTH, MASS, TORQUE)
 
-__all__ = ["MobileRobotSimplified", "MobileRobot", "PROBLEMS", "arm_properties",
+__all__ = ["MobileRobotSimplified", "MobileRobot", "PROBLEMS", "LADDER", "arm_properties",
            "base_profile", "arm_profile", "M", "m1", "m2", "D1", "D2", "r2", "g", "f", "T",
            "x", "phi", "u"]
 
@@ -224,6 +225,14 @@ def _published_common(sc) -> list[Published]:
     ]
 
 
+#: The case study's fidelity ladder, shared by both models (the classes are defined below).
+LADDER = (
+    FidelityRung("simplified: pivot reaction H neglected in the base's balance",
+                 lambda: MobileRobotSimplified(), "the pivot reaction H", ("H",)),
+    FidelityRung("detailed: H kept (2.6-9 to 2.6-13)", lambda: MobileRobot()),
+)
+
+
 class MobileRobotSimplified(Problem):
     """Base and arm with the pivot reaction neglected in the base's balance (2.6-1, 2.6-2)."""
 
@@ -237,6 +246,7 @@ class MobileRobotSimplified(Problem):
         Coordinate(x, LENGTH, (-1.0, 6.0), (-3.0, 3.0), "position of the base"),
         Coordinate(phi, ANGLE, (-3.0, 3.0), (-3.0, 3.0), "arm angle from the upward vertical"),
     )
+    fidelity_ladder = LADDER
 
     def newton_euler(self) -> EquationSet:
         """Lumped base along ``i``; the arm's moments about the accelerating pivot P."""
@@ -297,6 +307,7 @@ class MobileRobot(Problem):
         Coordinate(u, LENGTH, (-0.05, 0.05), (-0.2, 0.2), "slip of the pivot along the base"),
     )
     reactions = (Reaction("H", FORCE, "pivot on arm, along i (the base gets -H)"),)
+    fidelity_ladder = LADDER
     extra_models = ("multiplier",)
 
     def coordinate_maps(self) -> dict:

@@ -67,9 +67,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
-                      Point, Problem, Reaction, RigidBody, coordinate, rate, rot_z, thin_rod,
-                      ACCELERATION, ANGLE, FORCE, LENGTH, MASS)
+from dualmech import (Coordinate, EquationSet, FidelityRung, Frame, Lagrangian, NewtonEuler,
+                      Parameter, Particle, Point, Problem, Reaction, RigidBody, coordinate, rate,
+                      rot_z, thin_rod, ACCELERATION, ANGLE, FORCE, LENGTH, MASS)
 
 __all__ = ["NLinkPendulum", "NLinkRigidPendulum", "PROBLEMS"]
 
@@ -90,6 +90,12 @@ class _Chain(Problem):
     parametric = "n"
     source = "dualmech: parametric scaling problem (after 002's compound double pendulum)"
     reference = "lagrange"
+    # both chains' fidelity ladder, three links each (the classes are defined below)
+    fidelity_ladder = (
+        FidelityRung("point masses on massless rods", lambda: NLinkPendulum(n=3),
+                     "the rods' mass distribution (each rod's mass lumped at its lower end)"),
+        FidelityRung("uniform rigid rods", lambda: NLinkRigidPendulum(n=3)),
+    )
 
     def __init__(self, n: int = 3, cartesian: bool = True):
         self.n = _check_n(n)

@@ -151,6 +151,8 @@ class PulleyBentTrack(Problem):
         Reaction("N2", FORCE, "incline on M2, along its outward normal n"),
     )
     extra_models = ("multiplier",)
+    unilateral = {"T1": "the string to M1 goes slack", "T2": "the string to M2 goes slack",
+                  "N1": "M1 lifts off its track", "N2": "M2 lifts off the incline"}
 
     def coordinate_maps(self) -> dict:
         return {"multiplier": {x1: x, x2: x, phi: x / r, y1: 0, y2: 0}}

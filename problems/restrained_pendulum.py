@@ -103,9 +103,10 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
-                      Point, Problem, Published, Reaction, RigidBody, coordinate, rate, rot_z,
-                      ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS)
+from dualmech import (Coordinate, EquationSet, FidelityRung, Frame, Lagrangian, NewtonEuler,
+                      Parameter, Particle, Point, Problem, Published, Reaction, RigidBody,
+                      coordinate, rate, rot_z, ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MASS,
+                      STIFFNESS)
 
 __all__ = ["RestrainedPendulum", "RestrainedPendulumHorizontal", "PROBLEMS", "hand_reactions",
            "hand_reactions_horizontal", "m", "l", "k", "c", "a", "b", "g", "theta", "u", "v"]
@@ -174,6 +175,13 @@ class RestrainedPendulum(Problem):
         Reaction("V", FORCE, "pivot on link, along j (up)"),
     )
     extra_models = ("multiplier",)
+    # the ladder both variants share (the horizontal one is defined below)
+    fidelity_ladder = (
+        FidelityRung("source: spring and dashpot along their arcs (Example 12's U, R)",
+                     lambda: RestrainedPendulum(), "the elements' turn away from horizontal "
+                     "(travel b th for b sin th, rate a th' for a th' cos th)"),
+        FidelityRung("spring and dashpot horizontal", lambda: RestrainedPendulumHorizontal()),
+    )
 
     def coordinate_maps(self) -> dict:
         return {"multiplier": {theta: theta, u: 0, v: 0}}

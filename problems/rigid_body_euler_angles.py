@@ -82,7 +82,7 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
-                      Problem, Published, RigidBody, coordinate, rate, rot_y, rot_z, ANGLE,
+                      Probe, Problem, Published, RigidBody, coordinate, rate, rot_y, rot_z, ANGLE,
                       INERTIA, TORQUE)
 
 __all__ = ["RigidBodyEulerAngles", "PROBLEMS", "frames", "body_rates", "A", "B", "C", "Q1",
@@ -133,6 +133,8 @@ class RigidBodyEulerAngles(Problem):
     )
     reactions = ()
     singular = (sp.sin(theta),)
+    probes = (Probe((0.0, 0.3, 0.0, 1e-2, -0.3, 1e-2), "lagrange", 1.5,
+                    "the nutation angle heads for 0: gimbal lock of the z-y-z angles"),)
 
     # -- direct form: Euler's equations, sum tau_G = dH_G/dt in body axes --------------------
     def newton_euler(self) -> EquationSet:

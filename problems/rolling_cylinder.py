@@ -139,6 +139,7 @@ class RollingCylinder(Problem):
         Reaction("N", FORCE, "normal force, ground on cylinder at the contact point, along J"),
     )
     extra_models = ("multiplier",)
+    unilateral = {"N": "the cylinder lifts off the ground"}
 
     def coordinate_maps(self) -> dict:
         return {"multiplier": {theta: theta, xc: -R * theta, yc: R}}

@@ -110,6 +110,7 @@ class SimplePendulum(Problem):
     )
     reactions = (Reaction("T", FORCE, "string on bob, along arm.y (towards the pivot)"),)
     extra_models = ("angular_momentum", "multiplier")
+    unilateral = {"T": "the string goes slack"}
 
     def coordinate_maps(self) -> dict:
         return {"multiplier": {theta: theta, r: a}}

@@ -81,8 +81,8 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
-                      Point, Problem, Published, Reaction, RelativeMotion, Vector, coordinate,
-                      rate, rot_x, rot_y, ACCELERATION, ANGLE, FORCE, LENGTH, MASS)
+                      Point, Probe, Problem, Published, Reaction, RelativeMotion, Vector,
+                      coordinate, rate, rot_x, rot_y, ACCELERATION, ANGLE, FORCE, LENGTH, MASS)
 
 __all__ = ["ToyCar", "PROBLEMS", "frames", "coriolis_term", "m", "R", "g", "theta", "phi", "rho"]
 
@@ -145,6 +145,10 @@ class ToyCar(Problem):
     reactions = (Reaction("F_r", FORCE, "along k_B, track on car"),)
     singular = (sp.cos(theta),)
     extra_models = ("angular_momentum", "multiplier")
+    unilateral = {"F_r": "the car leaves the track (the track cannot pull it towards O)"}
+    probes = (Probe((1.3, 1e-3, 3.5, 0.0), "lagrange", 1.0,
+                    "the car runs over the track's pivot axis (cos(theta) = 0), the track "
+                    "tilted by 1 mrad"),)
 
     def coordinate_maps(self) -> dict:
         return {"multiplier": {theta: theta, phi: phi, rho: R}}

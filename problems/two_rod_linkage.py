@@ -111,7 +111,7 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
-                      Point, Problem, Published, Reaction, coordinate, rate, rot_z, t,
+                      Point, Probe, Problem, Published, Reaction, coordinate, rate, rot_z, t,
                       ACCELERATION, ANGLE, DAMPING, FORCE, LENGTH, MASS, STIFFNESS)
 
 __all__ = ["TwoRodLinkage", "PROBLEMS", "scene", "M", "m", "k", "c", "l", "l0", "g", "theta",
@@ -177,6 +177,9 @@ class TwoRodLinkage(Problem):
     )
     singular = (sp.sin(theta),)
     extra_models = ("lagrange_x", "multiplier")
+    probes = (Probe((2.7, 3.0), "lagrange_x", 1.0,
+                    "the spring throws the rods flat (sin(theta) = 0, at 0.68 s), where the x "
+                    "form's mass is infinite and m passes below the line"),)
 
     def coordinate_maps(self) -> dict:
         x_of_theta = 2 * l * sp.cos(theta) - l0

@@ -202,6 +202,7 @@ class WheelOnPivot(Problem):
         Reaction("R_z", FORCE, "pivot on the axle at O, along k"),
     )
     extra_models = ("angular_momentum", "multiplier", "pivot_multiplier")
+    unilateral = {"F_z": "the wheel lifts off the plane"}
 
     def coordinate_maps(self) -> dict:
         return {"multiplier": {phi: phi, psi: -l / a * phi, eps: 0},

@@ -125,7 +125,7 @@ def _rounding_bound(k, m1, m2, c, g, l0, y0):
 def test_fastest_eigenvalue_is_the_hand_relative_mode(stiff):
     m1, m2, c, g, l0 = 3.0, 1.0, 4.0, 9.81, 0.3
     mu = m1 * m2 / (m1 + m2)
-    y0 = np.array([2.2, 2.5, 0.0, 0.0])  # regimes.STIFF_SCENES: released at rest, l0 apart
+    y0 = np.array([2.2, 2.5, 0.0, 0.0])  # FallingContainer.stiff_scene: at rest, l0 apart
     for r in stiff.rows:
         hand = complex(-c / (2 * mu), np.sqrt(r["value"] / mu - (c / (2 * mu))**2))
         # the finite differences' rounding (7e-4 at k = 1e6, 7e-3 at 1e7): under 1 % of the

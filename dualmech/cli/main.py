@@ -120,7 +120,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--json", action="store_true",
                    help="print JSON: one object for one problem, a list for several")
     p.add_argument("--n", metavar="N", type=_positive_int, default=None,
-                   help="size of a parametric problem (e.g. n_link_pendulum --n 10)")
+                   help="size of a parametric problem (one that declares `parametric`), "
+                        "e.g. --n 10")
     p.add_argument("--jobs", "-j", metavar="J", type=_positive_int, default=None,
                    help="problems checked at once, in worker processes (default: one per "
                         "CPU when several problems are checked)")
@@ -172,7 +173,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="problems to mutate: catalogue names, path.py[:Class] or module:Class")
     p.add_argument("--all", action="store_true", help="every problem of the catalogue")
     p.add_argument("--n", metavar="N", type=_positive_int, default=None,
-                   help="size of a parametric problem (e.g. n_link_pendulum --n 3)")
+                   help="size of a parametric problem (one that declares `parametric`), "
+                        "e.g. --n 3")
     p.add_argument("--points", metavar="K", type=_points, default=3,
                    help="random exact points per verdict (default: %(default)s)")
     p.add_argument("--seed", metavar="S", type=int, default=0,

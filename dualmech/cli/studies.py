@@ -211,12 +211,11 @@ def _atlas(args) -> int:
 
 
 def _fidelity(args) -> int:
-    from dualmech.numeric.studies.fidelity import has_ladder, ladder
+    from dualmech.numeric.studies.fidelity import NO_LADDER, has_ladder, ladder
     p = _problem(args.name)
     if not has_ladder(p):
-        raise _Usage(f"`{p.name}` has no fidelity ladder: no simpler model in the sources and "
-                     "no stable equilibrium to linearise about; try mobile_robot, "
-                     "n_link_pendulum or a pendulum.")
+        raise _Usage(f"`{p.name}` has no fidelity ladder: no stable equilibrium to linearise "
+                     f"about, and {NO_LADDER}.")
     out = _writable(args.out)
     result = ladder(p)
     paths = result.write(out)

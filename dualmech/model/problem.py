@@ -34,9 +34,11 @@ import sympy as sp
 from dualmech.model._expr import as_expr
 from dualmech.model.dimensions import ENERGY, Dimension, as_dimension, audit_rows, quoted, reduce
 from dualmech.model.equations import EquationSet, ModelError, Rows
+from dualmech.model.facts import FidelityRung, Probe, StiffScene, declaration_errors
 from dualmech.model.kinematics import t
 
-__all__ = ["Parameter", "Coordinate", "Reaction", "Published", "Problem", "ProblemError"]
+__all__ = ["Parameter", "Coordinate", "Reaction", "Published", "Problem", "ProblemError",
+           "Probe", "StiffScene", "FidelityRung"]
 
 
 class ProblemError(ModelError):
@@ -185,14 +187,93 @@ def _tuple(x) -> tuple:
 class Problem:
     """Base class of every problem; see the module docstring.
 
-    Class attributes to set: ``name``, ``title``, ``source`` (file and place), ``parameters``,
-    ``coordinates``, ``reactions``, ``singular`` (expressions whose zeros are the singular set,
-    e.g. ``cos(theta)``), ``reference`` (the model the others are compared with, default
-    ``"lagrange"``).  Each model is a method listed in ``model_names`` (default: the methods
-    among ``newton_euler``, ``lagrange`` and those in ``extra_models``).  ``aliases`` maps
-    names students use to the source's symbols (``{"l": "a"}`` where the source writes ``a``
-    for a length students call ``l``); the grader accepts an alias only when no symbol of the
-    problem has that name.
+    A problem class declares what it is made of as class attributes, and one method per
+    derivation (``newton_euler``, ``lagrange`` and those named in ``extra_models``), each
+    returning an :class:`~dualmech.model.equations.EquationSet`.
+
+    Attributes
+    ----------
+    name, title, source, summary : str
+        The catalogue name, a title, the source file and place, one line on what it shows.
+    parameters, coordinates, reactions : tuple
+        :class:`Parameter`, :class:`Coordinate` (of the reference model) and
+        :class:`Reaction` declarations.
+    singular : tuple
+        Expressions whose zeros are the singular set, e.g. ``(sp.cos(theta),)``.
+    reference : str
+        The model the others are compared with (default ``"lagrange"``).
+    extra_models : tuple of str
+        Model methods besides ``newton_euler`` and ``lagrange`` (:attr:`model_names`).
+    aliases : dict
+        Names students use for the source's symbols (``{"l": "a"}`` where the source writes
+        ``a`` for a length students call ``l``); the grader accepts an alias only when no
+        symbol of the problem has that name.
+
+    The facts below are physics, or a choice of scene, that the equations do not carry; the
+    numeric studies read them from here and nothing else (all default to none declared).
+    A *state* is ``[q..., q'...]`` in the reference coordinates, or a mapping
+    ``{q: value, q.diff(t): rate}`` with missing rates zero.
+
+    unilateral : dict
+        One-sided reactions, ``{reaction name: what happens when it would change sign}``:
+        each must stay >= 0 along its declared direction (a track that can only push, a
+        string that can only pull).  Simulations stop where one would have to change sign
+        and say so (:func:`~dualmech.numeric.contacts.watch`), e.g.
+        ``unilateral = {"T": "the string goes slack"}``.
+    probes : tuple of :class:`~dualmech.model.facts.Probe`
+        Runs heading for the singular set, for the atlas's singularities section:
+        ``probes = (Probe((1.3, 1e-3, 3.5, 0.0), "lagrange", 1.0, "the car runs over the
+        pivot axis"),)`` -- the state, the formulation to watch, the seconds to run, why.
+    stiff_scene : :class:`~dualmech.model.facts.StiffScene` or None
+        The scene of the stiffness sweep: ``StiffScene("k", (2.2, 2.5, 0.0, 0.0), 0.5,
+        "released at rest with the spring at its free length")``.
+    fidelity_ladder : tuple of :class:`~dualmech.model.facts.FidelityRung`
+        Simpler models below the richest (last):  ``(FidelityRung("point masses",
+        lambda: NLinkPendulum(n=3), "the rods' mass distribution"), FidelityRung("rigid
+        rods", lambda: NLinkRigidPendulum(n=3)))``.
+    chaotic_state : state
+        Where the chaos section starts, a state whose motion is chaotic (default: the
+        initial state), e.g. ``chaotic_state = (2.0, 2.5, 0.0, 0.0)``.
+    initial_state : state
+        Where simulations, charts and studies start by default (otherwise 60 % into each
+        coordinate's range, at rest), e.g. ``initial_state = {theta: 2.0, rate(theta): 4.0}``.
+
+    Every declaration is checked by :meth:`validate`: a reaction, parameter or model it
+    names must exist, a state must have one value per coordinate and rate.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from dualmech import (Problem, Parameter, Coordinate, Reaction, StiffScene, NewtonEuler,
+    ...                       Particle, Point, Frame, coordinate, MASS, STIFFNESS, LENGTH,
+    ...                       FORCE, ACCELERATION)
+    >>> m, k, g = sp.symbols("m k g", positive=True); x = coordinate("x")
+    >>> class Block(Problem):
+    ...     name, title, source = "block", "Block on a spring, on a floor", "000: example"
+    ...     parameters = (Parameter(m, MASS, 2, (0.1, 10)), Parameter(k, STIFFNESS, 50, (1, 500)),
+    ...                   Parameter(g, ACCELERATION, 9.81, (9, 10)))
+    ...     coordinates = (Coordinate(x, LENGTH, (-1, 1)),)
+    ...     reactions = (Reaction("N", FORCE, "floor on block, up"),)
+    ...     unilateral = {"N": "the block lifts off the floor"}
+    ...     stiff_scene = StiffScene("k", (0.0, 0.0), 1.0, "at rest where the spring is free")
+    ...     initial_state = {x: 0.3}
+    ...     reference = "newton_euler"
+    ...     def newton_euler(self):
+    ...         O = Frame.ground("O"); block = Particle("block", m, Point.origin(O).locate(
+    ...             "B", x * O.x))
+    ...         ne = NewtonEuler(coordinates=[x], ground=O)
+    ...         ne.gravity(-g * O.y); ne.force("spring", block, -k * x * O.x)
+    ...         ne.reaction("N", block, O.y)
+    ...         ne.linear_momentum(block, O.x); ne.linear_momentum(block, O.y)
+    ...         return ne.equations()
+    >>> Block().validate()
+    >>> class Typo(Block):
+    ...     unilateral = {"n": "the block lifts off the floor"}
+    >>> Typo().validate()
+    Traceback (most recent call last):
+    ...
+    dualmech.model.problem.ProblemError: problem `block` has 1 mistake(s):
+      - `unilateral`: `n` is not a declared reaction (declared: N)
     """
 
     name: str = ""
@@ -206,6 +287,13 @@ class Problem:
     reference: str = "lagrange"
     extra_models: tuple = ()
     aliases: dict = {}
+    # -- facts the equations do not carry (see the class docstring) ----------------------
+    unilateral: dict = {}
+    probes: tuple = ()
+    stiff_scene: StiffScene | None = None
+    fidelity_ladder: tuple = ()
+    chaotic_state: tuple | dict = ()
+    initial_state: tuple | dict = ()
 
     # -- to be provided by subclasses --------------------------------------------------
     def coordinate_maps(self) -> dict:
@@ -340,6 +428,7 @@ class Problem:
         for c in self.all_coordinates():
             if c.function not in used_coords:
                 errors.append(f"coordinate `{c.name}` is declared but no model uses it")
+        errors += declaration_errors(self)
         if errors:
             raise ProblemError(f"problem `{self.name or type(self).__name__}` has "
                                f"{len(errors)} mistake(s):\n  - " + "\n  - ".join(errors))

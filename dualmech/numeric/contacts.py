@@ -7,10 +7,10 @@ with an event on each such reaction and stops where it changes sign -- *when* (t
 located by the integrator's root finder on its dense output) and *where* (the state there) --
 saying that the model's assumption breaks, instead of going on silently.
 
-Which reactions are one-sided is physics the equations do not carry: a problem may declare
+Which reactions are one-sided is physics the equations do not carry: a problem declares
 ``unilateral = {"N": "the block lifts off"}`` (the force must stay >= 0 along its declared
-direction); for the catalogue's problems that do not, :data:`UNILATERAL` reads it from the
-reaction's stated direction.
+direction, :attr:`Problem.unilateral <dualmech.model.problem.Problem>`); a problem that
+declares none is integrated without a watch.
 
 :func:`scene_span` also ends a simulation where a length coordinate leaves the range the
 problem declares for it (the block at the end of its incline, the container at the floor of
@@ -31,35 +31,18 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from dualmech.model.dimensions import ANGLE, reduce
+from dualmech.model.facts import not_declared
 from dualmech.numeric.model import NumericModel, SingularityError
 from dualmech.numeric.simulation import default_initial_state, direct_models, problem_parameters
 
-__all__ = ["UNILATERAL", "ContactBreak", "ContactReport", "unilateral_of", "watch",
+__all__ = ["ContactBreak", "ContactReport", "unilateral_of", "watch",
            "scene_span", "SceneSpan"]
-
-#: One-sided reactions of the catalogue: ``{problem: {reaction: what happens when it would
-#: have to change sign}}``; each must stay >= 0 along the direction its problem declares.
-UNILATERAL = {
-    "toy_car": {"F_r": "the car leaves the track (the track cannot pull it towards O)"},
-    "block_on_wedge": {"N1": "the block lifts off the incline",
-                       "N2": "the wedge lifts off the ground"},
-    "simple_pendulum": {"T": "the string goes slack"},
-    "ball_in_sphere": {"N": "the ball leaves the sphere's wall"},
-    "cart_pendulum": {"N": "the cart lifts off its bed"},
-    "pulley_bent_track": {"T1": "the string to M1 goes slack", "T2": "the string to M2 goes "
-                          "slack", "N1": "M1 lifts off its track", "N2": "M2 lifts off the "
-                          "incline"},
-    "rolling_cylinder": {"N": "the cylinder lifts off the ground"},
-    "wheel_on_pivot": {"F_z": "the wheel lifts off the plane"},
-}
 
 
 def unilateral_of(problem) -> dict:
-    """``{reaction: consequence}`` of the problem's one-sided reactions (see the module doc)."""
-    declared = getattr(problem, "unilateral", None)
-    if declared:
-        return dict(declared)
-    return dict(UNILATERAL.get(problem.name, {}))
+    """``{reaction: consequence}`` of the problem's one-sided reactions, as it declares them
+    (``Problem.unilateral``)."""
+    return dict(getattr(problem, "unilateral", None) or {})
 
 
 @dataclass(frozen=True)
@@ -93,7 +76,8 @@ class ContactReport:
 
     def __str__(self) -> str:
         if not self.watched:
-            return "no one-sided contact declared"
+            return not_declared("one-sided reaction",
+                                'unilateral = {"N": "what happens when N would change sign"}')
         if self.first is not None:
             return str(self.first)
         mins = "; ".join(f"{k} >= {v:.4g} (at t = {s:.3g} s)" for k, (v, s) in

@@ -25,7 +25,7 @@ import numpy as np
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from dualmech.model.kinematics import t
+from dualmech.model.facts import is_declared, state_vector
 from dualmech.numeric.model import NumericModel, SingularityError
 
 __all__ = ["Trajectory", "simulate", "reactions_at", "reactions_along", "direct_models",
@@ -136,13 +136,14 @@ def check_t_span(t_span) -> tuple[float, float]:
 
 
 def default_initial_state(problem) -> tuple[list, list]:
-    """``problem.initial_state`` if declared, else 60 % into each coordinate's range, at rest."""
-    init = getattr(problem, "initial_state", None)
+    """The problem's declared ``initial_state`` (:class:`~dualmech.model.problem.Problem`), else
+    60 % into each coordinate's range, at rest: ``(q0, q'0)`` in the reference coordinates."""
     ref = problem.model(problem.reference)
-    if init:
-        q0 = [float(init[q]) for q in ref.coordinates]
-        qd0 = [float(init.get(q.diff(t), 0.0)) for q in ref.coordinates]
-        return q0, qd0
+    n = ref.n
+    init = getattr(problem, "initial_state", None)
+    if is_declared(init):
+        y0 = state_vector(problem, init, "`initial_state`")
+        return y0[:n], y0[n:]
     q0 = []
     for q in ref.coordinates:
         lo, hi = problem.coordinate_info(q).range

@@ -3,20 +3,24 @@
 :func:`atlas` runs the sections that apply to a problem:
 
 * ``singularities`` -- degenerate points of every formulation (:func:`~.singularities.scan`)
-  and, where a probe is defined, what each integrator does when the motion runs into them
-  (:func:`~.singularities.probe`: unguarded, guarded, switched to a safe form);
+  and, for each probe the problem declares (``probes``), what each integrator does when the
+  motion runs into them (:func:`~.singularities.probe`: unguarded, guarded, switched to a
+  safe form);
 * ``dae_drift`` -- constraint drift of a multiplier model's DAE forms (:func:`~.regimes.dae_drift`);
-* ``stiffness`` -- a stiff spring swept past its range (:func:`~.regimes.stiffness`);
+* ``stiffness`` -- a stiff spring swept past its range, in the scene the problem declares
+  (``stiff_scene``, :func:`~.regimes.stiffness`);
 * ``linearisation`` -- the amplitudes where the small-oscillation model errs by 1 % and 10 %
   (:func:`~.regimes.linearisation`);
 * ``floquet`` -- for a periodically driven problem, its periodic motions and their Floquet
   multipliers (:func:`~.floquet.floquet`), with the stability chart of Mathieu's equation
   where an equilibrium's linearisation is one (:mod:`~.mathieu`);
 * ``chaos`` -- how long two formulations agree at each tolerance (:func:`~.regimes.chaos`),
+  from the problem's ``chaotic_state`` (default: its initial state),
   and how long a run stays right against a reference more accurate than it, with the
   Lyapunov exponent those horizons imply beside Benettin's (:func:`~.horizon.horizons`).
 
-A section that does not apply says why (no DAE form, no stable equilibrium, ...).
+A section that does not apply says why (no DAE form, no stable equilibrium, ...); where a
+declaration would make it apply, it names the declaration.
 :meth:`Atlas.write` saves ``NAME_atlas.json``, ``NAME_atlas.txt`` and one chart per section
 (PNG and SVG).
 
@@ -41,15 +45,14 @@ from typing import Sequence
 import numpy as np
 
 from dualmech.model.notation import mathtext
-from dualmech.numeric.studies.regimes import (STIFF_SCENES, chaos, dae_drift, linearisation,
-                                             stiffness)
-from dualmech.numeric.studies.singularities import GARBAGE, KAPPA_LIMIT, PROBES, probe, scan
+from dualmech.model.facts import is_declared, state_vector
+from dualmech.numeric.studies.regimes import NO_STIFF_SCENE, chaos, dae_drift, linearisation, \
+    stiffness
+from dualmech.numeric.studies.singularities import GARBAGE, KAPPA_LIMIT, NO_PROBE, probe, scan
 
-__all__ = ["Atlas", "atlas", "SECTIONS", "CHAOS_STATES"]
+__all__ = ["Atlas", "atlas", "SECTIONS"]
 
 SECTIONS = ("singularities", "dae_drift", "stiffness", "linearisation", "floquet", "chaos")
-#: Initial states for the chaos section (reference coordinates, then rates).
-CHAOS_STATES = {"compound_double_pendulum": [2.0, 2.5, 0.0, 0.0]}
 
 
 @dataclass
@@ -144,10 +147,10 @@ class _NotApplicable(Exception):
 def _singularities(problem):
     s = scan(problem)
     results = [s]
-    if problem.name in PROBES:
-        results.append(probe(problem))
-    elif s.points:
-        results.append(f"no probe run defined for {problem.name} (see PROBES)")
+    for declared in problem.probes:
+        results.append(probe(problem, declared))
+    if s.points and not problem.probes:
+        results.append(NO_PROBE)
     return results
 
 
@@ -159,8 +162,8 @@ def _dae(problem):
 
 
 def _stiff(problem):
-    if problem.name not in STIFF_SCENES:
-        raise _NotApplicable("no stiff scene defined (see regimes.STIFF_SCENES)")
+    if problem.stiff_scene is None:
+        raise _NotApplicable(NO_STIFF_SCENE)
     return stiffness(problem)
 
 
@@ -197,7 +200,8 @@ def _chaos(problem):
         raise _NotApplicable(f"the reference model does not conserve energy ({why}); the "
                              "agreement study needs a conservative motion")
     from dualmech.numeric.studies.horizon import horizons
-    y0 = CHAOS_STATES.get(problem.name)
+    declared = problem.chaotic_state
+    y0 = state_vector(problem, declared, "`chaotic_state`") if is_declared(declared) else None
     try:
         agreement = chaos(problem, y0=y0)
     except ValueError as exc:

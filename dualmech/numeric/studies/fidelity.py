@@ -1,17 +1,14 @@
 """Model no more than a scene needs: fidelity ladders and what each simplification buys and costs.
 
-A **ladder** is a list of models of one scene, from the simplest to the richest, where the
-sources offer one:
+A **ladder** is a list of models of one scene, from the simplest to the richest:
 
 * linear against nonlinear -- the small-oscillation model about a stable equilibrium (the
-  Jacobian of the richest model there) below the nonlinear model;
-* point mass against rigid body -- :class:`dualmech.problems.n_link_pendulum.NLinkPendulum` (masses
-  on massless rods) below :class:`~dualmech.problems.n_link_pendulum.NLinkRigidPendulum` (uniform rods);
-* the mobile robot's simplified model, which neglects the pivot reaction ``H`` in the base's
-  balance, below the detailed one (a neglected reaction);
-* a source's own model below the richer variant the catalogue adds to it: the restrained
-  pendulum's arc-length spring and dashpot (Example 12's energies) below horizontal ones,
-  the helicopter blade without its weight (as the source) below the blade with it.
+  Jacobian of the richest model there) below the nonlinear model, for every problem that has
+  one;
+* the rungs a problem declares (``fidelity_ladder = (FidelityRung(...), ...)``, simplest
+  first, :class:`~dualmech.model.facts.FidelityRung`): point masses on massless rods below
+  uniform rods, a simplified model that neglects a reaction below the detailed one, a
+  source's own model below the richer variant the catalogue adds to it.
 
 For each rung, :func:`ladder` measures its **derivation time** (building its equations from a
 fresh problem instance), its **right-hand-side cost** (CPU per call of the generated code at
@@ -38,6 +35,7 @@ from typing import Callable
 
 import numpy as np
 
+from dualmech.model.facts import not_declared
 from dualmech.model.notation import mathtext
 from dualmech.numeric.contacts import scene_span
 from dualmech.numeric.formulations import formulations
@@ -46,43 +44,11 @@ from dualmech.numeric.model import NumericModel
 from dualmech.numeric.studies.regimes import stable_equilibrium, jacobian
 from dualmech.numeric.simulation import default_initial_state, direct_models, problem_parameters
 
-__all__ = ["Rung", "Ladder", "ladder", "LADDERS", "has_ladder"]
+__all__ = ["Rung", "Ladder", "ladder", "has_ladder", "NO_LADDER"]
 
-#: Explicit ladders: problem name -> ``[(rung label, problem factory, what it neglects,
-#: the richest model's reactions it neglects)]``, simplest first; the last is the richest.
-LADDERS: dict = {
-    "mobile_robot": [("simplified: pivot reaction H neglected in the base's balance",
-                      lambda: _problem("mobile_robot_simplified"), "the pivot reaction H",
-                      ("H",)),
-                     ("detailed: H kept (2.6-9 to 2.6-13)", lambda: _problem("mobile_robot"),
-                      "", ())],
-    "n_link_pendulum": [("point masses on massless rods",
-                         lambda: _problem("n_link_pendulum", n=3), "the rods' mass "
-                         "distribution (each rod's mass lumped at its lower end)", ()),
-                        ("uniform rigid rods", lambda: _problem("n_link_rigid_pendulum", n=3),
-                         "", ())],
-}
-LADDERS.update({
-    "restrained_pendulum": [("source: spring and dashpot along their arcs (Example 12's U, R)",
-                             lambda: _problem("restrained_pendulum"), "the elements' turn away "
-                             "from horizontal (travel b th for b sin th, rate a th' for "
-                             "a th' cos th)", ()),
-                            ("spring and dashpot horizontal",
-                             lambda: _problem("restrained_pendulum_horizontal"), "", ())],
-    "helicopter_blade": [("source: weight neglected", lambda: _problem("helicopter_blade"),
-                          "the blade's weight, M g L^2 cos(beta)/2 about the hinge", ()),
-                         ("blade's weight kept", lambda: _problem("helicopter_blade_weighted"),
-                          "", ())],
-})
-LADDERS["restrained_pendulum_horizontal"] = LADDERS["restrained_pendulum"]
-LADDERS["helicopter_blade_weighted"] = LADDERS["helicopter_blade"]
-LADDERS["mobile_robot_simplified"] = LADDERS["mobile_robot"]
-LADDERS["n_link_rigid_pendulum"] = LADDERS["n_link_pendulum"]
-
-
-def _problem(name: str, **options):
-    from dualmech import problems
-    return problems.get(name, **options)
+#: What ``dualmech fidelity`` says of a problem with no declared ladder and no equilibrium.
+NO_LADDER = not_declared("fidelity ladder", "fidelity_ladder = (FidelityRung(label, simpler "
+                         "problem, what it neglects), FidelityRung(label, this problem))")
 
 
 @dataclass
@@ -165,7 +131,7 @@ def _legend(rung: Rung) -> str:
 
 def has_ladder(problem) -> bool:
     """Whether :func:`ladder` has something to compare for ``problem``."""
-    if problem.name in LADDERS:
+    if problem.fidelity_ladder:
         return True
     try:
         f = formulations(problem, models=[problem.reference], stabilisations=())[0][0]
@@ -196,7 +162,8 @@ def _rhs_cost(rhs: Callable, states: np.ndarray, calls: int = 2000) -> float:
 
 def ladder(problem, duration: float = 5.0, rtol: float = 1e-10, samples: int = 201) -> Ladder:
     """The fidelity ladder of ``problem``'s scene (see the module docstring)."""
-    spec = LADDERS.get(problem.name, [("nonlinear", lambda: type(problem)(), "", ())])
+    spec = [(r.label, r.problem, r.neglects, r.neglected_reactions)
+            for r in problem.fidelity_ladder] or [("nonlinear", lambda: type(problem)(), "", ())]
     richest_label, richest_factory, _, _ = spec[-1]
     fresh, top_eqs, top_time = _derive(richest_factory, None)
     # the numbers use the given problem when it is the richest (its models may be built)

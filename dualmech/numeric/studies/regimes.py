@@ -1,7 +1,8 @@
 """Where methods fail beyond coordinates: stiffness, linearisation, chaos, DAE drift.
 
 * :func:`stiffness` -- a stiffness parameter swept past its declared range (a stand-in for a
-  stiff contact), from a state that leaves the fast mode at rest: the exact motion is smooth,
+  stiff contact), from a state that leaves the fast mode at rest (the scene a problem
+  declares, ``stiff_scene = StiffScene(...)``): the exact motion is smooth,
   so any growth of the step count is stability, not accuracy.  Each explicit method's
   minimal step count is predicted from the fastest eigenvalue of the Jacobian and the size of
   the method's stability region along its direction (from the method's own Butcher tableau);
@@ -33,21 +34,19 @@ import numpy as np
 from scipy.integrate import RK45, DOP853, solve_ivp
 from scipy.optimize import brentq, root
 
-from dualmech.model.dimensions import STIFFNESS, reduce
+from dualmech.model.facts import StiffScene, not_declared, state_vector
 from dualmech.numeric.formulations import formulations
 from dualmech.numeric.integrators import EXPLICIT
 from dualmech.numeric.simulation import problem_parameters
+from dualmech.numeric.units import unit
 
 __all__ = ["stability_radius", "stable_equilibrium", "jacobian", "Stiffness", "stiffness",
-           "STIFF_SCENES",
+           "NO_STIFF_SCENE",
            "Linearisation", "linearisation", "Chaos", "chaos", "Drift", "dae_drift"]
 
-#: Scenes for :func:`stiffness`: ``problem: (parameter, initial state, span, why smooth)``.
-STIFF_SCENES = {
-    "falling_container": ("k", [2.2, 2.5, 0.0, 0.0], 0.5,
-                          "released at rest with the spring at its free length (x2 - x1 = "
-                          "l0): both masses fall freely, the spring never stretches"),
-}
+#: What the atlas says of a problem that declares no stiff scene.
+NO_STIFF_SCENE = not_declared("stiff scene",
+                              "stiff_scene = StiffScene(parameter, state, duration, why)")
 
 
 def stability_radius(method: str, direction: float) -> float:
@@ -125,31 +124,46 @@ class Stiffness:
         return "\n".join(lines)
 
 
-def _free_fall(problem, values, y0, t):
-    """Exact motion of the stiffness scene: every coordinate falls with g from rest."""
-    g = next(v for s, v in values.items() if s.name == "g")
-    y0 = np.asarray(y0, dtype=float)
-    n = y0.size // 2
-    q = y0[:n, None] + y0[n:, None] * t - g * t**2 / 2
-    qd = y0[n:, None] - g * t
-    return np.vstack([q, np.broadcast_to(qd, q.shape)])
+def _exact(problem, scene: StiffScene, f, values: dict, te: np.ndarray) -> np.ndarray:
+    """The scene's exact motion at ``te``: its declared ``exact`` function with the problem's
+    own parameter values (the smooth motion does not depend on the stiffness), else a run of
+    Radau at rtol 1e-12 in the formulation ``f``."""
+    if scene.exact is not None:
+        by_name = {s.name: float(v) for s, v in problem_parameters(problem).items()}
+        out = np.asarray(scene.exact(by_name, f.y0.copy(), te), dtype=float)
+        if out.shape != (f.y0.size, te.size):
+            raise ValueError(f"`{problem.name}`: `StiffScene.exact` returned shape {out.shape}; "
+                             f"it must return ({f.y0.size}, {te.size}): the states at the times "
+                             "given.")
+        return out
+    run = f.run("Radau", (float(te[0]), float(te[-1])), te, rtol=1e-12)
+    if not run.success or run.y.shape[1] < te.size:
+        raise ValueError(f"`{problem.name}`: the tight reference run of the stiff scene at "
+                         f"{scene.parameter} = {values[scene.parameter]:g} failed "
+                         f"({run.message}); declare the exact motion (`StiffScene.exact`).")
+    return run.y
 
 
 def stiffness(problem, values: Sequence[float] = tuple(10.0 ** k for k in range(2, 9)),
               methods: Sequence[str] = ("RK45", "DOP853", "Radau", "BDF", "LSODA"),
               rtol: float = 1e-6, samples: int = 51) -> Stiffness:
-    """The stiffness sweep of the module docstring (scene from :data:`STIFF_SCENES`)."""
-    name, y0, duration, why = STIFF_SCENES[problem.name]
+    """The stiffness sweep of the module docstring, in the scene the problem declares
+    (``stiff_scene``, :class:`~dualmech.model.facts.StiffScene`)."""
+    scene = problem.stiff_scene
+    if scene is None:
+        raise ValueError(f"`{problem.name}`: {NO_STIFF_SCENE}")
+    name, duration = scene.parameter, scene.duration
+    y0 = state_vector(problem, scene.state, "`StiffScene.state`")
     decl = {p.symbol.name: p for p in problem.parameters}[name]
-    assert reduce(decl.dimension) == reduce(STIFFNESS)
-    out = Stiffness(problem.name, name, "N/m", tuple(decl.range), why, (0.0, duration), rtol)
+    out = Stiffness(problem.name, name, unit(decl.dimension), tuple(decl.range), scene.why,
+                    (0.0, duration), rtol)
     te = np.linspace(0.0, duration, samples)
     for v in values:
         f = formulations(problem, {name: v}, y0, models=[problem.reference],
                          strict=False)[0][0]
         lam = np.linalg.eigvals(jacobian(f.rhs, 0.0, f.y0))
         fast = lam[np.argmax(np.abs(lam))]
-        exact = _free_fall(problem, problem_parameters(problem), f.y0, te)
+        exact = _exact(problem, scene, f, {name: v}, te)
         for m in methods:
             run = f.run(m, (0.0, duration), te, rtol=rtol)
             err = float(np.abs(run.y - exact[:, : run.y.shape[1]]).max()) if run.success \
@@ -265,10 +279,9 @@ def linearisation(problem, levels: Sequence[float] = (0.01, 0.1), params: Mappin
         j = next((i for i, e in enumerate(errs) if e > lv), None)
         marks[lv] = None if j in (None, 0) else \
             float(brentq(lambda a: np.log(error(a) / lv), amps[j - 1], amps[j], xtol=1e-12))
-    from dualmech.numeric.units import unit as unit_of
     return Linearisation(problem.name, [round(float(x), 9) for x in q_eq], w,
-                         [round(float(x), 6) + 0.0 for x in mode], info.name, unit_of(info.dimension),
-                         amps, errs, marks, te)
+                         [round(float(x), 6) + 0.0 for x in mode], info.name,
+                         unit(info.dimension), amps, errs, marks, te)
 
 
 def _linear(J, dy0, te) -> np.ndarray:

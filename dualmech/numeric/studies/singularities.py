@@ -16,7 +16,8 @@ problem's declared singular set (:attr:`Problem.singular`), and classified:
 * ``"reactions undetermined"`` -- the motion is regular (the reference model is fine) but the
   reaction directions of this form are dependent: their sum is known, not each one.
 
-:func:`probe` runs each integrator from a state that heads for the singular set: unguarded
+:func:`probe` runs each integrator from a state that heads for the singular set (a
+:class:`~dualmech.model.facts.Probe` the problem declares in ``probes``): unguarded
 (what the integrator does: slows down, stops with an error, or returns garbage -- judged by
 its error against a tight run and by the energy), guarded (a terminal event where ``kappa``
 reaches the limit: a clear message), and, where another formulation is regular there, the
@@ -41,6 +42,7 @@ from scipy.integrate import BDF, DOP853, LSODA, RK45, Radau
 from scipy.optimize import minimize_scalar
 
 from dualmech.model.dimensions import ANGLE
+from dualmech.model.facts import Probe, not_declared, state_vector
 from dualmech.numeric.formulations import Formulation, formulations
 from dualmech.numeric.integrators import Run
 from dualmech.numeric.model import NumericModel, SingularityError, StateFunction
@@ -48,8 +50,8 @@ from dualmech.numeric.studies.horizon import state_sizes
 from dualmech.numeric.simulation import problem_parameters
 from dualmech.numeric.units import unit
 
-__all__ = ["KAPPA_LIMIT", "GARBAGE", "WRONG", "Scan", "SingularPoint", "ProbeRun", "Probe",
-           "scan", "probe", "PROBES", "degeneracy", "verdict_word"]
+__all__ = ["KAPPA_LIMIT", "GARBAGE", "WRONG", "Scan", "SingularPoint", "ProbeRun",
+           "ProbeReport", "scan", "probe", "degeneracy", "verdict_word", "NO_PROBE"]
 
 #: Beyond this degeneracy a linear solve keeps fewer than half of double precision's digits.
 KAPPA_LIMIT = 1e8
@@ -60,21 +62,8 @@ GARBAGE = 1e3
 #: A run whose error passes this fraction of the state's own size is wrong (between
 #: ``GARBAGE x rtol`` and this it is degraded: fine for a picture, not for the digits asked).
 WRONG = 1e-2
-#: Initial states (reference coordinates, then rates) that run close to each problem's
-#: declared singular set, with the formulation to watch and the span (s).
-PROBES = {
-    "toy_car": ([1.3, 1e-3, 3.5, 0.0], "lagrange", 1.0,
-                "the car runs over the track's pivot axis (cos(theta) = 0), the track "
-                "tilted by 1 mrad"),
-    "two_rod_linkage": ([2.7, 3.0], "lagrange_x", 1.0,
-                        "the spring throws the rods flat (sin(theta) = 0, at 0.68 s), where "
-                        "the x form's mass is infinite and m passes below the line"),
-    "rigid_body_euler_angles": ([0.0, 0.3, 0.0, 1e-2, -0.3, 1e-2], "lagrange", 1.5,
-                                "the nutation angle heads for 0: gimbal lock of the z-y-z "
-                                "angles"),
-}
-
-
+#: What the atlas says when degenerate points are found but no probe run is declared.
+NO_PROBE = not_declared("probe run", "probes = (Probe(state, formulation, duration, why),)")
 def _system(f: Formulation, values):
     return f.constrained.numeric if f.constrained else NumericModel(f.model, values)
 
@@ -270,7 +259,7 @@ class ProbeRun:
 
 
 @dataclass
-class Probe:
+class ProbeReport:
     """The runs of :func:`probe` (``runs``) from ``y0`` over ``span`` in ``formulation``."""
 
     problem: str
@@ -330,14 +319,26 @@ def _lift(f: Formulation, ref: Formulation, y_ref0: np.ndarray, Y: np.ndarray) -
     return out
 
 
-def probe(problem, name: str | None = None, *, methods: Sequence[str] = ("RK45", "DOP853",
-          "Radau", "BDF", "LSODA"), rtol: float = 1e-6, samples: int = 101,
-          params: Mapping | None = None) -> Probe:
-    """Each integrator run towards the problem's singular set (see :data:`PROBES`):
-    unguarded, guarded, and (where another form is regular there) switched."""
-    y0, fname, duration, description = PROBES[name or problem.name]
+def probe(problem, declared: Probe | None = None, *, methods: Sequence[str] = ("RK45",
+          "DOP853", "Radau", "BDF", "LSODA"), rtol: float = 1e-6, samples: int = 101,
+          params: Mapping | None = None) -> ProbeReport:
+    """Each integrator run towards the problem's singular set, from ``declared`` (default:
+    the first of the problem's ``probes``, :class:`~dualmech.model.facts.Probe`): unguarded,
+    guarded, and (where another form is regular there) switched."""
+    if declared is None:
+        if not problem.probes:
+            raise ValueError(f"`{problem.name}`: {NO_PROBE}")
+        declared = problem.probes[0]
+    if not isinstance(declared, Probe):
+        raise TypeError(f"`declared` must be a Probe(state, formulation, duration, why), got "
+                        f"{declared!r:.60}.")
+    y0 = state_vector(problem, declared.state, "`Probe.state`")
+    fname, duration, description = declared.formulation, declared.duration, declared.why
     values = problem_parameters(problem, params)
     forms = {f.name: f for f in formulations(problem, params, y0, stabilisations=("none",))[0]}
+    if fname not in forms:
+        raise ValueError(f"`{problem.name}`: the probe's formulation `{fname}` is not one of "
+                         f"its formulations ({', '.join(forms)}).")
     ref, f = next(iter(forms.values())), forms[fname]
     span = (0.0, float(duration))
     te = np.linspace(*span, samples)
@@ -347,7 +348,7 @@ def probe(problem, name: str | None = None, *, methods: Sequence[str] = ("RK45",
     sizes = state_sizes(truth)
     kappa = _kappa_of(f, values)
     ref_kappa = _kappa_of(ref, values)
-    out = Probe(problem.name, fname, list(y0), span, description, rtol)
+    out = ProbeReport(problem.name, fname, list(y0), span, description, rtol)
     for method in methods:
         run = f.run(method, span, te, rtol=rtol)
         out.runs.append(_judge(f, run, "unguarded", truth, kappa, rtol, sizes))
