@@ -277,7 +277,8 @@ def user_error(exc: BaseException, files=()) -> str | None:
             lines.append("    " + " " * (offset - 1 - indent) + "^")
     if frame is not None and frame.f_code.co_name != "<module>":
         name = getattr(frame.f_code, "co_qualname", frame.f_code.co_name)
-        lines.append(f"  in {name}()")
+        function = frame.f_code.co_flags & inspect.CO_OPTIMIZED   # else a class body
+        lines.append(f"  in {name}()" if function else f"  in class {name}")
     fix = _what_to_fix(exc, frame)
     if fix:
         lines.append(f"  to fix: {fix}")

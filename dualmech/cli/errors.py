@@ -122,7 +122,8 @@ def describe(exc: BaseException, problem=None) -> Failure:
         where = f"{exc.filename}: " if getattr(exc, "filename", None) else ""
         return Failure(USAGE_OR_MODEL_ERROR, f"{where}{exc.strerror or exc}")
     if _is_model_error(exc):
-        return Failure(USAGE_OR_MODEL_ERROR, _in_problem(problem, files) + str(exc), "model")
+        return Failure(USAGE_OR_MODEL_ERROR, _declared_at(problem, exc)
+                       or _in_problem(problem, files) + str(exc), "model")
     if _deliberate(exc):   # dualmech refusing an input, with a message that says why
         return Failure(USAGE_OR_MODEL_ERROR, f"{type(exc).__name__}: {exc}", "refused")
     return Failure(USAGE_OR_MODEL_ERROR, _internal(exc, problem), "internal")
@@ -172,6 +173,44 @@ def _deliberate(exc: BaseException) -> bool:
     engine = os.path.dirname(os.path.dirname(os.path.realpath(__file__))) + os.sep
     return os.path.realpath(last.filename).startswith(engine) and \
         (last.line or "").lstrip().startswith("raise ")
+
+
+#: what a declaration error names -> the class attribute that declares it
+_DECLARED = (("reaction `", "reactions"), ("parameter `", "parameters"),
+             ("coordinate `", "coordinates"), ("symbol `", "parameters"),
+             ("reference model", "reference"), ("`name`", "name"), ("`title`", "title"),
+             ("`source`", "source"))
+
+
+def _declared_at(problem, exc: BaseException) -> str | None:
+    """A model or declaration error of ``problem`` that no line of the user's code raised
+    (:meth:`Problem.validate` finds it) at the line of the class attribute it is about --
+    ``reactions = ...`` for a reaction -- else of the class statement; None when the source
+    cannot be read."""
+    import ast
+    import inspect
+    import textwrap
+    if problem is None:
+        return None
+    cls = problem if inspect.isclass(problem) else type(problem)
+    try:
+        path = inspect.getsourcefile(cls)
+        lines, first = inspect.getsourcelines(cls)
+        tree = ast.parse(textwrap.dedent("".join(lines)))
+    except (OSError, TypeError, SyntaxError):
+        return None
+    message = str(exc)
+    wanted = next((attr for key, attr in _DECLARED if key in message), None)
+    line = first
+    for node in tree.body[0].body if tree.body else ():
+        targets = node.targets if isinstance(node, ast.Assign) else \
+            [node.target] if isinstance(node, ast.AnnAssign) else []
+        if wanted in {n.id for t in targets for n in ast.walk(t) if isinstance(n, ast.Name)}:
+            line = first + node.lineno - 1
+            break
+    head, _, rest = message.partition("\n")
+    return (f"{path}, line {line}: {type(exc).__name__}: {head}\n"
+            f"    {lines[line - first].strip()}" + (f"\n{rest}" if rest else ""))
 
 
 def _in_problem(problem, files) -> str:
