@@ -29,7 +29,7 @@ from typing import Mapping, Sequence
 import symengine as se
 import sympy as sp
 
-from dualmech.model._expr import as_expr, refuse_jumps, refuse_text_in
+from dualmech.model._expr import as_expr, refuse_text_in
 from dualmech.model._algebra import linear_coefficients, names_of, time_se, to_se, to_sp
 from dualmech.model.kinematics import t
 
@@ -196,9 +196,8 @@ class EquationSet:
 
     def __post_init__(self):
         object.__setattr__(self, "coordinates", tuple(self.coordinates))
-        if not isinstance(self.equations, Rows):   # written by hand (builders check theirs)
+        if not isinstance(self.equations, Rows):
             object.__setattr__(self, "equations", tuple(as_expr(e) for e in self.equations))
-            refuse_jumps(self.equations, f"model `{self.name}`")
         if not isinstance(self.contributions, Rows):
             object.__setattr__(self, "contributions", tuple(self.contributions))
         object.__setattr__(self, "unknowns", tuple(self.unknowns))
