@@ -211,8 +211,10 @@ def _is_users(filename: str, files: frozenset) -> bool:
     if not filename or filename.startswith("<"):
         return False
     path = os.path.realpath(filename)
-    if path in files or path in _USER_FILES or path.startswith(_CATALOGUE + os.sep):
+    if path in files or path in _USER_FILES:
         return True
+    if path.startswith(_CATALOGUE + os.sep):   # a catalogue module, not the loader itself
+        return not os.path.basename(path).startswith("_")
     if path.startswith(_engine_root() + os.sep):
         return False
     return not any(path.startswith(root + os.sep) for root in _library_roots())

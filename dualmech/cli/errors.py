@@ -126,6 +126,9 @@ def describe(exc: BaseException, problem=None) -> Failure:
                        or _in_problem(problem, files) + str(exc), "model")
     if _deliberate(exc):   # dualmech refusing an input, with a message that says why
         return Failure(USAGE_OR_MODEL_ERROR, f"{type(exc).__name__}: {exc}", "refused")
+    jumps = _jumps(problem)
+    if jumps is not None:   # e.g. symengine's solver, given sign() in a hand-written model
+        return Failure(USAGE_OR_MODEL_ERROR, _in_problem(problem, files) + jumps, "model")
     return Failure(USAGE_OR_MODEL_ERROR, _internal(exc, problem), "internal")
 
 
@@ -211,6 +214,22 @@ def _declared_at(problem, exc: BaseException) -> str | None:
     head, _, rest = message.partition("\n")
     return (f"{path}, line {line}: {type(exc).__name__}: {head}\n"
             f"    {lines[line - first].strip()}" + (f"\n{rest}" if rest else ""))
+
+
+def _jumps(problem) -> str | None:
+    """Why ``problem``'s models cannot be used, when one of them (an EquationSet written by
+    hand) applies a function that jumps -- ``sign``, ``Piecewise``, ... (the model builders
+    refuse those where they are written) -- else None."""
+    if problem is None or not hasattr(problem, "models"):
+        return None
+    try:
+        from dualmech.model._expr import refuse_jumps
+        for name, eqs in problem.models().items():
+            rows = eqs.equations
+            refuse_jumps(getattr(rows, "se", rows), f"model `{name}`")
+    except Exception as exc:  # noqa: BLE001 - a ModelError is the answer; anything else is not
+        return str(exc) if _is_model_error(exc) else None
+    return None
 
 
 def _in_problem(problem, files) -> str:
