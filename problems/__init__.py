@@ -23,11 +23,13 @@ import importlib
 from dataclasses import dataclass
 from pathlib import Path
 
-from dualmech.problems._loader import GROUP, SpecError, canonical, catalogue_classes, registered
+from dualmech.problems._loader import (GROUP, SpecError, canonical, catalogue_classes,
+                                       catalogue_specs, problem_files, registered, user_error)
 from dualmech.problems._loader import resolve as _resolve
 
-__all__ = ["Declaration", "OUT_OF_SCOPE", "declarations", "all_problems", "get", "load",
-           "named", "is_name", "resolve", "module_of", "SpecError", "canonical", "registered", "catalogue_classes",
+__all__ = ["Declaration", "OUT_OF_SCOPE", "declarations", "all_problems", "registered_specs",
+           "get", "load", "named", "is_name", "resolve", "module_of", "SpecError", "canonical",
+           "registered", "catalogue_classes", "catalogue_specs", "problem_files", "user_error",
            "GROUP"]
 
 _HERE = Path(__file__).resolve().parent
@@ -192,6 +194,17 @@ def all_problems() -> list:
     return [_class(d)() for d in declarations()]
 
 
+def registered_specs() -> list:
+    """A spec (``catalogue:problem``) for every problem of every catalogue that installed
+    course packages register, catalogue by catalogue; :class:`SpecError` names a catalogue
+    that does not load.
+
+    >>> registered_specs() == [s for c in sorted(registered()) for s in catalogue_specs(c)]
+    True
+    """
+    return [spec for name in sorted(registered()) for spec in catalogue_specs(name)]
+
+
 def _class_named(name: str):
     """The class of catalogue problem ``name`` (``KeyError`` with close matches)."""
     return _class(module_of(name))
@@ -224,6 +237,8 @@ def load(spec: str, **options):
     try:
         return cls(**options)
     except TypeError as exc:
+        if exc.__traceback__.tb_next is not None:   # raised inside __init__: its own error
+            raise
         raise ValueError(f"{cls.__name__}: {exc}") from None
 
 

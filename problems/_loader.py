@@ -25,6 +25,7 @@ no problem named 'simple_pendulm'. Did you mean 'simple_pendulum'
 """
 from __future__ import annotations
 
+import functools
 import hashlib
 import importlib
 import importlib.util
@@ -36,7 +37,7 @@ import traceback
 from pathlib import Path
 
 __all__ = ["SpecError", "resolve", "canonical", "registered", "catalogue_classes",
-           "problem_classes", "GROUP"]
+           "problem_classes", "catalogue_specs", "problem_files", "user_line", "user_error", "GROUP"]
 
 #: the entry-point group through which course packages register catalogues
 GROUP = "dualmech.problems"
@@ -66,19 +67,81 @@ def _is_problem_class(obj) -> bool:
 
 def problem_classes(module) -> list:
     """The problem classes a module offers: its ``PROBLEMS`` if it has one, else the
-    :class:`~dualmech.model.problem.Problem` subclasses defined in it (not imported into it)."""
+    :class:`~dualmech.model.problem.Problem` subclasses defined in it (not imported into it).
+
+    A ``PROBLEMS`` entry that is not a Problem subclass is refused (:class:`SpecError`, at
+    the line of ``PROBLEMS``), and so is a module that offers no problem: the message names
+    what it has instead -- a class that does not derive from Problem, problem classes it
+    imports but does not list."""
     listed = getattr(module, "PROBLEMS", None)
     if listed is not None:
-        return [c for c in listed if _is_problem_class(c)]
-    return [obj for obj in vars(module).values()
-            if _is_problem_class(obj) and obj.__module__ == module.__name__]
+        entries = list(listed) if isinstance(listed, (list, tuple)) else [listed]
+        for i, c in enumerate(entries):
+            if not _is_problem_class(c):
+                what = f"{c!r:.60} (a {type(c).__name__})" if not inspect.isclass(c) else \
+                    f"the class {c.__name__}, which does not derive from Problem"
+                raise SpecError(f"{_at(module, 'PROBLEMS')}`PROBLEMS[{i}]` is {what}; list the "
+                                "problem classes themselves, e.g. PROBLEMS = (Pendulum, Cart).")
+        found = entries
+    else:
+        found = [obj for obj in vars(module).values()
+                 if _is_problem_class(obj) and obj.__module__ == module.__name__]
+    if not found:
+        raise SpecError(_none_offered(module))
+    return found
+
+
+def _lines(module) -> dict:
+    """``{name: line}`` of the top-level classes, assignments and imports of ``module``'s
+    source (empty when it has none to read)."""
+    import ast
+    try:
+        tree = ast.parse(inspect.getsource(module))
+    except (OSError, TypeError, SyntaxError):
+        return {}
+    out = {}
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            out.setdefault(node.name, node.lineno)
+        elif isinstance(node, ast.Assign):
+            for target in node.targets:
+                if isinstance(target, ast.Name):
+                    out.setdefault(target.id, node.lineno)
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            for alias in node.names:
+                out.setdefault((alias.asname or alias.name).split(".")[0], node.lineno)
+    return out
+
+
+def _at(module, name: str) -> str:
+    """``"path, line N: "`` where ``module`` defines ``name`` (or ``"path: "``)."""
+    path = getattr(module, "__file__", None) or module.__name__
+    line = _lines(module).get(name)
+    return f"{path}, line {line}: " if line else f"{path}: "
+
+
+def _none_offered(module) -> str:
+    """Why ``module`` offers no problem, at the line to change."""
+    mine = [o for o in vars(module).values()
+            if inspect.isclass(o) and o.__module__ == module.__name__]
+    imported = [n for n, o in vars(module).items()
+                if _is_problem_class(o) and o.__module__ != module.__name__]
+    if mine:
+        c = mine[0]
+        return (f"{_at(module, c.__name__)}class {c.__name__} does not derive from Problem, and "
+                f"the file defines no class that does; write `class {c.__name__}(Problem):` "
+                "(with `from dualmech import Problem`).")
+    if imported:
+        listed = ", ".join(imported)
+        return (f"{_at(module, imported[0])}the file imports the problem {listed} but defines "
+                f"none and has no PROBLEMS list; say what it offers: PROBLEMS = ({listed},).")
+    path = getattr(module, "__file__", None) or module.__name__
+    return (f"{path} defines no Problem subclass (a class deriving from dualmech's Problem, "
+            "`from dualmech import Problem`); write one, or name the file that does.")
 
 
 def _pick(classes: list, wanted: str | None, where: str):
     """The class of ``classes`` called ``wanted`` (class name or problem name), or the only one."""
-    if not classes:
-        raise SpecError(f"{where} defines no Problem subclass (a class deriving from "
-                        "dualmech.model.problem.Problem); write one, or name the file that does.")
     if wanted is None:
         if len(classes) == 1:
             return classes[0]
@@ -98,15 +161,170 @@ def _pick(classes: list, wanted: str | None, where: str):
 
 def _user_error(exc: BaseException, path: Path) -> str:
     """``exc``, raised while importing the user's ``path``, as the user's error at its line."""
-    if isinstance(exc, SyntaxError) and exc.filename and Path(exc.filename).resolve() == path:
-        text = (exc.text or "").strip()
-        return (f"{path}, line {exc.lineno}: {type(exc).__name__}: {exc.msg}"
-                + (f"\n    {text}" if text else ""))
-    frames = [f for f in traceback.extract_tb(exc.__traceback__)
-              if Path(f.filename).resolve() == path]
-    where = f"{path}, line {frames[-1].lineno}" if frames else str(path)
-    line = f"\n    {frames[-1].line}" if frames and frames[-1].line else ""
-    return f"{where}: {type(exc).__name__}: {exc}{line}"
+    located = user_error(exc, {str(path)})
+    if located is None:
+        return f"importing {path} failed: {type(exc).__name__}: {exc}"
+    first = located.split(",", 1)[0]
+    return located if first == str(path) else f"{located}\n  (while importing {path})"
+
+
+# -- the user's own file and line ------------------------------------------------------
+#: files :func:`_import_file` imported: users' own problem files
+_USER_FILES: set = set()
+_CATALOGUE = str(Path(__file__).resolve().parent)
+
+
+@functools.lru_cache(maxsize=1)
+def _library_roots() -> tuple:
+    """Folders of Python itself and of installed packages: nobody's own problem file."""
+    import sysconfig
+    roots = {sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix}
+    roots |= {sysconfig.get_paths().get(k, "") for k in ("stdlib", "purelib", "platlib")}
+    return tuple(os.path.realpath(r) for r in roots if r)
+
+
+@functools.lru_cache(maxsize=1)
+def _engine_root() -> str:
+    import dualmech
+    return str(Path(dualmech.__file__).resolve().parent)
+
+
+def problem_files(problem) -> frozenset:
+    """The files that define ``problem`` (an instance or a class) and the classes it derives
+    from, dualmech's own modules excepted: where a mistake in it is the user's."""
+    cls = problem if inspect.isclass(problem) else type(problem)
+    engine = _engine_root() + os.sep
+    out = set()
+    for c in cls.__mro__:
+        try:
+            path = os.path.realpath(inspect.getsourcefile(c) or "")
+        except TypeError:   # a built-in class
+            continue
+        if path and (path.startswith(_CATALOGUE + os.sep) or not path.startswith(engine)):
+            out.add(path)
+    return frozenset(out)
+
+
+def _is_users(filename: str, files: frozenset) -> bool:
+    """Whether ``filename`` is one of ``files``, a file the loader imported, a catalogue
+    module, or any file outside dualmech and outside Python's and the packages' folders."""
+    if not filename or filename.startswith("<"):
+        return False
+    path = os.path.realpath(filename)
+    if path in files or path in _USER_FILES:
+        return True
+    if path.startswith(_CATALOGUE + os.sep):   # a catalogue module, not the loader itself
+        return not os.path.basename(path).startswith("_")
+    if path.startswith(_engine_root() + os.sep):
+        return False
+    return not any(path.startswith(root + os.sep) for root in _library_roots())
+
+
+def _chain(exc: BaseException):
+    """``exc``, then the exceptions it was raised from or while handling."""
+    seen = set()
+    while exc is not None and id(exc) not in seen:
+        seen.add(id(exc))
+        yield exc
+        exc = exc.__cause__ or (None if exc.__suppress_context__ else exc.__context__)
+
+
+def user_line(exc: BaseException, files=()):
+    """``(path, line number, frame or None)`` of the innermost line of the user's own code
+    that ``exc`` (or an exception it was raised from) passed through; None when none did.
+    ``files`` are the problem's own files (:func:`problem_files`)."""
+    files = frozenset(os.path.realpath(f) for f in files)
+    for e in _chain(exc):
+        if isinstance(e, SyntaxError) and e.filename and _is_users(e.filename, files) \
+                and e.lineno:
+            return e.filename, e.lineno, None
+        found = None
+        for frame, lineno in traceback.walk_tb(e.__traceback__):
+            if _is_users(frame.f_code.co_filename, files):
+                found = (frame.f_code.co_filename, lineno, frame)
+        if found is not None:
+            return found
+    return None
+
+
+def user_error(exc: BaseException, files=()) -> str | None:
+    """``exc`` as the user's error at the innermost line of their own file (see
+    :func:`user_line`): the file and line, the error, the source line, the function it is in
+    and what to fix; None when the error did not pass through the user's code.
+
+    >>> try:
+    ...     exec(compile("x = 1\\ny = 1 / (x - 1)", "/home/teacher/my_problem.py", "exec"), {})
+    ... except ZeroDivisionError as exc:
+    ...     print(user_error(exc).splitlines()[0])
+    /home/teacher/my_problem.py, line 2: ZeroDivisionError: division by zero
+    """
+    where = user_line(exc, files)
+    if where is None:
+        return None
+    path, lineno, frame = where
+    import linecache
+    if isinstance(exc, SyntaxError) and frame is None:
+        source = (exc.text or linecache.getline(path, lineno)).rstrip("\n")
+        message = exc.msg
+    else:
+        source = linecache.getline(path, lineno, frame.f_globals if frame else None)
+        source = source.rstrip("\n")
+        message = str(exc)
+    lines = [f"{path}, line {lineno}: {type(exc).__name__}: {message}"]
+    if source.strip():
+        indent = len(source) - len(source.lstrip())
+        lines.append("    " + source.strip())
+        offset = getattr(exc, "offset", None) if frame is None else None
+        if offset and offset - 1 >= indent:
+            lines.append("    " + " " * (offset - 1 - indent) + "^")
+    if frame is not None and frame.f_code.co_name != "<module>":
+        name = getattr(frame.f_code, "co_qualname", frame.f_code.co_name)
+        function = frame.f_code.co_flags & inspect.CO_OPTIMIZED   # else a class body
+        lines.append(f"  in {name}()" if function else f"  in class {name}")
+    fix = _what_to_fix(exc, frame)
+    if fix:
+        lines.append(f"  to fix: {fix}")
+    return "\n".join(lines)
+
+
+def _close(word: str, candidates) -> str:
+    import difflib
+    close = difflib.get_close_matches(word, sorted({c for c in candidates
+                                                    if not c.startswith("_")}), n=3)
+    return f" Did you mean {', '.join(f'`{c}`' for c in close)}?" if close else ""
+
+
+def _what_to_fix(exc: BaseException, frame) -> str:
+    """One sentence on what to change at the user's line, by the kind of error."""
+    if any(c.__name__ in ("ModelError", "SpecError") for c in type(exc).__mro__):
+        return ""   # dualmech's own messages say what to fix
+    if isinstance(exc, SyntaxError):
+        return ("Python cannot read this line: fix the syntax where the caret points (a "
+                "missing bracket, comma or colon is often on the line before).")
+    if isinstance(exc, NameError):
+        name = getattr(exc, "name", None) or ""
+        known = set(frame.f_globals) | set(frame.f_locals) if frame is not None else set()
+        return (f"`{name}` is not defined where this line runs: a typo, a name defined later "
+                f"or inside another method, or a missing import (a problem file needs "
+                f"`from dualmech import ...` and `import sympy as sp`).{_close(name, known)}")
+    if isinstance(exc, AttributeError):
+        name, obj = getattr(exc, "name", None), getattr(exc, "obj", None)
+        hint = _close(name, dir(obj)) if name and obj is not None else ""
+        return ("this object has no such attribute: check the spelling and what the object "
+                f"is (help() on it lists what it has).{hint}")
+    if isinstance(exc, ZeroDivisionError):
+        return ("a division by zero on this line: a divisor that is zero for the values "
+                "given (a parameter's default, or a factor that vanishes).")
+    if isinstance(exc, TypeError):
+        return ("a value of the wrong kind on this line: check the call's arguments -- how "
+                "many, in which order, and that each is what the function takes (a sympy "
+                "symbol, an expression, a vector of a frame, a number).")
+    if isinstance(exc, ImportError):
+        return ("a module or name that cannot be imported: check its spelling; a problem "
+                "file needs only `from dualmech import (...)` and `import sympy as sp`.")
+    if isinstance(exc, (IndexError, KeyError)):
+        return "an index or key that does not exist on this line: check its value."
+    return "the error above is raised by this line of your file."
 
 
 def _import_file(path: Path):
@@ -121,13 +339,14 @@ def _import_file(path: Path):
         raise SpecError(f"{path} is not a Python file dualmech can import.")
     module = importlib.util.module_from_spec(spec)
     sys.modules[modname] = module
+    _USER_FILES.add(os.path.realpath(path))
     folder = str(path.parent)
     sys.path.insert(0, folder)
     try:
         spec.loader.exec_module(module)
     except Exception as exc:  # noqa: BLE001 - the user's own error, shown at its line
         sys.modules.pop(modname, None)
-        raise SpecError(f"importing {path} failed: {_user_error(exc, path)}") from None
+        raise SpecError(_user_error(exc, path)) from None
     finally:
         try:
             sys.path.remove(folder)
@@ -207,6 +426,17 @@ def catalogue_classes(ep) -> list:
                         "subclass nor a list of them.") from None
 
 
+def catalogue_specs(name: str) -> list:
+    """``["name:problem", ...]``: a spec for each problem of the registered catalogue ``name``
+    (:class:`SpecError` when no installed package registers it or it does not load)."""
+    eps = registered()
+    if name not in eps:
+        raise SpecError(f"no course package registers a catalogue {name!r} (entry-point group "
+                        f"{GROUP}); installed catalogues: {', '.join(sorted(eps)) or 'none'}.")
+    return [f"{name}:{getattr(c, 'name', '') or c.__name__}"
+            for c in catalogue_classes(eps[name])]
+
+
 def _from_module(module: str, wanted: str):
     eps = registered()
     if module in eps and _NAME.match(module):
@@ -252,6 +482,11 @@ def resolve(spec: str, catalogue_class=None):
     if found:
         raise SpecError(f"several registered catalogues have a problem {spec!r}: name one, "
                         f"{' or '.join(found)}.")
+    if spec in registered():
+        names = catalogue_specs(spec)
+        raise SpecError(f"{spec!r} is a course package's catalogue of {len(names)} problem(s) "
+                        f"({', '.join(names)}); name one of them here (check, report, mutate, "
+                        "chart and serve --problems take the whole catalogue).")
     raise SpecError(str(missing.args[0] if missing.args else missing)
                     + " Your own problem: give its file, path.py[:Class], or module:Class.")
 

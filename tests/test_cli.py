@@ -272,18 +272,26 @@ def test_check_json_for_several_problems_is_a_list(capsys, tiny_catalogue):
     assert data[1]["mismatches"], "a disagreement must say where"
 
 
-def test_check_of_a_problem_that_cannot_be_built_exits_1(capsys, tiny_catalogue):
+def test_check_of_a_problem_that_cannot_be_built_exits_2_at_its_line(capsys, tiny_catalogue):
+    """A model that cannot be built is not a disagreement (1 is "the models disagree"): 2,
+    with the error shown at the line of the problem's own file that raised it."""
     class Broken(SpringOnFloor):
         name = "broken"
 
         def lagrange(self):
             raise ValueError("this model is broken on purpose")
 
+    line = Broken.lagrange.__code__.co_firstlineno + 1
     tiny_catalogue["broken"] = Broken
-    status, out, _ = run(capsys, "check", "broken", "--json")
-    assert status == 1
+    status, out, err = run(capsys, "check", "broken", "--json")
+    assert status == 2
     d = json.loads(out)
     assert d["equivalent"] is False and "broken on purpose" in d["error"]
+    assert f"{__file__}, line {line}: ValueError: this model is broken on purpose" in err
+    assert 'raise ValueError("this model is broken on purpose")' in err
+    assert "Traceback" not in err
+    status, out, err = run(capsys, "check", "--all")   # the worst status of several: 2
+    assert status == 2 and "wrong_spring" in out and f"line {line}" in err
 
 
 # -- show ---------------------------------------------------------------------------------------

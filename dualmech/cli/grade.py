@@ -14,8 +14,15 @@
 Every answer is graded in a child process under a 1 s and 256 MB ceiling
 (:mod:`dualmech.grade.sandbox`); one that overruns it is "too costly to grade".
 
-Exit status: 0 the answer is right (a batch: every row was graded), 1 it is wrong, 2 it could
-not be graded as typed, or a usage error (the message says what to fix).
+NAME is any form :func:`dualmech.problems.get` takes (a catalogue name, a file
+``path.py[:Class]``, ``module:Class``, a registered catalogue's problem).  A problem that is
+not in dualmech's catalogue is loaded and its models built here first, so an error in the
+teacher's file is shown at its file and line before any answer is graded.
+
+Exit status (:mod:`dualmech.cli.errors`): 0 the answer is right (a batch: every row was
+graded), 1 it is wrong, 2 it could not be graded as typed, a usage error (the message says
+what to fix), an error in the problem's file or a model that cannot be built; 130
+interrupted.
 
 Wire it into an argparse command with :func:`register`.
 
@@ -33,12 +40,15 @@ from __future__ import annotations
 
 import argparse
 import json
-import sys
 from pathlib import Path
 
-__all__ = ["register", "handle", "EXIT_RIGHT", "EXIT_WRONG", "EXIT_USAGE"]
+from dualmech.cli import names as _names
+from dualmech.cli.errors import DISAGREE as EXIT_WRONG
+from dualmech.cli.errors import UsageError, about, guarded
+from dualmech.cli.errors import OK as EXIT_RIGHT
+from dualmech.cli.errors import USAGE_OR_MODEL_ERROR as EXIT_USAGE
 
-EXIT_RIGHT, EXIT_WRONG, EXIT_USAGE = 0, 1, 2
+__all__ = ["register", "handle", "EXIT_RIGHT", "EXIT_WRONG", "EXIT_USAGE"]
 
 
 def register(subparsers) -> argparse.ArgumentParser:
@@ -50,8 +60,9 @@ def register(subparsers) -> argparse.ArgumentParser:
                     "equations, exactly, and say what is wrong: the smallest edit, named as "
                     "terms.  A batch CSV (columns id, question, answer; question is NAME or "
                     "NAME:QUANTITY) is graded on every core or on a Dask cluster.",
-        epilog="Exit status: 0 right (batch: all graded), 1 wrong, 2 not gradable or usage "
-               "error.")
+        epilog="Exit status: 0 right (batch: all graded), 1 wrong, 2 not gradable, a usage "
+               "error, an error in the problem's file or a model that cannot be built; 130 "
+               "interrupted.")
     p.add_argument("name", nargs="?", metavar="NAME", help="the problem (not with --batch)")
     src = p.add_mutually_exclusive_group()
     src.add_argument("--answer", metavar="TEXT", help="the answer; several equations may be "
@@ -80,40 +91,57 @@ def register(subparsers) -> argparse.ArgumentParser:
     return p
 
 
+@guarded
 def handle(args: argparse.Namespace) -> int:
     """Run ``dualmech grade`` for parsed ``args``; return the exit status."""
-    try:
-        if args.batch is not None:
-            return _batch(args)
-        if not args.name:
-            return _usage("name a problem (dualmech grade NAME --answer ...), or use --batch.")
-        if args.list:
-            return _list(args)
-        if args.answer_file is not None:
-            from dualmech.grade.parser import LIMITS
-            try:   # read no more than the parser accepts (+1 to see it is too long)
-                with open(args.answer_file, encoding="utf-8") as fh:
-                    answer = fh.read(LIMITS.chars + 1)
-            except (OSError, UnicodeDecodeError) as exc:
-                return _usage(f"cannot read {args.answer_file}: {exc}")
-        elif args.answer is not None:
-            answer = args.answer
-        else:
-            return _usage("give the answer with --answer TEXT or --answer-file FILE.")
-        from dualmech.startup import defer, load
-        defer("symengine")   # used only when the problem's context must be built
-        load("dualmech.grade.api")   # sympy and the grader (see dualmech.startup)
-        from dualmech.grade.sandbox import grade_bounded
-        result = grade_bounded(args.name, answer, args.quantity, about=args.about)
-        print(json.dumps(result.to_dict(), indent=2) if args.json else str(result))
-        return {"right": EXIT_RIGHT, "wrong": EXIT_WRONG}.get(result.status, EXIT_USAGE)
-    except BrokenPipeError:
-        return EXIT_RIGHT
+    if args.batch is not None:
+        return _batch(args)
+    if not args.name:
+        raise UsageError("name a problem (dualmech grade NAME --answer ...), or use --batch.")
+    if args.list:
+        _built_if_users(args.name)
+        return _list(args)
+    if args.answer_file is not None:
+        from dualmech.grade.parser import LIMITS
+        try:   # read no more than the parser accepts (+1 to see it is too long)
+            with open(args.answer_file, encoding="utf-8") as fh:
+                answer = fh.read(LIMITS.chars + 1)
+        except (OSError, UnicodeDecodeError) as exc:
+            raise UsageError(f"cannot read {args.answer_file}: {exc}") from None
+    elif args.answer is not None:
+        answer = args.answer
+    else:
+        raise UsageError("give the answer with --answer TEXT or --answer-file FILE.")
+    from dualmech.startup import defer, load
+    defer("symengine")   # used only when the problem's context must be built
+    load("dualmech.grade.api")   # sympy and the grader (see dualmech.startup)
+    _built_if_users(args.name)
+    from dualmech.grade.sandbox import grade_bounded
+    result = grade_bounded(args.name, answer, args.quantity, about=args.about)
+    print(json.dumps(result.to_dict(), indent=2) if args.json else str(result))
+    return {"right": EXIT_RIGHT, "wrong": EXIT_WRONG}.get(result.status, EXIT_USAGE)
 
 
-def _usage(message: str) -> int:
-    print(f"dualmech grade: error: {message}", file=sys.stderr)
-    return EXIT_USAGE
+def _built_if_users(spec: str) -> None:
+    """A problem outside dualmech's catalogue (a file, ``module:Class``, a course package's)
+    loaded and its models built, so that an error in it is raised here -- shown at the
+    teacher's file and line -- rather than reported by the grading child without its line.
+    dualmech's own problems are left to the child (they are tested)."""
+    cat = _names.catalogue()
+    if cat.is_name(spec):
+        try:
+            cat.module_of(spec)
+            return
+        except KeyError:
+            pass
+        try:
+            problem = _names.get(spec)
+        except UsageError:   # an unknown name: the grader's own answer says so
+            return
+    else:
+        problem = _names.get(spec)
+    with about(problem):
+        problem.models()
 
 
 def _list(args) -> int:
@@ -125,7 +153,7 @@ def _list(args) -> int:
         quantities = grader.quantities()
         names = symbol_table(grader.context)
     except AnswerError as exc:
-        return _usage(str(exc))
+        raise UsageError(str(exc)) from None
     if args.json:
         print(json.dumps({"quantities": quantities, "names": names}, indent=2))
     else:
@@ -145,15 +173,15 @@ def _batch(args) -> int:
     from dualmech.grade.batch import BatchError, grade_batch, read_csv
     from dualmech.grade.report import summarise, write_report
     if args.name:
-        return _usage("--batch takes the problem from each row's question; drop NAME.")
+        raise UsageError("--batch takes the problem from each row's question; drop NAME.")
     if args.workers is not None and args.workers < 1:
-        return _usage("--workers must be at least 1.")
+        raise UsageError("--workers must be at least 1.")
     try:
         rows = read_csv(args.batch)
         results = grade_batch(rows, workers=args.workers, scheduler=args.scheduler,
                               progress=not args.no_progress)
     except BatchError as exc:
-        return _usage(str(exc))
+        raise UsageError(str(exc)) from None
     paths = write_report(results, args.out, title=f"Grades: {args.batch.name}")
     summary = summarise(results)
     if args.json:

@@ -5,20 +5,26 @@
     dualmech list                                  the catalogue (and registered ones)
     dualmech check NAME [NAME...] | --all          Newton-Euler vs Lagrange, exactly
     dualmech show NAME [--latex] [--model M]       equations of motion and reactions
-    dualmech report [--out DIR]                    everything, written to DIR (report.html)
+    dualmech report [NAME...] [--all] [--out DIR]  checked and written to DIR (report.html)
     dualmech grade NAME --answer TEXT              a typed answer, checked exactly
     dualmech chart | atlas | fidelity NAME         work-precision, where methods fail, model ladder
     dualmech mutate NAME [NAME...] | --all         break each model: does the check notice?
     dualmech new NAME [--out DIR]                  a new problem's skeleton and its test
 
 NAME is a catalogue name, a file ``path.py`` or ``path.py:Class``, ``module:Class``, or a
-problem of a catalogue a course package registers (entry-point group ``dualmech.problems``).
-Every command takes ``--json``.  Progress goes to stderr (a bar on a terminal, plain lines
-otherwise).
+problem of a catalogue a course package registers (entry-point group ``dualmech.problems``),
+``catalogue:problem`` or its bare name; every command takes every form.  ``check``,
+``report``, ``mutate``, ``chart`` and ``serve --problems`` also take a registered catalogue's
+name for all its problems, and ``--all`` is every problem ``dualmech list`` lists (the course
+packages' too).  Every command takes ``--json``.  Progress goes to stderr (a bar on a
+terminal, plain lines otherwise).
 
-Exit status: 0 when every checked pair agrees, 1 when one disagrees (or cannot be built),
-2 for a usage error such as an unknown problem name.  A closed standard output (``| head``)
-does not change it: the command finishes its work and discards the rest of its output.
+Exit status (:mod:`dualmech.cli.errors`): 0 when every checked pair agrees, 1 when one
+disagrees (a wrong model), 2 for a usage error such as an unknown problem name, an error in
+a problem file (shown at its file and line, with what to fix), a declaration error or a
+model that cannot be built, and an internal error (which says so); 130 when interrupted.
+Several problems: the worst of their statuses.  A closed standard output (``| head``) does
+not change it: the command finishes its work and discards the rest of its output.
 
 Example
 -------
@@ -38,14 +44,11 @@ from pathlib import Path
 from typing import Sequence
 
 from dualmech import __version__
+from dualmech.cli import names as _names
+from dualmech.cli.errors import (DISAGREE, EXIT_STATUS, OK, USAGE_OR_MODEL_ERROR, Failure,
+                                 UsageError, about, describe, guarded, worst)
 
 __all__ = ["main", "command", "build_parser"]
-
-EXIT_OK, EXIT_DISAGREE, EXIT_USAGE = 0, 1, 2
-
-
-class UsageError(Exception):
-    """A command-line mistake; the message says what to do instead."""
 
 
 # -- the parser ------------------------------------------------------------------------
@@ -96,8 +99,9 @@ def build_parser() -> argparse.ArgumentParser:
                     "proved equivalent exactly, with the reaction forces recovered.",
         epilog="NAME is a catalogue name (dualmech list), a file path.py or path.py:Class, "
                "module:Class, or a problem of a catalogue registered under the entry-point "
-               "group dualmech.problems.  Exit status: 0 all pairs agree, 1 a pair disagrees, "
-               "2 usage error.")
+               "group dualmech.problems (catalogue:problem, or its name alone); check, report, "
+               "mutate and chart also take a registered catalogue's name for all its "
+               "problems.  " + EXIT_STATUS)
     parser.add_argument("--version", action="version", version=f"dualmech {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     sub.required = True
@@ -116,7 +120,8 @@ def build_parser() -> argparse.ArgumentParser:
                                    "model, exactly, and check the source's printed answers.")
     p.add_argument("names", nargs="*", metavar="NAME",
                    help="problems to check: catalogue names, path.py[:Class] or module:Class")
-    p.add_argument("--all", action="store_true", help="check every problem")
+    p.add_argument("--all", action="store_true",
+                   help="check every problem: the catalogue's and the registered catalogues'")
     p.add_argument("--json", action="store_true",
                    help="print JSON: one object for one problem, a list for several")
     p.add_argument("--n", metavar="N", type=_positive_int, default=None,
@@ -140,11 +145,18 @@ def build_parser() -> argparse.ArgumentParser:
     _json_flag(p, "models (coordinates, unknowns, labelled equations) and reactions")
     p.set_defaults(func=_cmd_show)
 
-    p = sub.add_parser("report", help="check everything and write report.html with charts",
-                       description="Check every problem, print the summary table and write "
+    p = sub.add_parser("report", help="check problems and write report.html with charts",
+                       description="Check the problems named (every problem without a name, "
+                                   "or with --all), print the summary table and write "
                                    "DIR/report.html (open it in a browser: one page, charts "
                                    "included), DIR/report.md, DIR/<name>.json and "
                                    "DIR/<name>_reactions.png.")
+    p.add_argument("names", nargs="*", metavar="NAME",
+                   help="problems to report: catalogue names, path.py[:Class], module:Class, "
+                        "a registered catalogue's problem or the catalogue's name for all of "
+                        "them (default: every problem)")
+    p.add_argument("--all", action="store_true",
+                   help="every problem: the catalogue's and the registered catalogues'")
     p.add_argument("--out", metavar="DIR", default="out", type=Path,
                    help="output directory (default: %(default)s)")
     p.add_argument("--duration", metavar="T", default=5.0, type=_duration,
@@ -171,7 +183,8 @@ def build_parser() -> argparse.ArgumentParser:
                                    "Exit status 1 when a mutant survives.")
     p.add_argument("names", nargs="*", metavar="NAME",
                    help="problems to mutate: catalogue names, path.py[:Class] or module:Class")
-    p.add_argument("--all", action="store_true", help="every problem of the catalogue")
+    p.add_argument("--all", action="store_true",
+                   help="every problem: the catalogue's and the registered catalogues'")
     p.add_argument("--n", metavar="N", type=_positive_int, default=None,
                    help="size of a parametric problem (one that declares `parametric`), "
                         "e.g. --n 3")
@@ -204,6 +217,9 @@ def build_parser() -> argparse.ArgumentParser:
     _register_numeric(sub)
     _register_web(sub)
     _register_simulate(sub)
+    for p in sub.choices.values():   # every command's --help ends with the exit statuses
+        if "Exit status" not in (p.epilog or ""):
+            p.epilog = f"{p.epilog}  {EXIT_STATUS}" if p.epilog else EXIT_STATUS
     return parser
 
 
@@ -225,9 +241,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version, or argparse's own usage errors
-        return int(exc.code or 0) if not isinstance(exc.code, str) else EXIT_USAGE
+        return int(exc.code or 0) if not isinstance(exc.code, str) else USAGE_OR_MODEL_ERROR
     with _guarded_stdout():
-        return _run(args)
+        return guarded(args.func)(args)
 
 
 def command() -> int:
@@ -263,55 +279,17 @@ def _guarded_stdout():
         sys.stdout = real
 
 
-def _run(args) -> int:
-    try:
-        return args.func(args)
-    except UsageError as exc:
-        print(f"dualmech {args.command}: error: {exc}", file=sys.stderr)
-        return EXIT_USAGE
-    except OSError as exc:   # e.g. an unwritable --out, an unreadable input: one line
-        where = f"{exc.filename}: " if getattr(exc, "filename", None) else ""
-        print(f"dualmech {args.command}: error: {where}{exc.strerror or exc}",
-              file=sys.stderr)
-        return EXIT_USAGE
-    except KeyboardInterrupt:
-        print(f"dualmech {args.command}: interrupted", file=sys.stderr)
-        return 130
-    except Exception as exc:  # noqa: BLE001 - no traceback reaches a CLI user
-        print(f"dualmech {args.command}: error: {type(exc).__name__}: {exc}", file=sys.stderr)
-        return EXIT_USAGE
-
-
 # -- helpers ---------------------------------------------------------------------------
 def _catalogue():
-    from dualmech import problems
-    return problems
+    return _names.catalogue()
 
 
 def _get(spec: str, n: int | None = None):
-    """The problem ``spec`` names: a catalogue name, ``path.py[:Class]``, ``module:Class`` or a
-    registered catalogue's problem (every command goes through here)."""
-    cat = _catalogue()
-    try:
-        return cat.get(spec, **({"n": n} if n is not None else {}))
-    except KeyError as exc:   # SpecError: what to fix, with close matches
-        raise UsageError(exc.args[0] if exc.args else str(exc)) from None
-    except ValueError as exc:
-        if n is not None and "fixed size" in str(exc):
-            raise UsageError(f"`--n` sizes a parametric problem; `{spec}` has a fixed size.") \
-                from None
-        raise UsageError(str(exc)) from None
+    return _names.get(spec, n)
 
 
 def _selected(args) -> list:
-    if args.all and args.names:
-        raise UsageError("give problem names or --all, not both.")
-    if args.all:
-        return list(_catalogue().all_problems())
-    if not args.names:
-        known = ", ".join(d.name for d in _catalogue().declarations())
-        raise UsageError(f"name at least one problem, or use --all; known problems: {known}.")
-    return [_get(n, getattr(args, "n", None)) for n in args.names]
+    return _names.selected(args.names, args.all, getattr(args, "n", None))
 
 
 def _dof(problem) -> int | str:
@@ -349,24 +327,25 @@ def _jsonable(x):
 
 
 class _Failed:
-    """Stands in for a Comparison when a problem could not be compared at all."""
+    """Stands in for a Comparison when a problem could not be compared at all: its models
+    cannot be built, or its file has an error (:attr:`failure` says where and what to fix)."""
 
-    def __init__(self, problem, error: Exception, seconds: float):
-        self.problem, self.error, self.seconds = problem, error, seconds
+    def __init__(self, problem, error: BaseException, seconds: float):
+        self.problem, self.seconds = problem, seconds
+        self.failure: Failure = describe(error, problem)
         self.equivalent = False
         self.method = "error"
         self.reactions = {}
 
     def __str__(self) -> str:
-        return (f"{self.problem.name}: could not be compared -- "
-                f"{type(self.error).__name__}: {self.error}")
+        return f"{self.problem.name}: could not be compared -- {self.failure.message}"
 
     def to_dict(self) -> dict:
         p = self.problem
         from dualmech.sources import source_fields
         return {"name": p.name, "title": p.title, **source_fields(p.source),
                 "equivalent": False, "method": "error", "seconds": self.seconds,
-                "error": f"{type(self.error).__name__}: {self.error}"}
+                "error": self.failure.message}
 
 
 def _compare(problem, points: int, seed: int):
@@ -376,6 +355,21 @@ def _compare(problem, points: int, seed: int):
         return compare(problem, points=points, seed=seed)
     except Exception as exc:  # a broken model is a failed check, reported, not a crash
         return _Failed(problem, exc, time.perf_counter() - start)
+
+
+def _status(c) -> int:
+    """The exit status of one comparison: 2 when it could not be made, 1 disagree, 0 agree."""
+    failure = getattr(c, "failure", None)
+    if failure is not None:
+        return failure.status
+    return OK if c.equivalent else DISAGREE
+
+
+def _say_failed(command: str, c) -> None:
+    """A comparison that could not be made, as the command's error on stderr."""
+    failure = getattr(c, "failure", None)
+    if failure is not None:
+        print(f"dualmech {command}: error: {failure.message}", file=sys.stderr, flush=True)
 
 
 def _progress(items, what: str):
@@ -426,7 +420,7 @@ def _cmd_list(args) -> int:
     rows = _list_rows()
     if args.json:
         print(_json(rows))
-        return EXIT_OK
+        return OK
     modelled = [r for r in rows if r["status"] == "modelled"]
     table = [(r["name"], r["dof"], _clip(", ".join(r["reactions"]) or "-", 18), r["title"])
              for r in modelled]
@@ -442,14 +436,15 @@ def _cmd_list(args) -> int:
         for r in skipped:
             print(_clip(f"  {r['name']}: {r['summary']}", LIST_WIDTH))
     print("\nsources and summaries: dualmech list --json; one problem: dualmech show NAME")
-    return EXIT_OK
+    return OK
 
 
 class _Checked:
     """A comparison done in a worker process, as the parent prints it."""
 
-    def __init__(self, text: str, data: dict, equivalent: bool):
+    def __init__(self, text: str, data: dict, equivalent: bool, failure: Failure | None = None):
         self.text, self.data, self.equivalent = text, data, equivalent
+        self.failure = failure
 
     def __str__(self) -> str:
         return self.text
@@ -468,8 +463,15 @@ def _text(c, notation: str = "dots") -> str:
 
 
 def _check_in_worker(i: int, points: int, seed: int, notation: str) -> _Checked:
-    c = _compare(_CHOSEN[i], points, seed)
-    return _Checked(_text(c, notation), c.to_dict(), bool(c.equivalent))
+    problem = _CHOSEN[i]
+    c = _compare(problem, points, seed)
+    try:   # the report is written here, where the error's traceback (its user line) is
+        with about(problem):
+            return _Checked(_text(c, notation), c.to_dict(), bool(c.equivalent),
+                            getattr(c, "failure", None))
+    except Exception as exc:  # noqa: BLE001 - the parent reports it
+        failed = _Failed(problem, exc, getattr(c, "seconds", 0.0))
+        return _Checked(str(failed), failed.to_dict(), False, failed.failure)
 
 
 def _compared(chosen: list, points: int, seed: int, jobs: int | None,
@@ -499,28 +501,46 @@ def _compared(chosen: list, points: int, seed: int, jobs: int | None,
         _CHOSEN.clear()
 
 
+def _printed(problem, c, notation: str):
+    """``(text, c)``: the report of ``c``, or of the failure writing it raised."""
+    try:
+        with about(problem):
+            return _text(c, notation), c
+    except Exception as exc:  # noqa: BLE001 - e.g. a model the display cannot solve
+        failed = _Failed(problem, exc, getattr(c, "seconds", 0.0))
+        return str(failed), failed
+
+
 def _cmd_check(args) -> int:
     from dualmech.startup import load
     load("dualmech.verify.check")   # sympy, symengine and the comparator (see dualmech.startup)
     chosen = _selected(args)
     results = []
     for problem, c in _compared(chosen, args.points, args.seed, args.jobs, args.notation):
+        text, c = _printed(problem, c, args.notation) if not args.json else (None, c)
         results.append((problem, c))
-        if not args.json:
-            print(_text(c, args.notation))
+        _say_failed("check", c)
+        if not args.json and getattr(c, "failure", None) is None:
+            print(text)
             print()
     if args.json:
         dicts = [c.to_dict() for _, c in results]
-        print(_json(dicts[0] if len(args.names) == 1 and not args.all else dicts))
+        print(_json(dicts[0] if len(args.names) == 1 and not args.all and len(dicts) == 1
+                    else dicts))
     elif len(results) > 1:
         print(_summary(results))
-    return EXIT_OK if all(c.equivalent for _, c in results) else EXIT_DISAGREE
+    return worst(_status(c) for _, c in results)
 
 
 def _cmd_show(args) -> int:
     from dualmech.startup import load
     load("dualmech.verify.check", "dualmech.model.notation")   # see dualmech.startup
     problem = _get(args.name)
+    with about(problem):   # an error in the problem's own code: at its file and line
+        return _show(problem, args)
+
+
+def _show(problem, args) -> int:
     models = problem.models()
     if args.model is not None:
         if args.model not in models:
@@ -538,13 +558,13 @@ def _cmd_show(args) -> int:
         print(_heading(f"{name}  (coordinates: {coords}; unknowns: {unknowns})"))
         print(eqs.pretty(latex=args.latex, notation=args.notation))
     if not problem.reactions:
-        return EXIT_OK
+        return OK
     c = _compare(problem, 8, 0)
     print()
     print(_heading("reactions (from the direct form, with the verified accelerations)"))
     if isinstance(c, _Failed):
-        print(c)
-        return EXIT_DISAGREE
+        _say_failed("show", c)
+        return _status(c)
     info = problem.reaction_info()
     import sympy as sp
     from dualmech.model import notation
@@ -559,7 +579,7 @@ def _cmd_show(args) -> int:
             print(f"{rname}{note} =")
             print(notation.pretty(expr, args.notation, coords))
         print()
-    return EXIT_OK if c.equivalent else EXIT_DISAGREE
+    return _status(c)
 
 
 #: :data:`dualmech.model.notation.NOTATIONS`, written out so that building the parser (``--help``,
@@ -587,11 +607,12 @@ def _show_json(problem, models: dict) -> int:
                                            for label, e in zip(eqs.labels, eqs.equations)]}
                       for name, eqs in models.items()},
            "reactions": {}}
-    status = EXIT_OK
+    status = OK
     if problem.reactions:
         c = _compare(problem, 8, 0)
         doc["equivalent"] = c.equivalent
         if isinstance(c, _Failed):
+            _say_failed("show", c)
             doc["error"] = c.to_dict()["error"]
         info = problem.reaction_info()
         for rname, expr in c.reactions.items():
@@ -601,7 +622,7 @@ def _show_json(problem, models: dict) -> int:
                 "machine": machine(expr, problem.coordinate_functions
                                    + tuple(problem.model(problem.reference).coordinates)),
                 "direction": where.direction if where is not None else ""}
-        status = EXIT_OK if c.equivalent else EXIT_DISAGREE
+        status = _status(c)
     print(_json(doc))
     return status
 
@@ -655,10 +676,14 @@ def _cmd_report(args) -> int:
     out: Path = args.out
     if "\x00" in str(out):
         raise UsageError("`--out` contains a NUL byte; give a directory path.")
+    chosen = _names.selected(args.names, args.all, default_all=True)
     out.mkdir(parents=True, exist_ok=True)
     results = []
-    for problem in _progress(_catalogue().all_problems(), "checking"):
+    for problem in _progress(chosen, "checking"):
         c = _compare(problem, args.points, args.seed)
+        if not args.json:
+            _, c = _printed(problem, c, args.notation)   # what the page shows, or its error
+        _say_failed("report", c)
         results.append((problem, c))
         (out / f"{problem.name}.json").write_text(_json(c.to_dict()) + "\n")
     if not args.json:
@@ -680,7 +705,7 @@ def _cmd_report(args) -> int:
               f"files and {len(w.charts) - len(w.failed)} charts to {out}/")
         for name, why in w.failed.items():
             print(f"no chart for {name}: {why}")
-    return EXIT_OK if all(c.equivalent for _, c in results) else EXIT_DISAGREE
+    return worst(_status(c) for _, c in results)
 
 
 def _cmd_mutate(args) -> int:
@@ -688,15 +713,22 @@ def _cmd_mutate(args) -> int:
     load("dualmech.verify.mutation")   # sympy, symengine and the comparator (see dualmech.startup)
     from dualmech.verify.mutation import mutation_report
     chosen = _selected(args)
-    reports, failed = [], []
+    reports, failed, statuses = [], [], []
     for problem in _progress(chosen, "mutating"):
         try:
+            with about(problem):
+                problem.models()   # a model that cannot be built: the user's error, status 2
             report = mutation_report(problem, points=args.points, seed=args.seed)
         except Exception as exc:  # a problem whose models cannot be mutated: reported, not a crash
-            failed.append({"problem": getattr(problem, "name", "?"),
-                           "error": f"{type(exc).__name__}: {exc}"})
-            if not args.json:
-                print(f"{getattr(problem, 'name', '?')}: not mutated: {failed[-1]['error']}\n")
+            failure = describe(exc, problem)
+            # mutation refuses derivations that already disagree (or a single one): status
+            # 1; a model that cannot be built, an error in the user's file, a bug: 2
+            statuses.append(DISAGREE if failure.kind == "refused" else failure.status)
+            failed.append({"problem": getattr(problem, "name", "?"), "error": failure.message})
+            if statuses[-1] == DISAGREE and not args.json:
+                print(f"{getattr(problem, 'name', '?')}: not mutated: {failure.message}\n")
+            elif statuses[-1] != DISAGREE:
+                print(f"dualmech mutate: error: {failure.message}", file=sys.stderr)
             continue
         reports.append(report)
         if not args.json:
@@ -714,8 +746,8 @@ def _cmd_mutate(args) -> int:
                       "no verdict"), rows))
         print(f"\n{caught}/{judged} mutants caught over {len(reports)} problems"
               + (f"; {len(failed)} not mutated" if failed else ""))
-    survived = any(r.survived for r in reports)
-    return EXIT_DISAGREE if survived or failed else EXIT_OK
+    statuses += [DISAGREE if r.survived else OK for r in reports]
+    return worst(statuses)
 
 
 def _cmd_new(args) -> int:
@@ -726,7 +758,7 @@ def _cmd_new(args) -> int:
         raise UsageError(str(exc)) from None
     if args.json:
         print(_json({"problem": str(problem), "test": str(test)}))
-        return EXIT_OK
+        return OK
     print(f"wrote {problem} and {test}\n\n"
           f"It is a working pendulum; make it your system:\n"
           f"  1. draw your sign sketch in the docstring of {problem.name}: positive directions "
@@ -740,4 +772,4 @@ def _cmd_new(args) -> int:
           f"  dualmech check {problem}\n"
           f"  dualmech show {problem}\n"
           f"  python -m pytest {test}")
-    return EXIT_OK
+    return OK

@@ -2,8 +2,15 @@
 
 ::
 
-    dualmech serve [--host 127.0.0.1] [--port 8000] [--problems NAME|FILE ...] [--token T]
+    dualmech serve [--host 127.0.0.1] [--port 8000] [--problems NAME ...] [--token T]
                    [--data DIR] [--workers N]
+
+``--problems`` takes every NAME form (a catalogue name, a file ``path.py[:Class]``,
+``module:Class``, a registered catalogue's problem, or a registered catalogue's name for
+all its problems).  A problem outside dualmech's catalogue is loaded and its models built
+before the server starts, so that an error in a teacher's file stops it at once, shown at
+its file and line (exit status 2, :mod:`dualmech.cli.errors`); a file is passed on as an
+absolute path, which the grading processes load the same way.
 
 Example
 -------
@@ -17,10 +24,12 @@ Example
 from __future__ import annotations
 
 import argparse
-import sys
 from pathlib import Path
 
-__all__ = ["register", "handle"]
+from dualmech.cli import names as _names
+from dualmech.cli.errors import OK, UsageError, about, guarded
+
+__all__ = ["register", "handle", "served_specs"]
 
 
 def _port(text: str) -> int:
@@ -44,9 +53,11 @@ def register(subparsers) -> argparse.ArgumentParser:
     p.add_argument("--host", default="127.0.0.1",
                    help="address to listen on (default: %(default)s, this machine only)")
     p.add_argument("--port", type=_port, default=8000, help="port (default: %(default)s)")
-    p.add_argument("--problems", nargs="+", metavar="NAME|FILE",
-                   help="the problems to serve: catalogue names or problem files (default: "
-                        "the whole catalogue); clients can only name these")
+    p.add_argument("--problems", nargs="+", metavar="NAME",
+                   help="the problems to serve: catalogue names, problem files "
+                        "path.py[:Class], module:Class, a registered catalogue's problem or "
+                        "its name for all of them (default: dualmech's catalogue); clients "
+                        "can only name these")
     p.add_argument("--token", help="the teacher's token (default: a random one, printed)")
     p.add_argument("--data", type=Path, default=Path("dualmech-data"), metavar="DIR",
                    help="where batches and results are kept (default: %(default)s)")
@@ -59,23 +70,51 @@ def register(subparsers) -> argparse.ArgumentParser:
     return p
 
 
+@guarded
 def handle(args: argparse.Namespace) -> int:
     """Run the server; 2 with a message when it cannot start."""
     try:
         import starlette  # noqa: F401
         import uvicorn  # noqa: F401
     except ImportError:
-        print("dualmech serve: error: the web extra is missing: pip install 'dualmech[web]'",
-              file=sys.stderr)
-        return 2
+        raise UsageError("the web extra is missing: pip install 'dualmech[web]'") from None
     if args.workers is not None and args.workers < 1:
-        print("dualmech serve: error: `--workers` must be at least 1.", file=sys.stderr)
-        return 2
+        raise UsageError("`--workers` must be at least 1.")
+    specs = served_specs(args.problems)
     from dualmech.web.server import serve
     try:
-        serve(args.host, args.port, args.problems, token=args.token, data=args.data,
+        serve(args.host, args.port, specs, token=args.token, data=args.data,
               workers=args.workers, as_json=args.json)
     except ValueError as exc:
-        print(f"dualmech serve: error: {exc}", file=sys.stderr)
-        return 2
-    return 0
+        raise UsageError(str(exc)) from None
+    return OK
+
+
+def served_specs(names) -> list | None:
+    """The specs the server loads for ``names`` (None: dualmech's whole catalogue): each
+    registered catalogue's name expanded to its problems, each file made absolute, and every
+    problem outside dualmech's catalogue loaded and its models built here, so that an error
+    in it is raised now, at its file and line.
+
+    >>> served_specs(["toy_car"]), served_specs(None)
+    (['toy_car'], None)
+    """
+    if not names:
+        return None
+    cat = _names.catalogue()
+    out = []
+    for spec in _names.expand(names):
+        if not (cat.is_name(spec) and _catalogued(spec)):
+            problem = _names.get(spec)
+            with about(problem):
+                problem.models()
+        out.append(cat.canonical(spec))
+    return out
+
+
+def _catalogued(name: str) -> bool:
+    try:
+        _names.catalogue().module_of(name)
+    except KeyError:
+        return False
+    return True

@@ -7,14 +7,18 @@
     dualmech fidelity NAME [--out DIR]                             the fidelity ladder
     ... --json                                                     JSON instead of text
 
-NAME is anything :func:`dualmech.problems.get` takes: a catalogue name, ``path.py[:Class]``
-or ``module:Class``.
+NAME is anything :func:`dualmech.problems.get` takes: a catalogue name, ``path.py[:Class]``,
+``module:Class`` or a registered catalogue's problem; ``chart`` also takes a registered
+catalogue's name for all its problems, and ``chart --all`` is every problem ``dualmech list``
+lists (:mod:`dualmech.cli.names`).  The problem object itself goes to the study, which says
+"not applicable" with the declaration that would make it applicable.
 
 :func:`register` adds them to an :mod:`argparse` sub-parser set; each handler returns an exit
-status -- 0 done, 1 a problem could not be charted (the others were), 2 a usage error (an
-unknown problem, an unwritable directory, a section that does not exist) -- and prints
-errors as one line on stderr, never a traceback.  Progress goes to stderr (a bar on a
-terminal, one line per problem otherwise).
+status (:mod:`dualmech.cli.errors`) -- 0 done, 2 a usage error (an unknown problem, an
+unwritable directory, a section that does not exist, a study that does not apply), an error
+in a problem file (shown at its file and line), a model that cannot be built or a problem
+that could not be charted (the others are) -- and prints errors on stderr, never a
+traceback.  Progress goes to stderr (a bar on a terminal, one line per problem otherwise).
 
 Example
 -------
@@ -28,17 +32,13 @@ Example
 from __future__ import annotations
 
 import argparse
-import functools
 import sys
 from pathlib import Path
 
-__all__ = ["register", "EXIT_OK", "EXIT_FAILED", "EXIT_USAGE"]
+from dualmech.cli import names as _names
+from dualmech.cli.errors import OK, UsageError, about, describe, guarded, worst
 
-EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
-
-
-class _Usage(Exception):
-    """A command-line mistake; the message says what to do instead."""
+__all__ = ["register"]
 
 
 def register(subparsers) -> None:
@@ -48,8 +48,11 @@ def register(subparsers) -> None:
         description="Integrate every formulation of each problem with every integrator over "
                     "a sweep of tolerances and chart the error against a high-accuracy "
                     "reference versus CPU time; write DIR/NAME_workprecision.{csv,json,png,svg}.")
-    p.add_argument("names", nargs="*", metavar="NAME", help="problems to chart")
-    p.add_argument("--all", action="store_true", help="chart every problem")
+    p.add_argument("names", nargs="*", metavar="NAME",
+                   help="problems to chart: catalogue names, path.py[:Class], module:Class, "
+                        "a registered catalogue's problem or the catalogue's name")
+    p.add_argument("--all", action="store_true",
+                   help="chart every problem: the catalogue's and the registered catalogues'")
     _out(p)
     p.add_argument("--duration", metavar="T", type=_positive, default=5.0,
                    help="simulated seconds, cut to fit the scene (default: %(default)s)")
@@ -57,7 +60,7 @@ def register(subparsers) -> None:
                    help="three tolerances and two step counts instead of the full sweep")
     p.add_argument("--repeats", metavar="K", type=_repeats, default=5,
                    help="runs per point; its CPU time is their median (default: %(default)s)")
-    p.set_defaults(func=_guard(_chart))
+    p.set_defaults(func=guarded(_chart))
 
     p = subparsers.add_parser(
         "atlas", help="where methods fail: singularities, drift, stiffness, ...",
@@ -69,7 +72,7 @@ def register(subparsers) -> None:
     p.add_argument("--section", action="append", metavar="S", dest="sections",
                    help="run only this section (repeatable): singularities, dae_drift, "
                         "stiffness, linearisation, floquet, chaos")
-    p.set_defaults(func=_guard(_atlas))
+    p.set_defaults(func=guarded(_atlas))
 
     p = subparsers.add_parser(
         "fidelity", help="the fidelity ladder: what each simplification costs",
@@ -78,7 +81,7 @@ def register(subparsers) -> None:
                     "DIR/NAME_fidelity.{json,png,svg}.")
     p.add_argument("name", metavar="NAME", help="the problem")
     _out(p)
-    p.set_defaults(func=_guard(_fidelity))
+    p.set_defaults(func=guarded(_fidelity))
 
 
 def _out(p) -> None:
@@ -103,44 +106,16 @@ def _positive(text: str) -> float:
     return value
 
 
-def _guard(handler):
-    """Run ``handler``; turn every exception into one line on stderr and an exit status."""
-    @functools.wraps(handler)
-    def run(args) -> int:
-        command = getattr(args, "command", None) or handler.__name__.strip("_")
-        try:
-            return handler(args)
-        except _Usage as exc:
-            print(f"dualmech {command}: error: {exc}", file=sys.stderr)
-            return EXIT_USAGE
-        except OSError as exc:
-            where = f" {exc.filename}" if getattr(exc, "filename", None) else ""
-            print(f"dualmech {command}: error: cannot write{where}: {exc.strerror or exc}",
-                  file=sys.stderr)
-            return EXIT_USAGE
-        except KeyboardInterrupt:
-            print(f"dualmech {command}: interrupted", file=sys.stderr)
-            return 130
-        except Exception as exc:  # noqa: BLE001 - no traceback reaches a user
-            print(f"dualmech {command}: error: {type(exc).__name__}: {exc}", file=sys.stderr)
-            return EXIT_FAILED
-    return run
-
-
 def _problem(name: str):
-    """The problem ``name`` names: a catalogue name, ``path.py[:Class]`` or ``module:Class``."""
-    from dualmech import problems
-    try:
-        return problems.get(name)
-    except KeyError as exc:   # SpecError: what to fix, with close matches
-        raise _Usage(exc.args[0] if exc.args else str(exc)) from None
+    """The problem ``name`` names (any NAME form; :func:`dualmech.cli.names.get`)."""
+    return _names.get(name)
 
 
 def _writable(out: Path) -> Path:
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise _Usage(f"cannot create the output directory {out}: {exc.strerror or exc}") \
+        raise UsageError(f"cannot create the output directory {out}: {exc.strerror or exc}") \
             from None
     return out
 
@@ -159,26 +134,23 @@ def _repeats(text: str) -> int:
 def _chart(args) -> int:
     from dualmech.progress import progress
     from dualmech.numeric.studies.workprecision import STEPS, TOLERANCES, work_precision
-    if args.all and args.names:
-        raise _Usage("give problem names or --all, not both.")
     if not args.all and not args.names:
-        raise _Usage("name at least one problem, or use --all.")
-    from dualmech import problems
-    names = [d.name for d in problems.declarations()] if args.all else list(args.names)
-    chosen = [_problem(n) for n in names]
+        raise UsageError("name at least one problem, or use --all.")
+    chosen = _names.selected(args.names, args.all)
     out = _writable(args.out)
     tolerances = (1e-3, 1e-6, 1e-9) if args.quick else TOLERANCES
     steps = (32, 256) if args.quick else STEPS
     failed, done = [], []
     for p in progress(chosen, "charting"):
         try:
-            wp = work_precision(p, duration=args.duration, tolerances=tolerances, steps=steps,
-                                repeats=args.repeats)
+            with about(p):
+                wp = work_precision(p, duration=args.duration, tolerances=tolerances,
+                                    steps=steps, repeats=args.repeats)
             paths = wp.write(out)
         except OSError:
             raise
         except Exception as exc:  # noqa: BLE001 - one problem's failure does not stop --all
-            failed.append(f"{p.name}: {type(exc).__name__}: {exc}")
+            failed.append((p.name, describe(exc, p)))
             continue
         if args.json:
             done.append({**wp.to_dict(), "files": [str(x) for x in paths]})
@@ -188,40 +160,44 @@ def _chart(args) -> int:
               + ", ".join(str(x) for x in paths))
     if args.json:
         _print_json(done[0] if len(done) == 1 and not args.all and not failed else done)
-    for line in failed:
-        print(f"dualmech chart: no chart for {line}", file=sys.stderr)
-    return EXIT_FAILED if failed else EXIT_OK
+    for name, failure in failed:
+        print(f"dualmech chart: no chart for {name}: {failure.message}", file=sys.stderr)
+    return worst([OK] + [failure.status for _, failure in failed])
 
 
 def _atlas(args) -> int:
     from dualmech.numeric.studies.atlas import SECTIONS, atlas
     bad = [s for s in (args.sections or []) if s not in SECTIONS]
     if bad:
-        raise _Usage(f"unknown section(s) {', '.join(bad)}; choose from {', '.join(SECTIONS)}.")
+        raise UsageError(f"unknown section(s) {', '.join(bad)}; choose from {', '.join(SECTIONS)}.")
     p = _problem(args.name)
     out = _writable(args.out)
-    result = atlas(p, sections=tuple(args.sections or SECTIONS))
+    with about(p):
+        result = atlas(p, sections=tuple(args.sections or SECTIONS))
     paths = result.write(out)
     if args.json:
         _print_json({**result.to_dict(), "files": [str(x) for x in paths]})
-        return EXIT_OK
+        return OK
     print(result)
     print(f"\nwrote {', '.join(str(x) for x in paths)}")
-    return EXIT_OK
+    return OK
 
 
 def _fidelity(args) -> int:
     from dualmech.numeric.studies.fidelity import NO_LADDER, has_ladder, ladder
     p = _problem(args.name)
-    if not has_ladder(p):
-        raise _Usage(f"`{p.name}` has no fidelity ladder: no stable equilibrium to linearise "
-                     f"about, and {NO_LADDER}.")
+    with about(p):
+        applies = has_ladder(p)
+    if not applies:
+        raise UsageError(f"`{p.name}` has no fidelity ladder (not applicable): no stable "
+                         f"equilibrium to linearise about, and {NO_LADDER}.")
     out = _writable(args.out)
-    result = ladder(p)
+    with about(p):
+        result = ladder(p)
     paths = result.write(out)
     if args.json:
         _print_json({**result.to_dict(), "files": [str(x) for x in paths]})
-        return EXIT_OK
+        return OK
     print(result)
     print(f"\nwrote {', '.join(str(x) for x in paths)}")
-    return EXIT_OK
+    return OK

@@ -22,6 +22,55 @@ def as_expr(value):
             from exc
 
 
+#: functions whose value jumps: equations of motion written with them are not smooth
+JUMPS = frozenset({"sign", "Heaviside", "Piecewise", "Max", "Min", "floor", "ceiling"})
+
+
+def refuse_jumps(exprs, what: str) -> None:
+    """``ModelError`` when one of ``exprs`` (sympy or symengine) applies a function that jumps
+    (:data:`JUMPS`: ``sign``, ``Heaviside``, ``Piecewise``, ...): the equations of motion are
+    derived, compared, solved and integrated as smooth functions of the state, so Coulomb
+    friction ``-mu N sign(v)`` is written for one sliding phase of known direction instead.
+
+    >>> from dualmech import coordinate, rate
+    >>> refuse_jumps([-sp.sign(rate(coordinate("x")))], "force `friction`")
+    ... # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    dualmech.model.equations.ModelError: force `friction`: sign(x') is not supported...
+    """
+    import symengine as se
+    for e in exprs:
+        if isinstance(e, (int, float)):
+            continue
+        base = se.Function if isinstance(e, se.Basic) else sp.core.function.Application
+        for f in e.atoms(base):
+            if type(f).__name__ in JUMPS:
+                from dualmech.model.equations import ModelError
+                raise ModelError(_jump_message(f, what))
+
+
+def _jump_message(f, what: str) -> str:
+    name = type(f).__name__
+    arg = sp.sympify(f.args[0]) if name == "sign" and f.args else sp.S.Zero
+    if name == "sign" and arg.has(sp.Derivative):   # Coulomb friction: the sign of a velocity
+        arg = str(arg.replace(lambda e: isinstance(e, sp.Derivative), lambda d: sp.Symbol(
+            getattr(d.expr.func, "__name__", str(d.expr)) + "'" * d.derivative_count)))
+        return (f"{what}: sign({arg}) is not supported: dualmech derives, compares, solves and "
+                "integrates the equations of motion as smooth functions of the state, and "
+                "sign() jumps where the sliding stops or reverses (sticking is another "
+                "model).  Write Coulomb friction for one sliding phase of known direction: "
+                "while sliding towards +e the friction is -mu*N along e (e.g. "
+                "ne.force(\"friction\", block, -mu*N*O.x), N the normal reaction; in the "
+                "Lagrangian its generalised force), declare that phase with the coordinate's "
+                "rate_range (e.g. (0.1, 2) for sliding towards +x), and write the opposite "
+                "phase as a second problem with the friction reversed.")
+    return (f"{what}: {name}(...) is not supported: dualmech derives, compares, solves and "
+            f"integrates the equations of motion as smooth functions of the state, and {name} "
+            "jumps.  Write each regime as its own problem (one phase of known sign), with the "
+            "coordinate ranges that keep the motion in it.")
+
+
 def as_matrix(value) -> sp.Matrix:
     """``value`` (a sympy Matrix or nested sequences of expressions) as a Matrix, every entry
     converted by :func:`as_expr` (text refused, never evaluated)."""

@@ -37,7 +37,7 @@ from typing import Sequence
 import sympy as sp
 
 from dualmech.model._algebra import merge_names, names_of, to_se
-from dualmech.model._expr import as_expr, refuse_text_in
+from dualmech.model._expr import as_expr, refuse_jumps, refuse_text_in
 
 from dualmech.model.bodies import Particle, RigidBody
 from dualmech.model.declared import note
@@ -125,6 +125,9 @@ class NewtonEuler:
     def _add(self, body: Body, load: Load) -> None:
         if not isinstance(body, (Particle, RigidBody)):
             raise ModelError(f"`body` must be a Particle or RigidBody, got {type(body).__name__}.")
+        for vector in (load.force, load.torque):
+            if vector is not None:
+                refuse_jumps(_held(vector), f"`{load.key}` on `{body.name}`")
         self._bodies[id(body)] = body
         self._loads.setdefault(id(body), []).append(load)
 
@@ -291,6 +294,7 @@ class NewtonEuler:
         mine: dict = {}
         for key, value in parts.items():
             value = as_expr(value)
+            refuse_jumps([value], f"`{key}` in equation `{label}`")
             self._acc(mine, key, (to_se(value), names_of(value)))
         self._equations.append((label, mine))
 
@@ -322,6 +326,11 @@ class NewtonEuler:
             names = merge_names(names, names_of(factor))
         self._names = merge_names(self._names, names)
         parts[key] = parts.get(key, 0) + value
+
+
+def _held(v: Vector):
+    """The components of ``v`` in the form it holds them (symengine when not yet read)."""
+    return v._se if v._sp is None else list(v._sp)
 
 
 def _as_list(body) -> list:

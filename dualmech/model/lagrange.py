@@ -29,7 +29,7 @@ from typing import Sequence
 import symengine as se
 import sympy as sp
 
-from dualmech.model._expr import as_expr, refuse_text_in
+from dualmech.model._expr import as_expr, refuse_jumps, refuse_text_in
 from dualmech.model.bodies import Particle, RigidBody
 from dualmech.model.declared import note
 from dualmech.model._algebra import Bridge, total_derivative
@@ -93,7 +93,9 @@ class Lagrangian:
     # -- energies ----------------------------------------------------------------------
     def kinetic(self, key: str, T) -> None:
         """Add the kinetic-energy term ``T`` under the name ``key``."""
-        self._T[key] = self._T.get(key, 0) + as_expr(T)
+        T = as_expr(T)
+        refuse_jumps([T], f"kinetic energy `{key}`")
+        self._T[key] = self._T.get(key, 0) + T
 
     def kinetic_of(self, body: Particle | RigidBody, frame: Frame) -> None:
         """Add the kinetic energy of ``body`` seen from the inertial ``frame``."""
@@ -101,7 +103,9 @@ class Lagrangian:
 
     def potential(self, key: str, V) -> None:
         """Add the potential-energy term ``V``."""
-        self._V[key] = self._V.get(key, 0) + as_expr(V)
+        V = as_expr(V)
+        refuse_jumps([V], f"potential energy `{key}`")
+        self._V[key] = self._V.get(key, 0) + V
 
     def gravity(self, g: Vector, bodies, frame: Frame) -> None:
         """Potential ``-m g . r_C`` of each body (``g`` the gravity vector, ``frame`` inertial)."""
@@ -120,12 +124,15 @@ class Lagrangian:
 
     def dissipation(self, key: str, R) -> None:
         """Add the Rayleigh dissipation term ``R`` (e.g. ``c v^2 / 2``)."""
-        self._R[key] = self._R.get(key, 0) + as_expr(R)
+        R = as_expr(R)
+        refuse_jumps([R], f"dissipation `{key}`")
+        self._R[key] = self._R.get(key, 0) + R
 
     # -- generalised forces ------------------------------------------------------------
     def generalized_force(self, key: str, Q: Sequence) -> None:
         """Add generalised forces ``Q`` (one per coordinate)."""
         Q = [as_expr(x) for x in Q]
+        refuse_jumps(Q, f"generalised force `{key}`")
         if len(Q) != len(self.coordinates):
             raise ModelError(f"`Q` needs {len(self.coordinates)} entries (one per coordinate), "
                              f"got {len(Q)}.")

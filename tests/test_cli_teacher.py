@@ -1,0 +1,224 @@
+"""A teacher's own problem is first class: every command takes it by file, ``module:Class``
+and through a course package's entry point, as it takes a catalogue name.
+
+The teacher's file is written as the README shows one, with the front door's one import
+line: a pendulum (mass ``m`` on a rod of length ``l``, angle ``theta`` from the downward
+vertical, the rod's pull ``T`` as the reaction).  By hand: ``theta'' = -g sin(theta) / l``
+and, from the radial balance, ``T = m (g cos(theta) + l theta'^2)``.  Its inverted twin (the
+potential's and gravity's signs flipped) has no stable equilibrium in its declared range,
+so a fidelity ladder does not apply to it.
+"""
+from __future__ import annotations
+
+import json
+import sys
+import textwrap
+
+import pytest
+import sympy as sp
+
+from dualmech import problems
+from dualmech.cli.main import main
+
+TEACHER_FILE = textwrap.dedent('''
+    """My pendulum, as in my notes."""
+    import sympy as sp
+    from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, Problem, Parameter,
+                          Coordinate, Reaction, coordinate, rot_z, MASS, LENGTH, ACCELERATION,
+                          ANGLE, FORCE)
+
+    m, l, g = sp.symbols("m l g", positive=True)
+    th = coordinate("theta")
+    O = Frame.ground("O")
+    arm = O.child("arm", rot_z(th))
+    bob = Particle("bob", m, Point.origin(O).locate("P", -l * arm.y))
+    SIGN = 1
+
+
+    class Pendulum(Problem):
+        name, title, source = "my_pendulum", "Simple pendulum", "my notes: example 1"
+        parameters = (Parameter(m, MASS, 1, (0.1, 10)), Parameter(l, LENGTH, 1, (0.1, 2)),
+                      Parameter(g, ACCELERATION, 9.81, (1, 20)))
+        coordinates = (Coordinate(th, ANGLE, (-1, 1)),)
+        reactions = (Reaction("T", FORCE, "rod on bob, towards the pivot"),)
+
+        def newton_euler(self):
+            ne = NewtonEuler(coordinates=[th], ground=O)
+            ne.gravity(-SIGN * g * O.y)
+            ne.reaction("T", bob, arm.y)
+            ne.linear_momentum(bob, arm.x)
+            ne.linear_momentum(bob, arm.y)
+            return ne.equations()
+
+        def lagrange(self):
+            lg = Lagrangian(coordinates=[th])
+            lg.kinetic_of(bob, O)
+            lg.potential("gravity", -SIGN * m * g * l * sp.cos(th))
+            return lg.equations()
+''')
+
+
+def run(capsys, *argv):
+    status = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+@pytest.fixture
+def teacher(tmp_path):
+    path = tmp_path / "my_pendulum.py"
+    path.write_text(TEACHER_FILE)
+    (tmp_path / "my_inverted.py").write_text(
+        TEACHER_FILE.replace("SIGN = 1", "SIGN = -1").replace('"my_pendulum"', '"my_inverted"'))
+    return path
+
+
+def _symbols(path):
+    module = sys.modules[type(problems.load(str(path))).__module__]
+    return module.m, module.l, module.g, module.th
+
+
+def test_check_by_file_recovers_the_hand_reaction(capsys, teacher):
+    status, out, err = run(capsys, "check", teacher, "--json")
+    assert status == 0, err
+    d = json.loads(out)
+    assert d["name"] == "my_pendulum" and d["equivalent"] is True
+    from dualmech import compare, rate
+    m, l, g, th = _symbols(teacher)
+    c = compare(problems.load(str(teacher)))
+    assert sp.simplify(c.reactions["T"] - m * (g * sp.cos(th) + l * rate(th)**2)) == 0
+    (acc,) = c.accelerations.values()
+    assert sp.simplify(acc + g * sp.sin(th) / l) == 0
+
+
+def test_show_by_file_and_by_module_colon_class(capsys, teacher, monkeypatch):
+    status, out, _ = run(capsys, "show", teacher)
+    assert status == 0
+    assert out.index("newton_euler") < out.index("lagrange") < out.index("reactions")
+    monkeypatch.chdir(teacher.parent)
+    status, out, _ = run(capsys, "show", "my_pendulum:Pendulum", "--model", "lagrange")
+    assert status == 0 and "lagrange" in out and "newton_euler" not in out
+
+
+def test_report_of_a_file_reports_that_problem_alone(capsys, teacher, tmp_path):
+    out_dir = tmp_path / "report"
+    status, out, err = run(capsys, "report", teacher, "--out", out_dir, "--duration", "0.3",
+                           "--points", "3", "--json")
+    assert status == 0, err
+    d = json.loads(out)
+    assert [(p["problem"], p["equivalent"]) for p in d["problems"]] == [("my_pendulum", True)]
+    assert (out_dir / "report.html").exists() and (out_dir / "my_pendulum.json").exists()
+    status, _, err = run(capsys, "report", teacher, "--all", "--out", out_dir)
+    assert status == 2 and "not both" in err
+
+
+def test_mutate_by_file_names_the_survivors_of_a_reaction_derived_once(capsys, teacher):
+    status, out, _ = run(capsys, "mutate", teacher, "--json")
+    d = json.loads(out)
+    assert status == 1                            # a mutant survived: the models cannot tell
+    assert {s["mutant"] for s in d["survived"]} == {
+        "newton_euler: flip the sign of unknown `T`", "newton_euler: double `m`"}
+
+
+def test_chart_by_file_with_the_quick_sweep(capsys, teacher, tmp_path):
+    status, out, err = run(capsys, "chart", teacher, "--quick", "--duration", "0.3",
+                           "--repeats", "1", "--json", "--out", tmp_path / "o")
+    assert status == 0, err
+    d = json.loads(out)
+    assert d["problem"] == "my_pendulum" and d["runs"]
+    assert all((tmp_path / "o").joinpath(p).exists() for p in d["files"])
+
+
+def test_atlas_by_file_says_what_does_not_apply(capsys, teacher, tmp_path):
+    status, out, err = run(capsys, "atlas", teacher, "--section", "floquet", "--section",
+                           "chaos", "--out", tmp_path / "o")
+    assert status == 0, err
+    assert "[floquet] not applicable:" in out and "[chaos] not applicable:" in out
+
+
+def test_fidelity_by_file_and_its_not_applicable_message(capsys, teacher, tmp_path):
+    status, out, err = run(capsys, "fidelity", teacher, "--json", "--out", tmp_path / "o")
+    assert status == 0, err
+    assert json.loads(out)["rungs"][0]["model"] == "linearised"
+    status, _, err = run(capsys, "fidelity", teacher.parent / "my_inverted.py",
+                         "--out", tmp_path / "o")
+    assert status == 2
+    assert "not applicable" in err and "declare" in err and "stable equilibrium" in err
+
+
+def test_grade_by_file(capsys, teacher):
+    status, out, _ = run(capsys, "grade", teacher, "--answer", "l*theta'' + g*sin(theta) = 0")
+    assert status == 0 and out.startswith("RIGHT")
+    status, out, _ = run(capsys, "grade", teacher, "--answer", "l*theta'' - g*sin(theta) = 0")
+    assert status == 1 and out.startswith("WRONG")
+
+
+def test_serve_takes_a_file_and_hands_the_server_an_absolute_spec(capsys, teacher,
+                                                                  monkeypatch):
+    pytest.importorskip("starlette")
+    import dualmech.web.server as server
+    from dualmech.web.app import served_problems
+    seen = {}
+    monkeypatch.setattr(server, "serve", lambda host, port, specs, **kw: seen.update(specs=specs))
+    monkeypatch.chdir(teacher.parent)
+    assert main(["serve", "--problems", "my_pendulum.py", "toy_car"]) == 0
+    assert seen["specs"] == [str(teacher.resolve()), "toy_car"]
+    assert served_problems(seen["specs"]) == {"my_pendulum": str(teacher.resolve()),
+                                             "toy_car": "toy_car"}
+
+
+# -- a course package's catalogue ----------------------------------------------------------------
+@pytest.fixture
+def course(teacher, monkeypatch):
+    """A course package registering ``mech101 = my_course`` in the group dualmech.problems
+    (a dist-info folder on sys.path, as pip installs one); ``my_course`` lists the teacher's
+    pendulum and its inverted twin."""
+    folder = teacher.parent
+    (folder / "my_course.py").write_text(
+        "from my_pendulum import Pendulum\nfrom my_inverted import Pendulum as Inverted\n"
+        "PROBLEMS = (Pendulum, Inverted)\n")
+    info = folder / "mech101-1.0.dist-info"
+    info.mkdir()
+    (info / "METADATA").write_text("Metadata-Version: 2.1\nName: mech101\nVersion: 1.0\n")
+    (info / "entry_points.txt").write_text("[dualmech.problems]\nmech101 = my_course\n")
+    monkeypatch.syspath_prepend(str(folder))
+    assert "mech101" in problems.registered()
+    return "mech101"
+
+
+def test_report_takes_a_course_catalogue_as_a_whole(capsys, course, tmp_path):
+    status, out, err = run(capsys, "report", course, "--out", tmp_path / "r", "--duration",
+                           "0.3", "--points", "3", "--json")
+    assert status == 0, err
+    assert [p["problem"] for p in json.loads(out)["problems"]] == ["my_pendulum",
+                                                                   "my_inverted"]
+
+
+def test_report_all_includes_the_course_packages_problems(capsys, course, tmp_path,
+                                                          monkeypatch):
+    monkeypatch.setattr(problems, "all_problems", lambda: [problems.get("simple_pendulum")])
+    status, out, err = run(capsys, "report", "--all", "--out", tmp_path / "r", "--duration",
+                           "0.3", "--points", "3", "--json")
+    assert status == 0, err
+    assert [p["problem"] for p in json.loads(out)["problems"]] == [
+        "simple_pendulum", "my_pendulum", "my_inverted"]
+
+
+def test_every_command_takes_a_course_problem_by_entry_point(capsys, course, tmp_path):
+    assert run(capsys, "check", "mech101:my_pendulum")[0] == 0
+    assert run(capsys, "check", "my_inverted")[0] == 0           # its bare name
+    status, out, _ = run(capsys, "check", course)                 # the whole catalogue
+    assert status == 0 and "my_pendulum" in out and "my_inverted" in out
+    assert run(capsys, "show", "mech101:Pendulum")[0] == 0
+    # grading runs in worker processes: the package is installed before the command starts
+    import os
+    import subprocess
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
+        [str(tmp_path)] + [p for p in [os.environ.get("PYTHONPATH")] if p])}
+    done = subprocess.run([sys.executable, "-m", "dualmech", "grade", "mech101:my_pendulum",
+                           "--answer", "l*theta'' + g*sin(theta) = 0"], env=env,
+                          capture_output=True, text=True, timeout=300, cwd=tmp_path.parent)
+    assert done.returncode == 0 and done.stdout.startswith("RIGHT"), done.stdout + done.stderr
+    status, _, err = run(capsys, "show", course)                  # one problem is needed
+    assert status == 2
+    assert "mech101:my_pendulum, mech101:my_inverted" in err and "name one" in err
