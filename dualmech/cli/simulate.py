@@ -19,8 +19,9 @@ reaches the problem's declared singular set (:attr:`Problem.singular
 The text (or ``--json``) gives the parameters, the state order (coordinates, then their
 rates), the initial and final states, the method that ran and ``cpu_seconds``: the CPU time of
 the integration alone (deriving, generating and compiling the code come before the clock
-starts).  Exit status: 0 done, 1 the integration stopped early (a singular mass matrix, too
-much work), 2 a usage error.
+starts).  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
+(a singular mass matrix, the declared singular set, too much work), 2 a usage error or a
+problem that cannot be built.
 
 Example
 -------
@@ -34,17 +35,15 @@ Example
 from __future__ import annotations
 
 import argparse
-import functools
 import json
 import sys
 
+from dualmech.cli.errors import DISAGREE, OK, UsageError, about, guarded
+
 __all__ = ["register", "summary"]
 
-EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
-
-
-class _Usage(Exception):
-    """A command-line mistake; the message says what to do instead."""
+#: the integration stopped early (the same status as a disagreement: the job was not done)
+STOPPED = DISAGREE
 
 
 def register(subparsers) -> None:
@@ -78,7 +77,7 @@ def register(subparsers) -> None:
                    help="print JSON: name, parameters, coordinates, initial_state, "
                         "final_state, t_final, method, cpu_seconds, steps, rhs_evaluations, "
                         "rtol, atol, success, message, fallback (and samples)")
-    p.set_defaults(func=_guard(_simulate))
+    p.set_defaults(func=guarded(_simulate))
 
 
 def _positive(text: str) -> float:
@@ -109,32 +108,14 @@ def _samples(text: str) -> int:
     return k
 
 
-def _guard(handler):
-    """Run ``handler``; turn every exception into one line on stderr and an exit status."""
-    @functools.wraps(handler)
-    def run(args) -> int:
-        try:
-            return handler(args)
-        except _Usage as exc:
-            print(f"dualmech simulate: error: {exc}", file=sys.stderr)
-            return EXIT_USAGE
-        except KeyboardInterrupt:
-            print("dualmech simulate: interrupted", file=sys.stderr)
-            return 130
-        except Exception as exc:  # noqa: BLE001 - no traceback reaches a user
-            print(f"dualmech simulate: error: {type(exc).__name__}: {exc}", file=sys.stderr)
-            return EXIT_FAILED
-    return run
-
-
 def _load(args):
     from dualmech import problems
     try:
         return problems.load(args.name, **({"n": args.n} if args.n is not None else {}))
     except KeyError as exc:   # SpecError: what to fix, with close matches
-        raise _Usage(exc.args[0] if exc.args else str(exc)) from None
+        raise UsageError(exc.args[0] if exc.args else str(exc)) from None
     except ValueError as exc:  # options a fixed-size problem does not take
-        raise _Usage(str(exc)) from None
+        raise UsageError(str(exc)) from None
 
 
 def _params(pairs) -> dict:
@@ -142,11 +123,11 @@ def _params(pairs) -> dict:
     for pair in pairs:
         name, sep, value = pair.partition("=")
         if not sep or not name.strip():
-            raise _Usage(f"`--param` takes NAME=VALUE, got {pair!r}.")
+            raise UsageError(f"`--param` takes NAME=VALUE, got {pair!r}.")
         try:
             out[name.strip()] = float(value)
         except ValueError:
-            raise _Usage(f"`--param` {name.strip()}: {value.strip()!r} is not a number.") \
+            raise UsageError(f"`--param` {name.strip()}: {value.strip()!r} is not a number.") \
                 from None
     return out
 
@@ -205,20 +186,21 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
 def _simulate(args) -> int:
     from dualmech.numeric.cvode import METHODS
     if args.method not in METHODS:
-        raise _Usage(f"`--method` {args.method!r} is not one of {', '.join(METHODS)}.")
+        raise UsageError(f"`--method` {args.method!r} is not one of {', '.join(METHODS)}.")
     problem = _load(args)
     try:
-        result = summary(problem, args.duration, args.rtol, args.atol, args.method,
-                         _params(args.param), args.samples)
+        with about(problem):
+            result = summary(problem, args.duration, args.rtol, args.atol, args.method,
+                             _params(args.param), args.samples)
     except ValueError as exc:  # a misspelt or out-of-range --param
         if "`params`" in str(exc):
-            raise _Usage(str(exc).replace("`params`", "`--param`")) from None
+            raise UsageError(str(exc).replace("`params`", "`--param`")) from None
         raise
     if result["fallback"]:
         print(f"dualmech simulate: CVODE cannot run here ({result['fallback']}); fell back to "
               "scipy DOP853 on the generated right-hand side.", file=sys.stderr)
-    status = EXIT_OK if result["final_state"] is not None else EXIT_FAILED
-    if status != EXIT_OK:
+    status = OK if result["final_state"] is not None else STOPPED
+    if status != OK:
         print(f"dualmech simulate: stopped early: {result['message']}", file=sys.stderr)
     if args.json:
         print(json.dumps(result, indent=1))
