@@ -86,6 +86,7 @@ def test_grade_bounded_one_answer():
     assert LIMITS.degree < 4000
 
 
+@pytest.mark.slow
 def test_workers_ignore_a_dualmech_folder_in_the_current_directory(tmp_path):
     # regression: the forkserver imported its preloaded modules with the current directory
     # first on sys.path, so a dualmech/ folder there (a source tree, with a plain install)
