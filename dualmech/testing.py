@@ -31,7 +31,7 @@ try:
     from hypothesis import strategies as st
 except ImportError as exc:  # the plain install has no hypothesis
     raise ImportError("dualmech.testing needs hypothesis: install it with "
-                      "`pip install 'dualmech[testing]'`.") from exc
+                      "`pip install hypothesis` (the `test` extra has it too).") from exc
 
 from dualmech.model.kinematics import t
 from dualmech.numeric import NumericModel

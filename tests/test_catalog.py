@@ -63,6 +63,7 @@ def test_every_problem_has_published_answers_checked(comparisons, name):
     assert verdicts and {v.verdict for v in verdicts} <= {"correct", "wrong"}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", NAMES)
 def test_mutants_are_all_caught_naming_an_equation(name):
     report = mutation_report(get(name))
@@ -72,6 +73,7 @@ def test_mutants_are_all_caught_naming_an_equation(name):
         assert named and all(n for n in named), description
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", NAMES)
 def test_property_both_forms_same_accelerations_and_consistent_reactions(name):
     problem = get(name)

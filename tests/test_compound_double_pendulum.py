@@ -1,26 +1,13 @@
 """Compound double pendulum (problems/compound_double_pendulum.py): hinge force, errata."""
-import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.verify.check import compare
 from dualmech.problems.compound_double_pendulum import (CompoundDoublePendulum, I0, a, b, g, m,
                                                printed_reduced, scene, theta1, theta2)
 
 problem = CompoundDoublePendulum()
 D = lambda q: q.diff(t)  # noqa: E731
 DD = lambda q: q.diff(t, 2)  # noqa: E731
-
-
-@pytest.fixture(scope="module")
-def comparison():
-    return compare(problem)
-
-
-def test_declaration_validates():
-    problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange", "moments", "multiplier"]
-    assert problem.dimension_issues() == []
 
 
 def test_angular_momentum_of_the_body_about_the_pivot_it_is_not_pinned_to():
@@ -81,38 +68,3 @@ def test_theta2_finally_needs_I0_2mb2_and_then_only_its_gravity_term_is_wrong():
     assert sp.simplify(corrected - lag.subs(I0, 2 * m * b**2) / (m * b)) == 0
     # read as I0 = 3 m b^2 instead, the theta2'' coefficient would be 4 b, not 3 b
     assert sp.simplify(lag.subs(I0, 3 * m * b**2).diff(DD(theta2)) / (m * b)) == 4 * b
-
-
-def test_comparator_proves_every_derivation_equivalent(comparison):
-    assert comparison.equivalent, str(comparison)
-    assert {p.candidate for p in comparison.pairs} == {"newton_euler", "moments", "multiplier"}
-    assert all(p.method == "exact" for p in comparison.pairs)
-
-
-# Each verdict derived by hand (module docstring of problems/compound_double_pendulum.py).
-EXPECTED = {
-    "horizontal position and velocity of G": "correct",
-    "vertical position and velocity of G (downwards)": "correct",
-    "T": "correct",
-    "T (expanded)": "correct",          # cos th1 cos th2 + sin th1 sin th2 = cos(th1 - th2)
-    "V": "correct",
-    "theta1: dT/dth1', d/dt, dT/dth1, dV/dth1": "correct",
-    "theta1: Lagrange's equation": "correct",
-    "theta1: divided through": "wrong",       # g a sin th1 for g sin th1
-    "theta2: dT/dth2'": "wrong",               # m b^2 th1' for m b^2 th2'
-    "theta2: d/dt, dT/dth2, dV/dth2": "correct",
-    "theta2: Lagrange's equation": "correct",
-    "theta2: finally": "wrong",                # g b sin th2 (and 3 b only for I0 = 2 m b^2)
-}
-
-
-def test_published_verdicts(comparison):
-    assert {v.label: v.verdict for v in comparison.published} == EXPECTED
-
-
-def test_hinge_force_is_derived_twice_and_agrees(comparison):
-    # the multiplier model frees the hinge by (u, v): R_x, R_y a second time
-    c = comparison
-    (pair,) = [p for p in c.pairs if p.kind == "reactions"]
-    assert pair.equivalent and pair.method == "exact"
-    assert set(pair.reactions) == {"R_x", "R_y"} and c.not_cross_checked == []

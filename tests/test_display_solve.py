@@ -25,6 +25,7 @@ def _values(expr, coords, rng_seed):
     return complex(e.evalf(30, subs=subs))
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name, model", CASES)
 def test_display_solve_matches_sympys_lu(name, model):
     m = get(name).model(model)

@@ -9,7 +9,12 @@ graded right (a fresh worker replaces the killed one).
 from __future__ import annotations
 
 import concurrent.futures
+import json
+import os
+import subprocess
+import sysconfig
 import time
+from pathlib import Path
 
 import pytest
 
@@ -79,3 +84,28 @@ def test_grade_bounded_one_answer():
     assert g.status == "invalid" and g.summary.startswith("too costly to grade: "
                                                           "`sin(1000*theta)`")
     assert LIMITS.degree < 4000
+
+
+@pytest.mark.slow
+def test_workers_ignore_a_dualmech_folder_in_the_current_directory(tmp_path):
+    # regression: the forkserver imported its preloaded modules with the current directory
+    # first on sys.path, so a dualmech/ folder there (a source tree, with a plain install)
+    # made every answer of `dualmech grade --batch` "invalid: cannot import name ...".  The
+    # command is run as installed (its script: `python -m` would itself put the current
+    # directory on the path) from a directory holding an empty dualmech package.
+    script = Path(sysconfig.get_path("scripts")) / "dualmech"
+    assert script.exists(), f"the installed command: {script}"
+    (tmp_path / "dualmech").mkdir()
+    (tmp_path / "dualmech" / "__init__.py").write_text("")
+    (tmp_path / "answers.csv").write_text(
+        "id,question,answer\n"
+        "s1,simple_pendulum,a*theta'' + g*sin(theta) = 0\n"
+        "s2,simple_pendulum,a*theta'' - g*sin(theta) = 0\n")
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONSAFEPATH", "PYTHONPATH")}
+    run = subprocess.run([str(script), "grade", "--batch", "answers.csv", "--out", "out",
+                          "--workers", "1", "--no-progress"], cwd=tmp_path, env=env,
+                         capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stderr
+    assert "simple_pendulum: 1/2 right" in run.stdout, run.stdout + run.stderr
+    results = json.loads((tmp_path / "out" / "results.json").read_text())["results"]
+    assert [r["status"] for r in results] == ["right", "wrong"]

@@ -62,6 +62,7 @@ def _same(a: Grader, b: Grader, samples) -> None:
         assert x == y, (s.text, s.quantity)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", [d.name for d in declarations()])
 def test_a_stored_context_grades_every_answer_as_the_one_it_was_written_from(name, cache):
     fresh = _fresh(name)

@@ -21,6 +21,7 @@ def hz():
                     tolerances=(1e-4, 1e-5, 1e-6, 1e-7, 1e-8), lyapunov_time=40.0)
 
 
+@pytest.mark.slow
 def test_horizons_grow_with_minus_log_tol_at_the_rate_benettins_exponent_gives(hz):
     assert all(not r["bound"] for r in hz.rows)          # every horizon inside the reference
     assert hz.reference_valid > max(r["horizon"] for r in hz.rows)
@@ -29,6 +30,7 @@ def test_horizons_grow_with_minus_log_tol_at_the_rate_benettins_exponent_gives(h
     assert hz.lyapunov > 0
 
 
+@pytest.mark.slow
 def test_two_formulations_agree_longer_than_either_is_right(hz):
     # the old measure (agreement of two formulations) overstates how long a run is right
     c = chaos(get("compound_double_pendulum"), y0=Y0, duration=7.0, tolerances=(1e-4, 1e-6))

@@ -1,11 +1,9 @@
 """Inertia-wheel pendulum (problems/inertia_wheel_pendulum.py): reactions, errata, linearisation."""
 import random
 
-import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.verify.check import compare
 from dualmech.model.dimensions import audit
 from dualmech.model.equations import to_plain
 from dualmech.exact.form import ExactForm
@@ -28,17 +26,6 @@ def _identically_zero(expr) -> bool:
     return all(form.evaluate(form.sample(rng)) == [0] for _ in range(4))
 
 
-@pytest.fixture(scope="module")
-def comparison():
-    return compare(problem)
-
-
-def test_declaration_validates():
-    problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange", "multiplier"]
-    assert problem.dimension_issues() == []
-
-
 def test_motor_torque_reacts_on_the_rod():
     # hand: J q1'' = -tau - M g sin(q1),  I2 (q1'' + q2'') = tau
     acc = problem.model("lagrange").accelerations_solved()
@@ -46,7 +33,7 @@ def test_motor_torque_reacts_on_the_rod():
     assert sp.simplify(acc[DD(q1)] + acc[DD(q2)] - tau / I2) == 0
 
 
-def test_pivot_and_bearing_forces_are_the_hand_derived_ones(comparison):
+def test_pivot_and_bearing_forces_are_the_hand_derived_ones():
     # the hand reactions and the Lagrange accelerations satisfy every free-body equation
     # exactly; the direct system is regular, so they are its reactions
     acc = problem.model("lagrange").accelerations_solved()
@@ -55,8 +42,6 @@ def test_pivot_and_bearing_forces_are_the_hand_derived_ones(comparison):
     for label, eq in zip(problem.model("newton_euler").labels,
                          problem.model("newton_euler").equations):
         assert _identically_zero(eq.xreplace(known)), label
-    (pair,) = [p for p in comparison.pairs if p.kind == "reactions"]
-    assert pair.equivalent and set(pair.reactions) == {"R_x", "R_y", "F_x", "F_y"}
 
 
 def test_a_free_wheel_adds_nothing_to_the_pendulums_frequency():
@@ -79,22 +64,3 @@ def test_printed_q1_equation_misses_the_square_on_l_c1():
     fixed = eq - m1 * l_c1 * DD(q1) + m1 * l_c1**2 * DD(q1)
     assert sp.simplify(fixed.xreplace(problem.model("lagrange").accelerations_solved())) == 0
 
-
-EXPECTED = {
-    "(a) generalised forces": "correct",
-    "(b) angular velocities": "correct",
-    "(b) positions and velocities": "correct",
-    "(c) T1, T2": "correct",
-    "(c) U1, U2": "correct",
-    "(d) dL/dq1'": "wrong",                 # l_c1 not squared; q1'' for q1'
-    "(d) dL/dq1": "correct",
-    "(d) q1 equation": "wrong",             # m1 l_c1 q1'' must be m1 l_c1^2 q1''
-    "(d II) dL/dq2', dL/dq2": "wrong",      # I2 (q1'' + q2'') for I2 (q1' + q2')
-    "(d II) q2 equation": "correct",
-    "(d) equations of motion": "wrong",     # the set holds the wrong q1 equation
-}
-
-
-def test_published_verdicts(comparison):
-    assert comparison.equivalent, str(comparison)
-    assert {v.label: v.verdict for v in comparison.published} == EXPECTED

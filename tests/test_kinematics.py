@@ -313,6 +313,7 @@ def components(draw):
     return draw(small) + draw(small) * t + draw(small) * q + draw(small) * q * t
 
 
+@pytest.mark.slow
 @settings(max_examples=25)
 @given(chain=st.lists(rotations(), min_size=1, max_size=4),
        comps=st.tuples(components(), components(), components()),

@@ -180,6 +180,7 @@ def test_options_reach_only_parametric_problems():
         problems.load("toy_car", n=2)
 
 
+@pytest.mark.slow
 def test_new_writes_a_skeleton_that_passes_check_and_its_test(capsys, tmp_path):
     status, out, _ = run(capsys, "new", "bead_on_rod", "--out", str(tmp_path))
     assert status == 0 and "TODO" in out and "dualmech check" in out

@@ -2,22 +2,10 @@
 import pytest
 import sympy as sp
 
-from dualmech.verify.check import compare
 from dualmech.model.equations import ModelError
 from dualmech.problems.mass_spring_gravity import F, M, MassSpringGravity, g, k, static_equilibrium, x
 
 problem = MassSpringGravity()
-
-
-@pytest.fixture(scope="module")
-def comparison():
-    return compare(problem)
-
-
-def test_declaration_validates():
-    problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange", "gravity_as_force"]
-    assert problem.dimension_issues() == []
 
 
 def test_gravity_as_a_generalised_force_is_minus_M_g():
@@ -45,24 +33,3 @@ def test_oscillation_about_equilibrium_has_omega_squared_k_over_M():
 def test_unstretched_position_is_not_an_equilibrium():
     with pytest.raises(ModelError, match="not an equilibrium"):
         problem.model("lagrange").linearize({x: 0})
-
-
-def test_comparator_proves_all_three_derivations_equivalent(comparison):
-    assert comparison.equivalent, str(comparison)
-    assert {(p.reference, p.candidate) for p in comparison.pairs} == {
-        ("lagrange", "newton_euler"), ("lagrange", "gravity_as_force")}
-    assert all(p.method == "exact" for p in comparison.pairs)
-
-
-# Each verdict derived by hand (module docstring of problems/mass_spring_gravity.py).
-EXPECTED = {
-    "T": "correct",                     # v = x' j
-    "U": "correct",                     # extension x, height x
-    "Lagrange's equation": "correct",   # d/dt (M x') + k x + M g = F
-    "equation of motion": "correct",    # M x'' + k x = F - M g
-    "generalised momentum": "correct",  # dT/dx' = M x' = p . j
-}
-
-
-def test_published_verdicts(comparison):
-    assert {v.label: v.verdict for v in comparison.published} == EXPECTED

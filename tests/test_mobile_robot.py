@@ -4,30 +4,16 @@ import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.verify.check import compare
 from dualmech.model.inverse import peak, required_inputs
 from dualmech.numeric import NumericModel, simulate
-from dualmech.problems.mobile_robot import (D1, D2, M, MobileRobot, MobileRobotSimplified, T, arm_profile,
-                                   arm_properties, base_profile, f, g, m1, m2, phi, r2, x)
+from dualmech.problems.mobile_robot import (MobileRobot, MobileRobotSimplified, T, arm_profile,
+                                   arm_properties, base_profile, f, phi, x)
 
 simplified, detailed = MobileRobotSimplified(), MobileRobot()
 # the source's numbers, exactly; the motor inputs f and T stay symbols
 DEFAULTS = {s: sp.nsimplify(v) for s, v in detailed.defaults().items() if s not in (f, T)}
 H = sp.Symbol("H", real=True)
 PI = sp.pi
-
-
-@pytest.fixture(scope="module")
-def comparisons():
-    return {p.name: compare(p) for p in (simplified, detailed)}
-
-
-def test_declarations_validate():
-    for p in (simplified, detailed):
-        p.validate()
-        assert p.dimension_issues() == []
-    assert simplified.model_names == ["newton_euler", "lagrange"]
-    assert detailed.model_names == ["newton_euler", "lagrange", "multiplier"]
 
 
 def test_the_sources_numbers_from_the_arm_properties():
@@ -86,6 +72,7 @@ def requirements():
     return out
 
 
+@pytest.mark.slow
 def test_arm_torque_is_the_same_in_both_models(requirements):
     # (2.6-10) is (2.6-2): along any motion both models ask the same torque
     model = simplified.model("lagrange").substitute(DEFAULTS)
@@ -193,20 +180,3 @@ def test_pivot_reaction_along_the_simulation_is_the_arms_horizontal_force(runs):
         scale = max(1.0, float(np.max(np.abs(b_l))), float(np.max(np.abs(b_n))), abs(hand))
         tol = 64 * np.finfo(float).eps * (np.linalg.cond(A_l) + np.linalg.cond(A_n)) * scale
         assert abs(d.reactions["H"][k] - hand) <= tol, (tk, d.reactions["H"][k], hand)
-
-
-def test_comparators_agree_and_judge_the_printed_answers(comparisons):
-    for c in comparisons.values():
-        assert c.equivalent, str(c)
-    (pair,) = [p for p in comparisons["mobile_robot"].pairs if p.kind == "reactions"]
-    assert pair.equivalent and pair.reactions == ("H",)
-    verdicts = {n: {v.label: v.verdict for v in c.published} for n, c in comparisons.items()}
-    common = {"L": "correct", "I_P": "correct", "r_x, r_y, a_Px, a_Py": "correct",
-              "moment equation about P": "correct", "(2.6-2)": "correct"}
-    assert verdicts["mobile_robot_simplified"] == {
-        "(2.6-1)": "correct", **common, "simplified model (2.6-1), (2.6-2)": "correct"}
-    assert verdicts["mobile_robot"] == {
-        "mass centre (vertical, horizontal)": "wrong",   # x + L sin(phi): sign of L sin(phi)
-        "(2.6-9)": "correct", **common, "(2.6-11)": "correct", "(2.6-12)": "correct",
-        "H = f - M x''": "correct", "detailed model (2.6-10), (2.6-13)": "correct",
-        "x'' and phi'' solved": "correct"}

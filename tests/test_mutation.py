@@ -101,6 +101,7 @@ def test_a_flipped_multiplier_is_equivalent_only_where_it_vanishes():
     assert _against_itself(get("block_in_pipe"), "multiplier", drop) is False
 
 
+@pytest.mark.slow
 def test_every_unknown_reaction_of_every_model_gets_a_sign_flip():
     from dualmech.verify.mutation import mutants
     p = get("compound_double_pendulum")

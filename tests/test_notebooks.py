@@ -49,6 +49,7 @@ def test_every_family_has_a_notebook():
     assert sorted(p.stem for p in NOTEBOOKS) == sorted(EXPECTED)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])
 def test_notebook_runs_and_shows_its_findings(path, monkeypatch):
     monkeypatch.delenv("MPLBACKEND", raising=False)   # the kernel draws inline, as in Jupyter

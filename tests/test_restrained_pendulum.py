@@ -5,8 +5,8 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings
 
-from dualmech import EquationSet, Lagrangian, t
-from dualmech.verify.check import compare, compare_models, reaction_pairs
+from dualmech import EquationSet, t
+from dualmech.verify.check import compare_models, reaction_pairs
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
 from dualmech.problems.restrained_pendulum import (RestrainedPendulum,
@@ -23,19 +23,12 @@ PRINTED_EOM = (m * l**2 * DD(theta) + c * a**2 * D(theta) + m * g * l * sp.sin(t
                + k * b**2 * theta)
 
 
-@pytest.fixture(scope="module")
-def comparison():
-    return compare(problem)
-
-
-def test_declaration_validates():
-    problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange", "multiplier"]
-    assert problem.dimension_issues() == []
+def test_both_direct_forms_have_the_pivot_force_as_unknowns():
     for name in ("newton_euler", "multiplier"):
         assert [u.name for u in problem.model(name).unknowns] == ["H", "V"]
 
 
+@pytest.mark.slow
 def test_reference_equation_is_the_printed_one():
     # the source's U = m g l (1 - cos th) + k (b th)^2/2 and R = c (a th')^2/2 give, by hand,
     # d/dt(m l^2 th') + c a^2 th' + m g l sin th + k b^2 th = 0 -- the printed equation
@@ -73,20 +66,6 @@ def test_printed_nonlinear_equation_is_not_the_motion_of_horizontal_elements():
 def test_printed_nonlinear_equation_is_the_source_models_motion():
     printed = EquationSet("printed", (theta,), (PRINTED_EOM,))
     assert compare_models(problem.model("newton_euler"), printed).equivalent
-
-
-def test_horizontal_variant_agrees_and_reads_the_printed_answers_to_first_order():
-    result = compare(horizontal)
-    assert result.equivalent
-    assert {v.label: v.verdict for v in result.published} == {
-        "T": "correct",
-        "R": "wrong",                     # rate a th' cos th, printed a th'
-        "U": "wrong",                     # travel b sin th, printed b th
-        "equation of motion": "wrong",    # small-angle k b^2 th, c a^2 th'
-        "linearised equation: M, C, K": "correct",
-    }
-    (pair,) = [p for p in result.pairs if p.kind == "reactions"]
-    assert pair.equivalent and set(pair.reactions) == {"H", "V"}
 
 
 @pytest.mark.parametrize("p, hand", [(problem, hand_reactions),
@@ -133,11 +112,6 @@ def test_numeric_reactions_match_the_free_body_diagram(point):
     assert abs(H - H_hand) <= tol and abs(V - V_hand) <= tol
 
 
-def test_multiplier_reactions_equal_the_direct_ones(comparison):
-    (pair,) = [p for p in comparison.pairs if p.kind == "reactions"]
-    assert pair.equivalent and set(pair.reactions) == {"H", "V"} and pair.method == "exact"
-
-
 def test_a_break_that_leaves_the_motion_alone_shows_in_the_reaction():
     # the motion comes from the moment balance about the pivot; dropping the weight from the
     # vertical force balance only changes V, which the multiplier model then contradicts
@@ -150,16 +124,3 @@ def test_a_break_that_leaves_the_motion_alone_shows_in_the_reaction():
     models = dict(problem.models(), newton_euler=broken)
     (pair,) = reaction_pairs(problem, models, explain=False)
     assert not pair.equivalent and pair.mismatches[0].equation == "reaction V"
-
-
-def test_comparator_agrees_and_judges_the_printed_answers(comparison):
-    assert comparison.equivalent, str(comparison)
-    verdicts = {v.label: v.verdict for v in comparison.published}
-    # the source's own model: every printed answer follows from it
-    assert verdicts == {
-        "T": "correct",                   # m (l th')^2 / 2
-        "R": "correct",                   # dashpot rate a th' along its arc
-        "U": "correct",                   # spring travel b th along its arc
-        "equation of motion": "correct",  # the energies above, by hand (module doc)
-        "linearised equation: M, C, K": "correct",
-    }

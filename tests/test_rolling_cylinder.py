@@ -5,7 +5,6 @@ import sympy as sp
 from hypothesis import given, settings
 
 from dualmech import t
-from dualmech.verify.check import compare
 from dualmech.numeric import NumericModel
 from dualmech.testing import points
 from dualmech.problems.rolling_cylinder import (M, R, RollingCylinder, g, hand_reactions, m, r, scene,
@@ -14,17 +13,6 @@ from dualmech.problems.rolling_cylinder import (M, R, RollingCylinder, g, hand_r
 _EPS = np.finfo(float).eps
 problem = RollingCylinder()
 D = lambda q, n=1: q.diff(t, n)  # noqa: E731
-
-
-@pytest.fixture(scope="module")
-def comparison():
-    return compare(problem)
-
-
-def test_declaration_validates():
-    problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange", "multiplier"]
-    assert problem.dimension_issues() == []
 
 
 def test_rolling_is_built_into_the_kinematics():
@@ -91,35 +79,12 @@ def test_friction_and_normal_force_are_the_hand_derived_ones(point):
         assert abs(got[name] - hand) <= tol * max(1.0, abs(hand)), name
 
 
+@pytest.mark.slow
 def test_at_rest_at_the_stable_equilibrium_the_ground_carries_the_weight():
     sol = problem.model("newton_euler").reactions_solved()
     rest = {D(theta): 0, theta: 0}
     assert {u.name: sp.simplify(v.subs(rest)) for u, v in sol.items()} == \
         {"F": 0, "N": (M + m) * g}
-
-
-EXPECTED = {
-    "(a) v_C": "correct",
-    "(a) v_P": "correct",
-    "(a) r_P": "correct",
-    "(a) L": "correct",
-    "(a) L, second form": "wrong",            # + 2 r R cos(theta) for - 2 r R cos(theta)
-    "(a) equation of motion": "wrong",        # m r R sin(theta) theta'^2 missing
-    "(c) f(theta), h(theta)": "correct",
-    "(c) linearised, n even": "correct",
-    "(c) linearised, n odd": "correct",
-    "(c) omega_n": "correct",
-    "(c) T_n": "correct",
-    "(c) T_n in sigma, mu": "correct",
-}
-
-
-def test_comparator_agrees_and_judges_the_printed_answers(comparison):
-    assert comparison.equivalent, str(comparison)
-    assert all(p.method == "exact" for p in comparison.pairs)
-    (react,) = [p for p in comparison.pairs if p.kind == "reactions"]
-    assert react.equivalent and set(react.reactions) == {"F", "N"}
-    assert {v.label: v.verdict for v in comparison.published} == EXPECTED
 
 
 def test_second_form_of_the_lagrangian_has_the_sign_of_the_cross_term_flipped():

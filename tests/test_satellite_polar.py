@@ -1,10 +1,8 @@
 """Satellite in polar coordinates (problems/satellite_polar.py): momentum, circular orbits."""
 import numpy as np
-import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.verify.check import compare
 from dualmech.numeric import simulate
 from dualmech.model.steady import steady_rates
 from dualmech.problems.satellite_polar import SatellitePolar, angular_momentum, frames, m, mu, r, theta
@@ -13,19 +11,8 @@ problem = SatellitePolar()
 D = lambda q, n=1: q.diff(t, n)  # noqa: E731
 
 
-@pytest.fixture(scope="module")
-def comparison():
-    return compare(problem)
-
-
 def _zero(expr) -> bool:
     return sp.simplify(sp.expand(expr)) == 0
-
-
-def test_declaration_validates():
-    problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange"]
-    assert problem.dimension_issues() == []
 
 
 def test_polar_acceleration_from_the_frames():
@@ -90,13 +77,3 @@ def test_simulated_angular_momentum_is_conserved_to_the_integration_error():
     drift_p = np.max(np.abs(p - p[0])) / abs(p[0])
     drift_E = np.max(np.abs(E - E[0])) / abs(E[0])
     assert drift_p <= max(10 * drift_E, 10 * np.finfo(float).eps)
-
-
-def test_comparator_proves_the_two_derivations_equivalent(comparison):
-    assert comparison.equivalent is True
-    assert all(p.method == "exact" for p in comparison.pairs)
-
-
-def test_published_verdicts(comparison):
-    # T = m (r^2 theta'^2 + r'^2)/2, read with the handwritten 1/2: right
-    assert {v.label: v.verdict for v in comparison.published} == {"(3) kinetic energy": "correct"}

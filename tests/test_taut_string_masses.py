@@ -1,27 +1,14 @@
 """Two masses on a taut string (problems/taut_string_masses.py): the small-vibration model."""
 import numpy as np
-import pytest
 import sympy as sp
 
 from dualmech import t
-from dualmech.verify.check import compare
 from dualmech.problems.taut_string_masses import (P, TautStringMasses, a, exact_geometry, m,
                                          string_pulls, x1, x2)
 
 problem = TautStringMasses()
 _EPS = np.finfo(float).eps
 D = lambda q: q.diff(t)  # noqa: E731
-
-
-@pytest.fixture(scope="module")
-def comparison():
-    return compare(problem)
-
-
-def test_declaration_validates():
-    problem.validate()
-    assert problem.model_names == ["newton_euler", "lagrange"]
-    assert problem.dimension_issues() == []
 
 
 def test_pulls_along_the_string_cancel_on_each_mass():
@@ -66,26 +53,3 @@ def test_library_frequencies_are_the_printed_ones():
     assert np.allclose(np.real(omegas), hand, rtol=0, atol=tol)
     ratios = modes[1] / modes[0]
     assert np.allclose(ratios, [1.0, -1.0], rtol=0, atol=64 * _EPS * 3)
-
-
-def test_comparator_proves_both_forms_equivalent(comparison):
-    assert comparison.equivalent, str(comparison)
-    (pair,) = comparison.pairs
-    assert pair.method == "exact"
-
-
-# Each verdict derived by hand (module docstring of problems/taut_string_masses.py).
-EXPECTED = {
-    "L, expanded": "correct",          # sqrt(a^2 + d^2) = a (1 + d^2/(2a^2)) + O(d^4)
-    "Delta = L - 3a": "correct",
-    "U = P Delta": "correct",
-    "T": "correct",
-    "equations of motion": "correct",
-    "mass and stiffness matrices": "correct",
-    "natural frequencies w^2": "correct",   # det [[2p - w^2 m, -p], [-p, 2p - w^2 m]] = 0
-    "mode shapes x2/x1": "correct",
-}
-
-
-def test_published_verdicts(comparison):
-    assert {v.label: v.verdict for v in comparison.published} == EXPECTED

@@ -80,6 +80,7 @@ def _shots(tmp_path) -> Path:
     return Path(out) if out else tmp_path
 
 
+@pytest.mark.slow
 def test_student_sees_the_preview_while_typing_and_feedback_on_submit(server, browser,
                                                                        tmp_path):
     page = browser.new_page(viewport={"width": 1280, "height": 900})
@@ -111,6 +112,7 @@ def test_student_sees_the_preview_while_typing_and_feedback_on_submit(server, br
     assert "Right" in page.inner_text("#feedback .verdict")
 
 
+@pytest.mark.slow
 def test_preview_typesets_the_dimensions_of_terms_that_disagree(server, browser, tmp_path):
     # a*theta'' is L T^-2, a*g is L^2 T^-2: both shown with their exponents as superscripts
     page = browser.new_page(viewport={"width": 1280, "height": 700})
@@ -123,6 +125,7 @@ def test_preview_typesets_the_dimensions_of_terms_that_disagree(server, browser,
     page.locator("#preview").screenshot(path=str(_shots(tmp_path) / "web_dimensions.png"))
 
 
+@pytest.mark.slow
 def test_teacher_uploads_a_class_and_sees_the_table(server, browser, tmp_path):
     csv = tmp_path / "class.csv"
     csv.write_text("id,question,answer\n"

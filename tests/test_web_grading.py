@@ -131,6 +131,7 @@ def test_an_interrupted_batch_resumes_on_restart(tmp_path):
     assert json.loads(json.dumps(reopened.results(bid)[0])) == kept
 
 
+@pytest.mark.slow
 def test_one_hostile_answer_does_not_stall_the_others(tmp_path):
     # parser limits loosened so that `theta^3000000` reaches the grader: its exact value at a
     # sampled point has ~180 million bits (tests/test_grade_sandbox.py), far past the 1 s

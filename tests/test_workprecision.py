@@ -33,11 +33,13 @@ def _curve(wp, form, method):
     return wp.curves()[(form, method)]
 
 
+@pytest.mark.slow
 def test_every_run_succeeded_and_the_path_error_bounds_the_final_one(wp):
     assert wp.runs and all(r.success for r in wp.runs)
     assert all(r.path_error >= r.final_error for r in wp.runs)
 
 
+@pytest.mark.slow
 def test_measures_apply_where_they_mean_something(wp):
     for r in wp.runs:
         assert np.isfinite(r.reaction_error) and np.isfinite(r.energy_drift)
@@ -45,6 +47,7 @@ def test_measures_apply_where_they_mean_something(wp):
     assert wp.drift_unit == "m"
 
 
+@pytest.mark.slow
 def test_one_run_recomputed_by_hand(wp):
     """The Baumgarte DAE with RK45 at 1e-6, measured again without the sweep's bookkeeping."""
     f = {g.name: g for g in formulations(get("pendulum_particle"), y0=[1.0, 0.0],
@@ -65,6 +68,7 @@ def test_one_run_recomputed_by_hand(wp):
                                                  / np.abs(S_hand).max(), rel=1e-6)
 
 
+@pytest.mark.slow
 def test_rk45_error_is_proportional_to_its_tolerance(wp):
     runs = _curve(wp, "lagrange", "RK45")
     slope = np.polyfit(np.log([r.tolerance for r in runs]),
@@ -72,6 +76,7 @@ def test_rk45_error_is_proportional_to_its_tolerance(wp):
     assert round(slope) == 1
 
 
+@pytest.mark.slow
 def test_midpoint_error_falls_with_the_square_of_the_step(wp):
     runs = _curve(wp, "lagrange", "midpoint")
     order = np.polyfit(np.log([r.tolerance for r in runs]),
@@ -80,6 +85,7 @@ def test_midpoint_error_falls_with_the_square_of_the_step(wp):
     assert [r.steps for r in runs] == list(STEPS)
 
 
+@pytest.mark.slow
 def test_same_ode_is_recognised_as_the_same_curve(wp):
     # the body-axes direct form solves the same theta'' as the Lagrangian: same steps, errors
     for method in ("RK45", "DOP853", "midpoint"):
@@ -88,6 +94,7 @@ def test_same_ode_is_recognised_as_the_same_curve(wp):
     assert not any(r.same_as for r in _curve(wp, "cartesian (DAE, index 1)", "RK45"))
 
 
+@pytest.mark.slow
 def test_every_point_records_its_repeats_backend_and_work(wp):
     for r in wp.runs:
         assert r.repeats == 2 and r.cpu_spread >= 1.0 and r.evaluations >= r.calls > 0
@@ -98,6 +105,7 @@ def test_every_point_records_its_repeats_backend_and_work(wp):
     assert {m for (f, m) in wp.curves() if "projection" in f} == {"RK45", "DOP853"}
 
 
+@pytest.mark.slow
 def test_projection_after_every_step_keeps_the_rod_length_and_lets_the_steps_follow_rtol(wp):
     runs = _curve(wp, "cartesian (DAE, projection)", "DOP853")
     # |g| = |l^2 - x^2 - y^2|/(2 l) after Gauss-Newton to 1e-13 relative, at every sample
@@ -108,6 +116,7 @@ def test_projection_after_every_step_keeps_the_rod_length_and_lets_the_steps_fol
     assert steps == sorted(steps) and steps[0] < steps[-1] < 100
 
 
+@pytest.mark.slow
 def test_ggl_error_follows_the_tolerance(wp):
     runs = _curve(wp, "cartesian (DAE, GGL index 2)", "IDA")
     assert all(r.success for r in runs)
@@ -117,6 +126,7 @@ def test_ggl_error_follows_the_tolerance(wp):
     assert 0.5 < slope < 1.5   # a BDF code's global error ~ its local tolerance
 
 
+@pytest.mark.slow
 def test_data_and_charts_are_written(wp, tmp_path):
     paths = wp.write(tmp_path)
     assert sorted(p.suffix for p in paths) == [".csv", ".json", ".png", ".svg"]

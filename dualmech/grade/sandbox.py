@@ -168,19 +168,51 @@ def too_costly(problem, answer, quantity, ceiling: str, limits: Limits = LIMITS)
 
 # -- the parent side --------------------------------------------------------------------------
 def _context():
+    """The start method of the workers: a forkserver where it can be started without the
+    current directory on its ``sys.path`` (Python 3.11+), else ``spawn``.
+
+    A worker must import the dualmech this process imported, never a ``dualmech/`` folder that
+    happens to sit in the current directory (a source tree, with a plain install: every answer
+    would be "invalid").  A spawned worker takes this process's ``sys.path`` before it imports
+    anything; the forkserver (Python < 3.12) imports its preloaded modules with the current
+    directory first on its path, so it is started in safe-path mode (see :func:`_forkserver`).
+    """
     import multiprocessing   # here: one answer graded in a forked child needs no pool
     methods = multiprocessing.get_all_start_methods()
-    if "forkserver" in methods:
+    if "forkserver" in methods and sys.version_info >= (3, 11):
         ctx = multiprocessing.get_context("forkserver")
         ctx.set_forkserver_preload(_PRELOAD)
         return ctx
     return multiprocessing.get_context("spawn")
 
 
+_SAFE_PATH_LOCK = threading.Lock()
+
+
+def _forkserver() -> None:
+    """Start the forkserver, if it is not running, with ``PYTHONSAFEPATH=1`` (Python's ``-P``):
+    no current directory on the server's ``sys.path`` when it imports :data:`_PRELOAD`, so the
+    workers it forks hold the installed dualmech (an editable install's too: that is found
+    through site-packages, not the current directory)."""
+    from multiprocessing import forkserver
+    with _SAFE_PATH_LOCK:
+        before = os.environ.get("PYTHONSAFEPATH")
+        os.environ["PYTHONSAFEPATH"] = "1"
+        try:
+            forkserver.ensure_running()
+        finally:
+            if before is None:
+                del os.environ["PYTHONSAFEPATH"]
+            else:
+                os.environ["PYTHONSAFEPATH"] = before
+
+
 class _Worker:
     """One worker process and the parent's end of its pipe."""
 
     def __init__(self, mp):
+        if mp.get_start_method() == "forkserver":
+            _forkserver()   # (again, if it died: a restart must not take the current directory)
         self.conn, child = mp.Pipe()
         self.proc = mp.Process(target=_serve, args=(child,), daemon=True,
                                name="dualmech-grader")
