@@ -92,3 +92,22 @@ def test_an_invalid_answer_keeps_its_reason_at_every_level():
 def test_an_unknown_level_is_refused_clearly(level):
     with pytest.raises(ValueError, match="`feedback` must be one of verdict, locate, hint, full"):
         grade("simple_pendulum", "a*theta'' = 0", feedback=level)
+
+
+def test_the_command_takes_the_level_and_hides_the_correction(capsys):
+    from dualmech.cli.main import main
+    status = main(["grade", "simple_pendulum", "--answer", "a*theta'' - g*sin(theta) = 0",
+                   "--feedback", "locate"])
+    out = capsys.readouterr().out
+    assert status == 1
+    assert "a term has the wrong sign (a gravity term)" in out and "`" not in out
+    status = main(["grade", "simple_pendulum", "--answer", "a*theta'' = 0", "--feedback", "all"])
+    assert status == 2 and "invalid choice: 'all'" in capsys.readouterr().err
+
+
+def test_an_answer_that_cannot_be_graded_says_so_on_stderr_too(capsys):
+    from dualmech.cli.main import main
+    status = main(["grade", "simple_pendulum", "--answer", "simple_pendulum"])
+    captured = capsys.readouterr()
+    assert status == 2 and "NOT GRADED" in captured.out
+    assert "could not be graded as typed" in captured.err

@@ -40,6 +40,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 from pathlib import Path
 
 from dualmech.cli import names as _names
@@ -85,6 +86,12 @@ def register(subparsers) -> argparse.ArgumentParser:
     p.add_argument("--scheduler", metavar="ADDRESS",
                    help="with --batch: run on the Dask cluster at ADDRESS "
                         "(needs the 'dask' extra)")
+    p.add_argument("--feedback", metavar="LEVEL", default="full",
+                   choices=("verdict", "locate", "hint", "full"),
+                   help="how much a wrong answer is told: verdict (right or wrong only), "
+                        "locate (which equation and kind of term), hint (the wrong term, not "
+                        "its correction) or full (the smallest edit; the default); one answer "
+                        "only: a --batch report is the teacher's and always full")
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.add_argument("--json", action="store_true", help="print JSON instead of text")
     p.set_defaults(func=handle)
@@ -118,7 +125,11 @@ def handle(args: argparse.Namespace) -> int:
     _built_if_users(args.name)
     from dualmech.grade.sandbox import grade_bounded
     result = grade_bounded(args.name, answer, args.quantity, about=args.about)
+    result = result.at_level(args.feedback)
     print(json.dumps(result.to_dict(), indent=2) if args.json else str(result))
+    if result.status == "invalid":   # the grade above says why; scripts read stderr
+        print("dualmech grade: error: the answer could not be graded as typed (see above).",
+              file=sys.stderr)
     return {"right": EXIT_RIGHT, "wrong": EXIT_WRONG}.get(result.status, EXIT_USAGE)
 
 
