@@ -192,7 +192,10 @@ class Problem:
     among ``newton_euler``, ``lagrange`` and those in ``extra_models``).  ``aliases`` maps
     names students use to the source's symbols (``{"l": "a"}`` where the source writes ``a``
     for a length students call ``l``); the grader accepts an alias only when no symbol of the
-    problem has that name.
+    problem has that name.  ``referee = False`` (with ``referee_note`` saying why) declares
+    that the direct models are deliberately not the mechanics of their declared bodies (a
+    simplified model that neglects a coupling), so no referee
+    (:mod:`dualmech.verify.referee`) is derived from them.
     """
 
     name: str = ""
@@ -206,6 +209,8 @@ class Problem:
     reference: str = "lagrange"
     extra_models: tuple = ()
     aliases: dict = {}
+    referee: bool = True
+    referee_note: str = ""
 
     # -- to be provided by subclasses --------------------------------------------------
     def coordinate_maps(self) -> dict:

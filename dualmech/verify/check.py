@@ -22,6 +22,7 @@ from dualmech.sources import source_fields, source_name
 from dualmech.verify.display import Budget, OverBudget, budget, dotted, solve_display
 from dualmech.verify.explain import Mismatch, explain_model, explain_reaction
 from dualmech.verify.published import PublishedVerdict, check_published
+from dualmech.verify.referee import INDEPENDENCE, Referees, referees
 from dualmech.verify.sampling import Context
 from dualmech.verify.verdicts import Judgement, judge
 
@@ -118,6 +119,7 @@ class Comparison:
         self.display_notes: list[str] = []
         self._acc = self._reac = None
         self._static: dict = {}
+        self.referees = Referees()
 
     @property
     def dimension_issues(self) -> list[str]:
@@ -141,9 +143,12 @@ class Comparison:
     def reaction_derivations(self) -> dict:
         """``{declared reaction: [names of the models that derive it]}``."""
         out = {r.name: [] for r in self.problem.reactions}
-        for name, m in self.judgement.models.items():
+        j = self.judgement
+        for name, m in j.models.items():
+            if name in j.withdrawn:
+                continue
             for u in m.unknowns:
-                if u.name in out:
+                if u.name in out and u.name not in j.undetermined.get(name, ()):
                     out[u.name].append(name)
         return out
 
@@ -199,6 +204,22 @@ class Comparison:
                     self.display_notes.append(f"reactions not solved symbolically ({exc})")
         return self._reac
 
+    def referee_lines(self) -> list[str]:
+        """What the referee is, and why a direct model has none or it could not vote."""
+        j, out = self.judgement, []
+        for name, direct in j.referees.items():
+            why = j.withdrawn.get(name)
+            left = sorted(j.undetermined.get(name, ()))
+            line = f"{name}: Kane's method with auxiliary speeds, {INDEPENDENCE} (`{direct}`)"
+            if why:
+                line += f"; it does not vote: {why}"
+            elif left:
+                line += (f"; it leaves {', '.join(left)} open (statically indeterminate from "
+                         "the declarations alone)")
+            out.append(line)
+        out += self.referees.notes
+        return out
+
     def verdict_line(self) -> str:
         j = self.judgement
         if len(j.models) < 2:
@@ -224,6 +245,7 @@ class Comparison:
                f"  verdict: {self.verdict_line()}"]
         for p in self.pairs:
             out.append("  " + p.text(notation).replace("\n", "\n  "))
+        out += ["  " + line for line in self.referee_lines()]
         if self.equivalent and self.accelerations:
             out.append("  accelerations:")
             for k, v in self.accelerations.items():
@@ -238,9 +260,11 @@ class Comparison:
             dirs = self.reaction_directions
             for k, v in self.reactions.items():
                 d = dirs.get(k, "")
+                held = self.reaction_derivations.get(k, [])
                 out.append(f"    {plain(sp.Symbol(k), notation)} = {plain(v, notation)}"
                            + (f"   [{d}]" if d else "")
-                           + ("   (NOT CROSS-CHECKED)" if k in lonely else ""))
+                           + ("   (NOT CROSS-CHECKED)" if k in lonely else
+                              f"   (cross-checked: {', '.join(held)} agree)"))
         if lonely:
             held = self.reaction_derivations
             out.append("  not cross-checked (one derivation only): " + ", ".join(
@@ -290,6 +314,14 @@ class Comparison:
             "reactions": {k: dotted(v) for k, v in self.reactions.items()},
             "reaction_directions": self.reaction_directions,
             "reaction_derivations": self.reaction_derivations,
+            "referees": {name: {"of": direct, "independence": INDEPENDENCE,
+                                "votes": name not in self.judgement.withdrawn,
+                                "withdrawn": self.judgement.withdrawn.get(name, ""),
+                                "open_reactions": sorted(self.judgement.undetermined.get(
+                                    name, ()))}
+                         for name, direct in self.judgement.referees.items()},
+            "referee_notes": list(self.referees.notes),
+            "verdict_notes": list(self.judgement.notes),
             "reactions_not_cross_checked": self.not_cross_checked,
             "display_notes": list(self.display_notes),
             "published": [v.to_dict() for v in self.published],
@@ -333,8 +365,12 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
     ref = models[problem.reference]
     ctx = Context(ref.coordinates, problem.parameter_symbols, problem)
     mapped = {n: problem.in_reference_coordinates(m) for n, m in models.items()}
+    refs = referees(problem)
+    mapped.update(refs.models)
+    claims = claims_of(problem)
+    claims.update({r: claims[d] for r, d in refs.of.items() if d in claims})
     j = judge(mapped, context=ctx, points=points, seed=seed, reference=problem.reference,
-              claims=claims_of(problem))
+              claims=claims, referees=refs.of)
     pairs = _pairs(j, problem.reference, ctx, seed)
     limits = limits or Budget()
     try:
@@ -357,8 +393,10 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
                                       "the derivations disagree; fix them before judging "
                                       "printed answers", "none") for p in printed]
     issues = list(problem.dimension_audit()) + _reaction_dimension_issues(problem)
-    return Comparison(problem, j, pairs, published, issues, time.perf_counter() - t0, points,
-                      limits)
+    out = Comparison(problem, j, pairs, published, issues, time.perf_counter() - t0, points,
+                     limits)
+    out.referees = refs
+    return out
 
 
 def _check_problem(problem) -> None:
@@ -496,8 +534,11 @@ def _pairs(j: Judgement, reference: str, ctx: Context, seed: int) -> list[PairRe
     # one line per group of models sharing reactions
     groups: dict = {}
     for nm, m in j.models.items():
+        if nm in j.withdrawn:
+            continue
         for u in m.unknowns:
-            groups.setdefault(str(u), []).append(nm)
+            if str(u) not in j.undetermined.get(nm, ()):
+                groups.setdefault(str(u), []).append(nm)
     lines: dict = {}
     for u, holders in groups.items():
         if len(holders) >= 2:
