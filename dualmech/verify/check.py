@@ -65,7 +65,7 @@ class PairResult:
 
     def text(self, notation: str = "dots") -> str:
         """The verdict line, then each mismatch in textbook notation (:meth:`Mismatch.text`)."""
-        if self.kind == "reactions":
+        if self.kind in ("reactions", "referee reactions"):
             verdict = "the same" if self.equivalent else "DIFFERENT"
             if not self.decided:
                 verdict = "not compared (the motion disagrees; fix it first)"
@@ -210,7 +210,7 @@ class Comparison:
         for name, direct in j.referees.items():
             why = j.withdrawn.get(name)
             left = sorted(j.undetermined.get(name, ()))
-            line = f"{name}: Kane's method with auxiliary speeds, {INDEPENDENCE} (`{direct}`)"
+            line = f"{name}: Kane method with auxiliary speeds, {INDEPENDENCE} (`{direct}`)"
             if why:
                 line += f"; it does not vote: {why}"
             elif left:
@@ -531,23 +531,35 @@ def _pairs(j: Judgement, reference: str, ctx: Context, seed: int) -> list[PairRe
             ref_shown = True
         out.append(PairResult(reference, nm, ok, j.method, j.points, bound if ok else 0.0,
                               j.seconds, mism))
-    # one line per group of models sharing reactions
+    # one line per group of models sharing reactions, then each referee against its model
     groups: dict = {}
     for nm, m in j.models.items():
-        if nm in j.withdrawn:
+        if nm in j.referees:
             continue
         for u in m.unknowns:
-            if str(u) not in j.undetermined.get(nm, ()):
-                groups.setdefault(str(u), []).append(nm)
+            groups.setdefault(str(u), []).append(nm)
     lines: dict = {}
     for u, holders in groups.items():
         if len(holders) >= 2:
             lines.setdefault(tuple(holders), []).append(u)
+    for ref, direct in j.referees.items():
+        if ref in j.withdrawn or ref not in j.models:
+            continue
+        shared = [str(u) for u in j.models[ref].unknowns
+                  if str(u) not in j.undetermined.get(ref, ())]
+        if shared:
+            lines.setdefault((direct, ref), []).extend(shared)
     motion_ok = not [f for f in j.faults if f.kind != "reactions"]
+    explained_r: set = set()
     for holders, shared in lines.items():
-        bad = [r for r in j.reaction_faults if r.name in shared]
+        kind = "referee reactions" if holders[-1] in j.referees else "reactions"
+        bad = [r for r in j.reaction_faults if r.name in shared
+               and set(holders) & set(r.suspects)]
         mism = []
         for r in bad:
+            if r.name in explained_r:
+                continue
+            explained_r.add(r.name)
             others = ", ".join(r.agreeing) if r.agreeing else None
             for suspect in r.suspects:
                 rest = tuple(x for x in r.agreeing + r.suspects if x != suspect)
@@ -557,7 +569,7 @@ def _pairs(j: Judgement, reference: str, ctx: Context, seed: int) -> list[PairRe
                 mism.append(mm)
         ok = motion_ok and not bad
         out.append(PairResult(holders[0], ", ".join(holders[1:]), ok, j.method, j.points,
-                              bound if ok else 0.0, j.seconds, mism, "reactions",
+                              bound if ok else 0.0, j.seconds, mism, kind,
                               tuple(shared), decided=motion_ok))
     return out
 

@@ -26,9 +26,9 @@ from dualmech.model.kane import kane_equations
 __all__ = ["Referees", "referees", "INDEPENDENCE", "referee_name"]
 
 #: what the referee shares with the direct model, said wherever it votes
-INDEPENDENCE = ("derived by dualmech from the direct model's declarations (frames, bodies, "
-                "loads, reactions): independent of its balances and projections, not of its "
-                "declarations")
+INDEPENDENCE = ("derived by dualmech from the declarations of the direct model (frames, "
+                "bodies, loads, reactions): independent of its balances and projections, not "
+                "of its declarations")
 
 
 def referee_name(direct: str, first: bool) -> str:

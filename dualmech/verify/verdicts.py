@@ -401,8 +401,8 @@ def _weigh(groups, faults, rfaults, odd: list, majority: tuple, referees: Mappin
         if split or split_r:
             what = "motion" if split else "reaction " + ", ".join(split_r)
             notes.append(f"`{direct}`: its balances and projections do not follow from its "
-                         f"own declarations (the {what} differs from `{ref}`'s, which is "
-                         "derived from them)")
+                         f"own declarations (the {what} differs from that of `{ref}`, which "
+                         "is derived from them)")
             odd = [direct] + [m for m in odd if m != direct and m != ref]
             for r in rfaults:
                 if r.name in split_r and not r.agreeing:
