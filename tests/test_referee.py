@@ -115,7 +115,9 @@ def test_json_lists_the_referee(capsys, tmp_path):
     main(["check", _teacher(tmp_path, ""), "--json"])
     doc = json.loads(capsys.readouterr().out)
     assert doc["referees"]["referee"]["of"] == "newton_euler"
-    assert doc["reaction_derivations"]["R"] == ["newton_euler", "referee"]
+    assert doc["reaction_derivations"]["R"] == ["newton_euler"]
+    assert doc["referee_derivations"]["R"] == ["referee"]
+    assert doc["reactions_not_cross_checked"] == []
 
 
 def test_referee_tension_equals_sympy_kanes_method():

@@ -33,9 +33,9 @@ Example
 >>> ne.linear_momentum(bob, arm.x); ne.linear_momentum(bob, arm.y)
 >>> kane = kane_equations(ne.declarations())
 >>> kane.labels
-('Kane, theta', 'auxiliary speed along T')
->>> sp.expand(kane.equations[1])
--g*m*cos(theta(t)) - l*m*Derivative(theta(t), t)**2 + T
+('Kane, theta', 'auxiliary speed along T (bob)')
+>>> sp.trigsimp(sp.expand(kane.equations[1]))
+T - g*m*cos(theta(t)) - l*m*Derivative(theta(t), t)**2
 """
 from __future__ import annotations
 

@@ -120,6 +120,7 @@ class Comparison:
         self._acc = self._reac = None
         self._static: dict = {}
         self.referees = Referees()
+        self.referee_pairs: list = []
 
     @property
     def dimension_issues(self) -> list[str]:
@@ -143,11 +144,24 @@ class Comparison:
     def reaction_derivations(self) -> dict:
         """``{declared reaction: [names of the models that derive it]}``."""
         out = {r.name: [] for r in self.problem.reactions}
-        j = self.judgement
-        for name, m in j.models.items():
-            if name in j.withdrawn:
+        for name, m in self.judgement.models.items():
+            if name in self.judgement.referees:
                 continue
             for u in m.unknowns:
+                if u.name in out:
+                    out[u.name].append(name)
+        return out
+
+    @property
+    def referee_derivations(self) -> dict:
+        """``{declared reaction: [referees that derive it]}`` (a referee that withdrew, or
+        leaves the reaction open, does not)."""
+        out = {r.name: [] for r in self.problem.reactions}
+        j = self.judgement
+        for name in j.referees:
+            if name in j.withdrawn or name not in j.models:
+                continue
+            for u in j.models[name].unknowns:
                 if u.name in out and u.name not in j.undetermined.get(name, ()):
                     out[u.name].append(name)
         return out
@@ -156,7 +170,9 @@ class Comparison:
     def not_cross_checked(self) -> list[str]:
         """Declared reactions that fewer than two derivations give: their value rests on one
         free-body diagram alone, so no comparison could have caught a wrong term in it."""
-        return [n for n, held in self.reaction_derivations.items() if len(held) < 2]
+        refs = self.referee_derivations
+        return [n for n, held in self.reaction_derivations.items()
+                if len(held) + len(refs.get(n, ())) < 2]
 
     def reaction_count_text(self) -> str:
         """``"3"``, or ``"3 (1 not cross-checked)"`` -- the summary tables' cell."""
@@ -169,7 +185,7 @@ class Comparison:
 
     @property
     def mismatches(self) -> list:
-        return [m for p in self.pairs for m in p.mismatches]
+        return [m for p in self.pairs + self.referee_pairs for m in p.mismatches]
 
     @property
     def accelerations(self) -> dict:
@@ -243,7 +259,7 @@ class Comparison:
                f"  coordinates: "
                + ", ".join(symbol_text(q.func.__name__, 0, notation) for q in ref.coordinates),
                f"  verdict: {self.verdict_line()}"]
-        for p in self.pairs:
+        for p in self.pairs + self.referee_pairs:
             out.append("  " + p.text(notation).replace("\n", "\n  "))
         out += ["  " + line for line in self.referee_lines()]
         if self.equivalent and self.accelerations:
@@ -260,7 +276,8 @@ class Comparison:
             dirs = self.reaction_directions
             for k, v in self.reactions.items():
                 d = dirs.get(k, "")
-                held = self.reaction_derivations.get(k, [])
+                held = self.reaction_derivations.get(k, []) + \
+                    self.referee_derivations.get(k, [])
                 out.append(f"    {plain(sp.Symbol(k), notation)} = {plain(v, notation)}"
                            + (f"   [{d}]" if d else "")
                            + ("   (NOT CROSS-CHECKED)" if k in lonely else
@@ -321,6 +338,8 @@ class Comparison:
                                     name, ()))}
                          for name, direct in self.judgement.referees.items()},
             "referee_notes": list(self.referees.notes),
+            "referee_derivations": self.referee_derivations,
+            "referee_pairs": [p.to_dict() for p in self.referee_pairs],
             "verdict_notes": list(self.judgement.notes),
             "reactions_not_cross_checked": self.not_cross_checked,
             "display_notes": list(self.display_notes),
@@ -371,7 +390,8 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
     claims.update({r: claims[d] for r, d in refs.of.items() if d in claims})
     j = judge(mapped, context=ctx, points=points, seed=seed, reference=problem.reference,
               claims=claims, referees=refs.of)
-    pairs = _pairs(j, problem.reference, ctx, seed)
+    every = _pairs(j, problem.reference, ctx, seed)
+    pairs = [p for p in every if not _refereed(p, j)]
     limits = limits or Budget()
     try:
         printed = problem.published()
@@ -396,7 +416,13 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
     out = Comparison(problem, j, pairs, published, issues, time.perf_counter() - t0, points,
                      limits)
     out.referees = refs
+    out.referee_pairs = [p for p in every if _refereed(p, j)]
     return out
+
+
+def _refereed(pair: PairResult, j: Judgement) -> bool:
+    """A line of a referee (kept apart from the teacher's models' lines)."""
+    return pair.kind == "referee reactions" or pair.candidate in j.referees
 
 
 def _check_problem(problem) -> None:

@@ -410,6 +410,18 @@ def _weigh(groups, faults, rfaults, odd: list, majority: tuple, referees: Mappin
                     r.suspects = (direct,)
             if split and group_of[ref] == 0 and len(groups[0]) >= 2:
                 majority = tuple(groups[0])
+    for r in rfaults:   # a reaction outvoted only by a direct model and its own referee
+        pairs = [(ref, d) for ref, d in referees.items()
+                 if ref in r.agreeing and d in r.agreeing]
+        if pairs and len(r.agreeing) - len(pairs) <= len(r.suspects):
+            directs = [d for _, d in pairs]
+            notes.append(f"reaction {r.name}: {_names(directs)} and "
+                         f"{'its referee' if len(directs) == 1 else 'their referees'} share "
+                         "declarations (bodies, loads): the difference may lie in a shared "
+                         f"declaration of {_names(directs)}")
+            r.suspects = tuple(directs) + r.suspects
+            r.agreeing = ()
+            odd = list(dict.fromkeys(odd + directs))
     if majority:
         shared = [d for r, d in referees.items() if r in majority and d in majority]
         independent = len(majority) - len(shared)
