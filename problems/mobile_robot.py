@@ -241,7 +241,7 @@ class MobileRobotSimplified(Problem):
     # is neglected on purpose: Kane's method on these bodies would give the detailed model
     referee = False
     referee_note = ("the simplified model lumps the arm into the base and neglects the pivot "
-                    "reaction on purpose; Kane's method on its declared bodies would give the "
+                    "reaction on purpose; the Kane method on its declared bodies would give the "
                     "detailed model (mobile_robot)")
 
     def newton_euler(self) -> EquationSet:

@@ -395,7 +395,7 @@ def kane_equations(decl: Declarations, name: str = "referee") -> EquationSet:
             raise ModelError(
                 f"coordinate {q.func.__name__} moves no declared body of `{decl.name}` (its "
                 "partial velocities are all zero): the declared kinematics do not describe "
-                "its motion, so Kane's method cannot derive its equation.")
+                "its motion, so the Kane method cannot derive its equation.")
         rows.append(parts)
         labels.append(f"Kane, {q.func.__name__}")
     rows_aux, labels_aux = _auxiliary(p, decl)
@@ -408,4 +408,4 @@ def kane_equations(decl: Declarations, name: str = "referee") -> EquationSet:
     return EquationSet(name, p.coordinates, Rows(eqs, names, p.coordinates, plain=True),
                        tuple(r.symbol for r in decl.reactions), tuple(labels),
                        Rows(rows, names, p.coordinates, plain=True),
-                       f"Kane's method from the declarations of `{decl.name}`")
+                       f"the Kane method from the declarations of `{decl.name}`")
