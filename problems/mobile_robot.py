@@ -247,6 +247,12 @@ class MobileRobotSimplified(Problem):
         Coordinate(phi, ANGLE, (-3.0, 3.0), (-3.0, 3.0), "arm angle from the upward vertical"),
     )
     fidelity_ladder = LADDER
+    # the arm is counted twice (lumped into the base, and on its own) and the pivot reaction
+    # is neglected on purpose: Kane's method on these bodies would give the detailed model
+    referee = False
+    referee_note = ("the simplified model lumps the arm into the base and neglects the pivot "
+                    "reaction on purpose; the Kane method on its declared bodies would give the "
+                    "detailed model (mobile_robot)")
 
     def newton_euler(self) -> EquationSet:
         """Lumped base along ``i``; the arm's moments about the accelerating pivot P."""

@@ -40,7 +40,8 @@ from dualmech.problems.satellite_polar import SatellitePolar
 from dualmech.problems.simple_pendulum import SimplePendulum
 
 D = lambda q, n=1: q.diff(t, n)  # noqa: E731
-TOY_CAR_OTHERS = {"newton_euler", "angular_momentum", "multiplier"}
+TOY_CAR_OTHERS = {"newton_euler", "angular_momentum", "multiplier", "referee",
+                  "referee (angular_momentum)"}
 
 
 # -- the hand-broken problems --------------------------------------------------------------------
@@ -229,8 +230,8 @@ def test_toy_car_lagrangian_without_cos2_is_the_odd_one():
     assert j.odd == ["lagrange"]
     assert set(j.majority) == TOY_CAR_OTHERS
     assert c.verdict_line() == ("DISAGREEMENT: `lagrange` disagrees with `newton_euler`, "
-                                "`angular_momentum` and `multiplier`, which agree with each "
-                                "other")
+                                "`angular_momentum`, `multiplier`, `referee` and `referee "
+                                "(angular_momentum)`, which agree with each other")
     wrong = mismatches_of(c, "lagrange")
     assert set(wrong) == {"Lagrange, theta", "Lagrange, phi"}
     assert {mm.model for mm in c.mismatches} == {"lagrange"}
@@ -263,9 +264,10 @@ def test_simple_pendulum_moment_balance_with_the_weight_reversed():
     c = compared(SimplePendulumWeightReversed)
     j = c.judgement
     assert j.odd == ["angular_momentum"]
-    assert set(j.majority) == {"newton_euler", "lagrange", "multiplier"}
+    assert set(j.majority) == {"newton_euler", "lagrange", "multiplier", "referee"}
     assert c.verdict_line() == ("DISAGREEMENT: `angular_momentum` disagrees with `lagrange`, "
-                                "`newton_euler` and `multiplier`, which agree with each other")
+                                "`newton_euler`, `multiplier` and `referee`, which agree with "
+                                "each other")
     (wrong,) = c.mismatches
     assert (wrong.model, wrong.equation) == ("angular_momentum", "sum tau_pivot . O.z (bob)")
     s = wrong.state
@@ -281,9 +283,10 @@ def test_cart_pendulum_dashpot_on_the_wrong_coordinate():
     c = compared(CartPendulumDashpotOnX)
     j = c.judgement
     assert j.odd == ["lagrange"]
-    assert set(j.majority) == {"newton_euler", "lagrange_multipliers"}
-    assert c.verdict_line() == ("DISAGREEMENT: `lagrange` disagrees with `newton_euler` and "
-                                "`lagrange_multipliers`, which agree with each other")
+    assert set(j.majority) == {"newton_euler", "lagrange_multipliers", "referee"}
+    assert c.verdict_line() == ("DISAGREEMENT: `lagrange` disagrees with `newton_euler`, "
+                                "`lagrange_multipliers` and `referee`, which agree with each "
+                                "other")
     wrong = mismatches_of(c, "lagrange")
     assert set(wrong) == {"Lagrange, x", "Lagrange, theta"}
     s = wrong["Lagrange, x"].state
@@ -332,7 +335,7 @@ def test_falling_container_direct_model_in_other_coordinates_is_the_odd_one():
     c = compared(FallingContainerDashpotFlipped)
     j = c.judgement
     assert j.odd == ["newton_euler_y"]
-    assert set(j.majority) == {"lagrange", "newton_euler", "lagrange_y"}
+    assert set(j.majority) == {"lagrange", "newton_euler", "lagrange_y", "referee"}
     wrong = mismatches_of(c, "newton_euler_y")
     assert set(wrong) == {"sum F . O.y (container)", "sum F . O.y (m2)"}
     for label, sign in (("sum F . O.y (container)", -2), ("sum F . O.y (m2)", 2)):
@@ -356,10 +359,13 @@ def test_track_force_along_the_wrong_axis_is_reported_not_raised():
     j = c.judgement
     assert not c.equivalent
     assert j.odd == ["newton_euler"]
-    assert set(j.majority) == {"lagrange", "angular_momentum", "multiplier"}
+    # its referee shares the wrong direction: its balances contradict each other, so it
+    # withdraws; the angular-momentum model's referee votes
+    assert set(j.majority) == {"lagrange", "angular_momentum", "multiplier",
+                               "referee (angular_momentum)"}
     assert c.verdict_line().startswith(
-        "DISAGREEMENT: `newton_euler` disagrees with `lagrange`, `angular_momentum` and "
-        "`multiplier`, which agree with each other")
+        "DISAGREEMENT: `newton_euler` disagrees with `lagrange`, `angular_momentum`, "
+        "`multiplier` and `referee (angular_momentum)`, which agree with each other")
     assert {mm.model for mm in c.mismatches} == {"newton_euler"}
     # the k_B balance has no unknown left to balance it
     assert "sum F . B.z (car)" in c.verdict_line()
@@ -401,9 +407,13 @@ def test_a_pair_seen_at_one_point_does_not_claim_certainty(cls):
 
 
 # -- two derivations: both are suspects ----------------------------------------------------------
+class _NoReferee:
+    referee = False   # two derivations only: the tie path of the vote
+
+
 def test_two_derivations_that_disagree_are_both_suspects():
     """By hand: ``V = k y^2`` adds ``k y`` to the y equation only."""
-    c = compared(PendulumOnMassStiffSpring)
+    c = compared(type("TwoOnly", (_NoReferee, PendulumOnMassStiffSpring), {}))
     j = c.judgement
     assert set(j.odd) == {"lagrange", "newton_euler"}
     assert j.majority == ()
@@ -417,9 +427,30 @@ def test_two_derivations_that_disagree_are_both_suspects():
     assert_readable(c)
 
 
+def test_the_referee_breaks_the_tie_and_names_the_wrong_lagrangian():
+    """The same problem with its referee: ``lagrange`` is named, and the note says the
+    majority shares the direct model's declarations."""
+    c = compared(PendulumOnMassStiffSpring)
+    assert c.judgement.odd == ["lagrange"]
+    assert set(c.judgement.majority) == {"newton_euler", "referee"}
+    assert "may lie in a shared declaration of `newton_euler`" in c.verdict_line()
+
+
+def test_a_reaction_outvoted_only_by_the_direct_model_and_its_referee_stays_a_tie():
+    """The direct model and its referee share the declarations: agreeing on N1 they do not
+    outvote the multiplier model (the mistake could be a shared load), so both are
+    suspects and the note says why."""
+    c = compared(BlockOnWedgeHalfNormal)
+    (fault,) = c.judgement.reaction_faults
+    assert fault.name == "N1" and set(fault.suspects) == {"newton_euler",
+                                                          "lagrange_multipliers"}
+    assert fault.agreeing == ()
+    assert "may lie in a shared declaration of `newton_euler`" in c.verdict_line()
+
+
 def test_a_reaction_given_differently_by_its_two_holders():
     """By hand: with the constraint ``2 d1 = 0`` the multiplier is ``N1 / 2``; N2 is right."""
-    c = compared(BlockOnWedgeHalfNormal)
+    c = compared(type("TwoOnly", (_NoReferee, BlockOnWedgeHalfNormal), {}))
     j = c.judgement
     assert not c.equivalent
     assert not j.faults   # the motion is right in every derivation
@@ -432,7 +463,7 @@ def test_a_reaction_given_differently_by_its_two_holders():
 
 
 def test_a_reaction_tie_is_reported_once_per_suspect():
-    c = compared(BlockOnWedgeHalfNormal)
+    c = compared(type("TwoOnly", (_NoReferee, BlockOnWedgeHalfNormal), {}))
     lines = [p for p in c.pairs if p.kind == "reactions"]
     assert len(lines) == 1
     assert {mm.model for mm in c.mismatches} == {"newton_euler", "lagrange_multipliers"}
@@ -489,7 +520,8 @@ def test_check_exit_statuses_of_broken_models(broken_catalogue, capsys):
     assert main(["check", "mass_spring_gravity", "--points", "2"]) == 0
     assert main(["check", "toy_car_no_cos2", "--points", "2"]) == 1
     out = capsys.readouterr().out
-    assert "`lagrange` disagrees with `newton_euler`, `angular_momentum` and `multiplier`" in out
+    assert ("`lagrange` disagrees with `newton_euler`, `angular_momentum`, `multiplier`, "
+            "`referee` and `referee (angular_momentum)`") in out
     status = main(["check", "satellite_lagrange_only", "--points", "2"])
     captured = capsys.readouterr()
     assert status == 1   # nothing was compared: not a success

@@ -31,6 +31,7 @@ A mass on a spring, with the floor's normal force as an unknown reaction:
 """
 from __future__ import annotations
 
+import weakref
 from dataclasses import dataclass
 from typing import Sequence
 
@@ -44,7 +45,7 @@ from dualmech.model.declared import note
 from dualmech.model.equations import EquationSet, ModelError, Rows
 from dualmech.model.kinematics import Frame, Point, Vector
 
-__all__ = ["NewtonEuler", "Load"]
+__all__ = ["NewtonEuler", "Load", "ReactionDeclaration", "Declarations", "declarations_of"]
 
 Body = Particle | RigidBody
 
@@ -57,6 +58,51 @@ class Load:
     force: Vector | None = None
     point: Point | None = None
     torque: Vector | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class ReactionDeclaration:
+    """One declared reaction: the unknown ``symbol`` times the unit vector ``direction``, a
+    force at ``point`` of ``body`` (``kind="force"``) or a couple on it (``kind="torque"``),
+    and the opposite on ``against`` (at ``against_at``) when given."""
+
+    symbol: sp.Symbol
+    kind: str
+    body: "Body"
+    direction: Vector
+    point: Point | None = None
+    against: "Body | None" = None
+    against_at: Point | None = None
+
+
+@dataclass(frozen=True, eq=False)
+class Declarations:
+    """What a direct model declares, apart from its balances: the inertial frame, the
+    coordinates, the bodies, every load on each body (gravity included) and the reactions.
+
+    A second derivation built from these (the Kane referee, :mod:`dualmech.model.kane`)
+    shares them with the direct form and nothing else.
+    """
+
+    name: str
+    coordinates: tuple
+    ground: Frame
+    bodies: tuple
+    loads: dict            # id(body) -> tuple of Load, gravity included
+    reactions: tuple       # ReactionDeclaration, in the order of the unknowns
+
+
+#: EquationSet -> the Declarations of the builder that made it (kept while the set lives)
+_DECLARED: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def declarations_of(eqs) -> "Declarations | None":
+    """The :class:`Declarations` behind an :class:`EquationSet` made by
+    :meth:`NewtonEuler.equations` (``None`` for any other set)."""
+    try:
+        return _DECLARED.get(eqs)
+    except TypeError:
+        return None
 
 
 @refuse_text_in
@@ -118,6 +164,7 @@ class NewtonEuler:
         self._loads: dict[int, list[Load]] = {}
         self._bodies: dict[int, Body] = {}
         self._unknowns: list[sp.Symbol] = []
+        self._reactions: list[ReactionDeclaration] = []
         self._equations: list[tuple[str, dict]] = []   # parts held in symengine
         self._names: dict = {}
 
@@ -202,10 +249,14 @@ class NewtonEuler:
 
         Returns the unknown magnitude ``R`` (a symbol named ``name``).
         """
+        _check_unit(name, direction)
         R = self._unknown(name)
         self.force(f"reaction {name}", on, R * direction, at)
         if against is not None:
             self.force(f"reaction {name}", against, -R * direction, against_at)
+        self._reactions.append(ReactionDeclaration(
+            R, "force", on, direction, at or on.masscenter, against,
+            None if against is None else (against_at or against.masscenter)))
         return R
 
     def reaction_vector(self, name: str, on: Body, frame: Frame, axes: str = "xyz",
@@ -219,13 +270,20 @@ class NewtonEuler:
         self.force(f"reaction {name}", on, F, at)
         if against is not None:
             self.force(f"reaction {name}", against, -F, against_at)
+        for a, c in zip("xyz", comps):
+            if c != 0:
+                self._reactions.append(ReactionDeclaration(
+                    c, "force", on, getattr(frame, a), at or on.masscenter, against,
+                    None if against is None else (against_at or against.masscenter)))
         return F
 
     def reaction_torque(self, name: str, on: RigidBody, direction: Vector,
                         against: Body | None = None) -> sp.Symbol:
         """An unknown couple ``M * direction`` on ``on`` (opposite on ``against``)."""
+        _check_unit(name, direction)
         M = self._unknown(name)
         self._torque_pair(f"reaction {name}", on, M * direction, against)
+        self._reactions.append(ReactionDeclaration(M, "torque", on, direction, None, against))
         return M
 
     def _unknown(self, name: str) -> sp.Symbol:
@@ -315,7 +373,15 @@ class NewtonEuler:
                           Rows(contributions, names, self.coordinates, plain=False),
                           self.description)
         note(self, out)   # the free-body diagrams, for an explanation that asks (declared.py)
+        _DECLARED[out] = self.declarations()
         return out
+
+    def declarations(self) -> Declarations:
+        """The frames, bodies, loads and reactions declared so far (not the balances)."""
+        bodies = tuple(self._bodies.values())
+        return Declarations(self.name, self.coordinates, self.ground, bodies,
+                            {id(b): tuple(self._all_loads(b)) for b in bodies},
+                            tuple(self._reactions))
 
     def _acc(self, parts: dict, key: str, value_names: tuple, factor=None) -> None:
         """Add a symengine term (``(value, names)``, times the sympy ``factor``) to ``parts``."""
@@ -331,6 +397,22 @@ class NewtonEuler:
 def _held(v: Vector):
     """The components of ``v`` in the form it holds them (symengine when not yet read)."""
     return v._se if v._sp is None else list(v._sp)
+
+
+def _check_unit(name: str, direction: Vector) -> None:
+    """Refuse a reaction direction whose squared length is a number other than 1 (the unknown
+    would be the force divided by that length, silently).  A direction that depends on the
+    state is checked by the comparator, which evaluates its length exactly."""
+    if not isinstance(direction, Vector):
+        raise ModelError(f"the direction of reaction `{name}` must be a Vector, got "
+                         f"{type(direction).__name__}.")
+    length2, _ = direction.dot_se(direction)
+    length2 = length2.expand()
+    if length2.is_Number and length2 != 1:
+        raise ModelError(
+            f"the direction of reaction `{name}` is not a unit vector (its squared length is "
+            f"{length2}); `{name}` would be the force divided by that length.  Divide the "
+            "direction by its length, e.g. (O.x + O.y)/sqrt(2).")
 
 
 def _as_list(body) -> list:

@@ -208,6 +208,11 @@ class Problem:
         Names students use for the source's symbols (``{"l": "a"}`` where the source writes
         ``a`` for a length students call ``l``); the grader accepts an alias only when no
         symbol of the problem has that name.
+    referee, referee_note : bool, str
+        ``referee = False`` (with ``referee_note`` saying why) declares that the direct
+        models are deliberately not the mechanics of their declared bodies (a simplified
+        model that neglects a coupling), so no referee (:mod:`dualmech.verify.referee`) is
+        derived from them.
 
     The facts below are physics, or a choice of scene, that the equations do not carry; the
     numeric studies read them from here and nothing else (all default to none declared).
@@ -294,6 +299,8 @@ class Problem:
     fidelity_ladder: tuple = ()
     chaotic_state: tuple | dict = ()
     initial_state: tuple | dict = ()
+    referee: bool = True
+    referee_note: str = ""
 
     # -- to be provided by subclasses --------------------------------------------------
     def coordinate_maps(self) -> dict:

@@ -22,6 +22,7 @@ from dualmech.sources import source_fields, source_name
 from dualmech.verify.display import Budget, OverBudget, budget, dotted, solve_display, width, wrap
 from dualmech.verify.explain import Mismatch, explain_model, explain_reaction
 from dualmech.verify.published import PublishedVerdict, check_published
+from dualmech.verify.referee import INDEPENDENCE, Referees, referees
 from dualmech.verify.sampling import Context
 from dualmech.verify.verdicts import Judgement, judge
 
@@ -64,7 +65,7 @@ class PairResult:
 
     def text(self, notation: str = "dots") -> str:
         """The verdict line, then each mismatch in textbook notation (:meth:`Mismatch.text`)."""
-        if self.kind == "reactions":
+        if self.kind in ("reactions", "referee reactions"):
             verdict = "the same" if self.equivalent else "DIFFERENT"
             if not self.decided:
                 verdict = "not compared (the motion disagrees; fix it first)"
@@ -118,6 +119,8 @@ class Comparison:
         self.display_notes: list[str] = []
         self._acc = self._reac = None
         self._static: dict = {}
+        self.referees = Referees()
+        self.referee_pairs: list = []
 
     @property
     def dimension_issues(self) -> list[str]:
@@ -142,8 +145,24 @@ class Comparison:
         """``{declared reaction: [names of the models that derive it]}``."""
         out = {r.name: [] for r in self.problem.reactions}
         for name, m in self.judgement.models.items():
+            if name in self.judgement.referees:
+                continue
             for u in m.unknowns:
                 if u.name in out:
+                    out[u.name].append(name)
+        return out
+
+    @property
+    def referee_derivations(self) -> dict:
+        """``{declared reaction: [referees that derive it]}`` (a referee that withdrew, or
+        leaves the reaction open, does not)."""
+        out = {r.name: [] for r in self.problem.reactions}
+        j = self.judgement
+        for name in j.referees:
+            if name in j.withdrawn or name not in j.models:
+                continue
+            for u in j.models[name].unknowns:
+                if u.name in out and u.name not in j.undetermined.get(name, ()):
                     out[u.name].append(name)
         return out
 
@@ -151,7 +170,9 @@ class Comparison:
     def not_cross_checked(self) -> list[str]:
         """Declared reactions that fewer than two derivations give: their value rests on one
         free-body diagram alone, so no comparison could have caught a wrong term in it."""
-        return [n for n, held in self.reaction_derivations.items() if len(held) < 2]
+        refs = self.referee_derivations
+        return [n for n, held in self.reaction_derivations.items()
+                if len(held) + len(refs.get(n, ())) < 2]
 
     def reaction_count_text(self) -> str:
         """``"3"``, or ``"3 (1 not cross-checked)"`` -- the summary tables' cell."""
@@ -174,7 +195,7 @@ class Comparison:
 
     @property
     def mismatches(self) -> list:
-        return [m for p in self.pairs for m in p.mismatches]
+        return [m for p in self.pairs + self.referee_pairs for m in p.mismatches]
 
     @property
     def accelerations(self) -> dict:
@@ -209,6 +230,22 @@ class Comparison:
                     self.display_notes.append(f"reactions not solved symbolically ({exc})")
         return self._reac
 
+    def referee_lines(self) -> list[str]:
+        """What the referee is, and why a direct model has none or it could not vote."""
+        j, out = self.judgement, []
+        for name, direct in j.referees.items():
+            why = j.withdrawn.get(name)
+            left = sorted(j.undetermined.get(name, ()))
+            line = f"{name}: Kane method with auxiliary speeds, {INDEPENDENCE} (`{direct}`)"
+            if why:
+                line += f"; it does not vote: {why}"
+            elif left:
+                line += (f"; it leaves {', '.join(left)} open (statically indeterminate from "
+                         "the declarations alone)")
+            out.append(line)
+        out += self.referees.notes
+        return out
+
     def verdict_line(self) -> str:
         j = self.judgement
         if len(j.models) < 2:
@@ -232,8 +269,9 @@ class Comparison:
                f"  coordinates: "
                + ", ".join(symbol_text(q.func.__name__, 0, notation) for q in ref.coordinates),
                f"  verdict: {self.verdict_line()}"]
-        for p in self.pairs:
+        for p in self.pairs + self.referee_pairs:
             out.append("  " + p.text(notation).replace("\n", "\n  "))
+        out += ["  " + line for line in self.referee_lines()]
         if self.diagnosis:
             out.append("  diagnosis:")
             out.append("    " + self.diagnosis.text(notation, width() - 4).replace("\n", "\n    "))
@@ -251,9 +289,12 @@ class Comparison:
             dirs = self.reaction_directions
             for k, v in self.reactions.items():
                 d = dirs.get(k, "")
+                held = self.reaction_derivations.get(k, []) + \
+                    self.referee_derivations.get(k, [])
                 out.append(f"    {plain(sp.Symbol(k), notation)} = {plain(v, notation)}"
                            + (f"   [{d}]" if d else "")
-                           + ("   (NOT CROSS-CHECKED)" if k in lonely else ""))
+                           + ("   (NOT CROSS-CHECKED)" if k in lonely else
+                              f"   (cross-checked: {', '.join(held)} agree)"))
         if lonely:
             held = self.reaction_derivations
             out.append(wrap("  not cross-checked (one derivation only): " + ", ".join(
@@ -303,6 +344,16 @@ class Comparison:
             "reactions": {k: dotted(v) for k, v in self.reactions.items()},
             "reaction_directions": self.reaction_directions,
             "reaction_derivations": self.reaction_derivations,
+            "referees": {name: {"of": direct, "independence": INDEPENDENCE,
+                                "votes": name not in self.judgement.withdrawn,
+                                "withdrawn": self.judgement.withdrawn.get(name, ""),
+                                "open_reactions": sorted(self.judgement.undetermined.get(
+                                    name, ()))}
+                         for name, direct in self.judgement.referees.items()},
+            "referee_notes": list(self.referees.notes),
+            "referee_derivations": self.referee_derivations,
+            "referee_pairs": [p.to_dict() for p in self.referee_pairs],
+            "verdict_notes": list(self.judgement.notes),
             "reactions_not_cross_checked": self.not_cross_checked,
             "display_notes": list(self.display_notes),
             "published": [v.to_dict() for v in self.published],
@@ -347,9 +398,14 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
     ref = models[problem.reference]
     ctx = Context(ref.coordinates, problem.parameter_symbols, problem)
     mapped = {n: problem.in_reference_coordinates(m) for n, m in models.items()}
+    refs = referees(problem)
+    mapped.update(refs.models)
+    claims = claims_of(problem)
+    claims.update({r: claims[d] for r, d in refs.of.items() if d in claims})
     j = judge(mapped, context=ctx, points=points, seed=seed, reference=problem.reference,
-              claims=claims_of(problem))
-    pairs = _pairs(j, problem.reference, ctx, seed)
+              claims=claims, referees=refs.of)
+    every = _pairs(j, problem.reference, ctx, seed)
+    pairs = [p for p in every if not _refereed(p, j)]
     limits = limits or Budget()
     try:
         printed = problem.published()
@@ -371,8 +427,16 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
                                       "the derivations disagree; fix them before judging "
                                       "printed answers", "none") for p in printed]
     issues = list(problem.dimension_audit()) + _reaction_dimension_issues(problem)
-    return Comparison(problem, j, pairs, published, issues, time.perf_counter() - t0, points,
-                      limits)
+    out = Comparison(problem, j, pairs, published, issues, time.perf_counter() - t0, points,
+                     limits)
+    out.referees = refs
+    out.referee_pairs = [p for p in every if _refereed(p, j)]
+    return out
+
+
+def _refereed(pair: PairResult, j: Judgement) -> bool:
+    """A line of a referee (kept apart from the teacher's models' lines)."""
+    return pair.kind == "referee reactions" or pair.candidate in j.referees
 
 
 def _check_problem(problem) -> None:
@@ -507,20 +571,35 @@ def _pairs(j: Judgement, reference: str, ctx: Context, seed: int) -> list[PairRe
             ref_shown = True
         out.append(PairResult(reference, nm, ok, j.method, j.points, bound if ok else 0.0,
                               j.seconds, mism))
-    # one line per group of models sharing reactions
+    # one line per group of models sharing reactions, then each referee against its model
     groups: dict = {}
     for nm, m in j.models.items():
+        if nm in j.referees:
+            continue
         for u in m.unknowns:
             groups.setdefault(str(u), []).append(nm)
     lines: dict = {}
     for u, holders in groups.items():
         if len(holders) >= 2:
             lines.setdefault(tuple(holders), []).append(u)
+    for ref, direct in j.referees.items():
+        if ref in j.withdrawn or ref not in j.models:
+            continue
+        shared = [str(u) for u in j.models[ref].unknowns
+                  if str(u) not in j.undetermined.get(ref, ())]
+        if shared:
+            lines.setdefault((direct, ref), []).extend(shared)
     motion_ok = not [f for f in j.faults if f.kind != "reactions"]
+    explained_r: set = set()
     for holders, shared in lines.items():
-        bad = [r for r in j.reaction_faults if r.name in shared]
+        kind = "referee reactions" if holders[-1] in j.referees else "reactions"
+        bad = [r for r in j.reaction_faults if r.name in shared
+               and set(holders) & set(r.suspects)]
         mism = []
         for r in bad:
+            if r.name in explained_r:
+                continue
+            explained_r.add(r.name)
             others = ", ".join(r.agreeing) if r.agreeing else None
             for suspect in r.suspects:
                 rest = tuple(x for x in r.agreeing + r.suspects if x != suspect)
@@ -530,7 +609,7 @@ def _pairs(j: Judgement, reference: str, ctx: Context, seed: int) -> list[PairRe
                 mism.append(mm)
         ok = motion_ok and not bad
         out.append(PairResult(holders[0], ", ".join(holders[1:]), ok, j.method, j.points,
-                              bound if ok else 0.0, j.seconds, mism, "reactions",
+                              bound if ok else 0.0, j.seconds, mism, kind,
                               tuple(shared), decided=motion_ok))
     return out
 

@@ -92,6 +92,10 @@ class Judgement:
     how: str = ""            # how an "equal" was reached and how sure it is
     agreeing: set = field(default_factory=set)   # frozensets of model pairs equal everywhere
     refusal: str = ""        # why no verdict could be given (then neither equal nor different)
+    referees: dict = field(default_factory=dict)   # referee name -> its direct model
+    withdrawn: dict = field(default_factory=dict)  # referee name -> why it cannot vote
+    notes: list = field(default_factory=list)      # what the referees change in the verdict
+    undetermined: dict = field(default_factory=dict)  # referee -> reactions it leaves open
 
     @property
     def equivalent(self) -> bool:
@@ -121,6 +125,7 @@ class Judgement:
                         said.add(f.detail)
                     continue
                 lines.append(f"`{f.model}`: {f.detail}")
+        lines += [n for n in self.notes if n not in lines]
         for r in self.reaction_faults:
             if r.agreeing:
                 lines.append(f"reaction {r.name}: {_names(r.suspects)} differ from "
@@ -136,14 +141,18 @@ def _names(models: Sequence[str]) -> str:
 
 
 def judge(models: Mapping, *, context: Context | None = None, points: int = 8, seed: int = 0,
-          reference: str | None = None, claims: Mapping | None = None) -> Judgement:
+          reference: str | None = None, claims: Mapping | None = None,
+          referees: Mapping | None = None) -> Judgement:
     """Judge every model in ``models`` (name -> EquationSet, all in the same coordinates).
 
     ``reference`` only breaks ties in the order models are listed; it is not trusted more.
     ``claims`` maps a model written in fewer coordinates to the indices of the coordinates it
     speaks for (default: all).  Static rows (a massless body) are handled on the constraint
-    manifold (:class:`~dualmech.verify.sampling.System`).
+    manifold (:class:`~dualmech.verify.sampling.System`).  ``referees`` maps each referee
+    (:mod:`dualmech.verify.referee`) to the direct model whose declarations it shares; see
+    :func:`_weigh` for what that changes.
     """
+    referees = dict(referees or {})
     t0 = time.perf_counter()
     names = list(models)
     if reference in models:
@@ -178,6 +187,8 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
         wanted = _points_needed(form, points)
         rng = random.Random(seed)
         good, verdict, undecided = [], None, ""
+        withdrawn_all: dict = {}
+        open_all: dict = {}
         agreeing = None      # pairs of models that agree at every point used
         for point, _vals, parts, residues in sampler.points(rng, MAX_ATTEMPTS * wanted):
             sols = {nm: solve_model(A, b, n, s.model.unknowns, claims.get(nm))
@@ -186,11 +197,20 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
                 continue   # interval values too wide here: no claim either way
             if all(s.status != "ok" for s in sols.values()):
                 continue   # a singular state of the motion itself: draw again
-            found = _faults_at(names, sols, dict(zip(names, zip(systems, residues))))
+            withdrawn = _withdrawn(sols, referees)
+            found = _faults_at([nm for nm in names if nm not in withdrawn], sols,
+                               dict(zip(names, zip(systems, residues))), referees)
             if found is not None and not _certain(form, point):
                 undecided = _where(form, point)
                 continue   # a difference only in a branch case nobody confirmed: no claim
             good.append(point)
+            for nm, why in withdrawn.items():
+                withdrawn_all.setdefault(nm, why)
+            for nm in referees:
+                if nm in sols and nm not in withdrawn:
+                    left = {str(u) for u in sols[nm].undetermined_reactions}
+                    if left:
+                        open_all.setdefault(nm, set()).update(left)
             here = _agreeing_pairs(names, sols)
             agreeing = here if agreeing is None else agreeing & here
             if found is not None and verdict is None:
@@ -201,6 +221,8 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
                 break
     out = Judgement(dict(models), sampler.method, len(good), form.degree,
                     time.perf_counter() - t0)
+    out.referees, out.withdrawn = referees, withdrawn_all
+    out.undetermined = open_all
     if not good:
         if undecided:
             out.refusal = ("the derivations differ only in a branch case that could not be "
@@ -219,7 +241,8 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
         out.how = _describe(form, good, extra)
         out.groups = [tuple(names)]
         return out
-    point, parts, sols, (groups, faults, rfaults, odd, majority) = verdict
+    point, parts, sols, (groups, faults, rfaults, odd, majority, notes) = verdict
+    out.notes = notes
     out.point, out.parts, out.solutions = point, parts, sols
     out.groups, out.faults, out.reaction_faults = groups, faults, rfaults
     out.odd, out.majority = odd, majority
@@ -264,8 +287,24 @@ def _describe(form, good: list, extra: int) -> str:
     return describe(good, extra) if describe else ""
 
 
-def _faults_at(names, sols: dict, statics: dict):
+def _withdrawn(sols: dict, referees: Mapping) -> dict:
+    """Referees that cannot vote at this point, with why: equations that contradict each
+    other or leave the motion open mean the declarations miss a force the direct form's
+    balances never needed (a pivot's), so the referee says nothing rather than accuse."""
+    out = {}
+    for nm in referees:
+        s = sols.get(nm)
+        if s is not None and s.status in ("inconsistent", "undetermined"):
+            out[nm] = ("its auxiliary balances contradict each other: a force on a released "
+                       "body is not declared (a pivot or contact the balances never needed)"
+                       if s.status == "inconsistent" else
+                       "the declarations do not determine the accelerations")
+    return out
+
+
+def _faults_at(names, sols: dict, statics: dict, referees: Mapping | None = None):
     """Group the models by their accelerations at one point; ``None`` when all is well."""
+    referees = referees or {}
     groups: list[list[str]] = []
     faults = []
     for nm in names:
@@ -313,10 +352,11 @@ def _faults_at(names, sols: dict, statics: dict):
                 for nm in g:
                     faults.append(ModelFault(nm, "differs", others))
                     odd.append(nm)
-    # reactions: undetermined ones, and shared names with different values
+    # reactions: undetermined ones, and shared names with different values (a referee may
+    # leave some undetermined: statically indeterminate from the declarations alone)
     for nm in names:
         s = sols[nm]
-        if s.status == "ok" and s.undetermined_reactions:
+        if s.status == "ok" and s.undetermined_reactions and nm not in referees:
             faults.append(ModelFault(nm, "reactions", (), "its equations do not determine the "
                                      "reactions " + ", ".join(map(str, s.undetermined_reactions))))
             odd.append(nm)
@@ -329,7 +369,71 @@ def _faults_at(names, sols: dict, statics: dict):
                 majority = majority or r.agreeing
     if not faults and not rfaults:
         return None
-    return [tuple(g) for g in groups], faults, rfaults, list(dict.fromkeys(odd)), majority
+    odd, majority, notes = _weigh(groups, faults, rfaults, list(dict.fromkeys(odd)), majority,
+                                  referees, sols)
+    return [tuple(g) for g in groups], faults, rfaults, odd, majority, notes
+
+
+def _differ(sols: dict, a: str, b: str, reaction: str) -> bool:
+    """Do models ``a`` and ``b`` both determine ``reaction``, with different values?"""
+    va = [v for u, v in sols[a].lam.items() if str(u) == reaction] if a in sols else []
+    vb = [v for u, v in sols[b].lam.items() if str(u) == reaction] if b in sols else []
+    if not va or not vb or va[0] is None or vb[0] is None:
+        return False
+    return not same_values(va, vb)
+
+
+def _weigh(groups, faults, rfaults, odd: list, majority: tuple, referees: Mapping,
+           sols: dict):
+    """What a referee's vote means: ``(odd, majority, notes)``.
+
+    A referee follows from its direct model's declarations, so (1) where the two differ --
+    in the motion or in a reaction -- the direct model's balances or projections do not
+    follow from its own declarations: the direct model is at fault, whoever else agrees; and
+    (2) a majority won only because a direct model and its own referee agree does not clear
+    their shared declarations: the note says the mistake may lie in one of them.
+    """
+    notes = []
+    group_of = {nm: i for i, g in enumerate(groups) for nm in g}
+    for ref, direct in referees.items():
+        split = ref in group_of and direct in group_of and group_of[ref] != group_of[direct]
+        split_r = [r.name for r in rfaults if _differ(sols, direct, ref, r.name)]
+        if split or split_r:
+            what = "motion" if split else "reaction " + ", ".join(split_r)
+            notes.append(f"`{direct}`: its balances and projections do not follow from its "
+                         f"own declarations (the {what} differs from that of `{ref}`, which "
+                         "is derived from them)")
+            odd = [direct] + [m for m in odd if m != direct and m != ref]
+            for r in rfaults:
+                if r.name in split_r and not r.agreeing:
+                    r.agreeing = tuple(m for m in r.suspects if m != direct)
+                    r.suspects = (direct,)
+            if split and group_of[ref] == 0 and len(groups[0]) >= 2:
+                majority = tuple(groups[0])
+    for r in rfaults:   # a reaction outvoted only by a direct model and its own referee
+        pairs = [(ref, d) for ref, d in referees.items()
+                 if ref in r.agreeing and d in r.agreeing]
+        if pairs and len(r.agreeing) - len(pairs) <= len(r.suspects):
+            directs = [d for _, d in pairs]
+            notes.append(f"reaction {r.name}: {_names(directs)} and "
+                         f"{'its referee' if len(directs) == 1 else 'their referees'} share "
+                         "declarations (bodies, loads): the difference may lie in a shared "
+                         f"declaration of {_names(directs)}")
+            r.suspects = tuple(directs) + r.suspects
+            r.agreeing = ()
+            odd = list(dict.fromkeys(odd + directs))
+    if majority:
+        shared = [d for r, d in referees.items() if r in majority and d in majority]
+        independent = len(majority) - len(shared)
+        rivals = [len(g) - len([r for r, d in referees.items() if r in g and d in g])
+                  for g in groups if tuple(g) != tuple(majority)]
+        if shared and rivals and independent <= max(rivals):
+            names = _names(shared)
+            notes.append(f"{names} and {'its referee' if len(shared) == 1 else 'their referees'}"
+                         f" share declarations (bodies, masses, inertias, loads): the "
+                         f"disagreement may lie in a shared declaration of {names}, not only "
+                         f"in {_names([m for m in odd if m not in majority]) or 'the others'}")
+    return odd, majority, notes
 
 
 def _reaction_faults(names, sols) -> list[ReactionFault]:
