@@ -97,9 +97,10 @@ def test_doubled_mass_in_shared_declaration_is_not_blamed_on_lagrange_alone(caps
 
 
 def test_non_unit_reaction_direction_is_refused(capsys, tmp_path):
-    status, out = _check(capsys, tmp_path, "non-unit direction")
-    assert status == 1
-    assert "the direction of reaction `T1` is not a unit vector (its squared length is 4)" in out
+    status = main(["check", _teacher(tmp_path, "non-unit direction")])
+    err = capsys.readouterr().err
+    assert status == 2      # a model that cannot be built (dualmech.cli.errors), on stderr
+    assert "the direction of reaction `T1` is not a unit vector (its squared length is 4)" in err
 
 
 def test_dropped_pulley_weight_only_in_a_reaction_is_caught(capsys, tmp_path):

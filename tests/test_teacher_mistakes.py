@@ -44,8 +44,15 @@ OPEN = {"MomentsAboutTheMovingFoot": "moments about a sliding point in a row tha
 
 @functools.lru_cache(maxsize=None)
 def diagnosed(cls):
-    c = compare(cls())
+    """The comparison of the two teacher models alone (no referee: the vote names nobody, so
+    the diagnosis must stand on the energies and the edits)."""
+    c = compare(type(cls.__name__, (cls,), {"referee": False})())
     return c, c.diagnosis
+
+
+@functools.lru_cache(maxsize=None)
+def refereed(cls):
+    return compare(cls())
 
 
 def _same(a, b) -> bool:
@@ -165,3 +172,19 @@ def test_a_balance_row_is_shown_as_mass_times_acceleration_minus_applied():
         assert "sign reversed to read: mass times acceleration minus applied = 0" in \
             " ".join(text.split())
         assert f"residual {-mm.value:.6g}" in text
+
+
+@pytest.mark.parametrize("cls", [case[0] for case in CASES], ids=lambda c: c.__name__)
+def test_with_the_referee_the_vote_names_the_faulty_model(cls):
+    """With the Kane referee (derived from the direct model's declarations) the vote has a
+    majority: a Lagrangian mistake is outvoted; a mistake in the direct model's balances is
+    named by its own referee; one in a declaration the referee shares is said to possibly lie
+    in that shared declaration -- never the Lagrangian named without that caution."""
+    c = refereed(cls)
+    j = c.judgement
+    assert not c.equivalent
+    text = "\n".join(j.notes) + "\n" + c.verdict_line()
+    if faulty_model(cls) == "lagrange":
+        assert j.odd == ["lagrange"] and "newton_euler" in j.majority, (j.odd, j.majority)
+    elif "newton_euler" not in j.odd:
+        assert "shared declaration" in text, (j.odd, j.majority, text)
