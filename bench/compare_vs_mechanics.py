@@ -29,8 +29,7 @@ from sympy.core.cache import clear_cache
 ROOT = Path(__file__).resolve().parent
 sys.path.insert(0, str(ROOT.parent))
 
-from dualmech.verify.check import compare  # noqa: E402
-from dualmech.problems import get  # noqa: E402
+from dualmech import compare, get  # noqa: E402
 
 
 def _peer(path: Path):

@@ -13,7 +13,7 @@ import time
 
 import sympy as sp
 
-from dualmech.verify.check import compare_models
+from dualmech import compare_models
 from dualmech.problems import all_problems
 
 

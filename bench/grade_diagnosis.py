@@ -18,7 +18,7 @@ import time
 from collections import Counter
 
 from dualmech import problems
-from dualmech.grade import Grader
+from dualmech import Grader
 from dualmech.grade.context import GradingUnavailable
 from dualmech.grade.generate import names_mistake, wrong_answers
 

@@ -23,7 +23,7 @@ import os
 import statistics
 import time
 
-from dualmech.grade import Grader
+from dualmech import Grader
 from dualmech.grade.batch import grade_batch, warm
 from dualmech.grade.generate import correct_answers, wrong_answers
 

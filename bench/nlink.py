@@ -80,8 +80,7 @@ def full(n: int):
     """What ``dualmech check n_link_pendulum --n N`` does: ``compare`` of the catalogue's chain
     (its three derivations: Newton--Euler, Lagrange, Cartesian coordinates with multipliers)
     and the report it prints."""
-    from dualmech.verify.check import compare
-    from dualmech.problems import get
+    from dualmech import compare, get
 
     c = compare(get("n_link_pendulum", n=n))
     if not c.equivalent:

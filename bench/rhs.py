@@ -46,7 +46,7 @@ def k_states(n: int) -> int:
 def n_link(n: int):
     """The catalogue's ``n_link_pendulum`` (its Lagrange model), else the chain built here."""
     try:
-        from dualmech.problems import get
+        from dualmech import get
         p = get("n_link_pendulum", n=n)
     except (ImportError, KeyError):
         return n_link_here(n)
@@ -105,7 +105,7 @@ def _hand_n_link(m, lengths, g):
 
 
 def toy_car():
-    from dualmech.problems import get
+    from dualmech import get
     p = get("toy_car")
     values = {s: float(v) for s, v in p.defaults().items()}
     R, g, m = (values[sp.Symbol(name, positive=True)] for name in ("R", "g", "m"))

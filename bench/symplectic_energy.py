@@ -23,7 +23,7 @@ from dualmech.numeric.formulations import formulations
 from dualmech.numeric.integrators import integrate
 from dualmech.numeric.simulation import problem_parameters
 from dualmech.numeric.symplectic import constraint_functions
-from dualmech.problems import get
+from dualmech import get
 
 
 def _runs(forms, jobs, end, te):

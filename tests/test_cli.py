@@ -383,44 +383,59 @@ def test_the_command_keeps_its_output_and_status_past_its_fast_exit(answer, stat
 
 # -- the README stays true ---------------------------------------------------------------------
 README = Path(__file__).resolve().parent.parent / "README.md"
+CI_SCRIPT = README.parent / ".ci" / "run"
+FULL_TESTS = "python -m pytest -n 2 -q"
 
 
-def test_readme_python_example_runs_and_prints_what_it_says():
-    code = re.search(r"```python\n(.*?)```", README.read_text(), re.S).group(1)
-    printed = io.StringIO()
-    with contextlib.redirect_stdout(printed):
-        exec(compile(code, "README.md", "exec"), {"__name__": "readme_example"})
-    claimed = [line.split("# ", 1)[1].strip() for line in code.splitlines()
-               if line.startswith("print(") and "# " in line]
-    assert printed.getvalue().splitlines() == claimed
+def _shell_blocks(text: str) -> list[str]:
+    return [b.strip() for b in re.findall(r"```sh\n(.*?)```", text, re.S)]
 
 
-def test_ci_runs_the_readme_test_command():
-    command = "python -m pytest -n 2 -q"
-    assert command in README.read_text()
-    ci = (README.parent / ".ci" / "run").read_text().strip().splitlines()
-    assert ci[-1] == command
+def test_readme_example_runs_and_prints_what_it_says():
+    """The README's one example is a doctest: run it and compare what it prints, line by
+    line, with what the README shows."""
+    import doctest
+    text = README.read_text(encoding="utf-8")
+    test = doctest.DocTestParser().get_doctest(text, {"__name__": "readme_example"}, "README.md",
+                                               str(README), 0)
+    assert len(test.examples) >= 3
+    assert test.examples[0].source.startswith("from dualmech import ")
+    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    report = io.StringIO()
+    runner.run(test, out=report.write)
+    assert runner.failures == 0, report.getvalue()
 
 
-def test_readme_catalogue_table_lists_every_declared_problem():
-    text = README.read_text()
-    table = text.split("## Catalogue", 1)[1].split("\n## ", 1)[0]
-    names = {line.split("|")[1].strip() for line in table.splitlines()
-             if line.startswith("| ") and not line.startswith(("| problem", "| ---"))}
-    assert {d.name for d in problems.declarations()} == names
+def test_ci_runs_the_readme_test_command_after_building_the_docs():
+    """The README's full test command is the last line of .ci/run; its quick command is the
+    same leaving out the slow tests; CI installs the docs extra and builds the manual with
+    warnings as errors before the tests."""
+    text = README.read_text(encoding="utf-8")
+    tests = _shell_blocks(text)[1]
+    assert tests.endswith(FULL_TESTS)
+    assert f'`{FULL_TESTS} -m "not slow"`' in text
+    ci = CI_SCRIPT.read_text().strip().splitlines()
+    assert ci[-1] == FULL_TESTS
+    build = "python -m sphinx -W -b html docs docs/_build/html"
+    assert build in ci and ci.index(build) < len(ci) - 1
+    assert any("pip install" in line and ".[test,docs]" in line for line in ci)
 
 
-def test_readme_hypothesis_example_shares_one_problem_and_passes():
-    """The example builds the problem once, outside the test (built inside, every example
-    derives the models again and shrinking a failure takes minutes), and it passes."""
-    from hypothesis import settings
-    blocks = re.findall(r"```python\n(.*?)```", README.read_text(), re.S)
-    example = next(b for b in blocks if "from hypothesis import given" in b)
-    test_body = example.split("def test_", 1)[1]
-    assert "Pendulum()" not in test_body and "get(" not in test_body
-    namespace = {"__name__": "readme_example"}
-    with contextlib.redirect_stdout(io.StringIO()):
-        exec(compile(blocks[0], "README.md", "exec"), namespace)
-    exec(compile(example, "README.md", "exec"), namespace)
-    test = namespace["test_pendulum_both_ways"]
-    settings(max_examples=10, derandomize=True, deadline=None)(test)()
+def test_readme_main_job_command_is_a_valid_report_command():
+    """The README's first command installs the package and ends with `dualmech report`, with
+    arguments the command line accepts."""
+    from dualmech.cli.main import build_parser
+    setup = _shell_blocks(README.read_text(encoding="utf-8"))[0]
+    assert "pip install -e ." in setup
+    command = setup.rsplit("&&", 1)[1].split()
+    assert command[:2] == ["dualmech", "report"]
+    args = build_parser().parse_args(command[1:])
+    assert Path(args.out) == Path("out") and args.command == "report"
+
+
+def test_readme_links_point_to_pages_of_the_manual():
+    text = README.read_text(encoding="utf-8")
+    links = re.findall(r"\]\((docs/[^)]+)\)", text)
+    assert len(links) >= 10
+    for link in links:
+        assert (README.parent / link).is_file(), link

@@ -4,19 +4,19 @@ A coordinate is a function of time ``theta(t)``; sympy prints its rates as ``Der
 t)`` or ``d/dt(θ(t))``.  A worked solution writes them as dots or primes, and so does every
 output of dualmech:
 
-==============  ====================  ===========================  ===================
-format          ``theta``             ``theta'``                   ``theta''``
-==============  ====================  ===========================  ===================
-pretty (dots)   ``θ``                 ``θ̇``                        ``θ̈``
-pretty (primes) ``θ``                 ``θ′``                       ``θ′′``
-textbook line   ``θ``                 ``θ̇`` or ``θ′``              ``θ̈`` or ``θ′′``
-LaTeX (dots)    ``\\theta``            ``\\dot{\\theta}``             ``\\ddot{\\theta}``
-LaTeX (primes)  ``\\theta``            ``\\theta'``                  ``\\theta''``
-plain text      ``theta``             ``theta'``                   ``theta''``
-machine         ``theta``             ``theta_d``                  ``theta_dd``
-MathML          a theta               a theta, dot above           two dots above
-chart label     ``$\\theta$``         ``$\\dot{\\theta}$``           ``$\\ddot{\\theta}$``
-==============  ====================  ===========================  ===================
+===============  ====================  ===========================  ===================
+format           ``theta``             ``theta'``                   ``theta''``
+===============  ====================  ===========================  ===================
+pretty (dots)    ``θ``                 ``θ̇``                        ``θ̈``
+pretty (primes)  ``θ``                 ``θ′``                       ``θ′′``
+textbook line    ``θ``                 ``θ̇`` or ``θ′``              ``θ̈`` or ``θ′′``
+LaTeX (dots)     ``\\theta``            ``\\dot{\\theta}``             ``\\ddot{\\theta}``
+LaTeX (primes)   ``\\theta``            ``\\theta'``                  ``\\theta''``
+plain text       ``theta``             ``theta'``                   ``theta''``
+machine          ``theta``             ``theta_d``                  ``theta_dd``
+MathML           a theta               a theta, dot above           two dots above
+chart label      ``$\\theta$``          ``$\\dot{\\theta}$``           ``$\\ddot{\\theta}$``
+===============  ====================  ===========================  ===================
 
 The textbook line (:func:`plain`) is what a page of prose or a terminal shows in one line:
 the pretty letters, powers as ``^`` and products as spaces (``m l θ̇^2 + sin(θ)``), no Python

@@ -106,6 +106,8 @@ def integrate(fun: Callable, t_span: Sequence[float], y0, method: str, *,
     constraint : ``(g, G)`` for ``"rattle"``: ``g(q)`` the constraint residuals, ``G(q)``
         their gradients
 
+    Notes
+    -----
     A :class:`~dualmech.numeric.model.SingularityError` raised by ``fun`` ends the run with
     ``success = False`` and its message (nothing is hidden, nothing goes on).
     """

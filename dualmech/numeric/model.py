@@ -158,6 +158,8 @@ class NumericModel:
         systems of 3 to 120 unknowns when a C compiler exists.  :meth:`system` always runs
         the Python/NumPy code.
 
+    Notes
+    -----
     States are given as ``q`` and ``qd`` of shape ``(n,)`` (one state) or ``(n, K)`` (``K``
     states in the columns); ``time`` is a number or, for many states, an array ``(K,)``.
     """
@@ -475,6 +477,8 @@ class StateFunction:
     coordinates : sequence of ``q(t)``
     params : mapping symbol (or name) -> float
 
+    Notes
+    -----
     Calling it with ``(time, q, qd)`` gives an array ``(len(exprs),)`` for one state or
     ``(len(exprs), K)`` for states in columns.
 

@@ -66,6 +66,8 @@ def projected_run(fun: Callable, t_span: Sequence[float], y0, method: str, t_eva
     rtol, atol : the stepper's tolerances
     projector : the projection onto the manifold
 
+    Notes
+    -----
     Returns a :class:`~dualmech.numeric.integrators.Run` whose work counts include the
     derivative re-evaluated at every projected state.  A singular system, a state outside the
     model's domain or a projection that does not converge (a ModelError) ends the run with

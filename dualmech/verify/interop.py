@@ -133,7 +133,10 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
     reactions : dict, optional
         ``{multiplier or its name: reaction name}`` for a Lagrange model with constraints.
 
-    Raises :class:`~dualmech.model.equations.ModelError` naming what cannot be matched.
+    Raises
+    ------
+    ModelError
+        Naming what cannot be matched.
     """
     method = _method_of(model)
     me = _mechanics()

@@ -1,6 +1,6 @@
 """The ASGI application: pages for students and the teacher, and the JSON API.
 
-:func:`create_app` wires the pieces: problem pages (:mod:`.catalog`, :mod:`.pages`),
+:func:`create_app` wires the pieces: problem pages (:mod:`.catalog`, :mod:`dualmech.web.pages`),
 validation while typing (:mod:`.preview`), grading in the bounded process pool
 (:class:`dualmech.grade.sandbox.GradingPool`), batches kept in SQLite (:mod:`.store`) and
 graded in the background (:mod:`.batches`), limits per client (:mod:`.guard`).

@@ -74,7 +74,7 @@ def stability_radius(method: str, direction: float) -> float:
 
 
 def jacobian(rhs, t0: float, y0: np.ndarray) -> np.ndarray:
-    """Central finite differences of ``rhs`` at ``y0`` (error O(h^2), h ~ 1e-6 |y|)."""
+    """Central finite differences of ``rhs`` at ``y0`` (error O(h^2), h ~ 1e-6 ``|y|``)."""
     y0 = np.asarray(y0, dtype=float)
     J = np.empty((y0.size, y0.size))
     for j in range(y0.size):
