@@ -107,11 +107,13 @@ def projected_run(fun: Callable, t_span: Sequence[float], y0, method: str, t_eva
             np.linalg.LinAlgError) as exc:
         ok, message = False, str(exc)
     y_out = np.array(ys).T if ys else np.empty((np.size(y0), 0))
-    run = Run(method, t_eval[: len(ys)].copy(), y_out, ok and len(ys) == t_eval.size, message,
-              _time.process_time() - start, counted.calls, counted.evaluations, steps,
-              int(getattr(solver, "njev", 0) or 0), int(getattr(solver, "nlu", 0) or 0),
-              float(t_eval[len(ys) - 1]) if ys else float(t_span[0]))
-    return run
+    return Run(method=method, t=t_eval[: len(ys)].copy(), y=y_out,
+               success=ok and len(ys) == t_eval.size, message=message,
+               cpu=_time.process_time() - start, calls=counted.calls,
+               evaluations=counted.evaluations, steps=steps,
+               jacobians=int(getattr(solver, "njev", 0) or 0),
+               factorisations=int(getattr(solver, "nlu", 0) or 0),
+               t_end=float(t_eval[len(ys) - 1]) if ys else float(t_span[0]))
 
 
 def _restart_from(solver, y: np.ndarray) -> None:
