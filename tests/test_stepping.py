@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import scipy
 
-from dualmech.numeric.stepping import CHECKED_SCIPY, PROJECTABLE, _STEPPERS, _restart_from
+from dualmech.numeric.stepping import _STEPPERS, CHECKED_SCIPY, PROJECTABLE, _restart_from
 
 RTOL, ATOL = 1e-8, 1e-10
 

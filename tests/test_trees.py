@@ -4,10 +4,10 @@ import pytest
 import symengine as se
 import sympy as sp
 
+from dualmech.exact.rational_functions import _atoms, _reduce, _Ring
+from dualmech.exact.sample_space import analyse, analyse_se
 from dualmech.model import trees
 from dualmech.model.dimensions import DIMENSIONLESS, LENGTH, audit
-from dualmech.exact.rational_functions import _atoms, _Ring, _reduce
-from dualmech.exact.sample_space import analyse, analyse_se
 
 x, y = sp.symbols("x y", real=True)
 f = sp.Function("f")

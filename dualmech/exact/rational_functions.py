@@ -17,7 +17,6 @@ g/cos(x)
 """
 from __future__ import annotations
 
-
 import sympy as sp
 
 from dualmech.model import trees

@@ -38,9 +38,9 @@ from typing import Callable, Sequence
 
 import sympy as sp
 
-from dualmech.model import trees
 from dualmech.exact.errors import NotExact, Undecidable
 from dualmech.exact.radicals import factor_signs, factored_sqrt, radicals_dependent, square_sqrt
+from dualmech.model import trees
 
 __all__ = ["Undecidable", "NotExact", "AtomKey", "World", "analyse", "analyse_se",
            "MAX_MULTIPLE", "degree_bound"]

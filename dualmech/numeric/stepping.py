@@ -33,8 +33,8 @@ from typing import Callable, Sequence
 import numpy as np
 from scipy.integrate import BDF, DOP853, RK45, Radau
 
-from dualmech.numeric.integrators import Run
 from dualmech.model.equations import ModelError
+from dualmech.numeric.integrators import Run
 
 __all__ = ["projected_run", "PROJECTABLE", "CHECKED_SCIPY"]
 
