@@ -28,15 +28,16 @@ Example
 from __future__ import annotations
 
 from fractions import Fraction
+from functools import cache
 
 import symengine as se
 import sympy as sp
-from symengine.lib.symengine_wrapper import Constant as _SeConstant
 from sympy.core.function import AppliedUndef
 
 __all__ = ["ADD", "MUL", "POW", "SYMBOL", "INTEGER", "RATIONAL", "FLOAT", "SPECIAL",
            "CONSTANT", "UNDEFINED", "DERIVATIVE", "FUNCTION", "OTHER", "NUMBERS", "kind",
-           "name", "ratio", "fraction", "terms", "derivative_parts", "is_held", "is_dummy", "dummy"]
+           "name", "ratio", "fraction", "terms", "derivative_parts", "is_held", "is_dummy",
+           "dummy"]
 
 ADD, MUL, POW = "add", "mul", "pow"
 SYMBOL, INTEGER, RATIONAL, FLOAT, SPECIAL = "symbol", "integer", "rational", "float", "special"
@@ -53,19 +54,32 @@ _SYMPY = ((sp.Add, ADD), (sp.Mul, MUL), (sp.Pow, POW), (sp.Symbol, SYMBOL),
           (sp.NumberSymbol, CONSTANT), (AppliedUndef, UNDEFINED),
           (sp.Derivative, DERIVATIVE), (sp.Function, FUNCTION),
           (sp.functions.elementary.miscellaneous.MinMaxBase, FUNCTION))
-_SYMENGINE = ((se.Add, ADD), (se.Mul, MUL), (se.Pow, POW), (se.Symbol, SYMBOL),
-              (se.Integer, INTEGER), (se.Rational, RATIONAL), (se.Float, FLOAT),
-              (se.Number, SPECIAL), (_SeConstant, CONSTANT), (se.FunctionSymbol, UNDEFINED),
-              (se.Derivative, DERIVATIVE), (se.Function, FUNCTION))
+
+
+@cache
+def _symengine() -> tuple:
+    """The symengine table, made when the first symengine node is read (a one-answer
+    ``dualmech grade`` from a stored context never loads symengine: see
+    :func:`dualmech.startup.defer`)."""
+    from symengine.lib.symengine_wrapper import Constant
+    return ((se.Add, ADD), (se.Mul, MUL), (se.Pow, POW), (se.Symbol, SYMBOL),
+            (se.Integer, INTEGER), (se.Rational, RATIONAL), (se.Float, FLOAT),
+            (se.Number, SPECIAL), (Constant, CONSTANT), (se.FunctionSymbol, UNDEFINED),
+            (se.Derivative, DERIVATIVE), (se.Function, FUNCTION))
+
 
 _KINDS: dict = {}   # type -> kind, filled as types are met
 
 
 def _classify(t: type) -> str:
-    table = _SYMENGINE if issubclass(t, se.Basic) else _SYMPY
+    table = _symengine() if _from_symengine(t) else _SYMPY
     found = next((k for cls, k in table if issubclass(t, cls)), OTHER)
     _KINDS[t] = found
     return found
+
+
+def _from_symengine(t: type) -> bool:
+    return (t.__module__ or "").startswith("symengine")   # sympy's undefined functions: None
 
 
 def kind(e) -> str:
@@ -77,7 +91,7 @@ def kind(e) -> str:
 
 def is_held(e) -> bool:
     """Whether ``e`` is a symengine expression (one a derivation holds)."""
-    return isinstance(e, se.Basic)
+    return _from_symengine(type(e))
 
 
 def name(e) -> str:
@@ -129,7 +143,7 @@ def derivative_parts(e) -> tuple:
 
 def is_dummy(e) -> bool:
     """Whether the :data:`SYMBOL` ``e`` is a dummy (never equal to a symbol of a problem)."""
-    return isinstance(e, (se.Dummy, sp.Dummy))
+    return isinstance(e, se.Dummy) if is_held(e) else isinstance(e, sp.Dummy)
 
 
 def dummy(label: str, held: bool):
