@@ -154,6 +154,22 @@ def test_scipy_methods_solve_the_harmonic_oscillator(method):
     assert np.abs(run.y[0] - np.sin(te)).max() <= run.steps * (1e-8 + 1e-10)
 
 
+def test_a_run_says_what_it_reached_and_cannot_be_changed():
+    """y' = -y: the samples' shapes, the work counted (RK45 spends six right-hand sides on
+    each accepted step, first-same-as-last), the exact solution 2 exp(-t) within the
+    tolerances, and a Run is read-only."""
+    import dataclasses
+    te = np.linspace(0, 1, 5)
+    run = integrate(lambda s, y: -y, (0, 1), [1.0, 2.0], "RK45", t_eval=te, rtol=1e-8,
+                    atol=1e-10)
+    assert run.t.shape == (5,) and run.y.shape == (2, 5) and run.t_end == 1.0
+    assert run.success and run.steps > 0 and run.calls >= 6 * run.steps
+    assert run.evaluations == run.calls and run.jacobians == 0 and run.cpu >= 0
+    assert np.abs(run.y[1] - 2 * np.exp(-te)).max() <= run.steps * (1e-8 * 2 + 1e-10)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        run.steps = 0
+
+
 def test_midpoint_rule_is_second_order_in_energy():
     lag = formulations(get("pendulum_particle"), y0=[THETA0, 0.0],
                        models=["lagrange"])[0][0]

@@ -223,7 +223,7 @@ def test_symengine_world_decides_as_the_sympy_world(expr):
     """Built from symengine the world has the same atoms and arguments, the same degree bound
     and the same verdict at every point as the one built from sympy."""
     import symengine as se
-    from dualmech.exact.sample_space_se import analyse_se
+    from dualmech.exact.sample_space import analyse_se
     syms = [th, ph, a]
     assert analyse_se([se.sympify(expr)], syms) is not None      # it takes the fast route
     via_se = ExactForm.build([se.sympify(expr)], syms)
@@ -249,7 +249,7 @@ def test_symengine_world_decides_as_the_sympy_world(expr):
 ], ids=["sqrt", "pi", "exp", "abs", "square-argument"])
 def test_symengine_input_outside_the_common_case_takes_the_general_route(expr):
     import symengine as se
-    from dualmech.exact.sample_space_se import analyse_se
+    from dualmech.exact.sample_space import analyse_se
     assert analyse_se([se.sympify(expr)], [th, a]) is None
     via_se = ExactForm.build([se.sympify(expr)], [th, a])
     via_sp = ExactForm.build([expr], [th, a])

@@ -98,8 +98,8 @@ from dualmech.exact.branches import Case, find_cases, regions
 from dualmech.exact.trig_values import world_values
 from dualmech.exact.surds import Surd, independent, is_square
 from dualmech.exact.register_program import NotRationalProgram, compile_rational
-from dualmech.exact.sample_space import AtomKey, NotExact, Undecidable, World, analyse, degree_bound
-from dualmech.exact.sample_space_se import analyse_se
+from dualmech.exact.sample_space import (AtomKey, NotExact, Undecidable, World, analyse,
+                                         analyse_se, degree_bound)
 
 __all__ = ["ExactForm", "Undecidable", "NotRational", "METHOD_NAMES", "CASE", "AtomKey",
            "SAMPLE_BITS", "MP_DIGITS", "is_zero"]

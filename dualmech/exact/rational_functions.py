@@ -17,8 +17,9 @@ g/cos(x)
 """
 from __future__ import annotations
 
-
 import sympy as sp
+
+from dualmech.model import trees
 
 __all__ = ["tidy_rational", "solve_rational", "solve_rational_held", "NotRational"]
 
@@ -41,70 +42,37 @@ class _Ring:
         self.one = self.ctx.from_dict({(0,) * len(atoms): 1})
         self.zero = self.one - self.one
 
-    def fraction(self, e):
-        """``(numerator, denominator)`` polynomials of the sympy expression ``e``."""
-        if e.is_Integer:
-            return self.one * int(e), self.one
-        if e.is_Rational:
-            return self.one * int(e.p), self.one * int(e.q)
-        if e in self.index:
-            return self.gens[self.index[e]], self.one
-        if e.is_Add:
-            n, d = self.zero, self.one
-            for a in e.args:
-                an, ad = self.fraction(a)
-                if ad == d:
-                    n = n + an
-                else:
-                    g = d.gcd(ad)
-                    n, d = n * (ad / g) + an * (d / g), d * (ad / g)
-            return n, d
-        if e.is_Mul:
-            n, d = self.one, self.one
-            for a in e.args:
-                an, ad = self.fraction(a)
-                n, d = n * an, d * ad
-            return n, d
-        if e.is_Pow and e.exp.is_Integer:
-            bn, bd = self.fraction(e.base)
-            k = int(e.exp)
-            if k < 0:
-                bn, bd, k = bd, bn, -k
-            if bn.is_zero():
-                raise ZeroDivisionError("a zero denominator")
-            return bn ** k, bd ** k
-        raise NotRational(f"not an atom of the ring: {e}")
-
-    def fraction_se(self, e, held: dict):
-        """:meth:`fraction` of a symengine expression whose atoms ``held`` maps to generator
-        indices."""
-        if e.is_Integer:
-            return self.one * int(e), self.one
-        if e.is_Rational:
-            p, q = e.get_num_den()
-            return self.one * int(p), self.one * int(q)
-        i = held.get(e)
+    def fraction(self, e, index: dict | None = None):
+        """``(numerator, denominator)`` polynomials of ``e``, a sympy or symengine
+        expression whose atoms ``index`` maps to generator indices (by default the ring's
+        own sympy atoms)."""
+        index = self.index if index is None else index
+        k = trees.kind(e)
+        if k is trees.INTEGER or k is trees.RATIONAL:
+            p, q = trees.ratio(e)
+            return self.one * p, self.one * q
+        i = index.get(e)
         if i is not None:
             return self.gens[i], self.one
-        if e.is_Add:
+        if k is trees.ADD:
             n, d = self.zero, self.one
             for a in e.args:
-                an, ad = self.fraction_se(a, held)
+                an, ad = self.fraction(a, index)
                 if ad == d:
                     n = n + an
                 else:
                     g = d.gcd(ad)
                     n, d = n * (ad / g) + an * (d / g), d * (ad / g)
             return n, d
-        if e.is_Mul:
+        if k is trees.MUL:
             n, d = self.one, self.one
             for a in e.args:
-                an, ad = self.fraction_se(a, held)
+                an, ad = self.fraction(a, index)
                 n, d = n * an, d * ad
             return n, d
-        if e.is_Pow and e.args[1].is_Integer:
-            bn, bd = self.fraction_se(e.args[0], held)
-            k = int(e.args[1])
+        if k is trees.POW and trees.kind(e.args[1]) is trees.INTEGER:
+            bn, bd = self.fraction(e.args[0], index)
+            k = trees.ratio(e.args[1])[0]
             if k < 0:
                 bn, bd, k = bd, bn, -k
             if bn.is_zero():
@@ -121,20 +89,27 @@ class _Ring:
         return sp.Add(*terms)
 
 
+#: kinds that are atoms of the ring (a power is one unless its exponent is an integer)
+_ATOMS = frozenset((trees.SYMBOL, trees.FUNCTION, trees.UNDEFINED, trees.DERIVATIVE,
+                    trees.CONSTANT, trees.POW))
+
+
 def _atoms(e, out: dict) -> None:
-    if e.is_Number:
-        if not e.is_Rational:
+    """Collect in ``out`` the atoms of ``e`` (sympy or symengine): the symbols, constants,
+    function applications, derivatives and non-integer powers it is a rational function of."""
+    k = trees.kind(e)
+    if k in trees.NUMBERS:
+        if k is not trees.INTEGER and k is not trees.RATIONAL:
             raise NotRational(f"a float: {e}")
         return
-    if e.is_Add or e.is_Mul:
+    if k is trees.ADD or k is trees.MUL:
         for a in e.args:
             _atoms(a, out)
         return
-    if e.is_Pow and e.exp.is_Integer:
-        _atoms(e.base, out)
+    if k is trees.POW and trees.kind(e.args[1]) is trees.INTEGER:
+        _atoms(e.args[0], out)
         return
-    if e.is_Symbol or isinstance(e, (sp.Function, sp.Derivative)) or e.is_Pow \
-            or e is sp.pi or e is sp.E:
+    if k in _ATOMS:
         out.setdefault(e, None)
         return
     raise NotRational(f"cannot treat {type(e).__name__} as an atom")
@@ -248,7 +223,7 @@ def solve_rational_held(rows: list, rhs: list, pivots: list, to_sympy) -> list:
         raise NotRational("python-flint is not installed")
     found: dict = {}
     for e in [x for row in rows for x in row] + list(rhs):
-        _atoms_se(e, found)
+        _atoms(e, found)
     mine = {a: to_sympy(a) for a in found}
     theirs: dict = {}
     for a in mine.values():
@@ -258,28 +233,9 @@ def solve_rational_held(rows: list, rhs: list, pivots: list, to_sympy) -> list:
     atoms = sorted(theirs, key=sp.default_sort_key)
     ring = _Ring(atoms)
     held = {a: ring.index[v] for a, v in mine.items()}
-    M = [[_reduce(*ring.fraction_se(e, held)) for e in row]
-         + [_reduce(*ring.fraction_se(r, held))] for row, r in zip(rows, rhs)]
+    M = [[_reduce(*ring.fraction(e, held)) for e in row]
+         + [_reduce(*ring.fraction(r, held))] for row, r in zip(rows, rhs)]
     return _eliminate(ring, M, pivots)
-
-
-def _atoms_se(e, out: dict) -> None:
-    """:func:`_atoms` of a symengine expression (its own atoms, in symengine)."""
-    if e.is_Number:
-        if not e.is_Rational:
-            raise NotRational(f"a float: {e}")
-        return
-    if e.is_Add or e.is_Mul:
-        for a in e.args:
-            _atoms_se(a, out)
-        return
-    if e.is_Pow and e.args[1].is_Integer:
-        _atoms_se(e.args[0], out)
-        return
-    if e.is_Symbol or e.is_Pow or e.is_Function or e.is_Derivative or not e.args:
-        out.setdefault(e, None)
-        return
-    raise NotRational(f"cannot treat {type(e).__name__} as an atom")
 
 
 def _eliminate(ring: _Ring, M: list, pivots: list) -> list:

@@ -33,24 +33,26 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Callable
+from fractions import Fraction
+from typing import Callable, Sequence
 
 import sympy as sp
 
 from dualmech.exact.errors import NotExact, Undecidable
 from dualmech.exact.radicals import factor_signs, factored_sqrt, radicals_dependent, square_sqrt
+from dualmech.model import trees
 
-__all__ = ["Undecidable", "NotExact", "AtomKey", "World", "analyse", "MAX_MULTIPLE",
-           "degree_bound"]
+__all__ = ["Undecidable", "NotExact", "AtomKey", "World", "analyse", "analyse_se",
+           "MAX_MULTIPLE", "degree_bound"]
 
 #: Largest total multiple ``sum |k_j|`` of an exact trigonometric/exponential argument; beyond
 #: it the numbers grow too long and interval arithmetic takes over.
 MAX_MULTIPLE = 2048
 _MAX_RADICAND_MULTIPLE = 16
 
-_CIRCLE = {sp.sin, sp.cos, sp.tan, sp.cot, sp.sec, sp.csc}
-_GROWTH = {sp.exp, sp.sinh, sp.cosh, sp.tanh, sp.coth, sp.sech, sp.csch}
-_BRANCH = (sp.Abs, sp.sign, sp.Heaviside, sp.Max, sp.Min, sp.Piecewise)
+_CIRCLE = frozenset(("sin", "cos", "tan", "cot", "sec", "csc"))
+_GROWTH = frozenset(("exp", "sinh", "cosh", "tanh", "coth", "sech", "csch"))
+_BRANCH = frozenset(("Abs", "sign", "Heaviside", "Max", "Min", "Piecewise"))
 
 
 @dataclass(frozen=True)
@@ -137,20 +139,18 @@ def _monomial(m: sp.Expr, node) -> tuple[bool, bool]:
     return real, has_pi
 
 
-def _linear(arg: sp.Expr, node) -> dict:
-    """``arg`` as ``{monomial: Rational coefficient}`` (monomial 1 for a constant term)."""
-    def split(terms):
-        out: dict = {}
-        for term in terms:
-            c, m = term.as_coeff_Mul()
-            if not c.is_Rational:
-                return None
-            out[m] = out.get(m, 0) + c
-        return out
+def _linear(arg, node, factor: Callable) -> dict:
+    """``arg`` as ``{monomial: Fraction coefficient}`` (monomial 1 for a constant term).
 
-    parts = split(sp.Add.make_args(arg))
-    if parts is None or any(not _ok_mono(m) for m in parts):
-        parts = split(sp.Add.make_args(sp.expand(arg)))
+    ``factor`` gives a factor of a term as a sympy monomial factor, or ``None`` for one that
+    is not (see :meth:`_Scan.factor`); a term with such a factor is retried on the expanded
+    argument (sympy), or leaves the fast route (symengine).
+    """
+    parts = _split(arg, factor)
+    if parts is None:
+        if trees.is_held(arg):
+            raise _Leave
+        parts = _split(sp.expand(arg), lambda f: f)   # _monomial names a bad factor
         if parts is None:
             raise NotExact(node, f"argument {arg} is not a rational combination of monomials")
     out = {}
@@ -165,20 +165,53 @@ def _linear(arg: sp.Expr, node) -> dict:
     return out
 
 
-def _ok_mono(m) -> bool:
-    for f in sp.Mul.make_args(m):
-        base, e = f.as_base_exp()
-        if not ((base.is_Symbol or base is sp.pi or base is sp.S.One) and e.is_Integer):
-            return False
-    return True
+def _split(arg, factor: Callable) -> dict | None:
+    """``{sympy monomial: Fraction}`` of the terms of ``arg``, or ``None`` when a term is not
+    a rational number times a product of ``factor``-accepted factors."""
+    out: dict = {}
+    for term in trees.terms(arg):
+        k = trees.kind(term)
+        c, factors = Fraction(1), (term,)
+        if k is trees.INTEGER or k is trees.RATIONAL:
+            c, factors = trees.fraction(term), ()
+        elif k in trees.NUMBERS:
+            return None
+        elif k is trees.MUL:
+            first = term.args[0]
+            kf = trees.kind(first)
+            if kf is trees.INTEGER or kf is trees.RATIONAL:
+                c, factors = trees.fraction(first), term.args[1:]
+            elif kf in trees.NUMBERS:
+                return None
+            else:
+                factors = term.args
+        mono = [factor(f) for f in factors]
+        if None in mono:
+            return None
+        m = mono[0] if len(mono) == 1 else sp.Mul(*mono)
+        out[m] = out.get(m, 0) + c
+    return out
+
+
+class _Leave(Exception):
+    """Symengine input outside the fast route's common case (see :func:`analyse_se`)."""
 
 
 # ---------------------------------------------------------------------------------------
 # pass 1: what the expressions contain
 class _Scan:
+    """What the expressions contain: their trigonometric and exponential nodes with the
+    linear forms of their arguments, square roots, branch functions, ``pi`` and ``E``.
+
+    ``held`` (``{name: sympy symbol}``) scans symengine trees for the fast route: the
+    symbols must be those, and what the general route alone handles (constants, floats,
+    square roots, branch functions, anything it refuses) raises :class:`_Leave`.
+    """
+
     RAD, BR = 1, 2
 
-    def __init__(self):
+    def __init__(self, held: dict | None = None):
+        self.held = held
         self.memo: dict = {}
         self.trig: dict = {}       # node -> (kind, linear form)
         self.radicals: dict = {}   # node -> (radicand, power p of sqrt)
@@ -198,57 +231,90 @@ class _Scan:
         if self.visit(e):
             raise NotExact(node, f"{what} contains a square root or a branch function")
 
+    def factor(self, f):
+        """A factor of an argument's term as a sympy monomial factor (a symbol, ``pi``, or
+        one of them to an integer power), or ``None``; a held factor must be a declared
+        symbol."""
+        k = trees.kind(f)
+        if self.held is not None:
+            return self.held.get(f.name) if k is trees.SYMBOL else None
+        if k is trees.POW:
+            base, x = f.args
+            if trees.kind(x) is not trees.INTEGER:
+                return None
+            k = trees.kind(base)
+        else:
+            base = f
+        return f if k is trees.SYMBOL or base is sp.pi else None
+
     def _visit(self, e) -> int:
-        if e.is_Symbol or e.is_Rational:
+        k = trees.kind(e)
+        if k is trees.SYMBOL:
+            if self.held is not None and (self.held.get(e.name) is None or trees.is_dummy(e)):
+                raise _Leave   # undeclared (the general route says so) or a dummy
             return 0
-        if e.is_Float:
+        if k is trees.INTEGER or k is trees.RATIONAL:
+            return 0
+        if k is trees.ADD or k is trees.MUL:
+            flags, memo = 0, self.memo
+            for a in e.args:
+                hit = memo.get(a)     # shared subtrees are met often: looked up once
+                if hit is None:
+                    hit = memo[a] = self._visit(a)
+                flags |= hit
+            return flags
+        if k is trees.POW:
+            return self._pow(e)
+        f = trees.name(e) if k is trees.FUNCTION else None
+        if f in _CIRCLE or f in _GROWTH:
+            lin = _linear(e.args[0], e, self.factor)
+            if any(m is sp.S.One for m in lin):
+                self.e_const = True
+            self.trig[e] = ("circle" if f in _CIRCLE else "growth", lin)
+            return 0
+        if self.held is not None:
+            raise _Leave
+        if f in _BRANCH:
+            return self._branch(e)
+        return self._other(e, k)
+
+    def _other(self, e, k) -> int:
+        """Constants, and what the exact world refuses."""
+        if k is trees.FLOAT:
             raise AssertionError("floats are made exact before the scan")
         if e is sp.pi:
             self.pi = True
             return 0
         if e is sp.E:
             self.e_const = True
-            self.trig[e] = ("growth", {sp.S.One: sp.S.One})
+            self.trig[e] = ("growth", {sp.S.One: Fraction(1)})
             return 0
-        if e is sp.I or e.is_Number and not e.is_finite:
+        if k is trees.SPECIAL:
             raise Undecidable(e, "complex or infinite values are not supported; write real "
                                  "quantities as separate real expressions")
-        if e.is_Number or isinstance(e, sp.NumberSymbol):
+        if k is trees.CONSTANT:
             raise NotExact(e, "a constant that is not rational (nor pi)")
-        if e.is_Add or e.is_Mul:
-            flags = 0
-            for a in e.args:
-                flags |= self.visit(a)
-            return flags
-        if e.is_Pow:
-            return self._pow(e)
-        f = type(e)
-        if f in _CIRCLE or f in _GROWTH:
-            lin = _linear(e.args[0], e)
-            if any(m is sp.S.One for m in lin):
-                self.e_const = True
-            self.trig[e] = ("circle" if f in _CIRCLE else "growth", lin)
-            return 0
-        if isinstance(e, _BRANCH):
-            return self._branch(e)
-        if isinstance(e, sp.core.function.AppliedUndef):
+        if k is trees.UNDEFINED:
             raise Undecidable(e, "an undefined function has no value; substitute plain symbols "
                                  "for the states or an explicit expression")
-        if isinstance(e, (sp.Derivative, sp.Integral)):
+        if k is trees.DERIVATIVE or isinstance(e, sp.Integral):
             raise Undecidable(e, "an unevaluated derivative or integral; write the states as "
                                  "plain symbols")
-        raise NotExact(e, f"`{f.__name__}` is not a rational, trigonometric or exponential "
-                          "function")
+        raise NotExact(e, f"`{type(e).__name__}` is not a rational, trigonometric or "
+                          "exponential function")
 
     def _pow(self, e) -> int:
-        b, x = e.base, e.exp
-        if x.is_Integer:
+        b, x = e.args
+        kx = trees.kind(x)
+        if kx is trees.INTEGER:
             return self.visit(b)
-        if x.is_Rational and x.q == 2:
+        if self.held is not None:
+            raise _Leave
+        if kx is trees.RATIONAL and x.q == 2:
             self.core(b, e, "a square root's radicand")
             self.radicals[e] = (b, int(x.p))
             return self.RAD
-        if x.is_Rational:
+        if kx is trees.RATIONAL:
             raise NotExact(e, f"a root of order {x.q} (only square roots are exact)")
         raise NotExact(e, "a symbolic exponent")
 
@@ -297,9 +363,56 @@ def analyse(exprs: list, symbols: list) -> World:
     return b.build(exprs)
 
 
+def analyse_se(exprs: Sequence, symbols: Sequence) -> World | None:
+    """The world of symengine ``exprs`` (a derivation's matrices, see
+    :meth:`dualmech.model.equations.EquationSet.plain_matrix_se`) in the sympy ``symbols``,
+    built without a sympy expression -- or ``None`` when they leave the common case.
+
+    The common case is what rigid-body models produce: rational functions of the symbols
+    and of circle and growth functions of rational combinations of them.  The scan and the
+    world are those of :func:`analyse` (the same atoms, arguments and degree bound, so the
+    same verdict and false-equal bound); anything else (square roots, ``pi``, ``E``, branch
+    functions, floats, undeclared symbols, an integer symbol inside a sine) returns ``None``
+    and the caller takes the general sympy route, which decides or refuses it.
+
+    Example
+    -------
+    >>> import symengine as se
+    >>> th, t = sp.symbols("theta t", real=True)
+    >>> w = analyse_se([se.sin(2 * se.Symbol("theta")) + se.cos(se.Symbol("theta") / 3)],
+    ...                [th, t])
+    >>> [str(a) for a in w.atoms], [terms for _, terms, _ in w.args]
+    (['exp(i*theta/3)'], [((0, 1),), ((0, 6),)])
+    """
+    by_name = {s.name: s for s in symbols}
+    if len(by_name) != len(symbols) or not all(type(s) is sp.Symbol for s in symbols):
+        return None
+    scan = _Scan(held=by_name)
+    try:
+        for e in exprs:
+            scan.visit(e)
+        return _Builder(scan, symbols).build(exprs)
+    except (_Leave, NotExact, Undecidable):
+        return None
+
+
+#: a circle function of an argument from its ``(sin, cos)`` dummies
+_CIRCLE_RULES = {"sin": lambda s, c: s, "cos": lambda s, c: c, "tan": lambda s, c: s / c,
+                 "cot": lambda s, c: c / s, "sec": lambda s, c: 1 / c, "csc": lambda s, c: 1 / s}
+#: a growth function (or ``E``) of an argument from its ``exp`` dummy
+_GROWTH_RULES = {"exp": lambda w: w, "E": lambda w: w, "sinh": lambda w: (w - 1 / w) / 2,
+                 "cosh": lambda w: (w + 1 / w) / 2, "tanh": lambda w: (w**2 - 1) / (w**2 + 1),
+                 "coth": lambda w: (w**2 + 1) / (w**2 - 1), "sech": lambda w: 2 / (w + 1 / w),
+                 "csch": lambda w: 2 / (w - 1 / w)}
+
+
 class _Builder:
+    """The world of what :class:`_Scan` found: atoms, argument dummies and rewriting rules
+    (in symengine for a held scan, whose expressions stay there)."""
+
     def __init__(self, scan: _Scan, symbols):
         self.scan = scan
+        self.held = scan.held is not None
         self.symbols = list(symbols)
         self.rule: dict = {}
         self.atoms: list = []
@@ -329,8 +442,9 @@ class _Builder:
             self.atom_index[(kind, m)] = (len(self.atoms), L)
             self.atoms.append(AtomKey(kind, m / L))
             self.scales.append((kind, m, L))
-            prefix = "u_" if kind == "circle" else "w_"
-            self.u[len(self.atoms) - 1] = sp.Dummy(prefix + str(m / L))
+            prefix = "u" if kind == "circle" else "w"
+            self.u[len(self.atoms) - 1] = trees.dummy(f"{prefix}{len(self.atoms) - 1}",
+                                                      self.held)
 
     def _arg(self, kind, lin, node):
         terms = []
@@ -343,28 +457,18 @@ class _Builder:
         key = (kind, terms)
         hit = self.arg_index.get(key)
         if hit is None:
-            name = "_".join(f"{k}{self.atoms[i].expr}" for i, k in terms)
-            dummies = (sp.Dummy(f"S_{name}"), sp.Dummy(f"C_{name}")) if kind == "circle" \
-                else (sp.Dummy(f"W_{name}"),)
-            hit = self.arg_index[key] = len(self.args)
+            at = len(self.args)   # the dummies' names are indices: printing costs
+            dummies = (trees.dummy(f"S{at}", self.held), trees.dummy(f"C{at}", self.held)) \
+                if kind == "circle" else (trees.dummy(f"W{at}", self.held),)
+            hit = self.arg_index[key] = at
             self.args.append((kind, terms, dummies))
         return self.args[hit][2]
 
     def _trig_rules(self) -> None:
         for node, (kind, lin) in self.scan.trig.items():
             d = self._arg(kind, lin, node)
-            if kind == "circle":
-                s, c = d
-                f = type(node)
-                self.rule[node] = {sp.sin: s, sp.cos: c, sp.tan: s / c, sp.cot: c / s,
-                                   sp.sec: 1 / c, sp.csc: 1 / s}[f]
-            else:
-                w = d[0]
-                f = type(node)
-                self.rule[node] = w if node is sp.E or f is sp.exp else {
-                    sp.sinh: (w - 1 / w) / 2, sp.cosh: (w + 1 / w) / 2,
-                    sp.tanh: (w**2 - 1) / (w**2 + 1), sp.coth: (w**2 + 1) / (w**2 - 1),
-                    sp.sech: 2 / (w + 1 / w), sp.csch: 2 / (w - 1 / w)}[f]
+            rules = _CIRCLE_RULES if kind == "circle" else _GROWTH_RULES
+            self.rule[node] = rules[trees.name(node)](*d)
         if self.pi is not None:
             self.rule[sp.pi] = self.pi
 
@@ -382,7 +486,7 @@ class _Builder:
             self.rule[node] = root ** p
         for node in self.scan.branches:
             self._branch(node)
-        out = [e.xreplace(self.rule) for e in exprs]
+        out = [e.xreplace(self.rule) for e in exprs] if self.rule else list(exprs)
         return World(out, self.symbols, self.atoms, self.args, self.pi, self.u, self.radicals,
                      self.conds, self.branches, self.scales)
 
@@ -558,20 +662,21 @@ def degree_bound(expr, weights: dict, memo: dict | None = None) -> tuple[int, in
     hit = memo.get(expr)
     if hit is not None:
         return hit
-    if expr.is_Number:
+    k = trees.kind(expr)
+    if k in trees.NUMBERS:
         out = (0, 0)
-    elif expr.is_Symbol:
+    elif k is trees.SYMBOL:
         out = weights.get(expr, (1, 0))
-    elif expr.is_Add:
+    elif k is trees.ADD:
         parts = [degree_bound(a, weights, memo) for a in expr.args]
         den = sum(d for _, d in parts)
         out = (max(n + den - d for n, d in parts), den)
-    elif expr.is_Mul:
+    elif k is trees.MUL:
         parts = [degree_bound(a, weights, memo) for a in expr.args]
         out = (sum(n for n, _ in parts), sum(d for _, d in parts))
-    elif expr.is_Pow and expr.exp.is_Integer:
-        n, d = degree_bound(expr.base, weights, memo)
-        e = int(expr.exp)
+    elif k is trees.POW and trees.kind(expr.args[1]) is trees.INTEGER:
+        n, d = degree_bound(expr.args[0], weights, memo)
+        e = trees.ratio(expr.args[1])[0]
         out = (n * e, d * e) if e >= 0 else (d * -e, n * -e)
     else:
         raise NotExact(expr, "cannot bound the degree")

@@ -30,6 +30,7 @@ from typing import Mapping
 import symengine as se
 import sympy as sp
 
+from dualmech.model import trees
 from dualmech.model._algebra import to_se, to_sp
 from dualmech.model._expr import as_expr, dotted
 from dualmech.model.equations import state_symbols
@@ -400,8 +401,8 @@ class _Walker:
             self.dims[k] = _vec(reduce(v))
         self.dims.setdefault(t, _vec(reduce(TIME)))
         self.issues: list[DimensionIssue] = []
-        self._memo: dict = {}
-        self._seeded: set = set()
+        self._memo: dict = dict(self.dims)   # declared symbols are their own memo entries
+        self._seeded: set = set(self.dims)
 
     def forget(self) -> None:
         """Drop the memo of visited subexpressions (declared symbols stay)."""
@@ -414,34 +415,35 @@ class _Walker:
         return d
 
     def _visit(self, e) -> tuple:
-        if e.is_Number or e in (sp.pi, sp.E):
+        k = trees.kind(e)
+        if k in trees.NUMBERS or k is trees.CONSTANT:
             return _ZERO
-        if e in self.dims:
-            return self.dims[e]
-        if e.is_Symbol or isinstance(e, sp.core.function.AppliedUndef):
-            return self._undeclared(e)
-        if isinstance(e, sp.Derivative):
-            d = self(e.expr)
-            for var, n in e.variable_count:
+        if k is trees.SYMBOL or k is trees.UNDEFINED:
+            return self._undeclared(e)     # declared ones are in the memo from the start
+        if k is trees.DERIVATIVE:
+            expr, counts = trees.derivative_parts(e)
+            d = self(expr)
+            for var, n in counts:
                 d = _vadd(d, self(var), -n)
             return d
-        if e.is_Add:
+        if k is trees.ADD:
             return self._add(e, None)
-        if e.is_Mul:
+        if k is trees.MUL:
             d = _ZERO
             for a in e.args:
                 d = _vadd(d, self(a))
             return d
-        if e.is_Pow:
-            base = self(e.base)
-            if e.exp.is_Number:
-                return _vscale(base, Fraction(str(sp.Rational(e.exp))))
-            if base != _ZERO or self(e.exp) != _ZERO:
+        if k is trees.POW:
+            b, x = e.args
+            base = self(b)
+            if trees.kind(x) in (trees.INTEGER, trees.RATIONAL, trees.FLOAT):
+                return _vscale(base, trees.fraction(x))
+            if base != _ZERO or self(x) != _ZERO:
                 self._symbolic_power(e)
             return _ZERO
-        if isinstance(e, sp.Function):
+        if k is trees.FUNCTION:
             for a in e.args:
-                self._dimensionless_argument(a, e.func.__name__)
+                self._dimensionless_argument(a, trees.name(e))
             return _ZERO
         raise TypeError(f"cannot find the dimension of {e!r}")
 
@@ -471,12 +473,9 @@ class _Walker:
     def _show(self, e) -> str:
         return dotted(self._sympy(e))
 
-    def _terms(self, e):
-        return sp.Add.make_args(e)
-
     def _add(self, e, expected) -> tuple:
         # zero has every dimension: it never conflicts (a reaction that vanishes, say)
-        terms = [(a, self(a)) for a in self._terms(e) if a != 0]
+        terms = [(a, self(a)) for a in trees.terms(e) if a != 0]
         if not terms:
             return expected if expected is not None else _ZERO
         counts = Counter(d for _, d in terms)
@@ -529,7 +528,7 @@ class _SeWalker(_Walker):
                     se_dims[se.Symbol(sym.name)] = _vadd(d, self.dims[t], -order)
                     self._rate_of[sym] = (q, order)
         se_dims[se.Symbol(t.name)] = self.dims[t]
-        self._memo.update(se_dims)   # declared symbols are their own memo entries
+        self._memo = se_dims   # declared symbols are their own memo entries
         self._seeded = set(se_dims)
 
     @property
@@ -543,38 +542,6 @@ class _SeWalker(_Walker):
     def _sympy(self, e):
         return to_sp(e, self.names).xreplace(self._rates)
 
-    def _terms(self, e):
-        return e.args if e.is_Add else (e,)
-
-    def _visit(self, e) -> tuple:
-        if e.is_Number or e == se.pi or e == se.E:
-            return _ZERO
-        if e.is_Symbol or isinstance(e, se.FunctionSymbol):
-            return self._undeclared(e)
-        if e.is_Derivative:
-            d = self(e.args[0])
-            for var in e.args[1:]:
-                d = _vadd(d, self(var), -1)
-            return d
-        if e.is_Add:
-            return self._add(e, None)
-        if e.is_Mul:
-            d = _ZERO
-            for a in e.args:
-                d = _vadd(d, self(a))
-            return d
-        if e.is_Pow:
-            base = self(e.base)
-            if isinstance(e.exp, (se.Integer, se.Rational)):
-                p, q = e.exp.get_num_den()
-                return _vscale(base, Fraction(int(p), int(q)))
-            if base != _ZERO or self(e.exp) != _ZERO:
-                self._symbolic_power(e)
-            return _ZERO
-        for a in e.args:   # a function: every argument dimensionless
-            self._dimensionless_argument(a, type(e).__name__)
-        return _ZERO
-
 
 def audit(expr, dims: Mapping, expected=None, names: Mapping | None = None
           ) -> list[DimensionIssue]:
@@ -585,10 +552,15 @@ def audit(expr, dims: Mapping, expected=None, names: Mapping | None = None
     may be a symengine expression held by a derivation, with its ``names`` (see
     :class:`dualmech.model.equations.Rows`).
     """
-    w = _SeWalker(dims, names or {}) if isinstance(expr, se.Basic) else _Walker(dims)
-    w._add(expr if isinstance(expr, se.Basic) else as_expr(expr),
-           None if expected is None else _vec(reduce(expected)))
+    held = trees.is_held(expr)
+    w = _walker(dims, names, held)
+    w._add(expr if held else as_expr(expr), None if expected is None else _vec(reduce(expected)))
     return w.issues
+
+
+def _walker(dims: Mapping, names: Mapping | None, held: bool) -> _Walker:
+    """The walker for symengine expressions (``held``, with their ``names``) or sympy ones."""
+    return _SeWalker(dims, names or {}) if held else _Walker(dims)
 
 
 def audit_rows(rows, dims: Mapping, expected=None, names: Mapping | None = None
@@ -610,8 +582,8 @@ def audit_rows(rows, dims: Mapping, expected=None, names: Mapping | None = None
     rows = list(rows)
     if expected is None:
         expected = [None] * len(rows)
-    held = bool(rows) and isinstance(rows[0], se.Basic)
-    w = _SeWalker(dims, names or {}) if held else _Walker(dims)
+    held = bool(rows) and trees.is_held(rows[0])
+    w = _walker(dims, names, held)
     out = []
     for e, x in zip(rows, expected):
         w.issues = []
@@ -634,7 +606,7 @@ def dimension_reader(dims: Mapping, names: Mapping | None = None, held: bool = T
     >>> read(m*l**2), read(l)
     ((('mass', Fraction(1, 1)), ('length', Fraction(2, 1))), (('length', Fraction(1, 1)),))
     """
-    w = _SeWalker(dims, names or {}) if held else _Walker(dims)
+    w = _walker(dims, names, held)
 
     def read(expr) -> Dims:
         w.issues = []
@@ -649,14 +621,9 @@ def dimension_reader(dims: Mapping, names: Mapping | None = None, held: bool = T
 
 def dimension_of(expr, dims: Mapping, names: Mapping | None = None) -> Dims:
     """Dimension of ``expr``; raises ``ValueError`` listing the issues when inconsistent."""
-    if isinstance(expr, se.Basic):
-        w = _SeWalker(dims, names or {})
-        d = w(expr)
-        if w.issues:
-            raise ValueError("; ".join(map(str, w.issues)))
-        return _pairs(d)
-    w = _Walker(dims)
-    d = w(as_expr(expr))
+    held = trees.is_held(expr)
+    w = _walker(dims, names, held)
+    d = w(expr if held else as_expr(expr))
     if w.issues:
         raise ValueError("; ".join(map(str, w.issues)))
     return _pairs(d)

@@ -143,6 +143,8 @@ class IDASolver:
                 np.linalg.LinAlgError) as exc:
             ok, message = False, f"IDA failed: {exc}"
         y_out = np.array(ys).T if ys else np.empty((2 * n, 0))
-        return Run("IDA", t_eval[: len(ys)].copy(), y_out, ok and len(ys) == t_eval.size,
-                   message, _time.process_time() - start, self.calls, self.calls, steps,
-                   njev, njev, float(t_eval[len(ys) - 1]) if ys else t0)
+        return Run(method="IDA", t=t_eval[: len(ys)].copy(), y=y_out,
+                   success=ok and len(ys) == t_eval.size, message=message,
+                   cpu=_time.process_time() - start, calls=self.calls,
+                   evaluations=self.calls, steps=steps, jacobians=njev, factorisations=njev,
+                   t_end=float(t_eval[len(ys) - 1]) if ys else t0)

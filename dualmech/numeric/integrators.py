@@ -26,7 +26,7 @@ Example
 from __future__ import annotations
 
 import time as _time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Callable, Sequence
 
 import numpy as np
@@ -50,13 +50,50 @@ class IntegrationError(RuntimeError):
     """An integrator could not go on; the message says where and what to change."""
 
 
-@dataclass
+@dataclass(frozen=True, kw_only=True, eq=False)
 class Run:
-    """One integration: samples ``t`` (N,), ``y`` (2n, N) and the work it took.
+    """One integration: the samples it reached and the work it took.
 
-    ``success`` is False when the method stopped early (``message`` says why; ``t``/``y``
-    then hold the samples reached); ``t_end`` is where it stopped; ``events`` the event
-    times (one list per event function), ``event_states`` the states there.
+    Attributes
+    ----------
+    method : str
+        The integrator: one of :data:`METHODS`, :data:`SYMPLECTIC` or ``"IDA"``.
+    t : ndarray, shape (N,)
+        Sample times reached [s], increasing: the requested ``t_eval`` up to where the
+        run stopped.
+    y : ndarray, shape (m, N)
+        The state at each sample, one column per time (``m = 2 n`` for ``n`` coordinates:
+        the coordinates [m or rad] then their rates [per s]; a symplectic method's rates
+        are the velocities of its canonical state).
+    success : bool
+        False when the method stopped early; ``t`` and ``y`` then hold what it reached.
+    message : str
+        The integrator's own word on how it ended (why it stopped, when it did).
+    cpu : float
+        Process time of the integration [s].
+    calls : int
+        Right-hand-side calls.
+    evaluations : int
+        States evaluated: a vectorised call (the implicit methods' finite-difference
+        Jacobians) evaluates many.
+    steps : int
+        Accepted steps.
+    jacobians, factorisations : int
+        Jacobian evaluations and LU factorisations (0 for the explicit methods).
+    t_end : float
+        Time where the run stopped [s] (``nan`` when it stopped before a first step).
+    events : list of list of float
+        The event times [s], one list per event function.
+    event_states : list of ndarray
+        The states there, one ``(k, m)`` array per event function (a guarded probe
+        keeps its last accepted state here).
+
+    Example
+    -------
+    >>> run = Run(method="RK45", t=np.array([0.0]), y=np.zeros((2, 1)), success=True,
+    ...           message="", cpu=0.0, calls=0, evaluations=0, steps=0)
+    >>> run.y.shape, run.t_end
+    ((2, 1), nan)
     """
 
     method: str
@@ -140,10 +177,10 @@ def integrate(fun: Callable, t_span: Sequence[float], y0, method: str, *,
         run = _scipy(counted, t_span, y0, method, t_eval, rtol, atol, events)
     else:
         run = _projected(counted, t_span, y0, method, t_eval, rtol, atol, events, projector)
-    run.cpu = _time.process_time() - start
-    if method not in SYMPLECTIC:
-        run.calls, run.evaluations = counted.calls, counted.evaluations
-    return run
+    cpu = _time.process_time() - start
+    if method in SYMPLECTIC:
+        return replace(run, cpu=cpu)
+    return replace(run, cpu=cpu, calls=counted.calls, evaluations=counted.evaluations)
 
 
 def _scipy(fun, t_span, y0, method, t_eval, rtol, atol, events, first_step=None) -> Run:
@@ -156,14 +193,17 @@ def _scipy(fun, t_span, y0, method, t_eval, rtol, atol, events, first_step=None)
     except (SingularityError, ValueError, ZeroDivisionError, FloatingPointError) as exc:
         # a singular system or a state outside the model's domain (a square root of a
         # negative number): the run ends here, with the model's own message
-        return Run(method, t_eval[:0], np.empty((y0.size, 0)), False, str(exc), 0.0, 0, 0, 0)
+        return Run(method=method, t=t_eval[:0], y=np.empty((y0.size, 0)), success=False,
+                   message=str(exc), cpu=0.0, calls=0, evaluations=0, steps=0)
     reached = t_eval[t_eval <= sol.t[-1] + 1e-12 * max(1.0, abs(sol.t[-1]))]
     y = sol.sol(reached) if reached.size else np.empty((y0.size, 0))
     if reached.size and reached[0] == sol.t[0]:
         y[:, 0] = y0
-    return Run(method, reached, y, sol.status >= 0, sol.message, 0.0, 0, 0, len(sol.t) - 1, int(sol.njev), int(sol.nlu), float(sol.t[-1]),
-               [list(e) for e in (sol.t_events or [])],
-               [np.asarray(e) for e in (sol.y_events or [])])
+    return Run(method=method, t=reached, y=y, success=sol.status >= 0, message=sol.message,
+               cpu=0.0, calls=0, evaluations=0, steps=len(sol.t) - 1,
+               jacobians=int(sol.njev), factorisations=int(sol.nlu), t_end=float(sol.t[-1]),
+               events=[list(e) for e in (sol.t_events or [])],
+               event_states=[np.asarray(e) for e in (sol.y_events or [])])
 
 
 def _projected(fun, t_span, y0, method, t_eval, rtol, atol, events, projector) -> Run:
@@ -175,12 +215,15 @@ def _projected(fun, t_span, y0, method, t_eval, rtol, atol, events, projector) -
         steps, jac, lu = steps + run.steps, jac + run.jacobians, lu + run.factorisations
         if not run.success or run.t.size < 2:
             ts = t_eval[: len(ys)]
-            return Run(method, ts, np.array(ys).T, False, run.message, 0.0, 0, 0, steps, jac,
-                       lu, float(a) if not np.isfinite(run.t_end) else run.t_end, run.events,
-                       run.event_states)
+            return Run(method=method, t=ts, y=np.array(ys).T, success=False,
+                       message=run.message, cpu=0.0, calls=0, evaluations=0, steps=steps,
+                       jacobians=jac, factorisations=lu,
+                       t_end=float(a) if not np.isfinite(run.t_end) else run.t_end,
+                       events=run.events, event_states=run.event_states)
         y = projector(b, run.y[:, -1])
         ys.append(y)
         if method not in ("BDF", "LSODA"):  # one-step methods resume with the last step size;
             first = 0.5 * (b - a) / max(run.steps, 1)  # multistep ones restart at order 1
-    return Run(method, t_eval.copy(), np.array(ys).T, True, "projected at every sample", 0.0,
-               0, 0, steps, jac, lu, float(t_eval[-1]))
+    return Run(method=method, t=t_eval.copy(), y=np.array(ys).T, success=True,
+               message="projected at every sample", cpu=0.0, calls=0, evaluations=0,
+               steps=steps, jacobians=jac, factorisations=lu, t_end=float(t_eval[-1]))

@@ -58,9 +58,9 @@ def _run(name, t0, h, qs, vs, t_eval, calls, steps, message=""):
     T = t0 + h * np.arange(len(qs))
     Y = np.vstack([np.array(qs).T, np.array(vs).T])
     y = _lagrange4(T, Y, np.asarray(t_eval, dtype=float))
-    return Run(name, np.asarray(t_eval, dtype=float).copy(), y, True,
-               message or f"{steps} steps of {h:.4g} s", 0.0, calls, calls, steps, 0, 0,
-               float(T[-1]))
+    return Run(method=name, t=np.asarray(t_eval, dtype=float).copy(), y=y, success=True,
+               message=message or f"{steps} steps of {h:.4g} s", cpu=0.0, calls=calls,
+               evaluations=calls, steps=steps, t_end=float(T[-1]))
 
 
 def midpoint(energy, t_span, y0, t_eval, h: float, max_steps: int = 2_000_000,

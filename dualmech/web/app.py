@@ -3,7 +3,10 @@
 :func:`create_app` wires the pieces: problem pages (:mod:`.catalog`, :mod:`dualmech.web.pages`),
 validation while typing (:mod:`.preview`), grading in the bounded process pool
 (:class:`dualmech.grade.sandbox.GradingPool`), batches kept in SQLite (:mod:`.store`) and
-graded in the background (:mod:`.batches`), limits per client (:mod:`.guard`).
+graded in the background (:mod:`.batches`), limits per client (:mod:`.guard`).  The
+endpoints are module-level functions listed in :data:`routes`, as in starlette's own
+examples; each reads what the app shares (store, pool, limits, token: a ``_Server``) from
+``request.app.state.server``.
 
 A client only ever names a problem; the name is looked up among the problems the server was
 started with, so nothing a client sends is opened as a path or imported.
@@ -37,7 +40,7 @@ from urllib.parse import parse_qs, unquote
 from starlette.applications import Starlette
 from starlette.concurrency import run_in_threadpool
 from starlette.requests import Request
-from starlette.responses import (HTMLResponse, JSONResponse, RedirectResponse, Response)
+from starlette.responses import HTMLResponse, JSONResponse, RedirectResponse, Response
 from starlette.routing import Route
 
 from dualmech.web import pages
@@ -49,7 +52,7 @@ from dualmech.web.openapi import SPEC
 from dualmech.web.preview import preview
 from dualmech.web.store import Store
 
-__all__ = ["create_app", "served_problems", "WebLimits"]
+__all__ = ["create_app", "served_problems", "WebLimits", "routes"]
 
 _COOKIE = "dualmech_teacher"
 #: Grades kept in memory, so the same answer typed by many students is graded once.
@@ -65,8 +68,6 @@ class WebLimits:
                  field_chars: int = 200, queue: int = 400, seconds: float = 60.0):
         self.json_bytes, self.csv_bytes, self.field_chars = json_bytes, csv_bytes, field_chars
         self.queue, self.seconds = queue, seconds
-
-
 
 
 def served_problems(specs: Sequence[str] | None = None) -> dict[str, str]:
@@ -239,227 +240,44 @@ def create_app(problems: Sequence[str] | None = None, *, data: str | Path = "dua
     ``data``: directory of the SQLite store; ``token``: the teacher's token; ``pool``: a
     grading pool to use (default: a :class:`~dualmech.grade.sandbox.GradingPool` of
     ``workers`` processes, ``grade_seconds`` and ``memory_mb`` per answer, started with the
-    app and closed with it); ``rates``: see :data:`.guard.RATES`.
+    app and closed with it); ``rates``: see :data:`.guard.RATES`.  The endpoints are the
+    module's own functions (:data:`routes`); what they share is ``app.state.server``.
     """
     if not token:
         raise ValueError("`token` must be a non-empty string.")
     srv = _Server(served_problems(problems), Path(data), token, pool, workers, rates,
                   limits or WebLimits(), grade_seconds, memory_mb)
-
-    # -- pages -------------------------------------------------------------------------------
-    async def index(request: Request):
-        return HTMLResponse(pages.index_page(srv.titles))
-
-    async def problem_page(request: Request):
-        name = request.path_params["name"]
-        if name not in srv.served:
-            return HTMLResponse(pages.layout("Not found", "<h1>No such problem</h1><p>"
-                                             "<a href='/'>The problems served here</a></p>"),
-                                status_code=404)
-        info = await run_in_threadpool(srv.info, name)
-        return HTMLResponse(pages.problem_page(info))
-
-    async def static(request: Request):
-        which = request.path_params["file"]
-        if which == "style.css":
-            return Response(STYLE, media_type="text/css")
-        if which == "app.js":
-            return Response(SCRIPT, media_type="text/javascript")
-        return _error(404, "no such file.")
-
-    async def teacher(request: Request):
-        if not srv.teacher(request):
-            return HTMLResponse(pages.login_page())
-        batches = await run_in_threadpool(srv.store.batches)
-        answers = await run_in_threadpool(srv.store.answers)
-        return HTMLResponse(pages.teacher_page(batches, answers))
-
-    async def login(request: Request):
-        limited = await _limited(srv, request, "login")
-        if limited:
-            return HTMLResponse(pages.login_page("Too many tries; wait a minute."),
-                                status_code=429)
-        try:
-            raw = await read_body(request, 4096)
-        except TooLarge as exc:
-            return HTMLResponse(pages.login_page(str(exc)), status_code=413)
-        given = parse_qs(raw.decode("utf-8", "replace")).get("token", [""])[0].strip()
-        if not hmac.compare_digest(given.encode(), srv.token.encode()):
-            return HTMLResponse(pages.login_page("That is not the token."), status_code=401)
-        r = RedirectResponse("/teacher", status_code=303)
-        r.set_cookie(_COOKIE, srv.session, httponly=True, samesite="strict", path="/")
-        return r
-
-    async def batch_page(request: Request):
-        if not srv.teacher(request):
-            return RedirectResponse("/teacher", status_code=303)
-        progress = await run_in_threadpool(srv.store.progress, request.path_params["id"])
-        if progress is None:
-            return HTMLResponse(pages.layout("Not found", "<h1>No such batch</h1>"),
-                                status_code=404)
-        results = await run_in_threadpool(srv.store.results, progress["id"]) \
-            if progress["status"] == "done" else []
-        return HTMLResponse(pages.batch_page(progress, results))
-
-    async def api_docs(request: Request):
-        return HTMLResponse(pages.api_page(SPEC))
-
-    # -- API ---------------------------------------------------------------------------------
-    async def api_problems(request: Request):
-        return JSONResponse([dict(t, url=f"/problems/{t['name']}") for t in srv.titles])
-
-    async def api_problem(request: Request):
-        name = request.path_params["name"]
-        if name not in srv.served:
-            return _not_found(srv, name)
-        info = await run_in_threadpool(srv.info, name)
-        return JSONResponse(info.to_dict())
-
-    async def api_validate(request: Request):
-        limited = await _limited(srv, request, "validate")
-        if limited:
-            return limited
-        body, err = await _answer_request(srv, request)
-        if err:
-            return err
-        info = await run_in_threadpool(srv.info, body["problem"])
-        out = await run_in_threadpool(preview, info, body["answer"], body.get("quantity"))
-        return JSONResponse(out)
-
-    async def api_grade(request: Request):
-        limited = await _limited(srv, request, "grade")
-        if limited:
-            return limited
-        body, err = await _answer_request(srv, request)
-        if err:
-            return err
-        if srv.waiting >= srv.limits.queue:
-            return _error(503, "the server is busy grading; try again in a few seconds.",
-                          {"Retry-After": "5"})
-        info = await run_in_threadpool(srv.info, body["problem"])
-        key = (body["problem"], body["answer"], body.get("quantity") or None,
-               body.get("about") or None)
-        result = srv.remember(key)
-        if result is None:
-            srv.waiting += 1
-            try:
-                future = srv.pool.submit(srv.served[key[0]], *key[1:])
-                grade = await asyncio.wait_for(asyncio.wrap_future(future), srv.limits.seconds)
-            except asyncio.TimeoutError:
-                return _error(503, "grading took too long; try again.")
-            finally:
-                srv.waiting -= 1
-            result = srv.remember(key, grade.to_dict())
-        result = dict(result)
-        result["feedback_html"] = await run_in_threadpool(pages.feedback_html, info, result)
-        kept = {k: v for k, v in result.items() if k != "feedback_html"}
-        kept["question"] = f"{key[0]}:{key[2]}" if key[2] else key[0]
-        await run_in_threadpool(srv.store.add_answer, kept)
-        return JSONResponse(result)
-
-    def teacher_only(handler):
-        async def guarded(request: Request):
-            if not srv.teacher(request):
-                return _error(401, "this needs the teacher token (Authorization: Bearer "
-                                   "<token>, or log in on /teacher).")
-            return await handler(request)
-        return guarded
-
-    async def api_batches(request: Request):
-        if request.method == "GET":
-            return JSONResponse(await run_in_threadpool(srv.store.batches))
-        limited = await _limited(srv, request, "upload")
-        if limited:
-            return limited
-        try:
-            raw = await read_body(request, srv.limits.csv_bytes)
-        except TooLarge as exc:
-            return _error(413, str(exc))
-        name = unquote(request.headers.get("x-filename", "upload.csv"))[:200]
-        try:
-            rows = await run_in_threadpool(read_upload, raw, name, srv.data / "uploads")
-        except BatchError as exc:
-            return _error(400, str(exc))
-        bid = await run_in_threadpool(srv.store.add_batch, name, rows)
-        srv.runner.notify()
-        return JSONResponse({"id": bid, "total": len(rows), "url": f"/teacher/batches/{bid}"},
-                            status_code=201)
-
-    async def _done_batch(request: Request):
-        progress = await run_in_threadpool(srv.store.progress, request.path_params["id"])
-        if progress is None:
-            return None, _error(404, "no such batch.")
-        if progress["status"] != "done":
-            return None, _error(409, f"the batch is still grading ({progress['done']} of "
-                                     f"{progress['total']}).")
-        return progress, None
-
-    async def api_batch(request: Request):
-        progress = await run_in_threadpool(srv.store.progress, request.path_params["id"])
-        return JSONResponse(progress) if progress else _error(404, "no such batch.")
-
-    async def api_batch_file(request: Request):
-        progress, err = await _done_batch(request)
-        if err:
-            return err
-        results = await run_in_threadpool(srv.store.results, progress["id"])
-        which = request.path_params["file"]
-        if which == "results.csv":
-            return Response(_csv(results), media_type="text/csv; charset=utf-8",
-                            headers=_attachment(which))
-        from dualmech.grade.report import write_report
-        paths = await run_in_threadpool(write_report, results,
-                                        srv.data / "reports" / progress["id"],
-                                        f"Grades: {progress['name']}")
-        key, media = {"results.json": ("json", "application/json"),
-                      "report.md": ("markdown", "text/markdown; charset=utf-8")}[which]
-        return Response(paths[key].read_bytes(), media_type=media, headers=_attachment(which))
-
-    async def api_openapi(request: Request):
-        return JSONResponse(SPEC)
-
-    async def not_found(request: Request, exc):
-        if request.url.path.startswith("/api/"):
-            return _error(404, "no such endpoint; see /api/docs.")
-        return HTMLResponse(pages.layout("Not found", "<h1>Not found</h1><p><a href='/'>The "
-                                         "problems served here</a></p>"), status_code=404)
-
-    async def failed(request: Request, exc):
-        return _error(500, "the server could not answer this request; the answer was not "
-                           "graded. Try again, and tell the teacher if it persists.")
-
-    routes = [
-        Route("/", index),
-        Route("/problems/{name}", problem_page),
-        Route("/static/{file}", static),
-        Route("/favicon.ico", lambda request: Response(status_code=204)),
-        Route("/teacher", teacher),
-        Route("/teacher/login", login, methods=["POST"]),
-        Route("/teacher/batches/{id}", batch_page),
-        Route("/api/docs", api_docs),
-        Route("/api/openapi.json", api_openapi),
-        Route("/api/problems", api_problems),
-        Route("/api/problems/{name}", api_problem),
-        Route("/api/validate", api_validate, methods=["POST"]),
-        Route("/api/grade", api_grade, methods=["POST"]),
-        Route("/api/batches", teacher_only(api_batches), methods=["GET", "POST"]),
-        Route("/api/batches/{id}", teacher_only(api_batch)),
-        Route("/api/batches/{id}/{file:str}", teacher_only(_files(api_batch_file))),
-    ]
-
-    @contextlib.asynccontextmanager
-    async def lifespan(app):
-        await run_in_threadpool(srv.start)
-        try:
-            yield
-        finally:
-            await run_in_threadpool(srv.stop)
-
-    app = Starlette(routes=routes, lifespan=lifespan,
-                    exception_handlers={404: not_found, 500: failed, Exception: failed})
+    app = Starlette(routes=routes, lifespan=_lifespan,
+                    exception_handlers={404: _not_found_page, 500: _failed,
+                                        Exception: _failed})
     app.add_middleware(SecurityHeaders)
     app.state.server = srv
     return app
+
+
+@contextlib.asynccontextmanager
+async def _lifespan(app: Starlette):
+    srv = app.state.server
+    await run_in_threadpool(srv.start)
+    try:
+        yield
+    finally:
+        await run_in_threadpool(srv.stop)
+
+
+def _server(request: Request) -> _Server:
+    """The state of the app serving ``request``."""
+    return request.app.state.server
+
+
+def teacher_only(handler):
+    """``handler`` for the teacher alone (the token, or the session cookie of /teacher)."""
+    async def guarded(request: Request):
+        if not _server(request).teacher(request):
+            return _error(401, "this needs the teacher token (Authorization: Bearer "
+                               "<token>, or log in on /teacher).")
+        return await handler(request)
+    return guarded
 
 
 def _files(handler):
@@ -468,6 +286,236 @@ def _files(handler):
             return _error(404, "no such file; results.json, report.md or results.csv.")
         return await handler(request)
     return only_known
+
+
+# -- pages ---------------------------------------------------------------------------------------
+async def index(request: Request):
+    return HTMLResponse(pages.index_page(_server(request).titles))
+
+
+async def problem_page(request: Request):
+    srv = _server(request)
+    name = request.path_params["name"]
+    if name not in srv.served:
+        return HTMLResponse(pages.layout("Not found", "<h1>No such problem</h1><p>"
+                                         "<a href='/'>The problems served here</a></p>"),
+                            status_code=404)
+    info = await run_in_threadpool(srv.info, name)
+    return HTMLResponse(pages.problem_page(info))
+
+
+async def static(request: Request):
+    which = request.path_params["file"]
+    if which == "style.css":
+        return Response(STYLE, media_type="text/css")
+    if which == "app.js":
+        return Response(SCRIPT, media_type="text/javascript")
+    return _error(404, "no such file.")
+
+
+async def favicon(request: Request):
+    return Response(status_code=204)
+
+
+async def teacher(request: Request):
+    srv = _server(request)
+    if not srv.teacher(request):
+        return HTMLResponse(pages.login_page())
+    batches = await run_in_threadpool(srv.store.batches)
+    answers = await run_in_threadpool(srv.store.answers)
+    return HTMLResponse(pages.teacher_page(batches, answers))
+
+
+async def login(request: Request):
+    srv = _server(request)
+    limited = await _limited(srv, request, "login")
+    if limited:
+        return HTMLResponse(pages.login_page("Too many tries; wait a minute."),
+                            status_code=429)
+    try:
+        raw = await read_body(request, 4096)
+    except TooLarge as exc:
+        return HTMLResponse(pages.login_page(str(exc)), status_code=413)
+    given = parse_qs(raw.decode("utf-8", "replace")).get("token", [""])[0].strip()
+    if not hmac.compare_digest(given.encode(), srv.token.encode()):
+        return HTMLResponse(pages.login_page("That is not the token."), status_code=401)
+    r = RedirectResponse("/teacher", status_code=303)
+    r.set_cookie(_COOKIE, srv.session, httponly=True, samesite="strict", path="/")
+    return r
+
+
+async def batch_page(request: Request):
+    srv = _server(request)
+    if not srv.teacher(request):
+        return RedirectResponse("/teacher", status_code=303)
+    progress = await run_in_threadpool(srv.store.progress, request.path_params["id"])
+    if progress is None:
+        return HTMLResponse(pages.layout("Not found", "<h1>No such batch</h1>"),
+                            status_code=404)
+    results = await run_in_threadpool(srv.store.results, progress["id"]) \
+        if progress["status"] == "done" else []
+    return HTMLResponse(pages.batch_page(progress, results))
+
+
+async def api_docs(request: Request):
+    return HTMLResponse(pages.api_page(SPEC))
+
+
+# -- API -----------------------------------------------------------------------------------------
+async def api_openapi(request: Request):
+    return JSONResponse(SPEC)
+
+
+async def api_problems(request: Request):
+    return JSONResponse([dict(t, url=f"/problems/{t['name']}")
+                         for t in _server(request).titles])
+
+
+async def api_problem(request: Request):
+    srv = _server(request)
+    name = request.path_params["name"]
+    if name not in srv.served:
+        return _not_found(srv, name)
+    info = await run_in_threadpool(srv.info, name)
+    return JSONResponse(info.to_dict())
+
+
+async def api_validate(request: Request):
+    srv = _server(request)
+    limited = await _limited(srv, request, "validate")
+    if limited:
+        return limited
+    body, err = await _answer_request(srv, request)
+    if err:
+        return err
+    info = await run_in_threadpool(srv.info, body["problem"])
+    out = await run_in_threadpool(preview, info, body["answer"], body.get("quantity"))
+    return JSONResponse(out)
+
+
+async def api_grade(request: Request):
+    srv = _server(request)
+    limited = await _limited(srv, request, "grade")
+    if limited:
+        return limited
+    body, err = await _answer_request(srv, request)
+    if err:
+        return err
+    if srv.waiting >= srv.limits.queue:
+        return _error(503, "the server is busy grading; try again in a few seconds.",
+                      {"Retry-After": "5"})
+    info = await run_in_threadpool(srv.info, body["problem"])
+    key = (body["problem"], body["answer"], body.get("quantity") or None,
+           body.get("about") or None)
+    result = srv.remember(key)
+    if result is None:
+        srv.waiting += 1
+        try:
+            future = srv.pool.submit(srv.served[key[0]], *key[1:])
+            grade = await asyncio.wait_for(asyncio.wrap_future(future), srv.limits.seconds)
+        except asyncio.TimeoutError:
+            return _error(503, "grading took too long; try again.")
+        finally:
+            srv.waiting -= 1
+        result = srv.remember(key, grade.to_dict())
+    result = dict(result)
+    result["feedback_html"] = await run_in_threadpool(pages.feedback_html, info, result)
+    kept = {k: v for k, v in result.items() if k != "feedback_html"}
+    kept["question"] = f"{key[0]}:{key[2]}" if key[2] else key[0]
+    await run_in_threadpool(srv.store.add_answer, kept)
+    return JSONResponse(result)
+
+
+async def api_batches(request: Request):
+    srv = _server(request)
+    if request.method == "GET":
+        return JSONResponse(await run_in_threadpool(srv.store.batches))
+    limited = await _limited(srv, request, "upload")
+    if limited:
+        return limited
+    try:
+        raw = await read_body(request, srv.limits.csv_bytes)
+    except TooLarge as exc:
+        return _error(413, str(exc))
+    name = unquote(request.headers.get("x-filename", "upload.csv"))[:200]
+    try:
+        rows = await run_in_threadpool(read_upload, raw, name, srv.data / "uploads")
+    except BatchError as exc:
+        return _error(400, str(exc))
+    bid = await run_in_threadpool(srv.store.add_batch, name, rows)
+    srv.runner.notify()
+    return JSONResponse({"id": bid, "total": len(rows), "url": f"/teacher/batches/{bid}"},
+                        status_code=201)
+
+
+async def _done_batch(request: Request):
+    srv = _server(request)
+    progress = await run_in_threadpool(srv.store.progress, request.path_params["id"])
+    if progress is None:
+        return None, _error(404, "no such batch.")
+    if progress["status"] != "done":
+        return None, _error(409, f"the batch is still grading ({progress['done']} of "
+                                 f"{progress['total']}).")
+    return progress, None
+
+
+async def api_batch(request: Request):
+    progress = await run_in_threadpool(_server(request).store.progress,
+                                       request.path_params["id"])
+    return JSONResponse(progress) if progress else _error(404, "no such batch.")
+
+
+async def api_batch_file(request: Request):
+    srv = _server(request)
+    progress, err = await _done_batch(request)
+    if err:
+        return err
+    results = await run_in_threadpool(srv.store.results, progress["id"])
+    which = request.path_params["file"]
+    if which == "results.csv":
+        return Response(_csv(results), media_type="text/csv; charset=utf-8",
+                        headers=_attachment(which))
+    from dualmech.grade.report import write_report
+    paths = await run_in_threadpool(write_report, results,
+                                    srv.data / "reports" / progress["id"],
+                                    f"Grades: {progress['name']}")
+    key, media = {"results.json": ("json", "application/json"),
+                  "report.md": ("markdown", "text/markdown; charset=utf-8")}[which]
+    return Response(paths[key].read_bytes(), media_type=media, headers=_attachment(which))
+
+
+# -- errors --------------------------------------------------------------------------------------
+async def _not_found_page(request: Request, exc):
+    if request.url.path.startswith("/api/"):
+        return _error(404, "no such endpoint; see /api/docs.")
+    return HTMLResponse(pages.layout("Not found", "<h1>Not found</h1><p><a href='/'>The "
+                                     "problems served here</a></p>"), status_code=404)
+
+
+async def _failed(request: Request, exc):
+    return _error(500, "the server could not answer this request; the answer was not "
+                       "graded. Try again, and tell the teacher if it persists.")
+
+
+#: Every page and endpoint of the app (the API's are described in :mod:`.openapi`).
+routes = [
+    Route("/", index),
+    Route("/problems/{name}", problem_page),
+    Route("/static/{file}", static),
+    Route("/favicon.ico", favicon),
+    Route("/teacher", teacher),
+    Route("/teacher/login", login, methods=["POST"]),
+    Route("/teacher/batches/{id}", batch_page),
+    Route("/api/docs", api_docs),
+    Route("/api/openapi.json", api_openapi),
+    Route("/api/problems", api_problems),
+    Route("/api/problems/{name}", api_problem),
+    Route("/api/validate", api_validate, methods=["POST"]),
+    Route("/api/grade", api_grade, methods=["POST"]),
+    Route("/api/batches", teacher_only(api_batches), methods=["GET", "POST"]),
+    Route("/api/batches/{id}", teacher_only(api_batch)),
+    Route("/api/batches/{id}/{file:str}", teacher_only(_files(api_batch_file))),
+]
 
 
 def _attachment(name: str) -> dict:

@@ -436,11 +436,10 @@ def _guarded(f: Formulation, method: str, span, te, rtol, kappa) -> Run:
     for j, tt in enumerate(reached):
         piece = next((p for p in pieces if p[0] <= tt <= p[1]), None)
         y[:, j] = f.y0 if piece is None else piece[2](tt)
-    run = Run(method, reached, y, ok or solver.status == "finished", message or "finished",
-              time.process_time() - start, fun.calls, fun.evaluations, len(pieces),
-              t_end=float(t_end))
-    run.event_states = [y_end]
-    return run
+    return Run(method=method, t=reached, y=y, success=ok or solver.status == "finished",
+               message=message or "finished", cpu=time.process_time() - start,
+               calls=fun.calls, evaluations=fun.evaluations, steps=len(pieces),
+               t_end=float(t_end), event_states=[y_end])
 
 
 def _switch(f, ref, run, te, truth, rtol, ref_kappa, sizes) -> ProbeRun:
