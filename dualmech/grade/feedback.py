@@ -37,8 +37,8 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from dualmech.model.dimensions import (ACCELERATION, DAMPING, STIFFNESS, TORSIONAL_DAMPING,
-                                      TORSIONAL_STIFFNESS)
+from dualmech.model.dimensions import (ACCELERATION, DAMPING, FORCE, STIFFNESS, TORQUE,
+                                      TIME, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS)
 from dualmech.exact.form import MP_DIGITS
 from dualmech.model.kinematics import t
 from dualmech.grade.context import ProblemContext, zero
@@ -47,7 +47,8 @@ from dualmech.grade.formula import Formula
 from dualmech.grade.result import Edit
 from dualmech.grade.terms import MODES, TermTable, coefficient_env, state_symbols, term_table
 
-__all__ = ["best_edit", "Diagnosis", "concrete_state", "category", "swap_pairs", "MAX_EDITS"]
+__all__ = ["best_edit", "Diagnosis", "concrete_state", "category", "swap_pairs", "MAX_EDITS",
+           "differing_kinds"]
 
 MAX_EDITS = 3
 
@@ -93,22 +94,182 @@ def _best(expr, targets, ctx, scale, equation, mode, parts=None) -> Diagnosis | 
         return None
     ranked.sort(key=lambda r: r[:3])
     # the few closest by single terms, ranked again with the written groups (a group the
-    # student dropped, wrote extra or flipped is one edit, as they wrote it)
+    # student dropped, wrote extra or flipped is one edit, as they wrote it); among equally
+    # small edits, the scale the student grouped their terms by (the most terms written
+    # exactly, the simplest factor) before a rescaled one
     cut = ranked[0][0] + 2
     best = None
-    for size, other, index, tab, c in ranked[:12]:
+    for size, other, index, tab, c in ranked[:24]:
         if size > cut:
             break
         plan = _plan(mine, tab, c, ctx, parts)
-        rank = (_plan_size(mine, tab, c, plan), other, index)
+        rank = (_plan_size(mine, tab, c, plan), -_matched(mine, tab, c), _height(mine, tab, c),
+                other, index)
         if best is None or rank < best[0]:
             best = (rank, tab, c, plan)
-    (size, _, _), tab, c, plan = best
-    if size == 0 or size > min(MAX_EDITS, max(len(mine.terms) - 1, 1)):
+    (size, matched, _, _, _), tab, c, plan = best
+    if scale and size >= 2 and len(mine.terms) >= 2:
+        combined = _combination(mine, targets, ctx, parts, size)
+        if combined is not None:
+            return _describe(mine, combined[0], Fraction(1), ctx, equation, combined[1])
+    kept = sum(1 for k in mine.terms if k in tab.terms)
+    if size > max(len(mine.terms) - 1, 1) and _stray(mine, tab, c):
+        return None     # a term of the answer on no state part of the correct form
+    if size == 0 or not _small(size, -matched, len(mine.terms), kept):
         return None
     if len(mine.terms) > 1 and set(mine.terms) <= set(_differences(mine, tab, c)):
         return None     # every term the student wrote changes: a rewrite, not an edit
     return _describe(mine, tab, c, ctx, equation, plan)
+
+
+def _small(size: int, matched: int, written: int, kept: int | None = None) -> bool:
+    """An edit of ``size`` terms is believable: fewer edits than the answer has terms, or up
+    to :data:`MAX_EDITS` when a term is written exactly as the correct form has it
+    (``matched``) and the terms the student kept (``kept``, default ``matched``: state parts
+    the correct form has too, whatever their coefficients) are at least all but one of the
+    edits (``C psi'' = 0`` for the spin equation: one term kept, two missing)."""
+    kept = matched if kept is None else kept
+    if size > MAX_EDITS:
+        return False
+    return size <= max(written - 1, 1) or (matched >= 1 and kept >= size - 1)
+
+
+def _stray(mine: TermTable, tab: TermTable, c) -> bool:
+    """Whether the answer has a term on a state part the correct form lacks, with a
+    coefficient no wrong term of the correct form has (not a wrong function: a term the
+    student made up, or wrote beyond recognition)."""
+    _, pairs = _count_paired(mine, tab, c)
+    paired = {p[0] for p in pairs}
+    return any(k not in tab.terms and k not in paired for k in mine.terms)
+
+
+def _matched(mine: TermTable, tab: TermTable, c) -> int:
+    """How many of the answer's terms are exactly ``c`` times the target's."""
+    return sum(1 for k, (_, v, _) in mine.terms.items()
+               if k in tab.terms and zero(v - c * tab.terms[k][1], [v]))
+
+
+def _height(mine: TermTable, tab: TermTable, c) -> int:
+    """The size of the number in the scale factor ``c`` (1 for ``1/m``, 3 for ``3/m``)."""
+    if c == 1:
+        return 1
+    for k in mine.terms:
+        if k in tab.terms and zero(mine.terms[k][1] - c * tab.terms[k][1], [1]):
+            num = sp.cancel(mine.terms[k][0] / tab.terms[k][0]).as_coeff_Mul()[0]
+            if num.is_Rational:
+                return max(abs(int(num.p)), int(num.q))
+            break
+    return 1 << 30
+
+
+def _accelerations_first(keys) -> list:
+    return sorted(keys, key=lambda k: 0 if any(s.name.endswith("_ddot")
+                                               for s in k.free_symbols) else 1)
+
+
+def _combination(mine: TermTable, targets, ctx, parts, size: int):
+    """``(target, plan)`` when the answer is a combination ``a A + b B`` of two rows of one
+    model (``a``, ``b`` free of the state) with fewer than ``size`` edits -- a slip inside an
+    equation the student combined -- else None.  ``a`` and ``b`` come from two of the
+    answer's terms (accelerations first) solved against the two rows; the answer must keep
+    a term of each row that the other lacks, written exactly."""
+    models: dict = {}
+    for tb in targets:
+        if " minus (" not in tb.label:
+            models.setdefault(tb.label.split(":")[0], []).append(tb)
+    pairs = [(a, b) for rows in list(models.values())[:4] for i, a in enumerate(rows[:8])
+             for b in rows[i + 1:8]]
+    keys = _accelerations_first(mine.terms)[:4]
+    best = None
+    for a, b in pairs:
+        if True:
+            for j, k1 in enumerate(keys):
+                for k2 in keys[j + 1:]:
+                    c = _solve_pair(mine, a, b, k1, k2, lambda e: e[1])
+                    if c is None:
+                        continue
+                    vals = _combined_values(a, b, *c)
+                    n = _count(mine, TermTable("", None, vals), 1)
+                    if best is None or n < best[0]:
+                        best = (n, a, b, k1, k2)
+    if best is None or best[0] >= size:
+        return None
+    _, a, b, k1, k2 = best
+    ca, cb = _solve_pair(mine, a, b, k1, k2, lambda e: e[0], sp.cancel)
+    model, _, first = a.label.partition(": ")
+    words = f"{model}: combination of {first} and {b.label.split(': ', 1)[1]}"
+    tab = term_table(sp.expand(ca * a.expr + cb * b.expr), ctx, words, mine.mode)
+    if tab is None:
+        return None
+    plan = _plan(mine, tab, 1, ctx, parts)
+    n = _plan_size(mine, tab, 1, plan)
+    kept = [k for k in mine.terms if k in tab.terms and zero(
+        mine.terms[k][1] - tab.terms[k][1], [mine.terms[k][1]])]
+    own_a = any(k in a.terms and k not in b.terms for k in kept)
+    own_b = any(k in b.terms and k not in a.terms for k in kept)
+    if n == 0 or n >= size or not (own_a and own_b) or not _small(n, len(kept),
+                                                                   len(mine.terms)):
+        return None
+    return tab, plan
+
+
+def _solve_pair(mine, a, b, k1, k2, part, simplify=None):
+    """``(x, y)`` with ``x a + y b`` equal to the answer on the terms ``k1``, ``k2`` (values
+    or, with ``part`` the coefficient, expressions), None when singular or one is zero."""
+    def get(tab, k):
+        return part(tab.terms[k]) if k in tab.terms else 0
+    a1, b1, a2, b2 = get(a, k1), get(b, k1), get(a, k2), get(b, k2)
+    m1, m2 = part(mine.terms[k1]), part(mine.terms[k2])
+    det = a1 * b2 - a2 * b1
+    if simplify is not None:
+        return simplify((m1 * b2 - m2 * b1) / det), simplify((a1 * m2 - a2 * m1) / det)
+    if zero(det, [a1 * b2, a2 * b1]):
+        return None
+    x, y = (m1 * b2 - m2 * b1) / det, (a1 * m2 - a2 * m1) / det
+    if zero(x, [1]) or zero(y, [1]):
+        return None
+    return x, y
+
+
+def _combined_values(a: TermTable, b: TermTable, x, y) -> dict:
+    out = {}
+    for k in set(a.terms) | set(b.terms):
+        va = a.terms[k][1] if k in a.terms else 0
+        vb = b.terms[k][1] if k in b.terms else 0
+        v = x * va + y * vb
+        if not zero(v, [x * va, y * vb]):
+            out[k] = (None, v, [])
+    return out
+
+
+def differing_kinds(expr, targets, ctx: ProblemContext, parts: list | None = None):
+    """When no small edit explains a wrong equation: the correct row it is closest to (the
+    scale at which most of its terms are written exactly) and, by kind of term (inertia,
+    gravity, Coriolis, ...), the sum ``written - right`` of the terms that differ there:
+    ``(label, {kind: expression})``; None when no term of the answer is right at any scale.
+    """
+    mine = term_table(expr, ctx, mode="trig", parts=parts)
+    if mine is None or not mine.terms:
+        return None
+    best = None
+    for index, tab in enumerate(targets("trig")):
+        for c in _scales(mine, tab):
+            rank = (-_matched(mine, tab, c), _count(mine, tab, c), index)
+            if best is None or rank < best[0]:
+                best = (rank, tab, c)
+    if best is None or best[0][0] == 0:
+        return None
+    _, tab, c = best
+    shared = [k for k in mine.terms if k in tab.terms
+              and zero(mine.terms[k][1] - c * tab.terms[k][1], [1])]
+    c_sym = sp.cancel(mine.terms[shared[0]][0] / tab.terms[shared[0]][0])
+    kinds: dict = {}
+    for k in _differences(mine, tab, c):
+        have = mine.terms[k][0] * k if k in mine.terms else sp.Integer(0)
+        right = c_sym * tab.terms[k][0] * k if k in tab.terms else sp.Integer(0)
+        kind = category(right if right != 0 else have, ctx) or "another term"
+        kinds[kind] = kinds.get(kind, 0) + have - right
+    return tab.label, kinds
 
 
 def _differences(mine: TermTable, tab: TermTable, c) -> dict:
@@ -169,7 +330,37 @@ def _scales(mine: TermTable, tab: TermTable) -> list:
 
 def _count(mine: TermTable, tab: TermTable, c, skip=frozenset()) -> int:
     """Edits needed: each differing term, a wrong term with the right coefficient once
-    (``skip``: keys already explained)."""
+    (``skip``: keys already explained) -- or, when fewer, with every wrong term of the
+    answer paired with a missing one of the same coefficient (:func:`_replacements`)."""
+    return min(_count_keys(mine, tab, c, skip), _count_paired(mine, tab, c, skip)[0])
+
+
+def _count_paired(mine: TermTable, tab: TermTable, c, skip=frozenset()):
+    """``(edits, pairs)``: the answer's wrong terms paired with the correct form's terms of
+    the same coefficient on another state part (``-R^2 m w^2 sin(theta)`` where ``... sin
+    cos`` belongs, and ``g m R theta`` where ``sin(theta)`` belongs: two wrong functions,
+    not a changed coefficient, an extra and a missing term); ``pairs`` ``[(have, right)]``
+    keys."""
+    have, right = {}, {}
+    for k in (set(mine.terms) | set(tab.terms)) - set(skip):
+        a = mine.terms[k][1] if k in mine.terms else 0
+        b = tab.terms[k][1] * c if k in tab.terms else 0
+        if not zero(a - b, [a, b]):
+            if k in mine.terms:
+                have[k] = a
+            if k in tab.terms:
+                right[k] = b
+    pairs = []
+    for k1, a in have.items():
+        for k2, b in right.items():
+            if k2 != k1 and zero(a - b, [a, b]) and all(k2 != p[1] for p in pairs):
+                pairs.append((k1, k2))
+                break
+    rest = (set(have) - {p[0] for p in pairs}) | (set(right) - {p[1] for p in pairs})
+    return len(pairs) + len(rest), pairs
+
+
+def _count_keys(mine: TermTable, tab: TermTable, c, skip=frozenset()) -> int:
     n = 0
     extra, missing = [], []
     for k in (set(mine.terms) | set(tab.terms)) - set(skip):
@@ -201,6 +392,10 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Dia
     swaps = swap_pairs(ctx)
     edits, missing, extra = [], [], []
     covered = set()
+    skip = set().union(*(keys for _, _, keys in plan)) if plan else set()
+    n_paired, pairs = _count_paired(mine, tab, c, skip)
+    if pairs and n_paired < _count_keys(mine, tab, c, skip):
+        edits, mine, tab = _paired_edits(mine, tab, pairs, c_sym, ctx, equation)
     for kind, g, keys in plan:
         covered |= keys
         if kind == "missing":
@@ -259,6 +454,20 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Dia
     edits += [Edit("missing", equation, "", display(r, names), category(r, ctx)) for r in missing]
     edits += [Edit("extra", equation, display(h, names), "", category(h, ctx)) for h in extra]
     return Diagnosis(tab.label, c_sym, edits, len(edits))
+
+
+def _paired_edits(mine: TermTable, tab: TermTable, pairs, c_sym, ctx, equation):
+    """``(edits, mine, tab)``: a ``replace`` edit for each pair, and the tables without the
+    paired terms (what is left is described term by term)."""
+    edits = []
+    mine_terms, tab_terms = dict(mine.terms), dict(tab.terms)
+    for k1, k2 in pairs:
+        have = mine_terms.pop(k1)[0] * k1
+        right = sp.expand(c_sym * tab_terms.pop(k2)[0]) * k2
+        edits.append(Edit("replace", equation, display(have, ctx.names),
+                          display(right, ctx.names), category(right, ctx)))
+    return (edits, TermTable(mine.label, mine.expr, mine_terms, mine.hidden, mine.mode),
+            TermTable(tab.label, tab.expr, tab_terms, tab.hidden, tab.mode))
 
 
 def _coefficient_value(term, ctx):
@@ -447,10 +656,15 @@ def category(term, ctx: ProblemContext) -> str:
         return "a velocity term"
     if t in syms:
         return "a driving term"
+    powers = term.as_powers_dict()
+    if any(d == reduced(1 / TIME) and powers.get(p, 0) >= 2 for p, d in dims.items()):
+        return "a centripetal term"     # of a rotation the problem prescribes (omega^2)
     if any(d == reduced(ACCELERATION) for d in dims.values()):
         return "a gravity term"
     if any(d in (reduced(STIFFNESS), reduced(TORSIONAL_STIFFNESS)) for d in dims.values()):
         return "a spring term"
+    if any(d in (reduced(FORCE), reduced(TORQUE)) for d in dims.values()):
+        return "an applied force term"
     return ""
 
 

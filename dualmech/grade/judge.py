@@ -33,7 +33,7 @@ from dualmech.model.kinematics import t
 from dualmech.exact import linalg as la
 from dualmech.grade.answers import Quantity
 from dualmech.grade.context import GradingUnavailable, Point, ProblemContext, build_seconds, zero
-from dualmech.grade.feedback import Diagnosis, best_edit, concrete_state
+from dualmech.grade.feedback import Diagnosis, best_edit, concrete_state, differing_kinds
 from dualmech.grade.notation import for_student, in_their_words
 from dualmech.grade.terms import answer_coordinates, equation_targets, expression_tables, term_table
 from dualmech.grade.audit import dimension_issues, display, expected_dimension, label_words
@@ -436,9 +436,13 @@ def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline,
                     state = smap.state(ctx, state, written.symbols)
                 mine = in_their_words(seen, formulas[i].text)
                 state = {mine(key): v for key, v in state.items()}
-                details.append(f"no small edit explains {name(i)}: on the motion, at the "
-                               f"state below, its two sides differ by {value:.6g} (they must "
-                               "be equal)")
+                kinds = _kinds_words(ctx, formulas[i], targets, seen, need) \
+                    if seen is ctx and mine_size(formulas[i]) else ""
+                details.append(f"no small edit explains {name(i)}{kinds}: on the motion, at "
+                               f"the state below, its two sides differ by {value:.6g} (they "
+                               "must be equal)" if not kinds else
+                               f"no small edit explains {name(i)}; {kinds}, {value:.6g} in "
+                               "all between its two sides (they must be equal)")
             except (GradingUnavailable, TypeError, ValueError, ZeroDivisionError):
                 details.append(f"no small edit explains {name(i)}")
     which = ", ".join(str(i + 1) for i in wrong)
@@ -449,6 +453,39 @@ def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline,
                    f"do{'es' if len(wrong) == 1 else ''} not follow from {ctx.subject}")
     return Verdict("wrong", summary, details, edits, dims, state=state, method=method,
                    degree=degree, parts=k, wrong_parts=tuple(wrong))
+
+
+def mine_size(f: Formula) -> bool:
+    """Whether a formula is small enough to be compared term by term."""
+    return f.expanded_size() <= _MAX_FEEDBACK_TERMS
+
+
+def _kinds_words(ctx, f: Formula, targets, seen, need) -> str:
+    """``compared with the phi equation, its gravity and Coriolis terms differ: on the motion,
+    at the state below, by 1.2 and -0.4`` -- the kinds of the terms in which a wrong equation differs
+    from the correct row it is closest to (at the scale of most of its terms), with what each
+    kind adds to the difference at the state shown; "" when no term of it is right."""
+    found = differing_kinds(f.sympy(), targets, seen, f.written_terms())
+    if not found:
+        return ""
+    label, kinds = found
+    env = ctx.points("mpmath")[0].env(need=need)
+    values = []
+    with mpmath.workdps(MP_DIGITS):
+        for kind, diff in kinds.items():
+            try:
+                v = float(mpmath.re(Formula.from_sympy(diff).evaluate(env)))
+            except (TypeError, ValueError, ZeroDivisionError, KeyError):
+                return ""
+            values.append((-abs(v), kind, v))
+    values.sort()
+    names = ["other" if kind == "another term" else kind.split(" ", 1)[1].removesuffix(" term")
+             for _, kind, _ in values]
+    words = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+    by = " and ".join(f"{v:.4g}" for _, _, v in values)
+    terms = "term" if len(names) == 1 else "terms"
+    return (f"compared with {_row_words(label.partition(': ')[2])}, its {words} {terms} "
+            f"differ: on the motion, at the state below, by {by}")
 
 
 def _equation_name(d) -> str:
@@ -464,7 +501,16 @@ def _target_words(d, ctx) -> str:
     balance on m2 along y``, times a factor if the answer is scaled."""
     _, _, label = d.label.partition(": ")
     scale = "" if d.scale == 1 else f", times {display(d.scale, ctx.names)}"
-    return f"{label_words(label)}{scale}"
+    return f"{_row_words(label)}{scale}"
+
+
+def _row_words(label: str) -> str:
+    """A row's label in words; a combination the student made as ``a combination of the
+    theta equation and the phi equation``."""
+    if label.startswith("combination of "):
+        first, _, second = label[len("combination of "):].partition(" and ")
+        return f"a combination of {label_words(first)} and {label_words(second)}"
+    return label_words(label)
 
 
 # -- expressions --------------------------------------------------------------------------------
