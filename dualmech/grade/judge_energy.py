@@ -12,7 +12,7 @@ r"""Judging energies, Lagrangians and generalised forces against a problem's Lag
   ingredients: every drive, any dampers (or leave them to a dissipation function), any
   conservative loads (or leave them to ``V``); the verdict says which choice it matched.
 
-See :mod:`.energies` for how ingredients are sorted.
+See :mod:`dualmech.grade.energies` for how ingredients are sorted.
 """
 from __future__ import annotations
 

@@ -120,6 +120,12 @@ class NewtonEuler:
               \ /                                                        (angular_momentum)
                C ---> e           B: the mass centre, a fixed or a moving point
 
+    Declaring loads: :meth:`force`, :meth:`torque`, :meth:`gravity`, :meth:`linear_spring`,
+    :meth:`spring_between`, :meth:`linear_damper`, :meth:`torsional_spring`,
+    :meth:`torsional_damper`; reactions: :meth:`reaction` (a magnitude along a direction),
+    :meth:`reaction_vector` (components in a frame), :meth:`reaction_torque`.  Balances:
+    :meth:`linear_momentum`, :meth:`angular_momentum`, or :meth:`equation` given directly.
+
     Parameters
     ----------
     name : str
@@ -131,12 +137,6 @@ class NewtonEuler:
         The inertial frame (``Frame.ground()``); accelerations are taken in it.
     description : str
         One line shown beside the name.
-
-    Declaring loads: :meth:`force`, :meth:`torque`, :meth:`gravity`, :meth:`linear_spring`,
-    :meth:`spring_between`, :meth:`linear_damper`, :meth:`torsional_spring`,
-    :meth:`torsional_damper`; reactions: :meth:`reaction` (a magnitude along a direction),
-    :meth:`reaction_vector` (components in a frame), :meth:`reaction_torque`.  Balances:
-    :meth:`linear_momentum`, :meth:`angular_momentum`, or :meth:`equation` given directly.
 
     Examples
     --------

@@ -50,6 +50,12 @@ class Lagrangian:
     Terms keep their names (``"T of bob"``, ``"gravity"``), so a report can say which term of
     which energy differs from the direct form.
 
+    Energies: :meth:`kinetic` (or :meth:`kinetic_of` a body), :meth:`potential`,
+    :meth:`gravity`, :meth:`spring`; dissipation: :meth:`damper`, :meth:`dissipation`;
+    non-conservative loads: :meth:`generalized_force`, :meth:`force_at` and :meth:`torque_on`
+    (virtual work); constraints with multipliers: :meth:`constraint` (position level),
+    :meth:`velocity_constraint` (rolling); prescribed motion: :meth:`prescribe`.
+
     Parameters
     ----------
     name : str
@@ -58,12 +64,6 @@ class Lagrangian:
         The generalised coordinates, in the order of the rows.
     description : str
         One line shown beside the name.
-
-    Energies: :meth:`kinetic` (or :meth:`kinetic_of` a body), :meth:`potential`,
-    :meth:`gravity`, :meth:`spring`; dissipation: :meth:`damper`, :meth:`dissipation`;
-    non-conservative loads: :meth:`generalized_force`, :meth:`force_at` and :meth:`torque_on`
-    (virtual work); constraints with multipliers: :meth:`constraint` (position level),
-    :meth:`velocity_constraint` (rolling); prescribed motion: :meth:`prescribe`.
 
     Examples
     --------

@@ -2,7 +2,7 @@
 
 With two models a vote names nobody.  Below the vote (DESIGN.md, "Two models, and a
 referee"), :func:`diagnose` compares the direct form's declarations with each hand Lagrangian
-(:mod:`.energies`: ``T`` of each body, ``V`` and virtual work of each load, the work of each
+(:mod:`dualmech.verify.energies`: ``T`` of each body, ``V`` and virtual work of each load, the work of each
 reaction) and, where they agree, finds the balance of the direct form that does not follow
 from them (:mod:`.edits`).  Each statement says how sure it is: that a quantity differs
 between the two models is decided exactly; *which* of the two holds the slip, and that an

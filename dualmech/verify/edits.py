@@ -1,6 +1,6 @@
 """The smallest edit of one row of a derivation that makes it agree with another.
 
-When the direct form's declarations agree with the hand Lagrangian (:mod:`.energies`), a
+When the direct form's declarations agree with the hand Lagrangian (:mod:`dualmech.verify.energies`), a
 disagreement is in a balance of the direct form.  Each row is tried with the smallest edits a
 person makes -- one ingredient (a load, an inertia term) with its sign flipped or left out,
 or the row rewritten into a multiple of a row of the other model with a term or two
