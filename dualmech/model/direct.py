@@ -31,7 +31,6 @@ A mass on a spring, with the floor's normal force as an unknown reaction:
 """
 from __future__ import annotations
 
-import weakref
 from dataclasses import dataclass
 from typing import Sequence
 
@@ -41,7 +40,7 @@ from dualmech.model._algebra import merge_names, names_of, to_se
 from dualmech.model._expr import as_expr, refuse_jumps, refuse_text_in
 
 from dualmech.model.bodies import Particle, RigidBody
-from dualmech.model.declared import note
+from dualmech.model.declared import builder_of, note
 from dualmech.model.equations import EquationSet, ModelError, Rows
 from dualmech.model.kinematics import Frame, Point, Vector
 
@@ -92,17 +91,12 @@ class Declarations:
     reactions: tuple       # ReactionDeclaration, in the order of the unknowns
 
 
-#: EquationSet -> the Declarations of the builder that made it (kept while the set lives)
-_DECLARED: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
-
-
 def declarations_of(eqs) -> "Declarations | None":
     """The :class:`Declarations` behind an :class:`EquationSet` made by
-    :meth:`NewtonEuler.equations` (``None`` for any other set)."""
-    try:
-        return _DECLARED.get(eqs)
-    except TypeError:
-        return None
+    :meth:`NewtonEuler.equations` (``None`` for any other set; see
+    :mod:`dualmech.model.declared`)."""
+    builder = builder_of(eqs)
+    return builder.declarations() if isinstance(builder, NewtonEuler) else None
 
 
 @refuse_text_in
@@ -372,8 +366,7 @@ class NewtonEuler:
                           tuple(label for label, _ in self._equations),
                           Rows(contributions, names, self.coordinates, plain=False),
                           self.description)
-        note(self, out)   # the free-body diagrams, for an explanation that asks (declared.py)
-        _DECLARED[out] = self.declarations()
+        note(self, out)   # the free-body diagrams, for the referee and the diagnosis
         return out
 
     def declarations(self) -> Declarations:

@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from dualmech.exact.form import ExactForm, is_zero
-from dualmech.model.declared import recording
+from dualmech.model.declared import builder_of
 from dualmech.model.direct import NewtonEuler
 from dualmech.model.equations import from_plain, state_symbols, to_plain
 from dualmech.model.kinematics import t
@@ -97,20 +97,13 @@ class DeclarationCheck:
 
 
 def builders_of(problem) -> dict:
-    """``{model name: builder}`` of the models a problem builds with a
-    :class:`NewtonEuler` or a :class:`Lagrangian` (each model built once more, recorded)."""
-    out = {}
-    for name in problem.model_names:
-        try:
-            with recording() as seen:
-                eqs = getattr(problem, name)()
-        except Exception:  # noqa: BLE001 - a model that does not build is the verdict's business
-            continue
-        for builder, model in reversed(seen):
-            if model is eqs:
-                out[name] = builder
-                break
-    return out
+    """``{model name: builder}`` of the problem's models made by a :class:`NewtonEuler` or a
+    :class:`Lagrangian` (:func:`~dualmech.model.declared.builder_of`)."""
+    try:
+        models = problem.models()
+    except Exception:  # noqa: BLE001 - a model that does not build is the verdict's business
+        return {}
+    return {name: b for name, eqs in models.items() if (b := builder_of(eqs)) is not None}
 
 
 def virtual(q) -> sp.Symbol:
