@@ -1,12 +1,12 @@
-"""Every problem of the catalogue: derivations agree, dimensions hold, every mutant is caught,
-and its report is written in textbook notation."""
+"""Every problem of the catalogue: every mutant is caught, the property holds at random states,
+and its report is written in textbook notation (agreement, dimensions, reactions and printed
+answers: tests/test_catalogue_checks.py)."""
 import html
 import re
 
 import pytest
 from hypothesis import given, settings
 
-from dualmech.verify.check import compare
 from dualmech.verify.mutation import mutation_report
 from dualmech.testing import (assert_reactions_consistent, assert_same_motion, has_static_rows,
                               points)
@@ -19,48 +19,16 @@ NAMES = [p.name for p in PROBLEMS]
 
 
 @pytest.fixture(scope="module")
-def comparisons():
-    return {p.name: compare(p) for p in PROBLEMS}
+def comparisons(compared):
+    """The catalogue's comparisons, shared with tests/test_catalogue_checks.py (which checks
+    agreement, dimensions, reactions and printed answers for every problem)."""
+    return {name: compared(name) for name in NAMES}
 
 
 def test_catalogue_holds_the_four_named_problems():
     assert {"toy_car", "falling_container", "block_on_wedge", "pendulum_on_mass",
             "cart_pendulum"} <= set(NAMES)
     assert len(NAMES) == len(set(NAMES))
-
-
-@pytest.mark.parametrize("name", NAMES)
-def test_every_derivation_agrees_exactly(comparisons, name):
-    c = comparisons[name]
-    assert c.equivalent, str(c)
-    if all(p.method == "exact" for p in c.pairs):
-        assert c.bound < 1e-60
-    else:   # square roots (a linkage's geometry): the sound fallback decides, and says so
-        assert "exact" not in c.method
-
-
-@pytest.mark.parametrize("name", NAMES)
-def test_dimensions_of_every_derived_equation(comparisons, name):
-    assert comparisons[name].dimension_issues == []
-
-
-@pytest.mark.parametrize("name", NAMES)
-def test_every_reaction_is_derived_twice_and_compared(comparisons, name):
-    # each declared reaction is an unknown of two derivations at least, so a wrong term in
-    # one of them is a disagreement, never a lonely value
-    c = comparisons[name]
-    assert c.not_cross_checked == [], str(c)
-    compared = {r for p in c.pairs if p.kind == "reactions" for r in p.reactions}
-    assert compared == {r.name for r in c.problem.reactions}
-
-
-@pytest.mark.parametrize("name", NAMES)
-def test_every_problem_has_published_answers_checked(comparisons, name):
-    problem = comparisons[name].problem
-    verdicts = comparisons[name].published
-    if getattr(problem, "parametric", "") and not problem.published():
-        pytest.skip("a parametric problem of dualmech's own: no source prints its answers")
-    assert verdicts and {v.verdict for v in verdicts} <= {"correct", "wrong"}
 
 
 @pytest.mark.slow
