@@ -72,7 +72,7 @@ def register(subparsers) -> None:
     p.add_argument("--samples", metavar="K", type=_samples, default=None,
                    help="also give the state at K evenly spaced times (2 to 100000)")
     p.add_argument("--n", metavar="N", type=int, default=None,
-                   help="size of a parametric problem (e.g. n_link_pendulum --n 3)")
+                   help="size of a parametric problem (one that declares `parametric`), e.g. --n 3")
     p.add_argument("--json", action="store_true",
                    help="print JSON: name, parameters, coordinates, initial_state, "
                         "final_state, t_final, method, cpu_seconds, steps, rhs_evaluations, "

@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import ctypes
 import time as _time
+from dataclasses import replace
 from typing import Sequence
 
 import numpy as np
@@ -129,8 +130,8 @@ def integrate(model: NumericModel, t_span: Sequence[float], y0, *, t_eval=None,
             return _cvode(model, t0, t1, y0, t_eval, rtol, atol, CVODE_METHODS[0], events)
         except CvodeUnavailable as exc:
             run = _scipy(model, t0, t1, y0, t_eval, rtol, atol, FALLBACK, events)
-            run.message = f"fallback: {exc}; used scipy {FALLBACK} instead. " + run.message
-            return run
+            return replace(run, message=f"fallback: {exc}; used scipy {FALLBACK} instead. "
+                           + run.message)
     if method in CVODE_METHODS:
         return _cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events)
     return _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events)
@@ -161,9 +162,10 @@ def _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
     if sol.status == 1:  # a terminal event: the singular set
         hit = next(i for i, ts in enumerate(sol.t_events) if len(ts))
         raise events.error(float(sol.t_events[hit][0]), sol.y_events[hit][0])
-    return Run(method, sol.t, sol.y, sol.status >= 0, sol.message, cpu, int(sol.nfev),
-               int(sol.nfev), max(len(sol.t) - 1, 0), int(sol.njev), int(sol.nlu),
-               float(sol.t[-1]) if sol.t.size else t0)
+    return Run(method=method, t=sol.t, y=sol.y, success=sol.status >= 0, message=sol.message,
+               cpu=cpu, calls=int(sol.nfev), evaluations=int(sol.nfev),
+               steps=max(len(sol.t) - 1, 0), jacobians=int(sol.njev),
+               factorisations=int(sol.nlu), t_end=float(sol.t[-1]) if sol.t.size else t0)
 
 
 def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
@@ -219,6 +221,7 @@ def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
     y = np.concatenate([np.tile(y0, (int(first.sum()), 1)), yout[:done]]).T
     message = "the end of the span was reached" if flag == 0 else \
         f"CVODE stopped at t={reached.value:.9g}: {msg.value.decode()}"
-    return Run(method, t_eval[: y.shape[1]].copy(), y, flag == 0, message, cpu,
-               int(stats[2]), int(stats[2]), int(stats[1]), int(stats[5]), int(stats[4]),
-               reached.value if tout.size else t0)
+    return Run(method=method, t=t_eval[: y.shape[1]].copy(), y=y, success=flag == 0,
+               message=message, cpu=cpu, calls=int(stats[2]), evaluations=int(stats[2]),
+               steps=int(stats[1]), jacobians=int(stats[5]), factorisations=int(stats[4]),
+               t_end=reached.value if tout.size else t0)
