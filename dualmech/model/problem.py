@@ -47,7 +47,18 @@ class ProblemError(ModelError):
 
 @dataclass(frozen=True)
 class Parameter:
-    """A constant of the problem: symbol, dimension, default value and admissible range."""
+    """A constant of the problem: symbol, dimension, default value and admissible range.
+
+    The exact test samples inside ``range``; a simulation refuses values outside it.
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> from dualmech import LENGTH, Parameter
+    >>> l = sp.Symbol("l", positive=True)
+    >>> Parameter(l, LENGTH, 0.5, (0.1, 3.0), "length of the rod").range
+    (0.1, 3.0)
+    """
 
     symbol: sp.Symbol
     dimension: Dimension
@@ -73,7 +84,18 @@ class Parameter:
 
 @dataclass(frozen=True)
 class Coordinate:
-    """A generalised coordinate ``q(t)`` with its dimension and the ranges of ``q`` and ``q'``."""
+    """A generalised coordinate ``q(t)`` with its dimension and the ranges of ``q`` and ``q'``.
+
+    The ranges bound the sampled states (and the default initial state); ``domain`` is the
+    interval over which identities that leave the rational world are decided.
+
+    Examples
+    --------
+    >>> from dualmech import ANGLE, Coordinate, coordinate
+    >>> c = Coordinate(coordinate("theta"), ANGLE, (-2.5, 2.5), (-4.0, 4.0), "from the vertical")
+    >>> c.name, c.rate_range
+    ('theta', (-4.0, 4.0))
+    """
 
     function: sp.Expr
     dimension: Dimension
@@ -104,7 +126,16 @@ class Coordinate:
 
 @dataclass(frozen=True)
 class Reaction:
-    """An unknown reaction (or multiplier) named as in the direct model, with its meaning."""
+    """An unknown reaction (or multiplier) named as in the direct model, with its meaning.
+
+    ``direction`` says in words which way a positive value acts and on what.
+
+    Examples
+    --------
+    >>> from dualmech import FORCE, Reaction
+    >>> Reaction("T", FORCE, "rod on bob, towards the pivot").name
+    'T'
+    """
 
     name: str
     dimension: Dimension

@@ -103,6 +103,15 @@ class Comparison:
     read (empty when past the display budget -- ``display_notes`` says why).
     ``dimension_audit`` holds the dimension audit's sentences with their terms as expressions
     (``dimension_issues`` is the same as plain text).  ``str()`` is :meth:`text` with dots.
+
+    Examples
+    --------
+    >>> from dualmech import compare, get
+    >>> c = compare(get("simple_pendulum"))
+    >>> c.equivalent, sorted(c.reactions)
+    (True, ['T'])
+    >>> c.to_dict()["reactions"]["T"]
+    "M*(a*theta'**2 + g*cos(theta))"
     """
 
     def __init__(self, problem, judgement: Judgement, pairs, published, dimension_issues,
