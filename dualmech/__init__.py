@@ -35,7 +35,7 @@ _HOME = {
     # the facts its equations do not carry (probe runs, a stiff scene, a fidelity ladder)
     "model.problem": ("Problem", "Parameter", "Coordinate", "Reaction", "Published",
                       "ProblemError"),
-    "model.facts": ("Probe", "StiffScene", "FidelityRung"),
+    "model.facts": ("Probe", "StiffScene", "FidelityRung", "SteadyMotion"),
     "model.dimensions": ("Dimension", "DIMENSIONLESS", "MASS", "LENGTH", "TIME", "ANGLE",
                          "FORCE", "TORQUE", "ENERGY", "VELOCITY", "ACCELERATION", "STIFFNESS",
                          "DAMPING", "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA",
