@@ -253,7 +253,7 @@ def _critical(spec: _Spectrum, values, nontrivial, stable) -> list[Critical]:
         crossed = False
         if coef[i] == 0 or coef[i] * coef[i + 1] < 0:
             before = i - 1 if coef[i] == 0 and i > 0 else i   # a zero on a sweep value
-            root = a if coef[i] == 0 else brentq(spec.coefficient, a, b, xtol=1e-14, rtol=4e-16)
+            root = a if coef[i] == 0 else brentq(spec.coefficient, a, b, xtol=1e-14, rtol=1e-15)
             eb4 = nontrivial[before]
             drop = _real_count(eb4) - _real_count(eb)
             kind = ("a real pair meets at zero and becomes imaginary" if drop == 2 else
