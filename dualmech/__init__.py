@@ -31,6 +31,7 @@ _HOME = {
     "model.direct": ("NewtonEuler",),
     "model.lagrange": ("Lagrangian",),
     "model.equations": ("EquationSet", "ModelError"),
+    "model.stability": ("linearize_about",),
     # declaring a problem: its parameters, coordinates, reactions and printed answers, and
     # the facts its equations do not carry (probe runs, a stiff scene, a fidelity ladder)
     "model.problem": ("Problem", "Parameter", "Coordinate", "Reaction", "Published",

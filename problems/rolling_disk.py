@@ -91,16 +91,18 @@ from types import SimpleNamespace
 import sympy as sp
 
 from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter,
-                      Point, Problem, Reaction, RigidBody, SteadyMotion, coordinate, rate,
-                      rot_x, rot_y, rot_z, t, ACCELERATION, ANGLE, FORCE, LENGTH, MASS)
+                      Point, Problem, Published, Reaction, RigidBody, SteadyMotion, coordinate,
+                      linearize_about, rate, rot_x, rot_y, rot_z, t, ACCELERATION, ANGLE, FORCE,
+                      LENGTH, MASS)
 
-__all__ = ["RollingDisk", "PROBLEMS", "m", "r", "g", "v", "psi", "theta", "phi", "x", "y",
+__all__ = ["RollingDisk", "PROBLEMS", "m", "r", "g", "v", "psi", "theta", "phi", "x", "y", "h",
            "critical_speed", "lean_eigenvalue_squared"]
 
 m, r, g = sp.symbols("m r g", positive=True)
 v = sp.Symbol("v", real=True)   # forward speed of the steady motion (not a model parameter)
 psi, theta, phi = coordinate("psi"), coordinate("theta"), coordinate("phi")
 x, y = coordinate("x"), coordinate("y")
+h = coordinate("h")   # rise of the disk off the plane, multiplier model only
 COORDS = [psi, theta, phi, x, y]
 
 
@@ -155,6 +157,10 @@ class RollingDisk(Problem):
         Coordinate(x, LENGTH, (-2.0, 2.0), (-5.0, 5.0), "contact point, O.x"),
         Coordinate(y, LENGTH, (-2.0, 2.0), (-5.0, 5.0), "contact point, O.y"),
     )
+    extra_coordinates = (
+        Coordinate(h, LENGTH, (-0.1, 0.1), (-1.0, 1.0), "rise off the plane (multiplier model)"),
+    )
+    extra_models = ("multiplier",)
     reactions = (
         Reaction("F_x", FORCE, "plane on disk at the contact point, along O.x"),
         Reaction("F_y", FORCE, "plane on disk at the contact point, along O.y"),
@@ -195,6 +201,46 @@ class RollingDisk(Problem):
         lg.velocity_constraint("F_x", [0, 0, -r * c(psi), 1, 0])
         lg.velocity_constraint("F_y", [0, 0, -r * s(psi), 0, 1])
         return lg.equations()
+
+    def multiplier(self) -> EquationSet:
+        """The disk freed to rise by ``h`` off the plane, closed by ``h = 0`` (multiplier
+        ``F_z``: the normal force does the virtual work ``F_z dh``)."""
+        s, c = sp.sin, sp.cos
+        G = sp.Matrix([x + r * s(theta) * s(psi), y - r * s(theta) * c(psi), h + r * c(theta)])
+        vG = G.diff(t)
+        A, C = m * r**2 / 4, m * r**2 / 2
+        coords = COORDS + [h]
+        lg = Lagrangian("multiplier", coordinates=coords,
+                        description="the disk freed off the plane; contact by three multipliers")
+        lg.kinetic("T of G", m * (vG.T * vG)[0, 0] / 2)
+        lg.kinetic("T about G", (A * rate(theta)**2 + C * (rate(phi) + rate(psi) * s(theta))**2
+                                 + A * rate(psi)**2 * c(theta)**2) / 2)
+        lg.potential("gravity", m * g * (h + r * c(theta)))
+        lg.velocity_constraint("F_x", [0, 0, -r * c(psi), 1, 0, 0])
+        lg.velocity_constraint("F_y", [0, 0, -r * s(psi), 0, 1, 0])
+        lg.constraint("F_z", h)
+        return lg.equations()
+
+    def coordinate_maps(self) -> dict:
+        return {"multiplier": {**{q: q for q in COORDS}, h: 0}}
+
+    def published(self) -> list[Published]:
+        s, c = sp.sin, sp.cos
+        where = "classic rolling disk (Greenwood, Advanced Dynamics); derived by hand above"
+        lin = linearize_about(self.model("lagrange"), self.steady_motion.about, parameter=v)
+        lam = sp.Symbol("lambda")
+        coeffs = sp.Poly(lin.symbolic.charpoly(lam).as_expr(), lam).all_coeffs()
+        if coeffs[3:] != [0, 0, 0] or coeffs[1] != 0:   # expected: lambda^3 (lambda^2 - k)
+            raise ValueError(f"the upright disk's characteristic polynomial is {coeffs}.")
+        spin = {v: r * rate(phi)}   # on the steady motion v = r phi'
+        return [
+            Published("rolling rows", "expression",
+                      (rate(x) - r * rate(phi) * c(psi), rate(y) - r * rate(phi) * s(psi)),
+                      tuple(_rolling_rows(scene())), where=where),
+            Published("lean eigenvalues squared on upright rolling", "expression",
+                      (lean_eigenvalue_squared().subs(spin),),
+                      (-sp.cancel(coeffs[2] / coeffs[0]).subs(spin),), where=where),
+        ]
 
 
 PROBLEMS = (RollingDisk,)
