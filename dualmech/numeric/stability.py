@@ -24,7 +24,7 @@ Example
 -------
 >>> from dualmech.problems import get
 >>> study = stability(get("pendulum_particle"))
->>> study.derivations["agree"], [round(abs(e), 6) for e in study.eigenvalues[0]]
+>>> study.derivations["agree"], [round(float(abs(e)), 6) for e in study.eigenvalues[0]]
 (True, [3.132092, 3.132092])
 """
 from __future__ import annotations
