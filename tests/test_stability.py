@@ -110,6 +110,12 @@ def test_not_a_steady_motion_is_refused(disk):
         linearize_about(disk.model("lagrange"), leaning, disk.defaults(), parameter=rd.v)
 
 
+def test_a_moving_coordinate_the_equations_depend_on_is_refused(pendulum):
+    """theta'' = 0 at theta = 0 for any theta', but theta' != 0 carries the pendulum away."""
+    with pytest.raises(ModelError, match="theta move"):
+        linearize_about(pendulum.model("lagrange"), {rate(pp.theta): 1}, pendulum.defaults())
+
+
 def test_a_state_breaking_the_rolling_constraint_is_refused(disk):
     with pytest.raises(ModelError, match="breaks the constraint"):
         linearize_about(disk.model("newton_euler"), {rate(rd.phi): rd.v / rd.r},

@@ -113,7 +113,8 @@ class SteadyLinearisation:
 
 def linearize_about(eqs: EquationSet, about: Mapping, values: Mapping | None = None,
                     parameter: sp.Symbol | None = None,
-                    independent: Sequence[str] | None = None) -> SteadyLinearisation:
+                    independent: Sequence[str] | None = None,
+                    generic=None) -> SteadyLinearisation:
     """Linearise ``eqs`` about the steady motion ``about``; see the module docstring.
 
     Parameters
@@ -130,6 +131,10 @@ def linearize_about(eqs: EquationSet, about: Mapping, values: Mapping | None = N
     independent : sequence of str, optional
         Names of the independent coordinates and speeds (``"theta"``, ``"theta'"``) when
         there are constraints; the others are dependent.
+    generic : number, optional
+        A value of ``parameter`` inside its range of interest (default ``7/3``): the
+        dependent states are chosen there, and the steady motion and the constraints are
+        checked there and at ``generic + 2/7``.
     """
     if not eqs.is_square:
         raise ModelError(f"model `{eqs.name}` has {len(eqs.equations)} equations for {eqs.n} "
@@ -150,19 +155,30 @@ def linearize_about(eqs: EquationSet, about: Mapping, values: Mapping | None = N
     # cyclic: the coordinate enters neither the linearised equations nor the constraints
     dropped = [k for k in range(n) if all(is_zero_expression(sp.expand(e)) for e in R[:, k])
                and all(is_zero_expression(row[k]) for row in phi)]
+    moving = [states[k].name for k in range(n) if k not in dropped
+              and not is_zero_expression(sp.sympify(x0[qds[k]]))]
+    if moving:
+        raise ModelError(f"the state {_show(x0)} is not a steady motion of `{eqs.name}`: "
+                         f"{', '.join(moving)} move(s), and the equations depend on them, so "
+                         "the accelerations do not stay zero; only coordinates nothing depends "
+                         "on (cyclic ones) may move on a steady motion.")
     keep = [k for k in range(n) if k not in dropped] + [n + k for k in range(n)]
     names = [s.name for s in states] + [f"{s.name}'" for s in states]
-    generic = {parameter: sp.Rational(7, 3)} if parameter is not None else {}
+    at = exact_number(generic) if generic is not None else sp.Rational(7, 3)
+    checks = [{parameter: at}, {parameter: at + sp.Rational(2, 7)}] if parameter is not None \
+        else [{}]
+    generic = checks[0]
     dep = _dependent(phi, kinds, keep, n, names, independent, generic, eqs.name)
     parts = (A0, b0, R, w, phi, keep, dep, n, eqs.name, [lab for lab, _, _ in cons])
-    _check_steady(parts, x0, eqs, generic)
-    for label, a, _ in cons:
-        c0 = sp.cancel(sum(sp.sympify(aj).subs(x0) * x0[qd] for aj, qd in zip(a, qds))
-                       .subs(generic))
-        if not is_zero_expression(c0):
-            raise ModelError(f"the state {_show(x0)} breaks the constraint [{label}] of "
-                             f"`{eqs.name}` (its velocity level is {c0}, not 0); give rates "
-                             "that satisfy it.")
+    for value in checks:
+        _check_steady(parts, x0, eqs, value)
+        for label, a, _ in cons:
+            c0 = sp.cancel(sum(sp.sympify(aj).subs(x0) * x0[qd] for aj, qd in zip(a, qds))
+                           .subs(value))
+            if not is_zero_expression(c0):
+                raise ModelError(f"the state {_show(x0)} breaks the constraint [{label}] of "
+                                 f"`{eqs.name}` (its velocity level is {c0}, not 0); give "
+                                 "rates that satisfy it.")
     symbolic = None
     if parameter is None or A.rows <= SYMBOLIC_SIZE:
         symbolic = _reduce(parts, {})

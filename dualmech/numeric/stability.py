@@ -313,7 +313,7 @@ def stability(problem, about: Mapping | None = None, parameter: str | None = Non
     for name, eqs in problem.models().items():
         try:
             lins[name] = linearize_about(eqs, _about_in(problem, eqs, about), defaults, symbol,
-                                         independent if name == main else None)
+                                         independent if name == main else None, generic)
         except ModelError as exc:
             if name == main:
                 raise
