@@ -17,7 +17,7 @@ Sign convention and coordinates (Euler angles heading, lean, spin; contact point
              Z                                   O  = ground, Z up, gravity -g Z
              |        G                          H  = O.child(rot_z(psi))     heading
              |       /|\    B.z (P to G)         B  = H.child(rot_x(theta))   lean about H.x
-             |      / | \                        D  = B.child(rot_y(phi))     spin about the axle B.y
+             |      / | \                        D  = B.child(rot_y(phi))     spin about the axle
              |     |  o--|--> B.y (axle)         P  = x O.x + y O.y           the contact point
              |      \ | /                        G  = P + r B.z
              |       \|/                         rolling forward: H.x = B.x, the disk's own
@@ -158,7 +158,8 @@ class RollingDisk(Problem):
         Coordinate(y, LENGTH, (-2.0, 2.0), (-5.0, 5.0), "contact point, O.y"),
     )
     extra_coordinates = (
-        Coordinate(h, LENGTH, (-0.1, 0.1), (-1.0, 1.0), "rise off the plane (multiplier model)"),
+        Coordinate(h, LENGTH, (-0.1, 0.1), (-1.0, 1.0),
+                   "rise off the plane (multiplier model)"),
     )
     extra_models = ("multiplier",)
     reactions = (
@@ -171,7 +172,7 @@ class RollingDisk(Problem):
                                  "upright rolling straight along O.x at speed v")
 
     def newton_euler(self) -> EquationSet:
-        """``sum F = m a_G``, ``sum tau_G = dH_G/dt`` and the rolling rows, contact force unknown."""
+        """``sum F = m a_G``, ``sum tau_G = dH_G/dt``, the rolling rows; contact force unknown."""
         s = scene()
         ne = NewtonEuler("newton_euler", coordinates=COORDS, ground=s.O,
                          description="the disk's free-body diagram, contact force unknown")

@@ -24,10 +24,10 @@ Example
 -------
 >>> parse_about("theta=0.1, theta_dot=-2e-1")
 {'theta': 0.1, 'theta_dot': -0.2}
->>> parse_about("theta=__import__('os')")
+>>> parse_about("theta=__import__('os')")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-dualmech.cli.errors.UsageError: `--about`: "__import__('os')" is not a number (theta=...); write name=number pairs separated by commas, e.g. 'theta=0.1, theta_dot=2'.
+dualmech.cli.errors.UsageError: `--about`: "__import__('os')" is not a number (theta=...); ...
 """
 from __future__ import annotations
 

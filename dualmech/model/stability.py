@@ -40,11 +40,11 @@ Matrix([
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Mapping, Sequence
+from collections.abc import Mapping, Sequence
 
 import sympy as sp
 
-from dualmech.model.equations import EquationSet, ModelError, is_zero_expression, state_symbols
+from dualmech.model.equations import EquationSet, ModelError, is_zero_expression
 
 __all__ = ["SteadyLinearisation", "linearize_about", "exact_number"]
 
@@ -279,7 +279,7 @@ def _dependent(phi, kinds, keep, n, names, independent, generic, model) -> list:
 
 
 def _solve(parts, value: dict):
-    A0, b0, R, w, phi, keep, dep, n, name, _ = parts
+    A0, b0, name = parts[0], parts[1], parts[8]
     A0v = A0.subs(value)
     if is_zero_expression(sp.cancel(A0v.det())):
         raise ModelError(f"model `{name}`: the matrix of [q''; reactions] is singular at the "
@@ -300,7 +300,7 @@ def _check_steady(parts, x0, eqs, generic) -> None:
 
 def _reduce(parts, value: dict) -> sp.Matrix:
     """The reduced state matrix at ``value`` (``{}``: symbolic in the parameter)."""
-    A0, b0, R, w, phi, keep, dep, n, name, _ = parts
+    _, _, R, w, phi, keep, dep, n, _, _ = parts
     A0v, z0 = _solve(parts, value)
     Rv = R.subs(value).subs(dict(zip(w, z0)))
     dqdd = (-A0v.LUsolve(Rv, iszerofunc=is_zero_expression))[:n, :]

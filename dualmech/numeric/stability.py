@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Mapping
+from collections.abc import Mapping
 
 import numpy as np
 import sympy as sp
@@ -264,9 +264,11 @@ def _critical(spec: _Spectrum, values, nontrivial, stable) -> list[Critical]:
         ha, hb = _hopf(ea), _hopf(eb)
         if ha is not None and hb is not None and (ha - _tol(ea)) * (hb - _tol(eb)) < 0 \
                 and abs(ha) > _tol(ea) and abs(hb) > _tol(eb):
-            f = lambda v: _hopf(spec.nontrivial(v)) or 0.0  # noqa: E731
+            def f(v):
+                return _hopf(spec.nontrivial(v)) or 0.0
             out.append(Critical(float(brentq(f, a, b, xtol=1e-14)),
-                                "real part crosses zero (a complex pair)", stable[i], stable[i + 1]))
+                                "real part crosses zero (a complex pair)", stable[i],
+                                stable[i + 1]))
         elif not crossed and _complex_count(ea) != _complex_count(eb):
             lo, hi, ca = a, b, _complex_count(ea)
             for _ in range(60):
@@ -338,7 +340,7 @@ def _compare(specs: dict, main: str, values, failed: dict, p) -> dict:
     for v in at:
         ref = _sorted(specs[main].nontrivial(v))
         scale = max(scale, float(np.max(np.abs(ref))) if len(ref) else 1.0)
-        for name, spec in specs.items():
+        for spec in specs.values():
             other = _sorted(spec.nontrivial(v))
             worst = max(worst, float(np.max(np.abs(other - ref))) if len(other) == len(ref)
                         else math.inf)
