@@ -132,3 +132,18 @@ def test_independent_speeds_named_by_the_user(disk):
     with pytest.raises(ModelError, match="cannot be solved"):
         linearize_about(disk.model("lagrange"), disk.steady_motion.about, disk.defaults(),
                         parameter=rd.v, independent=["psi", "theta", "phi'", "x'", "y'"])
+
+
+def test_damping_sweep_finds_the_hopf_crossing_and_critical_damping():
+    """``m x'' + b x' + k x = 0`` (by hand: ``lambda = (-b +- sqrt(b^2 - 4 m k)) / (2 m)``): the
+    complex pair crosses the imaginary axis at ``b = 0`` and becomes real at ``b = 2 sqrt(m k)``
+    (= 20 for m = 2, k = 50); the grid holds neither value."""
+    study = stability(get("spring_mass_damper"), {}, "b", (-7, 27, 18), params={"F0": 0})
+    hopf, real = study.critical
+    assert hopf.kind == "real part crosses zero (a complex pair)" and abs(hopf.value) < 1e-9
+    assert (hopf.stable_below, hopf.stable_above) == (False, True)
+    assert real.kind == "a pair becomes real" and abs(real.value - 20) < 1e-6
+    assert (real.stable_below, real.stable_above) == (True, True)
+    for b, eig in zip(study.values, study.eigenvalues):
+        want = np.roots([2, b, 50])
+        assert np.allclose(np.sort_complex(eig), np.sort_complex(want), atol=1e-12)
