@@ -133,3 +133,10 @@ def test_teachers_file_with_a_declared_steady_motion(capsys, tmp_path):
         assert imag == pytest.approx([omega, omega], rel=1e-12)
         assert all(abs(re) < 1e-9 for re, _ in eig)
     assert data["critical"] == [] and all(data["stable"])
+
+
+def test_an_about_that_is_not_a_steady_motion_is_the_users_mistake(capsys):
+    status, out, err = run(capsys, "stability", "pendulum_particle", "--about", "theta=0.5")
+    assert status == 2 and out == ""
+    assert "`--about`: the state {theta = 1/2} is not a steady motion" in err
+    assert "theta(t), (t, 2)) = -981*sin(1/2)/100" in err   # -g sin(theta) / l, l = 1

@@ -147,3 +147,16 @@ def test_damping_sweep_finds_the_hopf_crossing_and_critical_damping():
     for b, eig in zip(study.values, study.eigenvalues):
         want = np.roots([2, b, 50])
         assert np.allclose(np.sort_complex(eig), np.sort_complex(want), atol=1e-12)
+
+
+def test_steady_motion_declaration_is_checked(disk):
+    from dualmech import ProblemError, SteadyMotion
+    with pytest.raises(ValueError, match="needs `parameter`"):
+        SteadyMotion({}, "", (0, 1, 5))
+    with pytest.raises(ValueError, match="count must be a whole number >= 2"):
+        SteadyMotion({}, "v", (0, 1, 1))
+
+    class Typo(type(disk)):
+        steady_motion = SteadyMotion({rate(rd.h): 1}, "v", (0, 1, 3))
+    with pytest.raises(ProblemError, match="not a coordinate of the reference model"):
+        Typo().validate()

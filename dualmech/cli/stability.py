@@ -14,7 +14,11 @@ problem or a symbol of the declared steady motion.  Printed: the state matrix, t
 eigenvalues at each swept value, the critical values and whether the derivations' eigenvalues
 agree; with ``--out DIR`` also a root-locus chart ``DIR/NAME_root_locus.png``.
 
-``--about`` is read by a strict ``name=number`` grammar: nothing in it is evaluated.
+``--about`` is read by a strict ``name=number`` grammar: nothing in it is evaluated.  The
+steady motion is checked exactly (the accelerations must vanish there, and only coordinates
+nothing depends on may move), so a steady motion whose rates are not decimal numbers -- a
+top's steady precession -- is declared on the problem with exact expressions
+(``steady_motion = SteadyMotion(...)``) rather than typed.
 
 Exit status (:mod:`dualmech.cli.errors`): 0 done and the derivations agree, 1 they disagree,
 2 a usage error (a malformed ``--about`` or ``--sweep``) or a model that cannot be linearised
@@ -143,6 +147,9 @@ def _stability(args) -> int:
             parameter, sweep = (args.sweep[0], args.sweep[1:]) if args.sweep else (None, None)
             study = stability(problem, steady, parameter, sweep, args.model)
         except ValueError as exc:
+            steady_error = "not a steady motion" in str(exc) or "breaks the constraint" in str(exc)
+            if numbers is not None and steady_error:   # the user's --about, not the problem
+                raise UsageError(f"`--about`: {exc}") from None
             if type(exc).__name__ in ("ModelError", "ProblemError"):
                 raise
             raise UsageError(str(exc)) from None
