@@ -160,3 +160,11 @@ def test_steady_motion_declaration_is_checked(disk):
         steady_motion = SteadyMotion({rate(rd.h): 1}, "v", (0, 1, 3))
     with pytest.raises(ProblemError, match="not a coordinate of the reference model"):
         Typo().validate()
+
+
+def test_big_reduced_states_use_numbers_and_find_the_same_critical_speed(disk, monkeypatch):
+    from dualmech.numeric import stability as numeric_stability
+    monkeypatch.setattr(numeric_stability, "EXACT_SIZE", 1)
+    study = stability(disk, params={"g": 9.81, "r": 0.25}, sweep=(0.3, 1.7, 29))
+    (crit,) = study.critical
+    assert abs(crit.value - math.sqrt(9.81 * 0.25 / 3)) < 1e-6 and study.trivial_zeros == 3

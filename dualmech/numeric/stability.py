@@ -17,7 +17,8 @@ eigenvalues (NumPy) at each swept value and finds the critical values:
 
 Eigenvalues that vanish at every value of the parameter (a heading nothing depends on, a
 neighbouring steady motion, a conserved quantity) are counted once, exactly, from the
-characteristic polynomial at a generic rational value, and left out of the verdicts.  The
+characteristic polynomial at a generic rational value (past :data:`EXACT_SIZE` states,
+numerically), and left out of the verdicts.  The
 derivations' eigenvalues are compared at the start, middle and end of the sweep.
 
 Example
@@ -182,12 +183,25 @@ def _parameter(problem, name: str | None, about: dict):
 
 
 # -- eigenvalues --------------------------------------------------------------------------
+#: largest reduced state whose characteristic polynomial is formed exactly
+EXACT_SIZE = 10
+
+
 class _Spectrum:
     """Eigenvalues of one linearisation, with the structural zeros counted exactly."""
 
     def __init__(self, lin: SteadyLinearisation, generic):
         self.lin = lin
         lam = sp.Symbol("lambda")
+        size = len(lin.states)
+        self.exact = size <= EXACT_SIZE
+        if not self.exact:   # too big for an exact characteristic polynomial: numbers
+            self._matrix = (sp.lambdify([lin.parameter], lin.symbolic, "numpy")
+                            if lin.symbolic is not None and lin.parameter is not None else None)
+            eig = self.all(generic)
+            self.zeros = int(np.sum(np.abs(eig) <= 1e-9 * max(1.0, float(np.max(np.abs(eig))))))
+            self._coefficient = lambda v: float(np.real(np.prod(self.nontrivial(v))))
+            return
         if lin.symbolic is not None and lin.parameter is not None:
             self._matrix = sp.lambdify([lin.parameter], lin.symbolic, "numpy")
             poly = sp.Poly(lin.symbolic.charpoly(lam).as_expr(), lam)
@@ -204,6 +218,8 @@ class _Spectrum:
             self._coefficient = None
 
     def matrix(self, value) -> np.ndarray:
+        if self.lin.parameter is None:
+            return np.array(self.lin.at().evalf(30), dtype=float)
         if self._matrix is not None:
             return np.array(self._matrix(value), dtype=float)
         return np.array(self.lin.at(value).evalf(30), dtype=float)
@@ -216,7 +232,8 @@ class _Spectrum:
         return eig[np.argsort(np.abs(eig))][self.zeros:]
 
     def coefficient(self, value) -> float:
-        """The lowest nonzero coefficient of the characteristic polynomial at ``value``."""
+        """The lowest nonzero coefficient of the characteristic polynomial at ``value`` (past
+        :data:`EXACT_SIZE`, the product of the nonzero eigenvalues: the same sign)."""
         if self._coefficient is not None:
             return float(self._coefficient(value))
         lam = sp.Symbol("lambda")
