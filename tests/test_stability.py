@@ -168,3 +168,15 @@ def test_big_reduced_states_use_numbers_and_find_the_same_critical_speed(disk, m
     study = stability(disk, params={"g": 9.81, "r": 0.25}, sweep=(0.3, 1.7, 29))
     (crit,) = study.critical
     assert abs(crit.value - math.sqrt(9.81 * 0.25 / 3)) < 1e-6 and study.trivial_zeros == 3
+
+
+def test_time_in_form_only_is_cancelled_and_a_real_drive_is_refused():
+    """The bead's multiplier model holds ``sin(w t)^2 + cos(w t)^2`` (its rotating frame):
+    linearised, it is the other models' ``theta'' = (w^2 - g/R) theta`` at the bottom; the
+    Kapitza pendulum's pivot drive is refused (no steady motion), not linearised at a time."""
+    hoop = stability(get("bead_on_hoop"))
+    assert hoop.derivations["agree"] is True and "multiplier" in hoop.derivations["models"]
+    assert np.allclose(np.sort(hoop.eigenvalues[0].real),
+                       [-math.sqrt(36 - 9.81 / 0.5), math.sqrt(36 - 9.81 / 0.5)])
+    with pytest.raises(ModelError, match="depends on time explicitly"):
+        stability(get("kapitza_pendulum"))

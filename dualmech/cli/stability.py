@@ -150,6 +150,11 @@ def _stability(args) -> int:
             steady_error = "not a steady motion" in str(exc) or "breaks the constraint" in str(exc)
             if numbers is not None and steady_error:   # the user's --about, not the problem
                 raise UsageError(f"`--about`: {exc}") from None
+            if steady_error and getattr(problem, "steady_motion", None) is None:
+                raise UsageError(f"`{problem.name}` declares no steady motion, and the state "
+                                 f"at rest with every coordinate zero is not one: {exc}  Give "
+                                 "--about, or declare steady_motion = SteadyMotion(...) on the "
+                                 "problem.") from None
             if type(exc).__name__ in ("ModelError", "ProblemError"):
                 raise
             raise UsageError(str(exc)) from None

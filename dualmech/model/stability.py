@@ -45,6 +45,7 @@ from collections.abc import Mapping, Sequence
 import sympy as sp
 
 from dualmech.model.equations import EquationSet, ModelError, is_zero_expression
+from dualmech.model.kinematics import t
 
 __all__ = ["SteadyLinearisation", "linearize_about", "exact_number"]
 
@@ -292,6 +293,12 @@ def _check_steady(parts, x0, eqs, generic) -> None:
     _, z0 = _solve(parts, generic)
     moving = [(s.function.diff(s.function.args[0], 2), sp.cancel(z)) for s, z in
               zip(eqs.states, z0[: eqs.n]) if not is_zero_expression(sp.cancel(z))]
+    if any(v.has(t) for _, v in moving):
+        raise ModelError(f"model `{eqs.name}` is driven: its accelerations depend on time "
+                         "explicitly there (" + ", ".join(f"{a} = {v}" for a, v in moving)
+                         + "), so it has no steady motion to linearise about (a periodic "
+                         "drive's stability is Floquet's question: `dualmech atlas NAME "
+                         "--section floquet`).")
     if moving:
         raise ModelError(f"the state {_show(x0)} is not a steady motion of `{eqs.name}`: there "
                          + ", ".join(f"{a} = {v}" for a, v in moving)
@@ -300,7 +307,7 @@ def _check_steady(parts, x0, eqs, generic) -> None:
 
 def _reduce(parts, value: dict) -> sp.Matrix:
     """The reduced state matrix at ``value`` (``{}``: symbolic in the parameter)."""
-    _, _, R, w, phi, keep, dep, n, _, _ = parts
+    _, _, R, w, phi, keep, dep, n, name, _ = parts
     A0v, z0 = _solve(parts, value)
     Rv = R.subs(value).subs(dict(zip(w, z0)))
     dqdd = (-A0v.LUsolve(Rv, iszerofunc=is_zero_expression))[:n, :]
@@ -318,7 +325,20 @@ def _reduce(parts, value: dict) -> sp.Matrix:
         for r, i in enumerate(dep):
             T[pos[i], :] = sol[r, :]
     out = J.extract(indep, keep) * T
-    return out.applyfunc(lambda e: sp.cancel(e) if e.free_symbols else e)
+    return out.applyfunc(lambda e: _timeless(sp.cancel(e), name) if e.free_symbols else e)
+
+
+def _timeless(entry, name: str):
+    """``entry`` without the time ``t`` it holds only in form (``sin(w t)^2 + cos(w t)^2``
+    of a rotating frame), else a refusal: the linearisation is not time-invariant."""
+    if not entry.has(t):
+        return entry
+    if is_zero_expression(sp.diff(entry, t)):
+        return sp.cancel(entry.subs(t, 0))
+    raise ModelError(f"model `{name}`: its linearisation depends on time explicitly ({entry}): "
+                     "a driven system has no steady motion of this kind (a periodic drive's "
+                     "stability is Floquet's question: `dualmech atlas NAME --section "
+                     "floquet`).")
 
 
 def _show(x0: dict) -> str:

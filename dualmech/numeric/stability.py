@@ -359,8 +359,9 @@ def _compare(specs: dict, main: str, values, failed: dict, p) -> dict:
         scale = max(scale, float(np.max(np.abs(ref))) if len(ref) else 1.0)
         for spec in specs.values():
             other = _sorted(spec.nontrivial(v))
-            worst = max(worst, float(np.max(np.abs(other - ref))) if len(other) == len(ref)
-                        else math.inf)
+            gap = (0.0 if not len(ref) else float(np.max(np.abs(other - ref)))) \
+                if len(other) == len(ref) else math.inf
+            worst = max(worst, gap)
     agree = worst <= 1e-9 * scale
     where = ", ".join("the point" if v is None else f"{p} = {v:g}" for v in at)
     names = ", ".join(specs)
