@@ -140,3 +140,14 @@ def test_an_about_that_is_not_a_steady_motion_is_the_users_mistake(capsys):
     assert status == 2 and out == ""
     assert "`--about`: the state {theta = 1/2} is not a steady motion" in err
     assert "theta(t), (t, 2)) = -981*sin(1/2)/100" in err   # -g sin(theta) / l, l = 1
+
+
+def test_about_with_rates_and_a_swept_problem_parameter(capsys):
+    """Rolling at v = 1.2 (phi' = v / r = 4, r = 0.3): by hand stable while g < 3 v^2 / r = 14.4."""
+    status, out, err = run(capsys, "stability", "rolling_disk", "--about",
+                           "phi_dot=4, x_dot=1.2", "--sweep", "g=5:20:7", "--json")
+    assert status == 0, err
+    data = json.loads(out)
+    (crit,) = data["critical"]
+    assert data["parameter"] == "g" and crit["value"] == pytest.approx(14.4, abs=1e-9)
+    assert (crit["stable_below"], crit["stable_above"]) == (True, False)
