@@ -31,11 +31,12 @@ _HOME = {
     "model.direct": ("NewtonEuler",),
     "model.lagrange": ("Lagrangian",),
     "model.equations": ("EquationSet", "ModelError"),
+    "model.stability": ("linearize_about",),
     # declaring a problem: its parameters, coordinates, reactions and printed answers, and
     # the facts its equations do not carry (probe runs, a stiff scene, a fidelity ladder)
     "model.problem": ("Problem", "Parameter", "Coordinate", "Reaction", "Published",
                       "ProblemError"),
-    "model.facts": ("Probe", "StiffScene", "FidelityRung"),
+    "model.facts": ("Probe", "StiffScene", "FidelityRung", "SteadyMotion"),
     "model.dimensions": ("Dimension", "DIMENSIONLESS", "MASS", "LENGTH", "TIME", "ANGLE",
                          "FORCE", "TORQUE", "ENERGY", "VELOCITY", "ACCELERATION", "STIFFNESS",
                          "DAMPING", "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA",

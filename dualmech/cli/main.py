@@ -213,10 +213,12 @@ def build_parser() -> argparse.ArgumentParser:
     from dualmech.cli.studies import register as _register_numeric
     from dualmech.cli.serve import register as _register_web
     from dualmech.cli.simulate import register as _register_simulate
+    from dualmech.cli.stability import register as _register_stability
     _register_grade(sub)
     _register_numeric(sub)
     _register_web(sub)
     _register_simulate(sub)
+    _register_stability(sub)
     for p in sub.choices.values():   # every command's --help ends with the exit statuses
         if "Exit status" not in (p.epilog or ""):
             p.epilog = f"{p.epilog}  {EXIT_STATUS}" if p.epilog else EXIT_STATUS

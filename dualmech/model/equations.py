@@ -532,7 +532,9 @@ class EquationSet:
         """
         if self.unknowns:
             raise ModelError(f"model `{self.name}` has reactions {list(self.unknowns)}; "
-                             "linearise a reaction-free model (e.g. the Lagrangian one).")
+                             "linearise a reaction-free model (e.g. the Lagrangian one), or use "
+                             "`dualmech.linearize_about`, which solves for the accelerations "
+                             "and reduces the constraints.")
         equilibrium = dict(equilibrium or {})
         point = {}
         for s in self.states:

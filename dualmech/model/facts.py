@@ -31,8 +31,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Callable
 
-__all__ = ["Probe", "StiffScene", "FidelityRung", "state_vector", "is_declared",
-           "declaration_errors", "not_declared"]
+__all__ = ["Probe", "StiffScene", "FidelityRung", "SteadyMotion", "state_vector",
+           "is_declared", "declaration_errors", "not_declared"]
 
 
 @dataclass(frozen=True)
@@ -160,6 +160,56 @@ class FidelityRung:
         object.__setattr__(self, "neglected_reactions", names)
 
 
+@dataclass(frozen=True)
+class SteadyMotion:
+    """A steady motion whose stability ``dualmech stability`` studies without options.
+
+    Parameters
+    ----------
+    about : mapping
+        ``{q: value, q.diff(t): rate}`` in the reference model's coordinates (missing ones
+        are zero); values may hold the free ``parameter`` and the problem's parameters.
+    parameter : str, optional
+        The name of the swept quantity: the free symbol of ``about`` (a forward speed ``v``)
+        or a declared parameter; empty for a steady motion studied at one point.
+    sweep : (start, stop, count), optional
+        The values swept by default (``count`` >= 2).
+    why : str
+        What the motion is, in words.
+
+    Example
+    -------
+    >>> SteadyMotion({}, "v", (0, 10, 101), "upright rolling").sweep
+    (0.0, 10.0, 101)
+    """
+
+    about: dict
+    parameter: str = ""
+    sweep: tuple = ()
+    why: str = ""
+
+    def __post_init__(self):
+        if not isinstance(self.about, Mapping):
+            raise TypeError(f"`SteadyMotion.about` must be a mapping {{q: value, rate(q): "
+                            f"value}}, got {self.about!r:.60}.")
+        object.__setattr__(self, "about", dict(self.about))
+        _text("SteadyMotion", "parameter", self.parameter)
+        _text("SteadyMotion", "why", self.why)
+        if self.sweep:
+            if isinstance(self.sweep, (str, bytes)) or len(tuple(self.sweep)) != 3:
+                raise ValueError(f"`SteadyMotion.sweep` must be (start, stop, count), got "
+                                 f"{self.sweep!r:.60}.")
+            start, stop = _numbers("`SteadyMotion.sweep`", tuple(self.sweep)[:2])
+            count = tuple(self.sweep)[2]
+            if isinstance(count, bool) or not isinstance(count, int) or count < 2:
+                raise ValueError(f"`SteadyMotion.sweep` count must be a whole number >= 2, "
+                                 f"got {count!r:.20}.")
+            if not self.parameter:
+                raise ValueError("`SteadyMotion.sweep` needs `parameter`: the name of the "
+                                 "swept quantity.")
+            object.__setattr__(self, "sweep", (start, stop, count))
+
+
 def _text(kind: str, field: str, value, empty: bool = True) -> None:
     if not isinstance(value, str):
         raise TypeError(f"`{kind}.{field}` must be text, got {value!r:.60} "
@@ -263,10 +313,27 @@ def declaration_errors(problem) -> list[str]:
                           f"{', '.join(models)}")
     errors += _stiff_errors(problem, has_reference)
     errors += _ladder_errors(problem)
+    errors += _steady_errors(problem)
     for attr in ("chaotic_state", "initial_state"):
         state = getattr(problem, attr, None)
         if has_reference and is_declared(state):
             errors += _state_errors(problem, state, f"`{attr}`")
+    return errors
+
+
+def _steady_errors(problem) -> list[str]:
+    steady = getattr(problem, "steady_motion", None)
+    if steady is None:
+        return []
+    if not isinstance(steady, SteadyMotion):
+        return [f"`steady_motion` must be a SteadyMotion(...), got {steady!r:.60}"]
+    errors = []
+    coords = [c.function for c in problem.coordinates]
+    rates = [q.diff(q.args[0]) for q in coords]
+    for key in steady.about:
+        if key not in coords and key not in rates:
+            errors.append(f"`steady_motion.about`: {key!r:.40} is not a coordinate of the "
+                          "reference model or its rate")
     return errors
 
 

@@ -34,7 +34,8 @@ import sympy as sp
 from dualmech.model._expr import as_expr
 from dualmech.model.dimensions import ENERGY, Dimension, as_dimension, audit_rows, quoted, reduce
 from dualmech.model.equations import EquationSet, ModelError, Rows
-from dualmech.model.facts import FidelityRung, Probe, StiffScene, declaration_errors
+from dualmech.model.facts import (FidelityRung, Probe, SteadyMotion, StiffScene,
+                                  declaration_errors)
 from dualmech.model.kinematics import t
 
 __all__ = ["Parameter", "Coordinate", "Reaction", "Published", "Problem", "ProblemError",
@@ -273,6 +274,10 @@ class Problem:
     initial_state : state
         Where simulations, charts and studies start by default (otherwise 60 % into each
         coordinate's range, at rest), e.g. ``initial_state = {theta: 2.0, rate(theta): 4.0}``.
+    steady_motion : :class:`~dualmech.model.facts.SteadyMotion` or None
+        The steady motion ``dualmech stability`` linearises about by default, e.g.
+        ``SteadyMotion({rate(phi): v / r, rate(x): v}, "v", (0, 10, 101), "upright
+        rolling")`` (:mod:`dualmech.model.stability`).
 
     Every declaration is checked by :meth:`validate`: a reaction, parameter or model it
     names must exist, a state must have one value per coordinate and rate.
@@ -330,6 +335,7 @@ class Problem:
     fidelity_ladder: tuple = ()
     chaotic_state: tuple | dict = ()
     initial_state: tuple | dict = ()
+    steady_motion: SteadyMotion | None = None
     referee: bool = True
     referee_note: str = ""
 

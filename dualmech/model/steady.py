@@ -39,7 +39,8 @@ __all__ = ["steady_conditions", "steady_rates"]
 def _check(eqs: EquationSet, fixed: Sequence) -> None:
     if eqs.unknowns:
         raise ModelError(f"model `{eqs.name}` has reactions {list(eqs.unknowns)}; find steady "
-                         "motions of a reaction-free model (e.g. the Lagrangian one).")
+                         "motions of a reaction-free model (e.g. the Lagrangian one), or check a "
+                         "candidate with `dualmech.linearize_about`, which takes any model.")
     unknown = [q for q in fixed if q not in eqs.coordinates]
     if unknown:
         raise ModelError(f"`fixed` holds {unknown}, which are not coordinates of "
