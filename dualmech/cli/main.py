@@ -45,6 +45,7 @@ from typing import Sequence
 
 from dualmech import __version__
 from dualmech.cli import names as _names
+from dualmech.cli.options import positive_number
 from dualmech.cli.errors import (DISAGREE, EXIT_STATUS, OK, USAGE_OR_MODEL_ERROR, Failure,
                                  UsageError, about, describe, guarded, worst)
 
@@ -73,18 +74,8 @@ def _points(text: str) -> int:
 MAX_DURATION = 600.0
 
 
-def _positive_float(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}") from None
-    if not (value > 0 and value < float("inf")):
-        raise argparse.ArgumentTypeError(f"expected a positive finite number, got {text!r}")
-    return value
-
-
 def _duration(text: str) -> float:
-    value = _positive_float(text)
+    value = positive_number(text)
     if value > MAX_DURATION:
         raise argparse.ArgumentTypeError(f"expected at most {MAX_DURATION:g} s of simulated "
                                          f"time, got {text!r}")

@@ -39,6 +39,7 @@ import json
 import sys
 
 from dualmech.cli.errors import DISAGREE, OK, UsageError, about, guarded
+from dualmech.cli.options import positive_number, whole_number
 
 __all__ = ["register", "summary"]
 
@@ -57,11 +58,11 @@ def register(subparsers) -> None:
                     "where it cannot run, scipy's DOP853 (said on stderr).")
     p.add_argument("name", metavar="NAME",
                    help="the problem: a catalogue name, path.py[:Class] or module:Class")
-    p.add_argument("--duration", metavar="T", type=_positive, default=10.0,
+    p.add_argument("--duration", metavar="T", type=positive_number, default=10.0,
                    help="simulated seconds (default: %(default)s)")
     p.add_argument("--rtol", metavar="R", type=_rtol, default=1e-8,
                    help="relative tolerance (default: %(default)s)")
-    p.add_argument("--atol", metavar="A", type=_positive, default=1e-10,
+    p.add_argument("--atol", metavar="A", type=positive_number, default=1e-10,
                    help="absolute tolerance (default: %(default)s)")
     p.add_argument("--method", metavar="M", default="auto",
                    help="auto (default: CVODE-Adams, else DOP853), CVODE-Adams, CVODE-BDF, "
@@ -69,7 +70,7 @@ def register(subparsers) -> None:
                         "right-hand side")
     p.add_argument("--param", metavar="NAME=VALUE", action="append", default=[],
                    help="a parameter value instead of the problem's default (repeatable)")
-    p.add_argument("--samples", metavar="K", type=_samples, default=None,
+    p.add_argument("--samples", metavar="K", type=whole_number(2, 100_000), default=None,
                    help="also give the state at K evenly spaced times (2 to 100000)")
     p.add_argument("--n", metavar="N", type=int, default=None,
                    help="size of a parametric problem (one that declares `parametric`), e.g. --n 3")
@@ -80,32 +81,12 @@ def register(subparsers) -> None:
     p.set_defaults(func=guarded(_simulate))
 
 
-def _positive(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}") from None
-    if not 0 < value < float("inf"):
-        raise argparse.ArgumentTypeError(f"expected a positive finite number, got {text!r}")
-    return value
-
-
 def _rtol(text: str) -> float:
-    value = _positive(text)
+    value = positive_number(text)
     if not 1e-14 <= value < 1:
         raise argparse.ArgumentTypeError(f"expected a relative tolerance in [1e-14, 1), got "
                                          f"{text!r}")
     return value
-
-
-def _samples(text: str) -> int:
-    try:
-        k = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
-    if not 2 <= k <= 100_000:
-        raise argparse.ArgumentTypeError(f"{k} is outside 2..100000")
-    return k
 
 
 def _load(args):

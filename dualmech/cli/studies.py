@@ -31,12 +31,12 @@ Example
 """
 from __future__ import annotations
 
-import argparse
 import sys
 from pathlib import Path
 
 from dualmech.cli import names as _names
 from dualmech.cli.errors import OK, UsageError, about, describe, guarded, worst
+from dualmech.cli.options import positive_number, whole_number
 
 __all__ = ["register"]
 
@@ -54,11 +54,11 @@ def register(subparsers) -> None:
     p.add_argument("--all", action="store_true",
                    help="chart every problem: the catalogue's and the registered catalogues'")
     _out(p)
-    p.add_argument("--duration", metavar="T", type=_positive, default=5.0,
+    p.add_argument("--duration", metavar="T", type=positive_number, default=5.0,
                    help="simulated seconds, cut to fit the scene (default: %(default)s)")
     p.add_argument("--quick", action="store_true",
                    help="three tolerances and two step counts instead of the full sweep")
-    p.add_argument("--repeats", metavar="K", type=_repeats, default=5,
+    p.add_argument("--repeats", metavar="K", type=whole_number(1, 50), default=5,
                    help="runs per point; its CPU time is their median (default: %(default)s)")
     p.set_defaults(func=guarded(_chart))
 
@@ -96,16 +96,6 @@ def _print_json(obj) -> None:
     print(json.dumps(obj, indent=1, default=str))
 
 
-def _positive(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}") from None
-    if not 0 < value < float("inf"):
-        raise argparse.ArgumentTypeError(f"expected a positive finite number, got {text!r}")
-    return value
-
-
 def _problem(name: str):
     """The problem ``name`` names (any NAME form; :func:`dualmech.cli.names.get`)."""
     return _names.get(name)
@@ -118,17 +108,6 @@ def _writable(out: Path) -> Path:
         raise UsageError(f"cannot create the output directory {out}: {exc.strerror or exc}") \
             from None
     return out
-
-
-def _repeats(text: str) -> int:
-    """``--repeats``: a whole number from 1 to 50."""
-    try:
-        k = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
-    if not 1 <= k <= 50:
-        raise argparse.ArgumentTypeError(f"{k} is outside 1..50")
-    return k
 
 
 def _chart(args) -> int:
