@@ -38,6 +38,7 @@ MODELS = {
     "rigid_body_euler_angles": ["newton_euler", "lagrange"],
     "rigid_rod_pendulum": ["newton_euler", "lagrange", "multiplier"],
     "rolling_cylinder": ["newton_euler", "lagrange", "multiplier"],
+    "rolling_disk": ["newton_euler", "lagrange", "multiplier"],
     "satellite_polar": ["newton_euler", "lagrange"],
     "simple_pendulum": ["newton_euler", "lagrange", "angular_momentum", "multiplier"],
     "spring_mass_damper": ["newton_euler", "lagrange"],
@@ -300,6 +301,14 @@ VERDICTS = {
         "v_c": "correct", "w_ib": "correct", "I_z": "correct", "T": "correct",
         "U": "correct", "L": "correct", "dL/dtheta', dL/dtheta": "correct",
         "equation of motion": "correct", "equation of motion, final": "correct",
+    },
+    "rolling_disk": {
+        # no slip: the contact point's velocity is zero, x' = r phi' cos(psi), y' = r phi'
+        # sin(psi) (Greenwood, Advanced Dynamics; the module docstring derives it)
+        "rolling rows": "correct",
+        # the thin disk upright at speed v: lambda^2 = 4 (g r - 3 v^2)/(5 r^2), stable for
+        # v^2 > g r/3 (the classic result; derived by hand in the module docstring)
+        "lean eigenvalues squared on upright rolling": "correct",
     },
     "rolling_cylinder": {
         "(a) v_C": "correct",
