@@ -154,3 +154,22 @@ def test_one_hostile_answer_does_not_stall_the_others(tmp_path):
     assert got[0]["status"] == "invalid"
     assert got[0]["summary"].startswith("too costly to grade: `theta^3000000`")
     assert [g["status"] for g in got[1:]] == ["right", "wrong", "right"]
+
+
+@pytest.mark.parametrize("body, said", [
+    ("[" * 30000 + "]" * 30000, "nested too deeply"),
+    ('{"problem": "simple_pendulum", "answer": "' + "[" * 3000 + "]" * 3000 + '"}', None),
+    ('{"problem": "simple_pendulum", "answer": "\\ud800"}', "`answer` holds a lone surrogate"),
+    ('{"problem": "simple_pendulum", "answer": "x", "\\udfff": 1}', "lone surrogate"),
+    ('{"problem": "simple_pendulum", "answer": "x", "q": [{"a": "\\udbff"}]}', "`q` holds"),
+])
+def test_malformed_json_gets_400_never_500(client, body, said):
+    """A body nested 30,000 deep and a lone surrogate escape were internal errors (500)."""
+    import time
+    start = time.perf_counter()
+    r = client.post("/api/grade", content=body, headers={"content-type": "application/json"})
+    assert time.perf_counter() - start < 10
+    if said is None:      # deep brackets inside the answer text: a grade, not a failure
+        assert r.status_code == 200 and r.json()["status"] == "invalid"
+    else:
+        assert r.status_code == 400 and said in r.json()["error"]

@@ -208,8 +208,15 @@ async def _answer_request(srv: _Server, request: Request) -> tuple[dict | None, 
     except (UnicodeDecodeError, ValueError):
         return None, _error(400, "the request body must be a JSON object: {\"problem\": ..., "
                                  "\"answer\": ...}.")
+    except RecursionError:
+        return None, _error(400, "the request body is nested too deeply: send a flat JSON "
+                                 "object {\"problem\": ..., \"answer\": ...}.")
     if not isinstance(body, dict):
         return None, _error(400, "the request body must be a JSON object.")
+    bad = _lone_surrogate(body)
+    if bad is not None:
+        return None, _error(400, f"`{bad}` holds a lone surrogate (an escape such as \\ud800 "
+                                 "that is half of a character); send the text as it is typed.")
     for key in ("problem", "answer"):
         if not isinstance(body.get(key), str):
             return None, _error(400, f"`{key}` must be a string.")
@@ -516,6 +523,25 @@ routes = [
     Route("/api/batches/{id}", teacher_only(api_batch)),
     Route("/api/batches/{id}/{file:str}", teacher_only(_files(api_batch_file))),
 ]
+
+
+def _lone_surrogate(body: dict):
+    """The top-level key under which ``body`` holds a string (a key or a value, at any depth)
+    with a lone UTF-16 surrogate, which no page can show and no file can store; ``None``
+    when there is none."""
+    stack = [(key, part) for key, value in body.items() for part in (key, value)]
+    while stack:
+        key, part = stack.pop()
+        if isinstance(part, str):
+            try:
+                part.encode("utf-8")
+            except UnicodeEncodeError:
+                return key.encode("utf-8", "replace").decode()[:40]
+        elif isinstance(part, dict):
+            stack += [(key, x) for item in part.items() for x in item]
+        elif isinstance(part, list):
+            stack += [(key, x) for x in part]
+    return None
 
 
 def _attachment(name: str) -> dict:
