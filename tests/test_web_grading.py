@@ -173,3 +173,25 @@ def test_malformed_json_gets_400_never_500(client, body, said):
         assert r.status_code == 200 and r.json()["status"] == "invalid"
     else:
         assert r.status_code == 400 and said in r.json()["error"]
+
+
+@pytest.mark.parametrize("origin, status", [
+    (None, 200),                               # not a browser: judged as before
+    ("http://testserver", 200),                # the page itself
+    ("http://testserver:80", 200),             # the default port written out
+    ("http://evil.example", 403),              # another site
+    ("http://testserver:8081", 403),           # another port of the same host (SameSite does
+                                               # not tell these apart)
+    ("https://testserver", 403),               # another scheme
+    ("null", 403),                             # a sandboxed or file:// page
+])
+def test_a_state_changing_request_from_another_origin_is_refused(client, origin, status):
+    headers = {"origin": origin} if origin is not None else {}
+    r = client.post("/api/grade", json={"problem": "simple_pendulum",
+                                        "answer": "a*theta'' + g*sin(theta) = 0"},
+                    headers=headers)
+    assert r.status_code == status
+    if status == 403:
+        assert "Origin" in r.json()["error"]
+    else:   # no referrer leaves for other sites, and the page's own posts keep their Origin
+        assert r.headers["referrer-policy"] == "same-origin"

@@ -47,7 +47,7 @@ from dualmech.web import pages
 from dualmech.web.assets import SCRIPT, STYLE
 from dualmech.web.batches import BatchError, BatchRunner, read_upload
 from dualmech.web.catalog import ProblemInfo
-from dualmech.web.guard import RateLimiter, SecurityHeaders, TooLarge, read_body
+from dualmech.web.guard import RateLimiter, SameOrigin, SecurityHeaders, TooLarge, read_body
 from dualmech.web.openapi import SPEC
 from dualmech.web.preview import preview
 from dualmech.web.store import Store
@@ -257,6 +257,7 @@ def create_app(problems: Sequence[str] | None = None, *, data: str | Path = "dua
     app = Starlette(routes=routes, lifespan=_lifespan,
                     exception_handlers={404: _not_found_page, 500: _failed,
                                         Exception: _failed})
+    app.add_middleware(SameOrigin)
     app.add_middleware(SecurityHeaders)
     app.state.server = srv
     return app

@@ -6,7 +6,9 @@ strict headers.
 * :func:`read_body` -- reads a request body up to a limit, refusing more (``413``) before it
   is held in memory;
 * :class:`SecurityHeaders` -- ASGI middleware that adds a Content-Security-Policy allowing
-  only the server's own script and style, and forbids framing and content sniffing.
+  only the server's own script and style, and forbids framing and content sniffing;
+* :class:`SameOrigin` -- ASGI middleware that refuses (``403``) a state-changing request a
+  browser sends from another origin (a page elsewhere posting to the teacher's upload).
 
 Example
 -------
@@ -22,7 +24,7 @@ import threading
 import time
 from collections import OrderedDict
 
-__all__ = ["RateLimiter", "read_body", "TooLarge", "SecurityHeaders", "RATES"]
+__all__ = ["RateLimiter", "read_body", "TooLarge", "SecurityHeaders", "SameOrigin", "RATES"]
 
 #: Default rates: kind -> (requests per second sustained, burst).
 RATES = {"validate": (5.0, 20), "grade": (1.0, 30), "login": (0.1, 5), "upload": (0.2, 5)}
@@ -102,7 +104,54 @@ class SecurityHeaders:
                 headers += [(b"content-security-policy", _CSP.encode()),
                             (b"x-content-type-options", b"nosniff"),
                             (b"x-frame-options", b"DENY"),
-                            (b"referrer-policy", b"no-referrer")]
+                            # same-origin, not no-referrer: under no-referrer a browser
+                            # sends `Origin: null` on the page's own form posts, which
+                            # SameOrigin must refuse; no referrer leaves for other sites
+                            (b"referrer-policy", b"same-origin")]
                 message = dict(message, headers=headers)
             await send(message)
         return await self.app(scope, receive, wrapped)
+
+
+class SameOrigin:
+    """ASGI middleware: a ``POST``, ``PUT``, ``PATCH`` or ``DELETE`` whose ``Origin`` header
+    names another origin than the one the request was sent to is refused with ``403``.
+
+    Browsers send ``Origin`` on every cross-origin request that changes state, so a page on
+    another site (or another port of the same site, which ``SameSite`` cookies do not tell
+    apart) cannot post to the teacher's upload with the teacher's cookie.  Clients that are not
+    browsers (curl, scripts) send no ``Origin`` and are judged by their token as before.
+    """
+
+    STATE_CHANGING = frozenset({"POST", "PUT", "PATCH", "DELETE"})
+
+    def __init__(self, app):
+        self.app = app
+
+    async def __call__(self, scope, receive, send):
+        if scope["type"] == "http" and scope["method"] in self.STATE_CHANGING:
+            headers = dict(scope.get("headers") or [])
+            origin = headers.get(b"origin")
+            if origin is not None and not _same_origin(origin, scope, headers.get(b"host")):
+                body = (b'{"error": "a request that changes state must come from this '
+                        b'server\'s own pages (its Origin header names another site)."}')
+                await send({"type": "http.response.start", "status": 403,
+                            "headers": [(b"content-type", b"application/json"),
+                                        (b"content-length", str(len(body)).encode())]})
+                await send({"type": "http.response.body", "body": body})
+                return
+        return await self.app(scope, receive, send)
+
+
+def _same_origin(origin: bytes, scope, host: bytes | None) -> bool:
+    """Whether ``origin`` (``scheme://host[:port]``) is where the request was sent."""
+    if host is None:
+        return False
+    scheme = scope.get("scheme", "http")
+    default = {"http": b"80", "https": b"443"}.get(scheme, b"")
+    want = host if b":" in host else host + b":" + default
+    got = origin.split(b"://", 1)
+    if len(got) != 2 or got[0].decode("latin-1").lower() != scheme:
+        return False
+    have = got[1] if b":" in got[1] else got[1] + b":" + default
+    return have.lower() == want.lower()
