@@ -38,7 +38,16 @@ __all__ = ["EquationSet", "ModelError", "Rows", "StateSymbols", "is_zero_express
 
 
 class ModelError(ValueError):
-    """A model that cannot be used as written; the message says what to fix."""
+    """A model that cannot be used as written; the message says what to fix.
+
+    Examples
+    --------
+    >>> from dualmech import NewtonEuler, Frame, coordinate
+    >>> NewtonEuler(coordinates=[coordinate("x")], ground=Frame.ground()).equations()
+    Traceback (most recent call last):
+    ...
+    dualmech.model.equations.ModelError: `newton_euler` has no equations: call linear_momentum or angular_momentum for each body.
+    """
 
 
 @dataclass(frozen=True)

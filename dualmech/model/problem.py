@@ -43,7 +43,19 @@ __all__ = ["Parameter", "Coordinate", "Reaction", "Published", "Problem", "Probl
 
 
 class ProblemError(ModelError):
-    """A problem declaration with one or more mistakes (all listed in the message)."""
+    """A problem declaration with one or more mistakes (all listed in the message).
+
+    Examples
+    --------
+    >>> from dualmech import Problem
+    >>> class Empty(Problem):
+    ...     name = "empty"
+    >>> Empty().validate()  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    dualmech.model.problem.ProblemError: problem `empty` has ... mistake(s):
+    ...
+    """
 
 
 @dataclass(frozen=True)
@@ -172,6 +184,20 @@ class Published:
 
     ``coordinates`` names the model whose coordinates the printed answer uses (default: the
     reference model's).  ``where`` says where in the source it is printed.
+
+    Examples
+    --------
+    The pendulum's equation as a source prints it, and a kinetic energy against our own:
+
+    >>> import sympy as sp
+    >>> from dualmech import Published, coordinate, rate
+    >>> theta = coordinate("theta"); m, l, g = sp.symbols("m l g", positive=True)
+    >>> eom = Published("equation of motion", "motion",
+    ...                 (m * l**2 * rate(theta, 2) + m * g * l * sp.sin(theta),), where="(3)")
+    >>> T = Published("T", "expression", (m * (l * rate(theta))**2 / 2,),
+    ...               (m * l**2 * rate(theta)**2 / 2,), where="(2)")
+    >>> eom.kind, T.reference == (m * l**2 * rate(theta)**2 / 2,)
+    ('motion', True)
     """
 
     label: str
