@@ -40,10 +40,12 @@ Matrix([
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from fractions import Fraction
 from collections.abc import Mapping, Sequence
 
 import sympy as sp
 
+from dualmech.model._expr import as_expr
 from dualmech.model.equations import EquationSet, ModelError, is_zero_expression
 from dualmech.model.kinematics import t
 
@@ -65,9 +67,11 @@ def exact_number(value):
         return value
     if isinstance(value, bool):
         raise TypeError(f"expected a number, got {value!r}.")
-    if isinstance(value, float):
-        return sp.Rational(repr(value))
-    return sp.sympify(value) if isinstance(value, int) else sp.Rational(str(value))
+    try:   # Fraction reads numbers (and a number's text) exactly and never evaluates anything
+        exact = Fraction(str(value)) if isinstance(value, float) else Fraction(value)
+    except (TypeError, ValueError):
+        raise TypeError(f"expected a number, got {value!r:.60}.") from None
+    return sp.Rational(exact.numerator, exact.denominator)
 
 
 @dataclass(frozen=True)
@@ -157,7 +161,7 @@ def linearize_about(eqs: EquationSet, about: Mapping, values: Mapping | None = N
     dropped = [k for k in range(n) if all(is_zero_expression(sp.expand(e)) for e in R[:, k])
                and all(is_zero_expression(row[k]) for row in phi)]
     moving = [states[k].name for k in range(n) if k not in dropped
-              and not is_zero_expression(sp.sympify(x0[qds[k]]))]
+              and not is_zero_expression(as_expr(x0[qds[k]]))]
     if moving:
         raise ModelError(f"the state {_show(x0)} is not a steady motion of `{eqs.name}`: "
                          f"{', '.join(moving)} move(s), and the equations depend on them, so "
@@ -174,7 +178,7 @@ def linearize_about(eqs: EquationSet, about: Mapping, values: Mapping | None = N
     for value in checks:
         _check_steady(parts, x0, eqs, value)
         for label, a, _ in cons:
-            c0 = sp.cancel(sum(sp.sympify(aj).subs(x0) * x0[qd] for aj, qd in zip(a, qds))
+            c0 = sp.cancel(sum(as_expr(aj).subs(x0) * x0[qd] for aj, qd in zip(a, qds))
                            .subs(value))
             if not is_zero_expression(c0):
                 raise ModelError(f"the state {_show(x0)} breaks the constraint [{label}] of "
@@ -207,7 +211,7 @@ def _point(eqs: EquationSet, about: Mapping, subs: dict) -> dict:
         if key not in known:
             raise ModelError(f"`about`: {key} is not a coordinate of `{eqs.name}` or its rate; "
                              f"the coordinates are {list(eqs.coordinates)}.")
-        point[known[key]] = sp.sympify(value).subs(subs)
+        point[known[key]] = as_expr(value).subs(subs)
     return point
 
 
@@ -235,7 +239,7 @@ def _constraint_rows(cons, qs, qds, x0) -> tuple[list, list]:
     pos, vel = [], []
     for _, a, holonomic in cons:
         c = sum(aj * qd for aj, qd in zip(a, qds))
-        a0 = [sp.sympify(x).subs(x0) for x in a]
+        a0 = [as_expr(x).subs(x0) for x in a]
         if holonomic:
             pos.append(a0 + [0] * len(qs))
         vel.append([sp.diff(c, q).subs(x0) for q in qs] + a0)

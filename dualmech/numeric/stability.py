@@ -38,6 +38,7 @@ import numpy as np
 import sympy as sp
 from scipy.optimize import brentq
 
+from dualmech.model._expr import as_expr
 from dualmech.model.equations import ModelError
 from dualmech.model.stability import SteadyLinearisation, exact_number, linearize_about
 from dualmech.numeric.simulation import problem_parameters
@@ -161,8 +162,8 @@ def _about_in(problem, eqs, about: dict) -> dict:
     values = {q: about.get(q, 0) for q in ref.coordinates}
     out = {}
     for q, expr in mapping.items():
-        rate = sp.sympify(expr).diff(q.args[0])
-        out[q] = sp.sympify(expr).subs(values)
+        rate = as_expr(expr).diff(q.args[0])
+        out[q] = as_expr(expr).subs(values)
         out[q.diff(q.args[0])] = rate.subs(rules).subs(values)
     return out
 
@@ -174,7 +175,7 @@ def _parameter(problem, name: str | None, about: dict):
         if p.symbol.name == name:
             return p.symbol
     for value in about.values():
-        for s in sp.sympify(value).free_symbols:
+        for s in as_expr(value).free_symbols:
             if s.name == name:
                 return s
     raise ValueError(f"the swept parameter {name!r} is neither a parameter of `{problem.name}` "

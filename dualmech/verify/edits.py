@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from dualmech.model._expr import as_expr
 from dualmech.model.equations import EquationSet, from_plain
 from dualmech.model.kinematics import t
 from dualmech.verify.sampling import Context
@@ -83,7 +84,7 @@ def row_edits(problem, model: str, against: str, seed: int = 0) -> list[RowEdit]
         return not j.faults
     for i, parts in enumerate(m.contributions or ()):
         for key, value in parts.items():
-            value = sp.sympify(value)
+            value = as_expr(value)
             if value == 0 or tries >= MAX_TRIES:
                 continue
             for kind, factor in (("sign", -1), ("dropped", 0)):

@@ -34,6 +34,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from dualmech.model._expr import as_expr
 from dualmech.exact.form import ExactForm, is_zero
 from dualmech.model.declared import builder_of
 from dualmech.model.direct import NewtonEuler
@@ -126,11 +127,11 @@ class _Frame:
         self.deltas = [virtual(q) for q in self.ref]
 
     def plain(self, expr) -> sp.Expr:
-        expr = sp.sympify(expr)
+        expr = as_expr(expr)
         if self.mapping is not None:
             rules = {}
             for q, f in self.mapping.items():
-                f = sp.sympify(f)
+                f = as_expr(f)
                 rules[q.diff(t, 2)] = f.diff(t, 2)
                 rules[q.diff(t)] = f.diff(t)
             expr = expr.xreplace(rules).xreplace(dict(self.mapping))
@@ -195,7 +196,7 @@ def _lagrange_side(lg: Lagrangian, fr: _Frame) -> tuple[dict, dict, dict]:
 def vanishes(expr, points: int = 3, seed: int = 5) -> bool:
     """Whether ``expr`` is identically zero: exact evaluation at random rational points
     (:mod:`dualmech.exact.form`); a nonzero value is certain."""
-    expr = sp.sympify(expr)
+    expr = as_expr(expr)
     if expr == 0:
         return True
     symbols = sorted(expr.free_symbols, key=str)
@@ -323,7 +324,7 @@ def _undeclared(model, Wd: dict, Rd: dict, Td: dict) -> list:
     for parts in model.contributions or ():
         for key, value in parts.items():
             if key not in known and key not in out and not key.startswith("gravity on ") \
-                    and sp.sympify(value) != 0:
+                    and as_expr(value) != 0:
                 out.append(key)
     return out
 

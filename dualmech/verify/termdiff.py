@@ -24,6 +24,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from dualmech.model._expr import as_expr
+
 __all__ = ["TermEdit", "term_table", "term_edits", "canonical"]
 
 #: more terms than this on either side: not an edit a person makes, no table is built
@@ -50,7 +52,7 @@ class TermEdit:
 def canonical(expr) -> sp.Expr:
     """``expr`` expanded, multiple angles expanded and every ``cos^n`` (n >= 2) written as
     ``cos^(n mod 2) (1 - sin^2)^(n div 2)``: one form per quantity modulo sin^2 + cos^2 = 1."""
-    expr = sp.expand(sp.sympify(expr))
+    expr = sp.expand(as_expr(expr))
     rules = {f: sp.expand_trig(f) for f in expr.atoms(sp.sin, sp.cos) if not f.args[0].is_Atom}
     if rules:
         expr = sp.expand(expr.xreplace(rules))
