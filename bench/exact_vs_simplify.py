@@ -48,12 +48,13 @@ def main() -> None:
             r = compare_models(ref, cand, context=ctx)
             t_exact = time.perf_counter() - t0
             if args.quick:
-                t_simp, ok = float("nan"), True
+                t_simp, ok = float("nan"), None
             else:
                 t_simp, ok = _simplify_route(ref, cand, 60.0)
             ratio = t_simp / t_exact if t_simp == t_simp else float("nan")
-            flag = ("  (simplify route n/a)" if ok is None else
-                    "" if ok == r.equivalent else "  (verdicts differ!)")
+            flag = ("" if ok is None or ok == r.equivalent else "  (verdicts differ!)")
+            if not r.equivalent:          # e.g. a reduced model judged only with the others
+                flag += f"  [pair alone: {r.mismatches[0].reason if r.mismatches else 'no reason given'}]"
             print(f"{p.name:20s} {name + ' vs ' + p.reference:34s} {t_exact:10.3f} "
                   f"{t_simp:13.3f} {ratio:8.1f}{flag}")
 
