@@ -3,7 +3,8 @@
 ::
 
     dualmech serve [--host 127.0.0.1] [--port 8000] [--problems NAME ...] [--token T]
-                   [--data DIR] [--workers N]
+                   [--data DIR] [--workers N] [--trusted-proxy ADDR ...]
+                   [--header-timeout S] [--body-timeout S] [--connections-per-client N]
 
 ``--problems`` takes every NAME form (a catalogue name, a file ``path.py[:Class]``,
 ``module:Class``, a registered catalogue's problem, or a registered catalogue's name for
@@ -42,6 +43,16 @@ def _port(text: str) -> int:
     return port
 
 
+def _seconds(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number of seconds, got {text!r}.")
+    if not 0 < value <= 3600:
+        raise argparse.ArgumentTypeError(f"expected 0 < seconds <= 3600, got {text!r}.")
+    return value
+
+
 def register(subparsers) -> argparse.ArgumentParser:
     """Add the ``serve`` subcommand to an argparse ``subparsers`` object; return its parser."""
     p = subparsers.add_parser(
@@ -59,10 +70,24 @@ def register(subparsers) -> argparse.ArgumentParser:
                         "its name for all of them (default: dualmech's catalogue); clients "
                         "can only name these")
     p.add_argument("--token", help="the teacher's token (default: a random one, printed)")
-    p.add_argument("--data", type=Path, default=Path("dualmech-data"), metavar="DIR",
-                   help="where batches and results are kept (default: %(default)s)")
+    p.add_argument("--data", type=Path, default=None, metavar="DIR",
+                   help="where batches, results and answers are kept, readable by you only "
+                        "(default: your data folder, ~/.local/share/dualmech on Linux)")
     p.add_argument("--workers", type=int, default=None, metavar="N",
                    help="grading processes (default: every core)")
+    p.add_argument("--trusted-proxy", action="append", default=[], metavar="ADDR",
+                   help="a reverse proxy (IP address or network) whose X-Forwarded-For is "
+                        "believed; repeat for several (default: none, every client is its "
+                        "own address)")
+    p.add_argument("--header-timeout", type=_seconds, default=10.0, metavar="S",
+                   help="seconds a request's headers may take to arrive (default: "
+                        "%(default)s)")
+    p.add_argument("--body-timeout", type=_seconds, default=30.0, metavar="S",
+                   help="seconds a request's body may take to arrive after its headers "
+                        "(default: %(default)s)")
+    p.add_argument("--connections-per-client", type=int, default=128, metavar="N",
+                   help="open connections one address may hold at once (default: "
+                        "%(default)s)")
     p.add_argument("--json", action="store_true",
                    help="print the address, the teacher's token and the problems as one JSON "
                         "line at start")
@@ -80,11 +105,19 @@ def handle(args: argparse.Namespace) -> int:
         raise UsageError("the web extra is missing: pip install 'dualmech[web]'") from None
     if args.workers is not None and args.workers < 1:
         raise UsageError("`--workers` must be at least 1.")
+    if args.connections_per_client < 1:
+        raise UsageError("`--connections-per-client` must be at least 1.")
+    from dualmech.web.server import Limits, proxy_settings, serve
+    try:
+        proxy_settings(args.trusted_proxy)
+    except ValueError as exc:
+        raise UsageError(f"`--trusted-proxy`: {exc}") from None
     specs = served_specs(args.problems)
-    from dualmech.web.server import serve
+    limits = Limits(args.header_timeout, args.body_timeout, args.connections_per_client)
     try:
         serve(args.host, args.port, specs, token=args.token, data=args.data,
-              workers=args.workers, as_json=args.json)
+              workers=args.workers, as_json=args.json, trusted_proxies=args.trusted_proxy,
+              limits=limits)
     except ValueError as exc:
         raise UsageError(str(exc)) from None
     return OK
