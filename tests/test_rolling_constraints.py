@@ -121,6 +121,22 @@ def test_the_geometric_contact_point_is_caught_and_named():
     assert "material point" in text and "geometric contact point" in text
 
 
+class RefereedDisk(RollingDisk):
+    referee = True
+
+    def newton_euler(self):
+        return direct()
+
+
+def test_the_referee_derives_the_disk_with_its_declared_rolling():
+    """Kane's method from the declarations (bodies, loads, the contact force and now the
+    rolling constraint) gives the motion and all three contact forces a third time."""
+    c = compare(RefereedDisk())
+    assert c.equivalent, str(c)
+    assert "referee vs lagrange: equivalent" in str(c)
+    assert "reactions F_x, F_y, F_z of referee vs newton_euler: the same" in str(c)
+
+
 def test_the_rolling_helper_warns_about_the_geometric_contact_point():
     doc = " ".join(NewtonEuler.rolling.__doc__.split())
     assert "material point" in doc and "geometric* contact point" in doc

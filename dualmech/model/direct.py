@@ -78,7 +78,8 @@ class ReactionDeclaration:
 @dataclass(frozen=True, eq=False)
 class Declarations:
     """What a direct model declares, apart from its balances: the inertial frame, the
-    coordinates, the bodies, every load on each body (gravity included) and the reactions.
+    coordinates, the bodies, every load on each body (gravity included), the reactions and
+    the declared constraints (:meth:`NewtonEuler.constraint`, ...).
 
     A second derivation built from these (the Kane referee, :mod:`dualmech.model.kane`)
     shares them with the direct form and nothing else.
@@ -90,6 +91,7 @@ class Declarations:
     bodies: tuple
     loads: dict            # id(body) -> tuple of Load, gravity included
     reactions: tuple       # ReactionDeclaration, in the order of the unknowns
+    constraints: tuple = ()   # Constraint: declared rolling, velocity and holonomic ones
 
 
 def declarations_of(eqs) -> "Declarations | None":
@@ -445,7 +447,7 @@ class NewtonEuler:
         bodies = tuple(self._bodies.values())
         return Declarations(self.name, self.coordinates, self.ground, bodies,
                             {id(b): tuple(self._all_loads(b)) for b in bodies},
-                            tuple(self._reactions))
+                            tuple(self._reactions), tuple(self._constraints))
 
     def _acc(self, parts: dict, key: str, value_names: tuple, factor=None) -> None:
         """Add a symengine term (``(value, names)``, times the sympy ``factor``) to ``parts``."""
