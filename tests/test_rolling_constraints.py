@@ -278,3 +278,31 @@ def test_a_kane_model_with_dependent_coordinates_is_refused_clearly():
     km.kanes_equations([me.Particle("p", P, 1)], [(P, -N.y)])
     with pytest.raises(ModelError, match="dependent coordinates"):
         from_mechanics(km)
+
+
+def test_sympys_lagrange_rolling_disk_with_nonholonomic_constraints():
+    """sympy's LagrangesMethod with the rolling rows as ``nonhol_coneqs`` (the problem
+    docstring's T and V, written again in dynamicsymbols): its mass_matrix holds the dynamic
+    rows only; the bridge adds the constraints' acceleration rows and keeps them at velocity
+    level.  Its multipliers are the contact forces F_x, F_y (the hand derivation's)."""
+    psi_, theta_, phi_, x_, y_ = me.dynamicsymbols("psi theta phi x y")
+    m, rr, gg = sp.symbols("m r g")
+    s, c = sp.sin, sp.cos
+    G = sp.Matrix([x_ + rr * s(theta_) * s(psi_), y_ - rr * s(theta_) * c(psi_),
+                   rr * c(theta_)])
+    vG = G.diff(me.dynamicsymbols._t)
+    A, C = m * rr**2 / 4, m * rr**2 / 2
+    d = sp.Function.diff
+    T = m * (vG.T * vG)[0, 0] / 2 + (A * d(theta_)**2 + C * (d(phi_) + d(psi_) * s(theta_))**2
+                                     + A * d(psi_)**2 * c(theta_)**2) / 2
+    lm = me.LagrangesMethod(T - m * gg * rr * c(theta_), [psi_, theta_, phi_, x_, y_],
+                            nonhol_coneqs=[d(x_) - rr * d(phi_) * c(psi_),
+                                           d(y_) - rr * d(phi_) * s(psi_)])
+    lm.form_lagranges_equations()
+    match = {"name": "sympy_lagrange", "reactions": {"lam1": "F_x", "lam2": "F_y"}}
+    eqs = from_mechanics(lm, get("rolling_disk"), **match)
+    assert len(eqs.equations) == 7 and [k.level for k in eqs.constraints] == ["velocity"] * 2
+    out = check_mechanics(get("rolling_disk"), lm, **match)
+    assert out.equivalent, str(out)
+    assert "reactions F_x, F_y of lagrange, multiplier, sympy_lagrange vs newton_euler: the " \
+        "same" in str(out)
