@@ -87,6 +87,14 @@ def test_the_rolling_helper_records_the_hand_rows_at_velocity_level():
     for c, h in zip(eqs.constraints, hand):
         assert is_zero_expression(sp.expand(c.expression - h)), c
         assert c.label in eqs.labels          # its acceleration-level row is in the equations
+    # the catalogue's multiplier model, mapped to the reference coordinates (h = 0), keeps
+    # its rolling constraints and loses h = 0, which the mapping satisfies by construction
+    disk = get("rolling_disk")
+    mapped = disk.in_reference_coordinates(disk.model("multiplier"))
+    assert [(k.name, k.level) for k in disk.model("multiplier").constraints] == \
+        [("F_x", "velocity"), ("F_y", "velocity"), ("F_z", "position")]
+    assert [(k.name, k.level) for k in mapped.constraints] == \
+        [("F_x", "velocity"), ("F_y", "velocity")]
     # the acceleration-level rows hold no reaction: linearisation reads them as constraints
     lin = linearize_about(eqs, RollingDisk.steady_motion.about, parameter=v)
     assert [kind for _, kind in lin.constraints] == ["velocity", "velocity"]

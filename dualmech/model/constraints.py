@@ -34,8 +34,8 @@ from sympy.core.function import AppliedUndef
 from dualmech.model._algebra import names_of, time_se, to_se
 from dualmech.model._expr import as_expr, refuse_jumps
 from dualmech.model.bodies import RigidBody
-from dualmech.model.equations import Constraint, ModelError, is_zero_expression, to_plain, \
-    state_symbols
+from dualmech.model.equations import Constraint, ModelError, state_symbols, to_plain, \
+    vanishes_identically
 from dualmech.model.kinematics import Frame, Point, Vector
 
 __all__ = ["declared", "material_velocity", "acceleration_row"]
@@ -66,7 +66,7 @@ def declared(name: str, value, level: str, coordinates: Sequence, unknowns: Sequ
                                          "it with `velocity_constraint`." if d.derivative_count
                                          == 1 else "declare a constraint at position or "
                                          "velocity level; its acceleration level is derived."))
-    if is_zero_expression(sp.expand(expr)):
+    if vanishes_identically(expr, coordinates):
         raise ModelError(f"{what} is identically zero: the coordinates already keep it (e.g. "
                          "the height of a rolling body is built into them); leave it out.")
     if level == "velocity":

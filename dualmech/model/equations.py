@@ -34,7 +34,7 @@ from dualmech.model._algebra import linear_coefficients, names_of, time_se, to_s
 from dualmech.model.kinematics import t
 
 __all__ = ["Constraint", "EquationSet", "ModelError", "Rows", "StateSymbols",
-           "is_zero_expression", "state_symbols"]
+           "is_zero_expression", "state_symbols", "vanishes_identically"]
 
 
 class ModelError(ValueError):
@@ -498,7 +498,7 @@ class EquationSet:
             eqs, labels = self.equations.substituted(mapping, self.labels)
             return EquationSet(title, tuple(coordinates), Rows(*eqs, coordinates, plain=False),
                                self.unknowns, tuple(labels), (), self.description,
-                               self._constraints_in(mapping, labels))
+                               self._constraints_in(mapping, labels, coordinates))
         rules = {}
         for q, expr in mapping.items():
             expr = as_expr(expr)
@@ -513,9 +513,9 @@ class EquationSet:
             labels.append(label)
         return EquationSet(title, tuple(coordinates), tuple(eqs), self.unknowns,
                            tuple(labels), (), self.description,
-                           self._constraints_in(mapping, labels))
+                           self._constraints_in(mapping, labels, coordinates))
 
-    def _constraints_in(self, mapping: Mapping, labels: Sequence) -> tuple:
+    def _constraints_in(self, mapping: Mapping, labels: Sequence, coordinates) -> tuple:
         """The declared constraints rewritten by ``mapping`` (old coordinate -> expression in
         the new ones), without those the new coordinates satisfy by construction."""
         rules = {}
@@ -526,7 +526,7 @@ class EquationSet:
         out = []
         for c in self.constraints:
             e = c.expression.xreplace(rules).xreplace(dict(mapping))
-            if is_zero_expression(sp.expand(e)):
+            if vanishes_identically(e, coordinates):
                 continue
             out.append(Constraint(c.name, c.level, e, c.label if c.label in labels else ""))
         return tuple(out)
@@ -766,6 +766,31 @@ def is_zero_expression(expr) -> bool:
         lambda x: x.is_Pow and isinstance(x.base, sp.sin) and x.exp.is_Integer and x.exp >= 2,
         lambda x: (1 - sp.cos(x.base.args[0])**2)**(int(x.exp) // 2) * x.base**(int(x.exp) % 2))
     return sp.expand(num) == 0
+
+
+def vanishes_identically(expr, coordinates=()) -> bool:
+    """Is ``expr`` (in ``coordinates`` as functions of ``t``, their rates and parameters)
+    zero for every state?  A value away from zero at one random real point says no at once
+    (big expressions are not cancelled for nothing); otherwise :func:`is_zero_expression`
+    decides exactly.
+
+    >>> from dualmech import coordinate
+    >>> q = coordinate("q")
+    >>> vanishes_identically(sp.sin(q)**2 + sp.cos(q)**2 - 1, [q]), vanishes_identically(q, [q])
+    (True, False)
+    """
+    expr = as_expr(expr)
+    plain = to_plain(expr, coordinates) if coordinates else expr
+    import random
+    rng = random.Random(20261127)
+    point = {x: sp.Float(rng.uniform(0.3, 1.7), 30) for x in plain.free_symbols}
+    try:
+        value = complex(plain.xreplace(point).evalf(30))
+    except (TypeError, ValueError, ZeroDivisionError):
+        value = None
+    if value is not None and abs(value) > 1e-12:
+        return False
+    return is_zero_expression(sp.expand(expr))
 
 
 def _tidy(expr):

@@ -156,7 +156,10 @@ class Lagrangian:
 
     # -- constraints and prescribed motion ---------------------------------------------
     def constraint(self, name: str, g) -> sp.Symbol:
-        """Holonomic constraint ``g(q, t) = 0`` with multiplier ``name``; returns the multiplier."""
+        """Holonomic constraint ``g(q, t) = 0`` with multiplier ``name``; returns the multiplier.
+
+        The equations hold its acceleration level; ``g`` itself is kept on the equation set
+        (``EquationSet.constraints``, position level) for the verdict's manifold."""
         lam = sp.Symbol(name, real=True)
         # differentiated in symengine by :meth:`equations` (``None``: ``g`` itself is kept)
         self._constraints.append((lam, as_expr(g), None))
@@ -164,7 +167,8 @@ class Lagrangian:
         return lam
 
     def velocity_constraint(self, name: str, coefficients: Sequence, rest=0) -> sp.Symbol:
-        """Constraint ``sum a_j q'_j + a_0 = 0`` (``coefficients = a``, ``rest = a_0``)."""
+        """Constraint ``sum a_j q'_j + a_0 = 0`` (``coefficients = a``, ``rest = a_0``); kept at
+        velocity level on the equation set (``EquationSet.constraints``)."""
         a = [as_expr(c) for c in coefficients]
         if len(a) != len(self.coordinates):
             raise ModelError(f"`coefficients` needs {len(self.coordinates)} entries.")
