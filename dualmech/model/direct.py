@@ -41,7 +41,8 @@ from dualmech.model._expr import as_expr, refuse_jumps, refuse_text_in
 
 from dualmech.model.bodies import Particle, RigidBody
 from dualmech.model.declared import builder_of, note
-from dualmech.model.equations import EquationSet, ModelError, Rows
+from dualmech.model.constraints import acceleration_row, declared, material_velocity
+from dualmech.model.equations import Constraint, EquationSet, ModelError, Rows
 from dualmech.model.kinematics import Frame, Point, Vector
 
 __all__ = ["NewtonEuler", "Load", "ReactionDeclaration", "Declarations", "declarations_of"]
@@ -77,7 +78,8 @@ class ReactionDeclaration:
 @dataclass(frozen=True, eq=False)
 class Declarations:
     """What a direct model declares, apart from its balances: the inertial frame, the
-    coordinates, the bodies, every load on each body (gravity included) and the reactions.
+    coordinates, the bodies, every load on each body (gravity included), the reactions and
+    the declared constraints (:meth:`NewtonEuler.constraint`, ...).
 
     A second derivation built from these (the Kane referee, :mod:`dualmech.model.kane`)
     shares them with the direct form and nothing else.
@@ -89,6 +91,7 @@ class Declarations:
     bodies: tuple
     loads: dict            # id(body) -> tuple of Load, gravity included
     reactions: tuple       # ReactionDeclaration, in the order of the unknowns
+    constraints: tuple = ()   # Constraint: declared rolling, velocity and holonomic ones
 
 
 def declarations_of(eqs) -> "Declarations | None":
@@ -161,6 +164,7 @@ class NewtonEuler:
         self._reactions: list[ReactionDeclaration] = []
         self._equations: list[tuple[str, dict]] = []   # parts held in symengine
         self._names: dict = {}
+        self._constraints: list[Constraint] = []
 
     # -- free-body diagrams ------------------------------------------------------------
     def _add(self, body: Body, load: Load) -> None:
@@ -350,6 +354,75 @@ class NewtonEuler:
             self._acc(mine, key, (to_se(value), names_of(value)))
         self._equations.append((label, mine))
 
+    # -- constraints -------------------------------------------------------------------
+    def constraint(self, name: str, g) -> None:
+        """Holonomic constraint ``g(q, t) = 0`` the motion keeps.
+
+        Kept at position level on the equation set (``EquationSet.constraints``); the
+        equations get its second time derivative as the row ``constraint name (acceleration
+        level)``.  The force that keeps it is a reaction declared on the free-body diagram.
+        """
+        self._constrain(declared(name, g, "position", self.coordinates, self._unknowns,
+                                 self.name))
+
+    def velocity_constraint(self, name: str, expression) -> None:
+        """Velocity-level constraint ``expression = 0``, linear in the rates
+        (``a(q, t) . q' + a0(q, t)``), e.g. no slip; kept at velocity level, its time
+        derivative is the row ``constraint name (acceleration level)``."""
+        self._constrain(declared(name, expression, "velocity", self.coordinates,
+                                 self._unknowns, self.name))
+
+    def rolling(self, name: str, body: RigidBody, contact: Point,
+                directions: Sequence[Vector]) -> tuple:
+        """Rolling without slipping of ``body`` at ``contact``, along each of ``directions``.
+
+        The condition is on the **material point** of ``body`` instantaneously at
+        ``contact``: ``(v_C + w x r_C->contact) . d = 0`` for each direction ``d`` (``C`` its
+        mass centre, ``w`` its angular velocity; see
+        :func:`~dualmech.model.constraints.material_velocity`).  The classic mistake is to
+        write the velocity of the *geometric* contact point instead (``contact.vel(O)``):
+        that point slides along the ground as the body rolls (for a disk located by the
+        contact's ``x, y`` it gives ``x' = y' = 0``, a disk that cannot roll anywhere), and
+        the verdict names such a model.  Give the tangent directions of the ground only; the
+        normal component is usually built into the coordinates (it is then identically zero
+        and refused).  One velocity constraint ``name O.x``, ... per direction; returns their
+        expressions.  The friction force that enforces it is a reaction declared separately.
+
+        Examples
+        --------
+        A wheel of radius ``r`` on a line (``x`` its centre, ``theta`` its turn):
+
+        >>> import sympy as sp
+        >>> from dualmech import Frame, NewtonEuler, Point, RigidBody, coordinate, rot_z
+        >>> x, th = coordinate("x"), coordinate("theta"); m, r = sp.symbols("m r", positive=True)
+        >>> O = Frame.ground(); W = O.child("W", rot_z(-th))
+        >>> C = Point.origin(O).locate("C", x * O.x + r * O.y)
+        >>> wheel = RigidBody("wheel", m, C, W, sp.diag(1, 1, m * r**2 / 2))
+        >>> ne = NewtonEuler(coordinates=[x, th], ground=O)
+        >>> ne.rolling("no slip", wheel, C.locate("P", -r * O.y), [O.x])
+        (-r*Derivative(theta(t), t) + Derivative(x(t), t),)
+        """
+        v = material_velocity(body, contact, self.ground)
+        directions = list(directions) if isinstance(directions, (list, tuple)) else [directions]
+        out = []
+        for d in directions:
+            if not isinstance(d, Vector):
+                raise ModelError(f"rolling `{name}`: each direction must be a Vector, got "
+                                 f"{type(d).__name__}.")
+            label = name if len(directions) == 1 else f"{name} {_dir_name(d)}"
+            self.velocity_constraint(label, _readable(v.dot(d)))
+            out.append(self._constraints[-1].expression)
+        return tuple(out)
+
+    def _constrain(self, c: Constraint) -> None:
+        if any(old.name == c.name for old in self._constraints):
+            raise ModelError(f"constraint `{c.name}` is declared twice in `{self.name}`.")
+        self._constraints.append(c)
+        row, names = acceleration_row(c)
+        parts: dict = {}
+        self._acc(parts, f"constraint {c.name}", (row, names))
+        self._equations.append((c.label, parts))
+
     def equations(self) -> EquationSet:
         """The :class:`EquationSet` (see :meth:`EquationSet.simplified` for a tidier form)."""
         if not self._equations:
@@ -365,7 +438,7 @@ class NewtonEuler:
                           tuple(self._unknowns),
                           tuple(label for label, _ in self._equations),
                           Rows(contributions, names, self.coordinates, plain=False),
-                          self.description)
+                          self.description, tuple(self._constraints))
         note(self, out)   # the free-body diagrams, for the referee and the diagnosis
         return out
 
@@ -374,7 +447,7 @@ class NewtonEuler:
         bodies = tuple(self._bodies.values())
         return Declarations(self.name, self.coordinates, self.ground, bodies,
                             {id(b): tuple(self._all_loads(b)) for b in bodies},
-                            tuple(self._reactions))
+                            tuple(self._reactions), tuple(self._constraints))
 
     def _acc(self, parts: dict, key: str, value_names: tuple, factor=None) -> None:
         """Add a symengine term (``(value, names)``, times the sympy ``factor``) to ``parts``."""
@@ -385,6 +458,13 @@ class NewtonEuler:
             names = merge_names(names, names_of(factor))
         self._names = merge_names(self._names, names)
         parts[key] = parts.get(key, 0) + value
+
+
+def _readable(expr):
+    """``expr`` trig-simplified when small (identities only: ``sin^2 + cos^2`` folded), so a
+    declared constraint reads like a hand one; large ones are left expanded."""
+    expr = sp.expand(expr)
+    return sp.trigsimp(expr) if sp.count_ops(expr) < 300 else expr
 
 
 def _held(v: Vector):

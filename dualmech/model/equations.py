@@ -33,8 +33,8 @@ from dualmech.model._expr import as_expr, refuse_text_in
 from dualmech.model._algebra import linear_coefficients, names_of, time_se, to_se, to_sp
 from dualmech.model.kinematics import t
 
-__all__ = ["EquationSet", "ModelError", "Rows", "StateSymbols", "is_zero_expression",
-           "state_symbols"]
+__all__ = ["Constraint", "EquationSet", "ModelError", "Rows", "StateSymbols",
+           "is_zero_expression", "state_symbols", "vanishes_identically"]
 
 
 class ModelError(ValueError):
@@ -62,6 +62,44 @@ class StateSymbols:
     @property
     def name(self) -> str:
         return self.function.func.__name__
+
+
+@dataclass(frozen=True)
+class Constraint:
+    """A constraint the motion keeps, at the level it was declared (not differentiated).
+
+    A model's equations hold each constraint at the acceleration level (a row labelled
+    ``label``); the declaration keeps it where it was written -- ``g(q, t) = 0`` at
+    ``level="position"``, ``a(q, t) . q' + a0(q, t) = 0`` at ``level="velocity"`` -- so the
+    verdict can draw its points on the motion's constraint manifold and simulation and
+    linearisation know it.  Made by the builders (``NewtonEuler.constraint``,
+    ``NewtonEuler.velocity_constraint``, ``NewtonEuler.rolling``, ``Lagrangian.constraint``,
+    ``Lagrangian.velocity_constraint``); ``expression`` is written in the coordinates as
+    functions of ``t``.
+
+    Examples
+    --------
+    >>> from dualmech import coordinate, rate
+    >>> x = coordinate("x")
+    >>> Constraint("roll", "velocity", rate(x) - 2, "constraint roll (acceleration level)")
+    Constraint(name='roll', level='velocity', expression=Derivative(x(t), t) - 2, label='constraint roll (acceleration level)')
+    """
+
+    name: str
+    level: str
+    expression: sp.Expr
+    label: str = ""
+
+    def __post_init__(self):
+        if self.level not in ("position", "velocity"):
+            raise ModelError(f"constraint `{self.name}`: `level` must be 'position' or "
+                             f"'velocity', got {self.level!r}.")
+        object.__setattr__(self, "expression", as_expr(self.expression))
+
+    def plain(self, coordinates) -> sp.Expr:
+        """The expression in plain state symbols (see :func:`state_symbols`)."""
+        return to_plain(self.expression, coordinates)
+
 
 
 _STATE_CACHE: dict = {}
@@ -193,6 +231,12 @@ class EquationSet:
     contributions : tuple of dict
         Optional: per equation, the additive piece each modelling ingredient contributes
         (used to generate mutants for testing the comparator).
+    description : str
+        One line shown beside the name.
+    constraints : tuple of Constraint
+        The constraints the model declares at position or velocity level (their
+        acceleration-level rows are among ``equations``); the verdict samples on the manifold
+        they define.
 
     Examples
     --------
@@ -214,9 +258,15 @@ class EquationSet:
     labels: tuple = ()
     contributions: tuple = field(default=(), repr=False)
     description: str = ""
+    constraints: tuple = field(default=(), repr=False)
 
     def __post_init__(self):
         object.__setattr__(self, "coordinates", tuple(self.coordinates))
+        object.__setattr__(self, "constraints", tuple(self.constraints))
+        for c in self.constraints:
+            if not isinstance(c, Constraint):
+                raise ModelError(f"model `{self.name}`: `constraints` holds {c!r}; each must "
+                                 "be a dualmech Constraint (declare them with the builders).")
         if not isinstance(self.equations, Rows):
             object.__setattr__(self, "equations", tuple(as_expr(e) for e in self.equations))
         if not isinstance(self.contributions, Rows):
@@ -428,8 +478,10 @@ class EquationSet:
         eqs = tuple(as_expr(e).subs(mapping, simultaneous=True) for e in self.equations)
         contrib = tuple({k: as_expr(v).subs(mapping, simultaneous=True) for k, v in c.items()}
                         for c in self.contributions)
+        cons = tuple(Constraint(c.name, c.level, c.expression.subs(mapping, simultaneous=True),
+                                c.label) for c in self.constraints)
         return EquationSet(name or self.name, self.coordinates, eqs, self.unknowns,
-                           self.labels, contrib, self.description)
+                           self.labels, contrib, self.description, cons)
 
     def change_coordinates(self, coordinates: Sequence, mapping: Mapping,
                            name: str | None = None) -> "EquationSet":
@@ -445,7 +497,8 @@ class EquationSet:
         if isinstance(self.equations, Rows):
             eqs, labels = self.equations.substituted(mapping, self.labels)
             return EquationSet(title, tuple(coordinates), Rows(*eqs, coordinates, plain=False),
-                               self.unknowns, tuple(labels), (), self.description)
+                               self.unknowns, tuple(labels), (), self.description,
+                               self._constraints_in(mapping, labels, coordinates))
         rules = {}
         for q, expr in mapping.items():
             expr = as_expr(expr)
@@ -459,7 +512,24 @@ class EquationSet:
             eqs.append(e)
             labels.append(label)
         return EquationSet(title, tuple(coordinates), tuple(eqs), self.unknowns,
-                           tuple(labels), (), self.description)
+                           tuple(labels), (), self.description,
+                           self._constraints_in(mapping, labels, coordinates))
+
+    def _constraints_in(self, mapping: Mapping, labels: Sequence, coordinates) -> tuple:
+        """The declared constraints rewritten by ``mapping`` (old coordinate -> expression in
+        the new ones), without those the new coordinates satisfy by construction."""
+        rules = {}
+        for q, expr in mapping.items():
+            expr = as_expr(expr)
+            rules[q.diff(t, 2)] = expr.diff(t, 2)
+            rules[q.diff(t)] = expr.diff(t)
+        out = []
+        for c in self.constraints:
+            e = c.expression.xreplace(rules).xreplace(dict(mapping))
+            if vanishes_identically(e, coordinates):
+                continue
+            out.append(Constraint(c.name, c.level, e, c.label if c.label in labels else ""))
+        return tuple(out)
 
     def without(self, key: str) -> "EquationSet":
         """The model with ingredient ``key`` removed from every equation (for mutation tests)."""
@@ -478,7 +548,7 @@ class EquationSet:
         contrib = tuple({k: (v * factor if k == key else v) for k, v in c.items()}
                         for c in self.contributions)
         return EquationSet(name, self.coordinates, eqs, self.unknowns, self.labels,
-                           contrib, self.description)
+                           contrib, self.description, self.constraints)
 
     def simplified(self) -> "EquationSet":
         """The same equations with each ingredient expanded and trig-simplified.
@@ -490,11 +560,12 @@ class EquationSet:
         if not self.contributions:
             eqs = tuple(sp.trigsimp(sp.expand(e)) for e in self.equations)
             return EquationSet(self.name, self.coordinates, eqs, self.unknowns, self.labels,
-                               (), self.description)
+                               (), self.description, self.constraints)
         parts = tuple({k: sp.trigsimp(sp.expand(v)) for k, v in c.items()}
                       for c in self.contributions)
         return EquationSet(self.name, self.coordinates, tuple(sp.Add(*p.values()) for p in parts),
-                           self.unknowns, self.labels, parts, self.description)
+                           self.unknowns, self.labels, parts, self.description,
+                           self.constraints)
 
     def ingredients(self) -> list[str]:
         seen = []
@@ -695,6 +766,31 @@ def is_zero_expression(expr) -> bool:
         lambda x: x.is_Pow and isinstance(x.base, sp.sin) and x.exp.is_Integer and x.exp >= 2,
         lambda x: (1 - sp.cos(x.base.args[0])**2)**(int(x.exp) // 2) * x.base**(int(x.exp) % 2))
     return sp.expand(num) == 0
+
+
+def vanishes_identically(expr, coordinates=()) -> bool:
+    """Is ``expr`` (in ``coordinates`` as functions of ``t``, their rates and parameters)
+    zero for every state?  A value away from zero at one random real point says no at once
+    (big expressions are not cancelled for nothing); otherwise :func:`is_zero_expression`
+    decides exactly.
+
+    >>> from dualmech import coordinate
+    >>> q = coordinate("q")
+    >>> vanishes_identically(sp.sin(q)**2 + sp.cos(q)**2 - 1, [q]), vanishes_identically(q, [q])
+    (True, False)
+    """
+    expr = as_expr(expr)
+    plain = to_plain(expr, coordinates) if coordinates else expr
+    import random
+    rng = random.Random(20261127)
+    point = {x: sp.Float(rng.uniform(0.3, 1.7), 30) for x in plain.free_symbols}
+    try:
+        value = complex(plain.xreplace(point).evalf(30))
+    except (TypeError, ValueError, ZeroDivisionError):
+        value = None
+    if value is not None and abs(value) > 1e-12:
+        return False
+    return is_zero_expression(sp.expand(expr))
 
 
 def _tidy(expr):

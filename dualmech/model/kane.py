@@ -10,7 +10,9 @@ projections), Kane's equations are formed with the generalised speeds ``u_j = q_
     F_j + F*_j = 0,   F_j  = sum F . dv_P/du_j + sum tau . dw_B/du_j
                       F*_j = -sum m a_C . dv_C/du_j - sum (I alpha + w x I w) . dw_B/du_j
 
-and one more equation per reaction, for an *auxiliary speed* that releases it: a reaction
+the acceleration-level row of each constraint the direct model declares (rolling, velocity
+and holonomic: :meth:`~dualmech.model.direct.NewtonEuler.rolling`, ...), and one more
+equation per reaction, for an *auxiliary speed* that releases it: a reaction
 force ``R n`` on body B gives B (with every body fixed to B and not separated from it by a
 declared reaction) the extra velocity ``u_R n``; a reaction couple ``M n`` the extra angular
 velocity ``u_R n`` about B's mass centre.  The auxiliary equation is Kane's equation for that
@@ -45,6 +47,7 @@ import symengine as se
 
 from dualmech.model._algebra import merge_names, names_of, to_se
 from dualmech.model.bodies import Particle, RigidBody
+from dualmech.model.constraints import acceleration_row
 from dualmech.model.direct import Declarations, ReactionDeclaration
 from dualmech.model.equations import EquationSet, ModelError, Rows, state_symbols, to_plain_se
 from dualmech.model.kinematics import Frame, Point, Vector
@@ -401,6 +404,11 @@ def kane_equations(decl: Declarations, name: str = "referee") -> EquationSet:
     rows_aux, labels_aux = _auxiliary(p, decl)
     rows += rows_aux
     labels += labels_aux
+    for c in decl.constraints:   # the declared constraints, as the direct form holds them
+        row, names = acceleration_row(c)
+        p.names = merge_names(p.names, names)
+        rows.append({f"constraint {c.name}": p.plain(row)})
+        labels.append(c.label)
     names = dict(p.names)
     for r in decl.reactions:
         names = merge_names(names, {r.symbol.name: r.symbol})
@@ -408,4 +416,5 @@ def kane_equations(decl: Declarations, name: str = "referee") -> EquationSet:
     return EquationSet(name, p.coordinates, Rows(eqs, names, p.coordinates, plain=True),
                        tuple(r.symbol for r in decl.reactions), tuple(labels),
                        Rows(rows, names, p.coordinates, plain=True),
-                       f"the Kane method from the declarations of `{decl.name}`")
+                       f"the Kane method from the declarations of `{decl.name}`",
+                       tuple(decl.constraints))

@@ -33,7 +33,8 @@ from dualmech.model._expr import as_expr, refuse_jumps, refuse_text_in
 from dualmech.model.bodies import Particle, RigidBody
 from dualmech.model.declared import note
 from dualmech.model._algebra import Bridge, total_derivative
-from dualmech.model.equations import EquationSet, ModelError, Rows, state_symbols, to_plain
+from dualmech.model.equations import (Constraint, EquationSet, ModelError, Rows, state_symbols,
+                                     to_plain)
 from dualmech.model.kinematics import Frame, Point, Vector, t
 
 __all__ = ["Lagrangian"]
@@ -88,6 +89,7 @@ class Lagrangian:
         self._R: dict[str, sp.Expr] = {}
         self._Q: dict[str, list] = {}
         self._constraints: list[tuple[sp.Symbol, sp.Expr, list]] = []
+        self._declared: list[tuple[str, sp.Expr]] = []   # each constraint at its own level
         self._prescribed: dict = {}
 
     # -- energies ----------------------------------------------------------------------
@@ -154,20 +156,26 @@ class Lagrangian:
 
     # -- constraints and prescribed motion ---------------------------------------------
     def constraint(self, name: str, g) -> sp.Symbol:
-        """Holonomic constraint ``g(q, t) = 0`` with multiplier ``name``; returns the multiplier."""
+        """Holonomic constraint ``g(q, t) = 0`` with multiplier ``name``; returns the multiplier.
+
+        The equations hold its acceleration level; ``g`` itself is kept on the equation set
+        (``EquationSet.constraints``, position level) for the verdict's manifold."""
         lam = sp.Symbol(name, real=True)
         # differentiated in symengine by :meth:`equations` (``None``: ``g`` itself is kept)
         self._constraints.append((lam, as_expr(g), None))
+        self._declared.append(("position", as_expr(g)))
         return lam
 
     def velocity_constraint(self, name: str, coefficients: Sequence, rest=0) -> sp.Symbol:
-        """Constraint ``sum a_j q'_j + a_0 = 0`` (``coefficients = a``, ``rest = a_0``)."""
+        """Constraint ``sum a_j q'_j + a_0 = 0`` (``coefficients = a``, ``rest = a_0``); kept at
+        velocity level on the equation set (``EquationSet.constraints``)."""
         a = [as_expr(c) for c in coefficients]
         if len(a) != len(self.coordinates):
             raise ModelError(f"`coefficients` needs {len(self.coordinates)} entries.")
         lam = sp.Symbol(name, real=True)
         level = sum(c * q.diff(t) for c, q in zip(a, self.coordinates)) + as_expr(rest)
         self._constraints.append((lam, level.diff(t), a))
+        self._declared.append(("velocity", level))
         return lam
 
     def prescribe(self, q, motion) -> None:
@@ -199,6 +207,18 @@ class Lagrangian:
             gradient[self.coordinates.index(q)] = g.diff(br.se(s.q))
         rate = total_derivative(g, states, t, br)
         return lam, total_derivative(rate, states, t, br), gradient
+
+    def _declared_constraints(self) -> tuple:
+        """The constraints at the level they were declared (prescribed motion put in), for
+        ``EquationSet.constraints``; one made identically zero by the prescribed motion is
+        left out."""
+        out = []
+        for (lam, _, _), (level, expr) in zip(self._constraints, self._declared):
+            expr = self._known(expr)
+            if expr != 0:
+                out.append(Constraint(lam.name, level, expr,
+                                      f"constraint {lam.name} (acceleration level)"))
+        return tuple(out)
 
     def equations(self) -> EquationSet:
         """Lagrange's equations, one per free coordinate, plus each constraint's acceleration level.
@@ -253,6 +273,6 @@ class Lagrangian:
                           tuple(lam for lam, _, _ in self._constraints),
                           tuple(label for label, _ in contributions),
                           Rows([p for _, p in contributions], names, free, plain=True),
-                          self.description)
+                          self.description, self._declared_constraints())
         note(self, out)   # the named T, V, R and Q terms, for an explanation (declared.py)
         return out

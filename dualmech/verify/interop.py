@@ -4,7 +4,9 @@ derivation of a problem; a problem's equations handed back for simulation.
 * :func:`from_mechanics` turns a ``KanesMethod``, ``LagrangesMethod`` or ``System`` into an
   :class:`~dualmech.model.equations.EquationSet` in the problem's coordinates and symbols (matched by
   name; the kinematic differential equations ``q' = f(u, q)`` are inverted, so a Kane model's
-  generalised speeds become the coordinates' rates);
+  generalised speeds become the coordinates' rates; dependent speeds with their velocity
+  constraints -- sympy's rolling disk -- and a Lagrange model's constraint equations are kept as declared
+  constraints at their own level, so the verdict samples on their manifold);
 * :func:`with_derivation` gives the problem with that set as one more model, and
   :func:`check_mechanics` compares it with the problem's own derivations exactly -- a wrong
   Kane model is named as the odd one out, term by term, like any other derivation;
@@ -33,7 +35,7 @@ from dataclasses import dataclass
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from dualmech.model.equations import EquationSet, ModelError
+from dualmech.model.equations import Constraint, EquationSet, ModelError
 from dualmech.model.kinematics import t as T_DUALMECH
 
 __all__ = ["from_mechanics", "with_derivation", "check_mechanics", "to_mechanics",
@@ -63,14 +65,24 @@ def _method_of(model):
                     f"sympy.physics.mechanics, got {type(model).__name__}.")
 
 
-def _kane_rows(km) -> tuple[list, list]:
-    """``M u' - f`` with ``u`` and ``u'`` written through the coordinates' rates."""
+def _kane_rows(km) -> tuple[list, list, list]:
+    """``M u' - f`` with ``u`` and ``u'`` written through the coordinates' rates, its labels
+    and the velocity constraints ``[(name, "velocity", expression)]`` of the dependent speeds.
+
+    With dependent speeds (``u_dependent``, ``velocity_constraints``) sympy's ``mass_matrix``
+    and ``forcing`` hold the reduced equations of the independent speeds, then the velocity
+    constraints differentiated (acceleration level); the constraints themselves are returned
+    at velocity level, so the verdict samples on their manifold."""
     q, u = list(km.q), list(km.u)
+    if getattr(km, "_qdep", None):
+        raise ModelError("the KanesMethod has dependent coordinates (configuration "
+                         "constraints); they are not supported: give a model whose "
+                         "coordinates are independent (dependent speeds are supported).")
     if len(u) != len(q):
         raise ModelError(f"the KanesMethod has {len(q)} coordinates and {len(u)} generalised "
-                         "speeds: dependent speeds or coordinates (nonholonomic or configuration "
-                         "constraints) are not supported; give a model in independent "
-                         "coordinates.")
+                         "speeds: the speeds must be as many as the coordinates (each "
+                         "coordinate's rate a function of the speeds; dependent speeds with "
+                         "velocity constraints are supported); give such a model.")
     try:
         M, f = km.mass_matrix, km.forcing
     except (AttributeError, ValueError, TypeError):
@@ -89,11 +101,27 @@ def _kane_rows(km) -> tuple[list, list]:
         rule[ui.diff(tt)] = sp.diff(expr, tt)
         rule[ui] = expr
     rows = [sp.expand(e.xreplace(rule)) for e in (M * sp.Matrix(u).diff(tt) - f)]
-    return rows, [f"Kane, {getattr(ui, 'name', None) or ui.func.__name__}" for ui in u]
+    dep = list(getattr(km, "_udep", None) or [])
+    k_nh = getattr(km, "_k_nh", None)
+    constraints = []
+    if dep and k_nh is not None and k_nh.rows:
+        velocity = k_nh * sp.Matrix(u) + km._f_nh   # B u + C = 0, sympy's form
+        for ud, c in zip(dep, velocity):
+            constraints.append((_speed_name(ud), "velocity", sp.expand(c.xreplace(rule))))
+    names = [_speed_name(ui) for ui in u[:len(u) - len(constraints)]]
+    labels = [f"Kane, {nm}" for nm in names]
+    labels += [f"constraint {nm} (acceleration level)" for nm, _, _ in constraints]
+    return rows, labels, constraints
 
 
-def _lagrange_rows(lm) -> tuple[list, list]:
-    """``M [q''; lambda] - f`` of a ``LagrangesMethod`` (forming its equations if needed)."""
+def _speed_name(u) -> str:
+    return getattr(u, "name", None) or u.func.__name__
+
+
+def _lagrange_rows(lm) -> tuple[list, list, list]:
+    """``M [q''; lambda] - f`` of a ``LagrangesMethod`` (forming its equations if needed), its
+    labels and its constraints ``[(name, level, expression)]`` at the level they were given
+    (``hol_coneqs`` position, ``nonhol_coneqs`` velocity)."""
     try:
         M, f = lm.mass_matrix, lm.forcing
     except (AttributeError, ValueError, TypeError):
@@ -104,9 +132,17 @@ def _lagrange_rows(lm) -> tuple[list, list]:
     tt = _time()
     x = sp.Matrix([qi.diff(tt, 2) for qi in q] + lam)
     rows = list(M * x - f)
+    hol = list(getattr(lm, "_hol_coneqs", None) or [])
+    velocity = list(getattr(lm, "coneqs", None) or [])   # hol' and nonhol: velocity level
+    if len(rows) == len(q):   # sympy's mass_matrix holds the dynamic rows only
+        rows += [sp.expand(c.diff(tt)) for c in velocity]
     labels = [f"Lagrange (mechanics), {qi.func.__name__}" for qi in q]
     labels += [f"constraint {i + 1} (acceleration level)" for i in range(len(rows) - len(q))]
-    return rows, labels
+    constraints = []
+    if len(velocity) == len(rows) - len(q):   # one acceleration row per constraint, in order
+        constraints = [(str(i + 1), "position", hol[i]) if i < len(hol) else
+                       (str(i + 1), "velocity", c) for i, c in enumerate(velocity)]
+    return rows, labels, constraints
 
 
 def _by_name(things) -> dict:
@@ -140,8 +176,8 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
     """
     method = _method_of(model)
     me = _mechanics()
-    rows, labels = (_kane_rows(method) if isinstance(method, me.KanesMethod)
-                    else _lagrange_rows(method))
+    rows, labels, constraints = (_kane_rows(method) if isinstance(method, me.KanesMethod)
+                                 else _lagrange_rows(method))
     tt = _time()
     mech_q = list(method.q)
     known_q = {}
@@ -175,13 +211,13 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
         target = sp.Symbol(str(lam_names.get(_name(lam), _name(lam))), real=True)
         rule[lam] = target
         unknowns.append(target)
-    stray = {f for r in rows for f in r.atoms(AppliedUndef)} - set(mech_q) \
-        - set(rule)
+    stray = {f for r in rows + [c for *_, c in constraints] for f in r.atoms(AppliedUndef)} \
+        - set(mech_q) - set(rule)
     if stray:
         raise ModelError(f"the {type(method).__name__} uses functions of time that are not its "
                          f"coordinates: {', '.join(sorted(map(str, stray)))}; specified inputs "
                          "are not supported (write them as functions of t).")
-    free = set().union(*(r.free_symbols for r in rows)) - {tt}
+    free = set().union(*(r.free_symbols for r in rows + [c for *_, c in constraints])) - {tt}
     params = _by_name(problem.parameter_symbols) if problem is not None else {}
     explicit_s = {_name(k): v for k, v in (symbols or {}).items()}
     missing = []
@@ -199,10 +235,13 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
                          "parameter of the problem.")
     rule[tt] = T_DUALMECH
     equations = tuple(r.xreplace(rule) for r in rows)
+    declared = tuple(Constraint(nm, level, c.xreplace(rule),
+                                f"constraint {nm} (acceleration level)")
+                     for nm, level, c in constraints)
     return EquationSet(name, tuple(qmap.values()), equations,
                        unknowns=tuple(unknowns),
                        labels=tuple(labels), description=f"{type(method).__name__} of "
-                       "sympy.physics.mechanics")
+                       "sympy.physics.mechanics", constraints=declared)
 
 
 def with_derivation(problem, equations: EquationSet, coordinate_map: dict | None = None):

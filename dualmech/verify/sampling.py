@@ -20,6 +20,7 @@ from dualmech.model._algebra import Bridge, linear_coefficients, to_se, total_de
 from dualmech.model._expr import as_expr
 from dualmech.model.equations import EquationSet, ModelError, state_symbols
 from dualmech.exact.form import ExactForm, is_zero
+from dualmech.exact.errors import Undecidable
 from dualmech.model.kinematics import t
 from dualmech.exact import linalg as la
 
@@ -69,7 +70,7 @@ class Context:
         coords = models[0].coordinates
         free = set()
         for m in models:
-            for e in m.equations:
+            for e in list(m.equations) + [c.expression for c in m.constraints]:
                 free |= e.free_symbols
         free -= {t} | set(u for m in models for u in m.unknowns)
         return cls(coords, sorted(free, key=str))
@@ -95,7 +96,10 @@ class System:
     Static rows (no acceleration, no reaction: a massless body's balance) are replaced by
     their time derivative at the acceleration level; the rows themselves (and, for a
     position-level row, its first derivative) are kept in ``constraints``: they must vanish
-    on the motion, and the sampler draws points on the manifold they define.
+    on the motion, and the sampler draws points on the manifold they define.  The constraints
+    the model declares (``EquationSet.constraints``, position or velocity level) follow them
+    in ``constraints`` (the last ``declared`` entries), with the index of their
+    acceleration-level row in ``static``.
 
     A model derived in symengine keeps its matrices there (:meth:`flat_se`), and its sympy
     ``A``, ``b`` are built only when read.
@@ -108,6 +112,7 @@ class System:
         self._A, self._b = A, b
         self.static = list(static or [])             # indices of the static rows
         self.constraints = list(constraints or [])   # per static row: [g, g'] or [g]
+        self.declared = 0   # the last ones are declared constraints (row: their acceleration row)
         self._se = se_form                           # (A, b, names) in symengine
 
     @property
@@ -125,11 +130,15 @@ class System:
     @classmethod
     def of(cls, eqs: EquationSet, coords: Sequence) -> "System":
         eqs = reorder(eqs, coords)
+        declared = _declared(eqs)
         fast = eqs.plain_matrix_se()
         if fast is not None:
             A, b, _ = fast
             if all(any(A[i, j] != 0 for j in range(A.cols)) for i in range(A.rows)):
-                return cls(eqs, None, None, se_form=fast)   # no static rows
+                out = cls(eqs, None, None, [r for r, _ in declared],   # no static rows
+                          [lv for _, lv in declared], se_form=fast)
+                out.declared = len(declared)
+                return out
         A, b = eqs.plain_matrix()
         rows = [list(A.row(i)) for i in range(A.rows)]
         rhs = list(b)
@@ -151,7 +160,10 @@ class System:
                 newA, newb, _ = linear_coefficients([br.sp(d)], unknown, br)
                 rows[i], rhs[i] = list(newA.row(0)), newb[0]
                 constraints.append(levels)
-        return cls(eqs, rows, rhs, static, constraints)
+        out = cls(eqs, rows, rhs, static + [r for r, _ in declared],
+                  constraints + [lv for _, lv in declared])
+        out.declared = len(declared)
+        return out
 
     def flat_se(self) -> list | None:
         """``flat()`` in symengine, for a model derived there (else ``None``)."""
@@ -196,7 +208,23 @@ def reorder(eqs: EquationSet, coords) -> EquationSet:
     if tuple(eqs.coordinates) == tuple(coords):
         return eqs
     return EquationSet(eqs.name, tuple(coords), eqs.equations, eqs.unknowns, eqs.labels,
-                       eqs.contributions, eqs.description)
+                       eqs.contributions, eqs.description, eqs.constraints)
+
+
+def _declared(eqs: EquationSet) -> list:
+    """``[(row, levels)]`` of the constraints ``eqs`` declares, in plain symbols: ``row`` the
+    index of the acceleration-level row, ``levels`` ``[g, g']`` (position) or ``[g]``
+    (velocity).  A constraint whose row is not among the equations is left out."""
+    out = []
+    for c in eqs.constraints:
+        if c.label not in eqs.labels:
+            continue
+        g = c.plain(eqs.coordinates)
+        levels = [g]
+        if c.level == "position":
+            levels.append(sp.diff(g, t) + sum(sp.diff(g, s.q) * s.qd for s in eqs.states))
+        out.append((eqs.labels.index(c.label), levels))
+    return out
 
 
 @dataclass
@@ -279,10 +307,62 @@ def shared_manifold(systems: Sequence[System], partial: Sequence[bool], ctx: Con
     constraint of the motion: without a shared manifold, points are drawn freely and such a
     row is reported where it does not hold.
     """
+    if any(s.declared for s in systems):
+        return _declared_manifold(systems, ctx)
     full = [s for s, p in zip(systems, partial) if not p]
     if not systems[0].constraints or not all(s.constraints for s in full):
         return []
     return manifold(systems[:1], ctx)
+
+
+def _declared_manifold(systems: Sequence[System], ctx: Context) -> list:
+    """The manifold of the constraints declared (or held as static rows) by the models, when
+    some model declares constraints: each model's own is a candidate, and the one on which
+    the most models' constraints hold wins (ties: the first, the reference); a model whose
+    constraints differ (the geometric contact point's velocity where the material point's
+    was meant) is then the one whose constraints fail.  Free points when no candidate can be
+    sampled exactly (the acceleration-level rows are compared there, as before)."""
+    candidates, seen = [], []
+    for s in systems:
+        if not s.constraints:
+            continue
+        try:
+            deps = manifold([s] + [o for o in systems if o is not s], ctx)
+        except ModelError:
+            continue
+        key = [(sym, sp.expand(e)) for sym, e in deps]
+        if key not in seen:
+            seen.append(key)
+            candidates.append(deps)
+    if len(candidates) <= 1:
+        return candidates[0] if candidates else []
+    return max(candidates, key=lambda deps: _satisfied(deps, systems, ctx))
+
+
+def _satisfied(deps: list, systems: Sequence[System], ctx: Context, tries: int = 6) -> int:
+    """How many of ``systems`` have every constraint zero at a point of ``deps``' manifold."""
+    cons = [s.constraint_exprs() for s in systems]
+    exprs = [e for _, e in deps] + [e for c in cons for e in c]
+    try:
+        form = ExactForm.build(exprs, ctx.base, **_domains(ctx))
+    except (ValueError, ModelError, Undecidable):
+        return 0
+    rng = random.Random(len(deps))
+    for _ in range(tries):
+        point = form.sample(rng, ctx.floats)
+        try:
+            vals = form.evaluate(point)
+            for i, (sym, _) in enumerate(deps):
+                point[sym] = vals[i]
+                vals = form.evaluate(point)
+        except (ZeroDivisionError, ValueError, OverflowError):
+            continue
+        count, off = 0, len(deps)
+        for c in cons:
+            count += all(is_zero(v, 1) for v in vals[off:off + len(c)])
+            off += len(c)
+        return count
+    return 0
 
 
 def manifold(systems: Sequence[System], ctx: Context) -> list:
@@ -297,11 +377,15 @@ def manifold(systems: Sequence[System], ctx: Context) -> list:
     source = next((s for s in systems if s.constraints), None)
     if source is None:
         return []
-    everything = [e for s in systems for e in s.flat() + s.constraint_exprs()]
     inside = set()
-    for e in everything:
-        for f in e.atoms(sp.Function):
-            inside |= f.free_symbols
+    for s in systems:
+        held = s.flat_se()
+        for e in (held if held is not None else s.flat()):
+            for f in e.atoms(se.Function if held is not None else sp.Function):
+                inside |= {sp.Symbol(x.name, real=True) for x in f.free_symbols}
+        for e in s.constraint_exprs():
+            for f in e.atoms(sp.Function):
+                inside |= f.free_symbols
     taken: set = set()
     deps = []
     qs = [st.q for st in ctx.states]
@@ -355,18 +439,23 @@ class Sampler:
         exprs = [e for _, e in self.dependents]
         self.offset = len(exprs)
         fast = [s.flat_se() for s in self.systems]
-        extra_se = _in_symengine(extra) if all(f is not None for f in fast) else None
-        if not self.dependents and extra_se is not None:
-            # every model derived in symengine: the extras join them there (see world_se)
+        cons = [e for s in self.systems for e in s.constraint_exprs()]
+        held = None
+        if all(f is not None for f in fast):
+            held = _in_symengine(exprs + cons + list(extra))
+        if held is not None:
+            # every model derived in symengine: the manifold, the constraints and the extras
+            # join them there (see world_se)
+            k = len(exprs)
+            exprs = held[:k]
             for f in fast:
                 exprs += f
-            extra = extra_se
+            cons, extra = held[k:k + len(cons)], held[k + len(cons):]
         else:
             for s in self.systems:
                 exprs += s.flat()
         self.offset_constraints = len(exprs)
-        for s in self.systems:
-            exprs += s.constraint_exprs()
+        exprs += cons
         self.offset_extra = len(exprs)
         exprs += list(extra)
         self.symbols = tuple(ctx.base) + tuple(extra_symbols)

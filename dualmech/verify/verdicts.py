@@ -313,13 +313,22 @@ def _faults_at(names, sols: dict, statics: dict, referees: Mapping | None = None
         if off:
             labels = []
             pos = 0
-            for row, levels in zip(system.static, system.constraints):
+            first_declared = len(system.constraints) - getattr(system, "declared", 0)
+            declared = False
+            for k, (row, levels) in enumerate(zip(system.static, system.constraints)):
                 if any(pos <= i < pos + len(levels) for i in off):
                     labels.append(system.model.labels[row])
+                    declared = declared or k >= first_declared
                 pos += len(levels)
-            faults.append(ModelFault(nm, "inconsistent", (), "its static equation(s) [" +
+            what = "declared constraint(s) or static equation(s)" if declared else \
+                "static equation(s)"
+            faults.append(ModelFault(nm, "inconsistent", (), f"its {what} [" +
                                      "], [".join(labels) + "] do not hold on the motion's "
-                                     "constraint manifold"))
+                                     "constraint manifold" + (
+                                         " (the other models' constraints); rolling is the "
+                                         "velocity of the body's material point at the "
+                                         "contact (NewtonEuler.rolling), not of the "
+                                         "geometric contact point" if declared else "")))
             continue
         s = sols[nm]
         if s.status != "ok":
