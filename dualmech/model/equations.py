@@ -459,7 +459,18 @@ class EquationSet:
         A, b = self._matrix
         # unsimplified entries (sin^2 + cos^2 - 1) must not be taken as pivots: a structural
         # zero used as a pivot gives nan
-        sol = A.LUsolve(b, iszerofunc=is_zero_expression)
+        try:
+            sol = A.LUsolve(b, iszerofunc=is_zero_expression)
+        except ValueError:          # sympy's NonInvertibleMatrixError: no pivot left
+            empty = [self.labels[i] for i in range(A.rows)
+                     if all(is_zero_expression(x) for x in A.row(i))]
+            why = (f"equation(s) {', '.join(f'`{e}`' for e in empty)} hold no acceleration "
+                   "or reaction (a massless part, or a constraint written at position level)"
+                   if empty else "its matrix [M B] is singular for every state")
+            raise ModelError(f"model `{self.name}` cannot be solved for its accelerations and "
+                             f"reactions: {why}. Such a model is judged together with the "
+                             "others (dualmech check) but has no solved form of its own.") \
+                from None
         return {u: _tidy(s) for u, s in zip(self._unknown_vector, sol)}
 
     def solve(self) -> dict:
