@@ -130,6 +130,25 @@ class Store:
             "SELECT result FROM rows WHERE batch = ? AND result IS NOT NULL ORDER BY idx",
             (bid,))]
 
+    def student_rows(self, student: str) -> list[dict]:
+        """Every row of an uploaded batch with ``student``'s id: batch, line, question,
+        answer and result."""
+        return [dict(r, result=json.loads(r["result"]) if r["result"] else None)
+                for r in self._all("SELECT batch, line, question, answer, quantity, about, "
+                                   "result FROM rows WHERE student = ? ORDER BY batch, idx",
+                                   (student,))]
+
+    def delete_student_rows(self, student: str) -> int:
+        """Remove ``student``'s rows from every batch (each batch's total follows); how many."""
+        with self._lock:
+            batches = [r[0] for r in self._db.execute(
+                "SELECT DISTINCT batch FROM rows WHERE student = ?", (student,))]
+            n = self._db.execute("DELETE FROM rows WHERE student = ?", (student,)).rowcount
+            for b in batches:
+                self._db.execute("UPDATE batches SET total = (SELECT COUNT(*) FROM rows WHERE "
+                                 "batch = ?) WHERE id = ?", (b, b))
+        return n
+
     # -- answers typed on the page ------------------------------------------------------------
     def add_answer(self, result: dict) -> None:
         """Keep one graded answer from the page (for the teacher's view of the class)."""
