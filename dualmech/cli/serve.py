@@ -2,8 +2,13 @@
 
 ::
 
-    dualmech serve [--host 127.0.0.1] [--port 8000] [--problems NAME ...] [--token T]
-                   [--data DIR] [--workers N]
+    dualmech serve [--host 127.0.0.1] [--port 8000] [--problems NAME ...]
+                   [--token-file FILE] [--data DIR] [--workers N]
+
+The teacher's token is read from ``--token-file`` (a file only its owner can read) or the
+environment variable ``DUALMECH_TOKEN``, never from the command line, where every user of
+the machine sees it (``ps``); without either a random one is made and printed.  A weak token
+(under 16 characters, or of few distinct ones) is refused.
 
 ``--problems`` takes every NAME form (a catalogue name, a file ``path.py[:Class]``,
 ``module:Class``, a registered catalogue's problem, or a registered catalogue's name for
@@ -24,12 +29,17 @@ Example
 from __future__ import annotations
 
 import argparse
+import os
+import stat
 from pathlib import Path
 
 from dualmech.cli import names as _names
 from dualmech.cli.errors import OK, UsageError, about, guarded
 
-__all__ = ["register", "handle", "served_specs"]
+__all__ = ["register", "handle", "served_specs", "read_token", "TOKEN_VARIABLE"]
+
+#: The environment variable a teacher's token may be given in.
+TOKEN_VARIABLE = "DUALMECH_TOKEN"
 
 
 def _port(text: str) -> int:
@@ -58,7 +68,11 @@ def register(subparsers) -> argparse.ArgumentParser:
                         "path.py[:Class], module:Class, a registered catalogue's problem or "
                         "its name for all of them (default: dualmech's catalogue); clients "
                         "can only name these")
-    p.add_argument("--token", help="the teacher's token (default: a random one, printed)")
+    p.add_argument("--token-file", type=Path, metavar="FILE",
+                   help=f"a file holding the teacher's token, readable by its owner only "
+                        f"(chmod 600); or set {TOKEN_VARIABLE}; default: a random token, "
+                        "printed")
+    p.add_argument("--token", help=argparse.SUPPRESS)   # refused: visible in `ps`
     p.add_argument("--data", type=Path, default=Path("dualmech-data"), metavar="DIR",
                    help="where batches and results are kept (default: %(default)s)")
     p.add_argument("--workers", type=int, default=None, metavar="N",
@@ -80,14 +94,46 @@ def handle(args: argparse.Namespace) -> int:
         raise UsageError("the web extra is missing: pip install 'dualmech[web]'") from None
     if args.workers is not None and args.workers < 1:
         raise UsageError("`--workers` must be at least 1.")
+    token = read_token(args.token_file, os.environ, args.token)
     specs = served_specs(args.problems)
     from dualmech.web.server import serve
     try:
-        serve(args.host, args.port, specs, token=args.token, data=args.data,
+        serve(args.host, args.port, specs, token=token, data=args.data,
               workers=args.workers, as_json=args.json)
     except ValueError as exc:
         raise UsageError(str(exc)) from None
     return OK
+
+
+def read_token(path: Path | None, environ, given: str | None = None) -> str | None:
+    """The teacher's token from ``path`` or ``environ[TOKEN_VARIABLE]`` (None: the server
+    makes one); a token ``given`` on the command line, a file others can read or one that
+    cannot be read is a usage error saying what to do.
+
+    >>> read_token(None, {"DUALMECH_TOKEN": "  from-the-environment-1  "})
+    'from-the-environment-1'
+    >>> read_token(None, {}) is None
+    True
+    """
+    if given is not None:
+        raise UsageError(f"`--token` would show the token to every user of this machine "
+                         f"(`ps`); put it in a file only you can read and pass "
+                         f"`--token-file FILE`, or set {TOKEN_VARIABLE}.")
+    if path is not None:
+        try:
+            mode = path.stat().st_mode
+            if mode & (stat.S_IRWXG | stat.S_IRWXO):
+                raise UsageError(f"{path} can be read by other users; `chmod 600 {path}` "
+                                 "and start again.")
+            text = path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise UsageError(f"cannot read the token file {path}: "
+                             f"{getattr(exc, 'strerror', None) or exc}") from None
+        if not text.strip():
+            raise UsageError(f"the token file {path} is empty.")
+        return text.strip()
+    value = environ.get(TOKEN_VARIABLE)
+    return value.strip() if value else None
 
 
 def served_specs(names) -> list | None:

@@ -25,6 +25,7 @@ SCRIPT = r"""
   var token = found ? decodeURIComponent(found[1]) : "";
   var statusLine = document.getElementById("status");
   var shown = {};
+  var typed = {};
 
   function el(tag, text, cls) {
     var e = document.createElement(tag);
@@ -70,6 +71,7 @@ SCRIPT = r"""
     var area = el("textarea");
     area.id = "answer-" + q.index;
     area.setAttribute("aria-label", "answer to question " + (q.index + 1));
+    area.value = typed[q.index] || "";
     var button = el("button", "Submit");
     button.id = "submit-" + q.index;
     button.type = "button";
@@ -80,6 +82,7 @@ SCRIPT = r"""
     else if (q.last) { feedback(box, q.last); }
     button.addEventListener("click", function () {
       button.disabled = true;
+      typed[q.index] = area.value;
       box.textContent = "Grading...";
       api("POST", "/answers", {question: q.index, answer: area.value}).then(function (r) {
         if (!r.ok) { box.textContent = r.json.error; button.disabled = false; return; }
