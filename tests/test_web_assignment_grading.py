@@ -107,5 +107,20 @@ def test_regrade_reports_what_changed(class_):
         "changed"] == []
     stats = c.get(f"/api/assignments/{made['id']}/stats", headers=AUTH).json()
     assert stats["students"]["cy"] == {"attempts": [1], "scores": [0.5], "total": 0.5}
-    assert {"mistake": "a term's sign", "attempts": 1, "students": 1} in \
+    assert {"mistake": "gravity sign", "attempts": 1, "students": 1} in \
         stats["questions"][0]["mistakes"]
+
+
+def test_a_personal_grader_in_process_names_the_kind_of_term_and_checks_its_numbers():
+    from dualmech.grade.context import GradingUnavailable
+    from dualmech.grade.parser import LIMITS
+    from dualmech.web.numbers import Personal
+    grader = Personal.of("simple_pendulum", {"M": "1.5", "a": "0.75", "g": "9.81"}).grader(
+        LIMITS)
+    assert grader.grade("0.75*theta'' + 9.81*sin(theta) = 0").status == "right"
+    assert grader.grade("theta'' = -13.08*sin(theta)").status == "right"   # 9.81/0.75
+    assert grader.grade("theta'' = -13.1*sin(theta)").status == "wrong"
+    g = grader.grade("0.75*theta'' - 9.81*sin(theta) = 0", feedback="locate")
+    assert [e.sentence() for e in g.edits] == ["a term has the wrong sign (a gravity term)"]
+    with pytest.raises(GradingUnavailable, match="simple_pendulum` has the parameters M, a, g"):
+        Personal.of("simple_pendulum", {"a": "0.75", "g": "9.81", "k": "2"}).grader(LIMITS)

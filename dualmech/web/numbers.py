@@ -120,11 +120,10 @@ class Personal:
 
     def grader(self, limits):
         """The grader of this problem whose points have the student's parameter values."""
-        from dualmech.grade.api import Grader
         key = (self, limits)
         found = _GRADERS.get(key)
         if found is None:
-            found = Grader(self.spec, limits=limits)
+            found = _personal_grader()(self.spec, limits=limits)
             found._ctx = _personal_context()(found.problem, exact_values(dict(self.numbers)))
             _GRADERS[key] = found
             while len(_GRADERS) > _KEPT:
@@ -189,6 +188,58 @@ def _personal_context():
 
     _PersonalContext = PersonalContext
     return PersonalContext
+
+
+def _personal_grader():
+    """The :class:`~dualmech.grade.api.Grader` subclass of a student's numbers (made on first
+    use): as the grader, and each edit that names no kind of term is named the way the grader
+    names it at the problem's own points (:func:`dualmech.grade.feedback.category`, which
+    needs the parameters' dimensions: a gravity term, a spring term), from its correct term,
+    else its written one."""
+    global _PersonalGrader
+    if _PersonalGrader is not None:
+        return _PersonalGrader
+    from dataclasses import replace
+
+    from dualmech.grade.api import Grader
+
+    class PersonalGrader(Grader):
+        def grade(self, answer, quantity=None, about=None, feedback="full"):
+            g = super().grade(answer, quantity, about, "full")
+            if not any(not e.category for e in g.edits):
+                return g.at_level(feedback)
+            named = [replace(e, category=_category(e, self.problem, self.limits))
+                     if not e.category else e for e in g.edits]
+            return replace(g, edits=named).at_level(feedback)
+
+    _PersonalGrader = PersonalGrader
+    return PersonalGrader
+
+
+def _category(edit, problem, limits) -> str:
+    """The kind of term ``edit`` corrects, at the problem's own context ("" if unknown)."""
+    from dualmech.grade.context import ProblemContext
+    from dualmech.grade.feedback import category
+    from dualmech.grade.formula import Formula
+    from dualmech.grade.parser import parse
+    ctx = ProblemContext.of(problem)
+    for text in (edit.correct, edit.term):
+        if not text:
+            continue
+        try:
+            eqs = parse(text, limits)
+            if len(eqs) != 1 or eqs[0].rhs is not None:
+                continue
+            found = category(Formula.from_node(eqs[0].lhs, ctx.vocabulary, limits,
+                                               text).sympy(), ctx)
+        except Exception:   # noqa: BLE001 - a name is a courtesy; the verdict stands without
+            continue
+        if found:
+            return found
+    return ""
+
+
+_PersonalGrader = None
 
 
 def _mpf(v: Fraction):
