@@ -147,7 +147,7 @@ def test_an_assignment_gives_each_student_a_link_once(client, made):
     assert ada["token"] not in {r["token"] for r in stored}       # only its hash is kept
 
 
-# -- GET /me, hostile ---------------------------------------------------------------------------
+# -- GET /me, hostile -----------------------------------------------------------------------------
 def _me(client, aid, token):
     return _timed(client.get, f"/api/assignments/{aid}/me",
                   headers={"Authorization": f"Bearer {token}"} if token else {})
@@ -185,7 +185,7 @@ def test_me_shows_the_numbers_drawn_from_the_declared_ranges(client, made):
     assert mine["ada"]["numbers"] != mine["bob"]["numbers"]
 
 
-# -- POST /answers, hostile -------------------------------------------------------------------------
+# -- POST /answers, hostile -----------------------------------------------------------------------
 def _answer(client, made, body, student="ada", raw=None):
     headers = {"Authorization": f"Bearer {made['students'][student]['token']}"}
     if raw is not None:
@@ -264,7 +264,7 @@ def test_answers_are_rate_limited_per_student_not_per_address(tmp_path):
     assert codes == {"ada": [403, 429], "bob": [403, 429]}
 
 
-# -- the teacher's token and sessions ----------------------------------------------------------------
+# -- the teacher's token and sessions -------------------------------------------------------------
 def test_a_weak_teacher_token_is_refused(tmp_path):
     for weak in ("", "s3cret", "aaaaaaaaaaaaaaaaaaaa", " padded-token-of-length "):
         with pytest.raises(ValueError, match="token"):
@@ -300,7 +300,7 @@ def test_sessions_expire_end_at_logout_and_pages_are_not_cached(tmp_path, monkey
         assert "cache-control" not in c.get("/problems/simple_pendulum").headers
 
 
-# -- gradebook, statistics, a student's data --------------------------------------------------------
+# -- gradebook, statistics, a student's data ------------------------------------------------------
 def _graded(room, aid, student, question, answer, problem="simple_pendulum", quantity=None):
     """An attempt recorded with the real grade of ``answer`` (graded here, in-process)."""
     from dualmech.grade import grade

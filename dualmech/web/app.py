@@ -49,7 +49,7 @@ from dualmech.web.assets import SCRIPT, STYLE
 from dualmech.web.batches import BatchError, BatchRunner, read_upload
 from dualmech.web.catalog import ProblemInfo
 from dualmech.web.classroom import Classroom
-from dualmech.web.common import error as _error, json_object, lone_surrogate as _lone_surrogate
+from dualmech.web.common import error as _error, json_object
 from dualmech.web.guard import RateLimiter, SameOrigin, SecurityHeaders, TooLarge, read_body
 from dualmech.web.openapi import SPEC
 from dualmech.web.preview import preview

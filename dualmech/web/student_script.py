@@ -43,8 +43,9 @@ SCRIPT = r"""
     }
     return fetch("/api/assignments/" + encodeURIComponent(aid) + path, init)
       .then(function (r) {
-        return r.json().then(function (j) { return {ok: r.ok, json: j}; },
-                             function () { return {ok: false, json: {error: "HTTP " + r.status}}; });
+        return r.json().then(function (j) { return {ok: r.ok, json: j}; }, function () {
+          return {ok: false, json: {error: "HTTP " + r.status}};
+        });
       });
   }
 
@@ -120,7 +121,10 @@ SCRIPT = r"""
   }
 
   function load() {
-    if (!token) { statusLine.textContent = "This link has no token: use the link your teacher sent."; return; }
+    if (!token) {
+      statusLine.textContent = "This link has no token: use the link your teacher sent.";
+      return;
+    }
     api("GET", "/me").then(function (r) {
       if (!r.ok) { statusLine.textContent = r.json.error; return; }
       render(r.json);
