@@ -44,13 +44,13 @@ from starlette.requests import Request
 from starlette.responses import HTMLResponse, JSONResponse, RedirectResponse, Response
 from starlette.routing import Route
 
-from dualmech.web import classroom_routes, pages
+from dualmech.web import classroom_routes, lti, pages
 from dualmech.web.assets import SCRIPT, STYLE
 from dualmech.web.batches import BatchError, BatchRunner, read_upload
 from dualmech.web.catalog import ProblemInfo
 from dualmech.web.classroom import Classroom
 from dualmech.web.common import error as _error, json_object
-from dualmech.web.guard import RateLimiter, SameOrigin, SecurityHeaders, TooLarge, read_body
+from dualmech.web.guard import RateLimiter, SecurityHeaders, TooLarge, read_body
 from dualmech.web.openapi import SPEC
 from dualmech.web.preview import preview
 from dualmech.web.sessions import NoStore, Sessions, check_token
@@ -108,6 +108,7 @@ class _Server:
         self.token = token
         self.sessions: Sessions | None = None
         self.classroom: Classroom | None = None
+        self.lti: lti.Lti | None = None
         self.clock = time.time     # what deadlines are compared with (tests set their own)
         self.pool = pool
         self.own_pool = pool is None
@@ -142,6 +143,7 @@ class _Server:
     def start(self) -> None:
         self.store = Store(self.data)
         self.sessions, self.classroom = Sessions(self.store), Classroom(self.store)
+        self.lti = lti.Lti(self.data, self.store)
         if self.pool is None:
             from dualmech.grade.sandbox import GradingPool
             self.pool = GradingPool(self.workers, seconds=self.grade_seconds,
@@ -244,7 +246,7 @@ def create_app(problems: Sequence[str] | None = None, *, data: str | Path = "dua
     app = Starlette(routes=routes, lifespan=_lifespan,
                     exception_handlers={404: _not_found_page, 500: _failed,
                                         Exception: _failed})
-    app.add_middleware(SameOrigin)
+    app.add_middleware(lti.SameOriginExceptLaunch)
     app.add_middleware(NoStore)
     app.add_middleware(SecurityHeaders)
     app.state.server = srv
@@ -528,6 +530,7 @@ routes = [
     Route("/api/batches/{id}", teacher_only(api_batch)),
     Route("/api/batches/{id}/{file:str}", teacher_only(_files(api_batch_file))),
     *classroom_routes.routes,
+    *lti.routes,
 ]
 
 

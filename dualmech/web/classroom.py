@@ -89,6 +89,15 @@ class Classroom:
                 raise
         return aid, tokens
 
+    def enrol(self, aid: str, student: str, numbers: dict) -> str:
+        """Enrol ``student`` in ``aid`` (kept numbers if enrolled already) with a new token,
+        which is returned: a launch from a learning platform (:mod:`.lti`) rotates it."""
+        token = secrets.token_urlsafe(24)
+        self.store._run("INSERT INTO enrolled VALUES (?, ?, ?, ?) ON CONFLICT (assignment, "
+                        "student) DO UPDATE SET token = excluded.token",
+                        (aid, student, digest(token), json.dumps(numbers)))
+        return token
+
     def rules(self, aid: str) -> dict | None:
         """The rules of assignment ``aid`` (with its ``id``), or None."""
         rows = self.store._all("SELECT rules FROM assignments WHERE id = ?", (aid,))

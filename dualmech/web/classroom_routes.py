@@ -65,11 +65,10 @@ async def create(request: Request):
     body, err = await json_object(request, ROSTER_BYTES, _SHAPE)
     if err:
         return err
-    asked = _named_problems(srv, body.get("questions"))
-    infos = {n: await run_in_threadpool(srv.info, n) for n in asked}
-    quantities = {n: list(infos[n].quantities) if n in infos else [] for n in srv.served}
     try:
-        rules = read_assignment(body, quantities)
+        rules = await run_in_threadpool(read_assignment, body, srv.served,
+                                        lambda n: list(srv.info(n).quantities))
+        infos = {q["problem"]: srv.info(q["problem"]) for q in rules["questions"]}
         numbers = _numbers(rules, infos)
     except RuleError as exc:
         return error(exc.status, str(exc))
@@ -84,14 +83,6 @@ async def create(request: Request):
         for s in students}}, status_code=201)
 
 
-def _named_problems(srv, questions) -> list[str]:
-    """The served problems a body's questions name (at most the bound of questions)."""
-    if not isinstance(questions, list):
-        return []
-    names = [q.get("problem") for q in questions[:50] if isinstance(q, dict)]
-    return list(dict.fromkeys(n for n in names if isinstance(n, str) and n in srv.served))
-
-
 def _numbers(rules: dict, infos: dict):
     """A function giving one student's numbers (``{}`` without ``per_student_numbers``);
     records in ``rules`` each problem's parameters and their units."""
@@ -101,8 +92,16 @@ def _numbers(rules: dict, infos: dict):
     rules["units"] = {p["name"]: p["unit"] for n in problems for p in infos[n].parameters}
     if not rules["per_student_numbers"]:
         return lambda student: {}
-    ranges = shared_ranges(params.values())
-    return lambda student: draw_numbers(ranges, secrets.token_hex(16))
+    rules["ranges"] = shared_ranges(params.values())
+    return lambda student: new_numbers(rules)
+
+
+def new_numbers(rules: dict) -> dict:
+    """Numbers for a student joining an assignment (``{}`` without per-student numbers)."""
+    if not rules["per_student_numbers"]:
+        return {}
+    return draw_numbers({k: tuple(v) for k, v in rules["ranges"].items()},
+                        secrets.token_hex(16))
 
 
 # -- the student ---------------------------------------------------------------------------------
@@ -251,9 +250,13 @@ async def _grade(srv, rules, student, i, text, attempt):
                                    len(rules["questions"]))
     attempts = await run_in_threadpool(srv.classroom.attempts, rules["id"], student)
     scores = srv.classroom.scores(rules, attempts)
-    return JSONResponse(dict(record["shown"], question=i, attempt=used[i],
-                             attempts_left=max(0, rules["attempts"] - used[i]),
-                             question_score=scores[i]))
+    out = dict(record["shown"], question=i, attempt=used[i],
+               attempts_left=max(0, rules["attempts"] - used[i]), question_score=scores[i])
+    sent = await run_in_threadpool(srv.lti.send_score, rules["id"], student,
+                                   round(sum(scores) / len(scores), 4))
+    if sent is not None:   # launched from a learning platform: the score went back to it
+        out["platform"] = sent
+    return JSONResponse(out)
 
 
 # -- the student's page ------------------------------------------------------------------------

@@ -9,10 +9,10 @@ Example
 >>> served = {"simple_pendulum": ["eom", "T"]}
 >>> r = read_assignment({"title": "HW 1", "questions": [{"problem": "simple_pendulum"}],
 ...                      "students": ["s1", "s2"], "deadline": "2030-01-01T09:00:00Z"},
-...                     served)
+...                     served, served.get)
 >>> r["attempts"], r["feedback"], r["deadline"], r["questions"][0]["quantity"]
 (3, 'full', 1893488400.0, None)
->>> read_assignment({"title": "x", "questions": [], "students": ["s"]}, served)
+>>> read_assignment({"title": "x", "questions": [], "students": ["s"]}, served, served.get)
 Traceback (most recent call last):
 ...
 dualmech.web.rules.RuleError: `questions` must be a list of 1 to 50 objects {"problem", "quantity"}.
@@ -45,21 +45,22 @@ class RuleError(ValueError):
         self.status = status
 
 
-def read_assignment(body: dict, served: dict[str, list]) -> dict:
-    """The assignment's rules from a teacher's JSON ``body``; ``served`` maps each served
-    problem to the quantities it can be asked for."""
+def read_assignment(body: dict, served, quantities) -> dict:
+    """The assignment's rules from a teacher's JSON ``body``; ``served`` holds the served
+    problems' names, ``quantities(name)`` gives the quantities a served problem can be asked
+    for (called last, after every other field is checked: it may load the problem)."""
     unknown = sorted(k for k in body if k not in _FIELDS)
     if unknown:
         raise RuleError(f"unknown field `{str(unknown[0])[:40]}`; the fields are "
                         f"{', '.join(_FIELDS)}.")
-    return {"title": _title(body.get("title")),
-            "questions": _questions(body.get("questions"), served),
-            "students": _students(body.get("students")),
-            "per_student_numbers": _flag(body.get("per_student_numbers", False)),
-            "feedback": _feedback(body.get("feedback", "full")),
-            "attempts": _whole(body.get("attempts", 3), "attempts", 1, MAX_ATTEMPTS),
-            "penalty": _fraction(body.get("penalty", 0.0)),
-            "deadline": _deadline(body.get("deadline"))}
+    rules = {"title": _title(body.get("title")),
+             "students": _students(body.get("students")),
+             "per_student_numbers": _flag(body.get("per_student_numbers", False)),
+             "feedback": _feedback(body.get("feedback", "full")),
+             "attempts": _whole(body.get("attempts", 3), "attempts", 1, MAX_ATTEMPTS),
+             "penalty": _fraction(body.get("penalty", 0.0)),
+             "deadline": _deadline(body.get("deadline"))}
+    return {**rules, "questions": _questions(body.get("questions"), served, quantities)}
 
 
 def _text(v, name: str, most: int) -> str:
@@ -76,26 +77,29 @@ def _title(v) -> str:
     return _text(v, "title", MAX_TITLE)
 
 
-def _questions(v, served: dict) -> list[dict]:
+def _questions(v, served, quantities) -> list[dict]:
     if not isinstance(v, list) or not 1 <= len(v) <= MAX_QUESTIONS:
         status = 413 if isinstance(v, list) and len(v) > MAX_QUESTIONS else 400
         raise RuleError(f"`questions` must be a list of 1 to {MAX_QUESTIONS} objects "
                         "{\"problem\", \"quantity\"}.", status)
-    out = []
     for i, q in enumerate(v):
         if not isinstance(q, dict) or not isinstance(q.get("problem"), str) or \
                 set(q) - {"problem", "quantity"}:
             raise RuleError(f"question {i + 1} must be an object {{\"problem\": name, "
                             "\"quantity\": name or null}.")
-        name, quantity = q["problem"], q.get("quantity")
-        if name not in served:
-            shown = name if len(name) <= 60 else name[:60] + "..."
+        if q["problem"] not in served:
+            shown = q["problem"] if len(q["problem"]) <= 60 else q["problem"][:60] + "..."
             raise RuleError(f"question {i + 1}: no problem {shown!r} is served here; served: "
                             f"{', '.join(served)}.", 404)
-        if quantity is not None:
-            if not isinstance(quantity, str) or quantity not in served[name]:
-                raise RuleError(f"question {i + 1}: `quantity` must be null (the equations of "
-                                f"motion) or one of {name}'s: {', '.join(served[name])}.")
+        if q.get("quantity") is not None and not isinstance(q["quantity"], str):
+            raise RuleError(f"question {i + 1}: `quantity` must be null (the equations of "
+                            "motion) or the name of one of the problem's quantities.")
+    out = []
+    for i, q in enumerate(v):
+        name, quantity = q["problem"], q.get("quantity")
+        if quantity is not None and quantity not in quantities(name):
+            raise RuleError(f"question {i + 1}: `quantity` must be null (the equations of "
+                            f"motion) or one of {name}'s: {', '.join(quantities(name))}.")
         out.append({"problem": name, "quantity": quantity})
     return out
 

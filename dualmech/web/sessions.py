@@ -88,7 +88,8 @@ class Sessions:
             self.store._run("DELETE FROM sessions WHERE hash = ?", (digest(sid),))
 
 
-_PRIVATE = ("/teacher", "/assignments", "/api/batches", "/api/assignments", "/api/students")
+_PRIVATE = ("/teacher", "/assignments", "/api/batches", "/api/assignments", "/api/students",
+            "/lti")
 
 
 class NoStore:
