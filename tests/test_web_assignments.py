@@ -223,11 +223,25 @@ def test_malformed_answer_bodies_are_refused(client, made, raw, words):
     assert r.status_code == 400 and words in r.json()["error"]
 
 
-def test_answers_need_a_students_token(client, made):
+def test_answers_need_a_students_token_for_this_assignment(client, made):
     url = f"/api/assignments/{made['id']}/answers"
     body = {"question": 0, "answer": "x"}
     assert _timed(client.post, url, json=body).status_code == 401
     assert _timed(client.post, url, json=body, headers=AUTH).status_code == 401
+    other = client.post("/api/assignments", json={**GOOD, "students": ["dee"]},
+                        headers=AUTH).json()
+    r = _timed(client.post, f"/api/assignments/{other['id']}/answers", json=body,
+               headers={"Authorization": f"Bearer {made['students']['ada']['token']}"})
+    assert r.status_code == 403 and "another assignment" in r.json()["error"]
+
+
+def test_the_teacher_page_lists_assignments_as_text(client):
+    hostile = '<script>alert(1)</script>'
+    client.post("/api/assignments", json={**GOOD, "title": hostile}, headers=AUTH)
+    client.post("/teacher/login", data={"token": TOKEN})
+    page = client.get("/teacher").text
+    assert "&lt;script&gt;alert(1)&lt;/script&gt;" in page and hostile not in page
+    assert "/grades.csv" in page and "/stats" in page
 
 
 def test_no_answer_after_the_deadline(client, made):

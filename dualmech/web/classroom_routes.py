@@ -142,6 +142,9 @@ async def me(request: Request):
     if err:
         return err
     rules, student = who
+    limited = _limited(srv, request.scope["dualmech.rate_key"], "validate")
+    if limited:
+        return limited
     out = await run_in_threadpool(_me, srv, rules, student)
     return JSONResponse(out)
 

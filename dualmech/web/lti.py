@@ -291,7 +291,9 @@ async def launch(request: Request):
                           "parameter assignment=<id> on the link).")
     if not any(r.endswith("#Learner") for r in data.get(_ROLES, [])):
         return RedirectResponse("/teacher", status_code=303)
-    student = str(data["sub"])[:100]
+    student = str(data.get("sub", ""))
+    if not student or len(student) > 255:
+        return error(400, "the launch's `sub` (the user's id) must be 1 to 255 characters.")
     numbers = (await run_in_threadpool(srv.classroom.roster, aid)).get(student) or \
         new_numbers(rules)
     token = await run_in_threadpool(srv.classroom.enrol, aid, student, numbers)
