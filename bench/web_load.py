@@ -29,7 +29,7 @@ import time
 
 import httpx
 
-TOKEN = "web-load-bench"
+TOKEN = "web-load-bench-token"
 # (problem, answer, quantity, expected status) -- verdicts from problems/simple_pendulum.py
 # and problems/toy_car.py
 MIX = [
@@ -61,11 +61,12 @@ def _free_port() -> int:
 
 
 def _start(port: int, data: str, workers: int | None) -> subprocess.Popen:
-    cmd = [sys.executable, "-m", "dualmech", "serve", "--port", str(port), "--token", TOKEN,
+    cmd = [sys.executable, "-m", "dualmech", "serve", "--port", str(port),
            "--data", data, "--problems", "simple_pendulum", "toy_car"]
     if workers:
         cmd += ["--workers", str(workers)]
-    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    proc = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                            env={**os.environ, "DUALMECH_TOKEN": TOKEN})
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline:
         if proc.poll() is not None:

@@ -152,3 +152,47 @@ def test_teacher_uploads_a_class_and_sees_the_table(server, browser, tmp_path):
     first = page.inner_text("table:not(#by-student) tr:nth-child(2)")
     assert "wrong sign" in first and "2" in first
     page.screenshot(path=str(_shots(tmp_path) / "web_teacher_page.png"), full_page=True)
+
+
+@pytest.mark.slow
+def test_student_answers_an_assignment_with_their_own_numbers(server, browser, tmp_path):
+    import json
+    import urllib.request
+    body = {"title": "Pendulum homework", "questions": [{"problem": "simple_pendulum"}],
+            "students": ["ada"], "per_student_numbers": True, "feedback": "hint",
+            "attempts": 3, "deadline": "2040-01-31T23:59:00Z"}
+    req = urllib.request.Request(f"{server}/api/assignments", data=json.dumps(body).encode(),
+                                 headers={"Authorization": f"Bearer {TOKEN}",
+                                          "Content-Type": "application/json"})
+    made = json.loads(urllib.request.urlopen(req, timeout=30).read())
+    url = made["students"]["ada"]["url"]
+    assert "#token=" in url
+
+    page = browser.new_page(viewport={"width": 1100, "height": 900})
+    page.goto(url)
+    page.wait_for_selector("#numbers tr:nth-child(3)")
+    assert page.inner_text("#title") == "Pendulum homework"
+    rows = [r.split("\t") for r in page.inner_text("#numbers").splitlines()]
+    numbers = {r[0]: r[1] for r in rows}
+    assert set(numbers) == {"M", "a", "g"} and ["g", numbers["g"], "m s⁻²"] in rows
+    assert "3 of 3 attempts left" in page.inner_text("#question-0 .attempts")
+
+    # a wrong sign at the `hint` level: the term is named, its correction is not
+    page.fill("#answer-0", f"{numbers['a']}*theta'' - {numbers['g']}*sin(theta) = 0")
+    page.click("#submit-0")
+    page.wait_for_selector("#feedback-0 .pill.wrong")
+    assert "has the wrong sign" in page.inner_text("#feedback-0")
+    assert "it is `" not in page.inner_text("#feedback-0")
+    page.wait_for_selector("#question-0 .attempts:has-text('2 of 3')")
+
+    page.fill("#answer-0", f"{numbers['a']}*theta'' + {numbers['g']}*sin(theta) = 0")
+    page.click("#submit-0")
+    page.wait_for_selector("#feedback-0 .pill.right")
+    page.wait_for_selector("#score:has-text('100%')")
+    assert "1 of 3 attempts left" in page.inner_text("#question-0 .attempts")
+    page.screenshot(path=str(_shots(tmp_path) / "web_student_assignment.png"), full_page=True)
+
+    # without the token the page says what to do, and shows nothing of ada's
+    page.goto(url.split("#")[0])
+    page.wait_for_selector("#status:has-text('no token')")
+    assert page.locator("#numbers tr").count() == 0

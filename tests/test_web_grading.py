@@ -19,7 +19,7 @@ from starlette.testclient import TestClient  # noqa: E402
 from dualmech.web import create_app  # noqa: E402
 from dualmech.web.store import Store  # noqa: E402
 
-TOKEN = "grading-token"
+TOKEN = "grading-token-for-tests"
 AUTH = {"Authorization": f"Bearer {TOKEN}"}
 RIGHT = "a*theta'' + g*sin(theta) = 0"
 WRONG = "a*theta'' - g*sin(theta) = 0"

@@ -2,9 +2,14 @@
 
 ::
 
-    dualmech serve [--host 127.0.0.1] [--port 8000] [--problems NAME ...] [--token T]
-                   [--data DIR] [--workers N] [--trusted-proxy ADDR ...]
+    dualmech serve [--host 127.0.0.1] [--port 8000] [--problems NAME ...]
+                   [--token-file FILE] [--data DIR] [--workers N] [--trusted-proxy ADDR ...]
                    [--header-timeout S] [--body-timeout S] [--connections-per-client N]
+
+The teacher's token is read from ``--token-file`` (a file only its owner can read) or the
+environment variable ``DUALMECH_TOKEN``, never from the command line, where every user of
+the machine sees it (``ps``); without either a random one is made and printed.  A weak token
+(under 16 characters, or of few distinct ones) is refused.
 
 ``--problems`` takes every NAME form (a catalogue name, a file ``path.py[:Class]``,
 ``module:Class``, a registered catalogue's problem, or a registered catalogue's name for
@@ -25,12 +30,17 @@ Example
 from __future__ import annotations
 
 import argparse
+import os
+import stat
 from pathlib import Path
 
 from dualmech.cli import names as _names
 from dualmech.cli.errors import OK, UsageError, about, guarded
 
-__all__ = ["register", "handle", "served_specs"]
+__all__ = ["register", "handle", "served_specs", "read_token", "TOKEN_VARIABLE"]
+
+#: The environment variable a teacher's token may be given in.
+TOKEN_VARIABLE = "DUALMECH_TOKEN"
 
 
 def _port(text: str) -> int:
@@ -69,7 +79,11 @@ def register(subparsers) -> argparse.ArgumentParser:
                         "path.py[:Class], module:Class, a registered catalogue's problem or "
                         "its name for all of them (default: dualmech's catalogue); clients "
                         "can only name these")
-    p.add_argument("--token", help="the teacher's token (default: a random one, printed)")
+    p.add_argument("--token-file", type=Path, metavar="FILE",
+                   help=f"a file holding the teacher's token, readable by its owner only "
+                        f"(chmod 600); or set {TOKEN_VARIABLE}; default: a random token, "
+                        "printed")
+    p.add_argument("--token", help=argparse.SUPPRESS)   # refused: visible in `ps`
     p.add_argument("--data", type=Path, default=None, metavar="DIR",
                    help="where batches, results and answers are kept, readable by you only "
                         "(default: your data folder, ~/.local/share/dualmech on Linux)")
@@ -112,15 +126,47 @@ def handle(args: argparse.Namespace) -> int:
         proxy_settings(args.trusted_proxy)
     except ValueError as exc:
         raise UsageError(f"`--trusted-proxy`: {exc}") from None
+    token = read_token(args.token_file, os.environ, args.token)
     specs = served_specs(args.problems)
     limits = Limits(args.header_timeout, args.body_timeout, args.connections_per_client)
     try:
-        serve(args.host, args.port, specs, token=args.token, data=args.data,
+        serve(args.host, args.port, specs, token=token, data=args.data,
               workers=args.workers, as_json=args.json, trusted_proxies=args.trusted_proxy,
               limits=limits)
     except ValueError as exc:
         raise UsageError(str(exc)) from None
     return OK
+
+
+def read_token(path: Path | None, environ, given: str | None = None) -> str | None:
+    """The teacher's token from ``path`` or ``environ[TOKEN_VARIABLE]`` (None: the server
+    makes one); a token ``given`` on the command line, a file others can read or one that
+    cannot be read is a usage error saying what to do.
+
+    >>> read_token(None, {"DUALMECH_TOKEN": "  from-the-environment-1  "})
+    'from-the-environment-1'
+    >>> read_token(None, {}) is None
+    True
+    """
+    if given is not None:
+        raise UsageError(f"`--token` would show the token to every user of this machine "
+                         f"(`ps`); put it in a file only you can read and pass "
+                         f"`--token-file FILE`, or set {TOKEN_VARIABLE}.")
+    if path is not None:
+        try:
+            mode = path.stat().st_mode
+            if mode & (stat.S_IRWXG | stat.S_IRWXO):
+                raise UsageError(f"{path} can be read by other users; `chmod 600 {path}` "
+                                 "and start again.")
+            text = path.read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise UsageError(f"cannot read the token file {path}: "
+                             f"{getattr(exc, 'strerror', None) or exc}") from None
+        if not text.strip():
+            raise UsageError(f"the token file {path} is empty.")
+        return text.strip()
+    value = environ.get(TOKEN_VARIABLE)
+    return value.strip() if value else None
 
 
 def served_specs(names) -> list | None:

@@ -15,7 +15,8 @@ Example
 -------
 >>> import tempfile
 >>> from starlette.testclient import TestClient
->>> app = create_app(["simple_pendulum"], data=tempfile.mkdtemp(), token="s3cret")
+>>> app = create_app(["simple_pendulum"], data=tempfile.mkdtemp(),
+...                  token="a-strong-teacher-token-1")
 >>> with TestClient(app) as client:
 ...     r = client.post("/api/validate", json={"problem": "simple_pendulum",
 ...                                            "answer": "a*theta'' + g*sin(theta) = 0"})
@@ -27,11 +28,11 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import csv
-import hashlib
 import hmac
+import html
 import io
-import json
 import threading
+import time
 from collections import OrderedDict
 from pathlib import Path
 from typing import Sequence
@@ -43,14 +44,17 @@ from starlette.requests import Request
 from starlette.responses import HTMLResponse, JSONResponse, RedirectResponse, Response
 from starlette.routing import Route
 
-from dualmech.web import pages
+from dualmech.web import classroom_routes, lti, pages
 from dualmech.web.assets import SCRIPT, STYLE
 from dualmech.web.batches import BatchError, BatchRunner, read_upload
 from dualmech.web.catalog import ProblemInfo
-from dualmech.web.guard import RateLimiter, SameOrigin, SecurityHeaders, TooLarge, read_body
+from dualmech.web.classroom import Classroom
+from dualmech.web.common import error as _error, json_object
+from dualmech.web.guard import RateLimiter, SecurityHeaders, TooLarge, read_body
 from dualmech.web.openapi import SPEC
 from dualmech.web.preview import preview
-from dualmech.web.store import Store
+from dualmech.web.sessions import NoStore, Sessions, check_token
+from dualmech.web.store import Store, default_data_dir
 
 __all__ = ["create_app", "served_problems", "WebLimits", "routes"]
 
@@ -102,8 +106,10 @@ class _Server:
         self.served = served
         self.data = data
         self.token = token
-        self.session = hmac.new(token.encode(), b"dualmech teacher session",
-                                hashlib.sha256).hexdigest()
+        self.sessions: Sessions | None = None
+        self.classroom: Classroom | None = None
+        self.lti: lti.Lti | None = None
+        self.clock = time.time     # what deadlines are compared with (tests set their own)
         self.pool = pool
         self.own_pool = pool is None
         self.workers = workers
@@ -136,6 +142,8 @@ class _Server:
     # -- lifecycle ---------------------------------------------------------------------------
     def start(self) -> None:
         self.store = Store(self.data)
+        self.sessions, self.classroom = Sessions(self.store), Classroom(self.store)
+        self.lti = lti.Lti(self.data, self.store)
         if self.pool is None:
             from dualmech.grade.sandbox import GradingPool
             self.pool = GradingPool(self.workers, seconds=self.grade_seconds,
@@ -164,8 +172,7 @@ class _Server:
         auth = request.headers.get("authorization", "")
         if auth.lower().startswith("bearer "):
             return hmac.compare_digest(auth[7:].strip().encode(), self.token.encode())
-        cookie = request.cookies.get(_COOKIE, "")
-        return bool(cookie) and hmac.compare_digest(cookie.encode(), self.session.encode())
+        return self.sessions.valid(request.cookies.get(_COOKIE, ""))
 
 
 def _titles(served: dict) -> list[dict]:
@@ -179,10 +186,6 @@ def _titles(served: dict) -> list[dict]:
                     **source_fields(d.source if d else ""),
                     "summary": d.summary if d else ""})
     return out
-
-
-def _error(status: int, message: str, headers: dict | None = None) -> JSONResponse:
-    return JSONResponse({"error": message}, status_code=status, headers=headers)
 
 
 def _client(request: Request) -> str:
@@ -199,24 +202,10 @@ async def _limited(srv: _Server, request: Request, kind: str) -> JSONResponse | 
 
 async def _answer_request(srv: _Server, request: Request) -> tuple[dict | None, Response | None]:
     """The validated JSON body of /api/validate and /api/grade, or the error response."""
-    try:
-        raw = await read_body(request, srv.limits.json_bytes)
-    except TooLarge as exc:
-        return None, _error(413, str(exc))
-    try:
-        body = json.loads(raw.decode("utf-8"))
-    except (UnicodeDecodeError, ValueError):
-        return None, _error(400, "the request body must be a JSON object: {\"problem\": ..., "
-                                 "\"answer\": ...}.")
-    except RecursionError:
-        return None, _error(400, "the request body is nested too deeply: send a flat JSON "
-                                 "object {\"problem\": ..., \"answer\": ...}.")
-    if not isinstance(body, dict):
-        return None, _error(400, "the request body must be a JSON object.")
-    bad = _lone_surrogate(body)
-    if bad is not None:
-        return None, _error(400, f"`{bad}` holds a lone surrogate (an escape such as \\ud800 "
-                                 "that is half of a character); send the text as it is typed.")
+    body, err = await json_object(request, srv.limits.json_bytes,
+                                  '{"problem": ..., "answer": ...}')
+    if err:
+        return None, err
     for key in ("problem", "answer"):
         if not isinstance(body.get(key), str):
             return None, _error(400, f"`{key}` must be a string.")
@@ -238,26 +227,29 @@ def _not_found(srv: _Server, name: str) -> JSONResponse:
                        f"{', '.join(srv.served)}.")
 
 
-def create_app(problems: Sequence[str] | None = None, *, data: str | Path = "dualmech-data",
+def create_app(problems: Sequence[str] | None = None, *, data: str | Path | None = None,
                token: str, pool=None, workers: int | None = None, rates: dict | None = None,
                limits: WebLimits | None = None, grade_seconds: float = 1.0,
                memory_mb: int = 256) -> Starlette:
     """The application serving ``problems`` (catalogue names; all by default).
 
-    ``data``: directory of the SQLite store; ``token``: the teacher's token; ``pool``: a
+    ``data``: directory of the SQLite store (default: :func:`.store.default_data_dir`);
+    ``token``: the teacher's token (at least 16
+    characters of several kinds, :func:`.sessions.check_token`); ``pool``: a
     grading pool to use (default: a :class:`~dualmech.grade.sandbox.GradingPool` of
     ``workers`` processes, ``grade_seconds`` and ``memory_mb`` per answer, started with the
     app and closed with it); ``rates``: see :data:`.guard.RATES`.  The endpoints are the
     module's own functions (:data:`routes`); what they share is ``app.state.server``.
     """
-    if not token:
-        raise ValueError("`token` must be a non-empty string.")
-    srv = _Server(served_problems(problems), Path(data), token, pool, workers, rates,
+    check_token(token)
+    data = Path(data) if data is not None else default_data_dir()
+    srv = _Server(served_problems(problems), data, token, pool, workers, rates,
                   limits or WebLimits(), grade_seconds, memory_mb)
     app = Starlette(routes=routes, lifespan=_lifespan,
                     exception_handlers={404: _not_found_page, 500: _failed,
                                         Exception: _failed})
-    app.add_middleware(SameOrigin)
+    app.add_middleware(lti.SameOriginExceptLaunch)
+    app.add_middleware(NoStore)
     app.add_middleware(SecurityHeaders)
     app.state.server = srv
     return app
@@ -331,7 +323,8 @@ async def teacher(request: Request):
         return HTMLResponse(pages.login_page())
     batches = await run_in_threadpool(srv.store.batches)
     answers = await run_in_threadpool(srv.store.answers)
-    return HTMLResponse(pages.teacher_page(batches, answers))
+    assignments = await run_in_threadpool(srv.classroom.assignments)
+    return HTMLResponse(pages.teacher_page(batches, answers, assignments))
 
 
 async def login(request: Request):
@@ -347,8 +340,19 @@ async def login(request: Request):
     given = parse_qs(raw.decode("utf-8", "replace")).get("token", [""])[0].strip()
     if not hmac.compare_digest(given.encode(), srv.token.encode()):
         return HTMLResponse(pages.login_page("That is not the token."), status_code=401)
+    sid = await run_in_threadpool(srv.sessions.open)
     r = RedirectResponse("/teacher", status_code=303)
-    r.set_cookie(_COOKIE, srv.session, httponly=True, samesite="strict", path="/")
+    r.set_cookie(_COOKIE, sid, max_age=int(srv.sessions.seconds), httponly=True,
+                 samesite="strict", path="/", secure=request.url.scheme == "https")
+    return r
+
+
+async def logout(request: Request):
+    srv = _server(request)
+    await run_in_threadpool(srv.sessions.close, request.cookies.get(_COOKIE, ""))
+    r = RedirectResponse("/teacher", status_code=303)
+    r.delete_cookie(_COOKIE, path="/", httponly=True, samesite="strict",
+                    secure=request.url.scheme == "https")
     return r
 
 
@@ -484,6 +488,9 @@ async def api_batch_file(request: Request):
         return Response(_csv(results), media_type="text/csv; charset=utf-8",
                         headers=_attachment(which))
     from dualmech.grade.report import write_report
+    if which == "report.md":   # ids and questions from the uploaded file: text, not HTML
+        results = [dict(r, id=html.escape(str(r.get("id", ""))),
+                        question=html.escape(str(r.get("question", "")))) for r in results]
     paths = await run_in_threadpool(write_report, results,
                                     srv.data / "reports" / progress["id"],
                                     f"Grades: {progress['name']}")
@@ -513,6 +520,7 @@ routes = [
     Route("/favicon.ico", favicon),
     Route("/teacher", teacher),
     Route("/teacher/login", login, methods=["POST"]),
+    Route("/teacher/logout", logout, methods=["POST"]),
     Route("/teacher/batches/{id}", batch_page),
     Route("/api/docs", api_docs),
     Route("/api/openapi.json", api_openapi),
@@ -523,26 +531,9 @@ routes = [
     Route("/api/batches", teacher_only(api_batches), methods=["GET", "POST"]),
     Route("/api/batches/{id}", teacher_only(api_batch)),
     Route("/api/batches/{id}/{file:str}", teacher_only(_files(api_batch_file))),
+    *classroom_routes.routes,
+    *lti.routes,
 ]
-
-
-def _lone_surrogate(body: dict):
-    """The top-level key under which ``body`` holds a string (a key or a value, at any depth)
-    with a lone UTF-16 surrogate, which no page can show and no file can store; ``None``
-    when there is none."""
-    stack = [(key, part) for key, value in body.items() for part in (key, value)]
-    while stack:
-        key, part = stack.pop()
-        if isinstance(part, str):
-            try:
-                part.encode("utf-8")
-            except UnicodeEncodeError:
-                return key.encode("utf-8", "replace").decode()[:40]
-        elif isinstance(part, dict):
-            stack += [(key, x) for item in part.items() for x in item]
-        elif isinstance(part, list):
-            stack += [(key, x) for x in part]
-    return None
 
 
 def _attachment(name: str) -> dict:

@@ -21,7 +21,7 @@ from dualmech.report.mathml import text_html
 from dualmech.sources import source_name
 
 __all__ = ["layout", "index_page", "problem_page", "feedback_html", "login_page",
-           "teacher_page", "batch_page", "api_page"]
+           "teacher_page", "batch_page", "api_page", "student_page"]
 
 _VERDICT = {"right": "Right", "wrong": "Not right yet", "invalid": "Not graded"}
 
@@ -170,8 +170,10 @@ def login_page(error: str = "") -> str:
 <button type="submit">Open</button></form></div>""")
 
 
-def teacher_page(batches: list[dict], answers: list[dict]) -> str:
-    """Upload form, the batches so far, and the answers typed on the page by question."""
+def teacher_page(batches: list[dict], answers: list[dict],
+                 assignments: list[dict] = ()) -> str:
+    """Upload form, the batches so far, the assignments, and the answers typed on the page by
+    question; a logout button."""
     rows = "".join(
         f'<tr><td><a href="/teacher/batches/{escape(b["id"])}">{escape(b["name"])}</a></td>'
         f'<td class="num">{b["done"]} / {b["total"]}</td><td>{escape(b["status"])}</td></tr>'
@@ -180,7 +182,18 @@ def teacher_page(batches: list[dict], answers: list[dict]) -> str:
                if batches else '<p class="muted">No batch yet.</p>')
     typed = _by_question(answers, with_students=False) if answers else \
         '<p class="muted">No answer typed on the page yet.</p>'
+    made = "".join(
+        f'<tr><td>{escape(str(a.get("title", "")))}</td><td class="num">{a["students"]}</td>'
+        f'<td><a href="/api/assignments/{escape(a["id"])}/grades.csv">grades.csv</a> '
+        f'<a href="/api/assignments/{escape(a["id"])}/stats">statistics</a></td></tr>'
+        for a in assignments)
+    made = (f"<table><tr><th>assignment</th><th>students</th><th></th></tr>{made}</table>"
+            if assignments else '<p class="muted">No assignment yet (POST /api/assignments, '
+                                'see <a href="/api/docs">the API</a>).</p>')
     return layout("Teacher", f"""<h1>Teacher</h1>
+<form method="post" action="/teacher/logout" class="logout"><button type="submit"
+ id="logout">Log out</button></form>
+<div class="card"><h2>Assignments</h2>{made}</div>
 <div class="card"><h2>Grade a class</h2>
 <p class="muted">A CSV with the columns <code>id</code>, <code>question</code>,
 <code>answer</code> (optional: <code>quantity</code>, <code>about</code>); a question is a
@@ -261,3 +274,21 @@ def api_page(spec: dict) -> str:
                               for k, v in op.get("responses", {}).items())
             out.append(f"<p class='muted'>Responses: {codes}</p></div>")
     return layout("API", "".join(out))
+
+
+def student_page(aid: str) -> str:
+    """A student's assignment page; its script (``/assignments/student.js``) reads the
+    student's token from the link's fragment (never sent to the server in a URL) and fills
+    the page from ``/api/assignments/{id}/me``."""
+    return f"""<!doctype html>
+<html lang="en"><head><meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>Assignment - dualmech</title>
+<link rel="stylesheet" href="/static/style.css"></head>
+<body><header class="top"><a class="brand" href="/">dualmech</a></header>
+<main id="assignment" data-assignment="{escape(aid)}"><h1 id="title">Assignment</h1>
+<p id="status" class="muted">Loading...</p>
+<div class="card"><h2>Your numbers</h2><table id="numbers"></table></div>
+<div id="questions"></div>
+<div class="card"><h2>Your score</h2><p id="score"></p></div></main>
+<script src="/assignments/student.js"></script></body></html>"""

@@ -24,6 +24,7 @@ import sys
 from pathlib import Path
 from typing import Sequence
 
+from dualmech.web.store import default_data_dir
 from dualmech.web.transport import Limits, protocol, raise_open_files
 
 __all__ = ["serve", "is_loopback", "default_data_dir", "prepare_data_dir", "proxy_settings",
@@ -41,13 +42,6 @@ def is_loopback(host: str) -> bool:
         return ipaddress.ip_address(host).is_loopback
     except ValueError:
         return False
-
-
-def default_data_dir() -> Path:
-    """The user's data folder for dualmech (``~/.local/share/dualmech`` on Linux, as
-    :func:`platformdirs.user_data_dir` says for each system)."""
-    import platformdirs
-    return Path(platformdirs.user_data_dir("dualmech", appauthor=False))
 
 
 def prepare_data_dir(data: str | Path | None) -> Path:

@@ -26,7 +26,15 @@ import threading
 import time
 from pathlib import Path
 
-__all__ = ["Store"]
+__all__ = ["Store", "default_data_dir"]
+
+
+def default_data_dir() -> Path:
+    """The user's data folder for dualmech (``~/.local/share/dualmech`` on Linux, as
+    :func:`platformdirs.user_data_dir` says for each system), where the server keeps its data
+    unless told otherwise."""
+    import platformdirs
+    return Path(platformdirs.user_data_dir("dualmech", appauthor=False))
 
 _SCHEMA = """
 CREATE TABLE IF NOT EXISTS batches (
@@ -129,6 +137,25 @@ class Store:
         return [json.loads(r["result"]) for r in self._all(
             "SELECT result FROM rows WHERE batch = ? AND result IS NOT NULL ORDER BY idx",
             (bid,))]
+
+    def student_rows(self, student: str) -> list[dict]:
+        """Every row of an uploaded batch with ``student``'s id: batch, line, question,
+        answer and result."""
+        return [dict(r, result=json.loads(r["result"]) if r["result"] else None)
+                for r in self._all("SELECT batch, line, question, answer, quantity, about, "
+                                   "result FROM rows WHERE student = ? ORDER BY batch, idx",
+                                   (student,))]
+
+    def delete_student_rows(self, student: str) -> int:
+        """Remove ``student``'s rows from every batch (each batch's total follows); how many."""
+        with self._lock:
+            batches = [r[0] for r in self._db.execute(
+                "SELECT DISTINCT batch FROM rows WHERE student = ?", (student,))]
+            n = self._db.execute("DELETE FROM rows WHERE student = ?", (student,)).rowcount
+            for b in batches:
+                self._db.execute("UPDATE batches SET total = (SELECT COUNT(*) FROM rows WHERE "
+                                 "batch = ?) WHERE id = ?", (b, b))
+        return n
 
     # -- answers typed on the page ------------------------------------------------------------
     def add_answer(self, result: dict) -> None:
