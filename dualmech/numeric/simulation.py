@@ -246,7 +246,8 @@ def reactions_at(problem, q: Sequence[float], qd: Sequence[float], time: float =
     """Reactions ``{name: value}`` of the direct model(s) at one state (reference coordinates).
 
     The accelerations are the reference model's; each direct model's reactions are then its
-    solution of ``A [q''; lambda] = b``.
+    solution of ``A [q''; lambda] = b`` (a model whose reaction columns are rank-deficient at
+    the state, so that they do not fix its reactions, gives none).
     """
     values = problem_parameters(problem, params, check_ranges=check_ranges)
     ref = problem.model(problem.reference)
@@ -254,6 +255,8 @@ def reactions_at(problem, q: Sequence[float], qd: Sequence[float], time: float =
     out: dict = {}
     for m in direct_models(problem):
         A, b = NumericModel(m, values).system(time, q, qd)
+        if np.linalg.matrix_rank(A[:, m.n:]) < len(m.unknowns):
+            continue    # the reactions are not fixed by this model: no least-norm guess
         lam = np.linalg.lstsq(A[:, m.n:], b - A[:, : m.n] @ qdd, rcond=None)[0]
         for u, v in zip(m.unknowns, lam):
             out.setdefault(u.name, float(v))
