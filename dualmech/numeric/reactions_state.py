@@ -32,6 +32,7 @@ from typing import Mapping
 
 import numpy as np
 
+from dualmech.numeric.inputs import declared_inputs, input_functions
 from dualmech.numeric.model import NumericModel
 from dualmech.numeric.simulation import default_initial_state, problem_parameters, reactions_at
 
@@ -95,6 +96,8 @@ def state_from_names(problem, at: Mapping[str, float] | None) -> tuple[list, lis
     number is refused (``ValueError``) naming the coordinates."""
     from dualmech.numeric.stability import steady_state_from_names
     q0, qd0 = (list(map(float, v)) for v in default_initial_state(problem))
+    inputs = declared_inputs(problem)   # an input's value is read by reactions_at_state
+    at = {k: v for k, v in (at or {}).items() if k not in inputs}
     if not at:
         return q0, qd0, ()
     for name, value in at.items():
@@ -103,7 +106,8 @@ def state_from_names(problem, at: Mapping[str, float] | None) -> tuple[list, lis
     try:
         exact = steady_state_from_names(problem, dict(at))
     except ValueError as exc:
-        raise ValueError(str(exc).replace("`--about`", "`--at`")) from None
+        more = f"; given inputs: {', '.join(inputs)}" if inputs else ""
+        raise ValueError(str(exc).replace("`--about`", "`--at`")[:-1] + more + ".") from None
     coords = list(problem.model(problem.reference).coordinates)
     for i, q in enumerate(coords):
         rate = q.diff(q.args[0])
@@ -127,18 +131,22 @@ def reactions_at_state(problem, at: Mapping[str, float] | None = None,
     ``comparison`` (a :class:`~dualmech.verify.check.Comparison` of ``problem``) lends its
     referees; without it they are derived here.  ``at`` is read by :func:`state_from_names`.
     """
+    at, drive, named = _split_inputs(problem, at)
     q, qd, given = state_from_names(problem, at)
     if not np.isfinite(float(time)):
         raise ValueError(f"`time` must be finite, got {time!r}.")
     coords = [c.func.__name__ for c in problem.model(problem.reference).coordinates]
-    state = dict(zip(coords, q)) | {f"{c}_dot": v for c, v in zip(coords, qd)}
-    out = StateReactions(problem.name, state, given, float(time))
+    state = dict(zip(coords, q)) | {f"{c}_dot": v for c, v in zip(coords, qd)} | drive
+    out = StateReactions(problem.name, state, given + named, float(time))
     declared = [r.name for r in problem.reactions]
-    direct = reactions_at(problem, q, qd, time, params, check_ranges=False)
+    histories = {k: (lambda t, v=v: v) for k, v in drive.items()}
+    direct = reactions_at(problem, q, qd, time, params, check_ranges=False, inputs=histories)
     out.direct = {k: direct[k] for k in declared if k in direct}
     values = problem_parameters(problem, params, check_ranges=False)
+    fns = input_functions(problem, histories)
     for name, model in _referee_models(problem, comparison).items():
-        for rname, value in _referee_values(model, values, q, qd, time, out.notes).items():
+        for rname, value in _referee_values(model, values, q, qd, time, out.notes,
+                                            fns).items():
             if rname in out.direct and rname not in out.referee:
                 out.referee[rname] = (value, name)
     if comparison is not None and any(k not in out.referee for k in out.direct):
@@ -147,6 +155,21 @@ def reactions_at_state(problem, at: Mapping[str, float] | None = None,
     if missing:
         out.notes.append(f"no square direct model gives {', '.join(missing)}")
     return out
+
+
+def _split_inputs(problem, at: Mapping | None) -> tuple[dict, dict, tuple]:
+    """``(state names, {input: value}, inputs named)``: the given inputs' values at the
+    instant are read from ``at`` too (``F=2``), zero for those not named."""
+    inputs = declared_inputs(problem)
+    at = dict(at or {})
+    named = tuple(k for k in inputs if k in at)
+    drive = {}
+    for name in inputs:
+        value = at.pop(name, 0.0)
+        if isinstance(value, (bool, str, bytes)) or not np.isfinite(_float(value)):
+            raise ValueError(f"`--at`: {name} = {value!r:.40} is not a finite number.")
+        drive[name] = float(value)
+    return at, drive, named
 
 
 def _referee_models(problem, comparison) -> dict:
@@ -158,10 +181,10 @@ def _referee_models(problem, comparison) -> dict:
     return referees(problem).models
 
 
-def _referee_values(model, values, q, qd, time, notes: list) -> dict:
+def _referee_values(model, values, q, qd, time, notes: list, inputs=None) -> dict:
     """The referee's reactions from its own square system (its accelerations solved with
     them); ``{}`` with a note when the system is not square or singular at the state."""
-    A, b = NumericModel(model, values, backend="python").system(time, q, qd)
+    A, b = NumericModel(model, values, backend="python", inputs=inputs).system(time, q, qd)
     if A.shape[0] != A.shape[1] or np.linalg.matrix_rank(A) < A.shape[1]:
         notes.append(f"`{model.name}` does not fix every reaction at this state (its system is "
                      f"{A.shape[0]} x {A.shape[1]}, rank {np.linalg.matrix_rank(A)})")
