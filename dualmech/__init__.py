@@ -38,6 +38,7 @@ _HOME = {
                       "ProblemError"),
     "model.facts": ("Probe", "StiffScene", "FidelityRung", "SteadyMotion"),
     "model.inputs": ("Input",),
+    "model.phases": ("Phase",),
     "model.dimensions": ("Dimension", "DIMENSIONLESS", "MASS", "LENGTH", "TIME", "ANGLE",
                          "FORCE", "TORQUE", "ENERGY", "VELOCITY", "ACCELERATION", "STIFFNESS",
                          "DAMPING", "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA",

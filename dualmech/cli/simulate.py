@@ -4,7 +4,7 @@
 
     dualmech simulate NAME [--duration T] [--rtol R] [--atol A] [--method M]
                            [--param NAME=VALUE ...] [--input NAME=HISTORY ...]
-                           [--samples K] [--n N] [--json]
+                           [--samples K] [--n N] [--phases PNG] [--json]
 
 NAME is anything :func:`dualmech.problems.load` takes: a catalogue name, ``path.py[:Class]``
 or ``module:Class``.  The reference model is integrated from the problem's initial state
@@ -75,6 +75,9 @@ def register(subparsers) -> None:
                    help="a given input's history (a problem declaring inputs needs one each): "
                         "an expression of t, e.g. 'F=2*sin(3*t)', or a CSV table of time, "
                         "value rows, e.g. F=push.csv (repeatable)")
+    p.add_argument("--phases", metavar="PNG", default=None,
+                   help="chain the contact phases the problem declares (Problem.phases): "
+                        "print each switch and write a chart of every phase to PNG")
     p.add_argument("--samples", metavar="K", type=whole_number(2, 100_000), default=None,
                    help="also give the state at K evenly spaced times (2 to 100000)")
     p.add_argument("--n", metavar="N", type=int, default=None,
@@ -116,6 +119,31 @@ def _params(pairs) -> dict:
             raise UsageError(f"`--param` {name.strip()}: {value.strip()!r} is not a number.") \
                 from None
     return out
+
+
+def _phases(problem, args) -> int:
+    """``--phases PNG``: the run across the declared contact phases, its switches, a chart."""
+    from dualmech.numeric.phases import phase_chart, simulate_phases
+    try:
+        run = simulate_phases(problem, (0.0, args.duration), params=_params(args.param),
+                              samples=args.samples or 400)
+    except ValueError as exc:
+        raise UsageError(str(exc).replace("`params`", "`--param`")) from None
+    try:
+        path = phase_chart(run, args.phases)
+    except OSError as exc:
+        raise UsageError(f"`--phases`: cannot write {args.phases!r} ({exc.strerror}).") \
+            from None
+    doc = {"name": problem.name, "phases": [ph.problem for ph in run.phases],
+           "switches": [vars(s) for s in run.switches], "ended": run.ended, "chart": path}
+    if args.json:
+        print(json.dumps(doc, indent=1))
+    else:
+        print(" -> ".join(doc["phases"]) or "no phase ran")
+        print("\n".join(str(s) for s in run.switches))
+        print(run.ended or f"reached t = {args.duration:g} s")
+        print(f"chart: {path}")
+    return OK if not run.ended else STOPPED
 
 
 def _inputs(problem, params: dict, texts) -> dict:
@@ -188,6 +216,9 @@ def _simulate(args) -> int:
     if args.method not in METHODS:
         raise UsageError(f"`--method` {args.method!r} is not one of {', '.join(METHODS)}.")
     problem = _load(args)
+    if args.phases is not None:
+        with about(problem):
+            return _phases(problem, args)
     try:
         with about(problem):
             params = _params(args.param)

@@ -37,6 +37,7 @@ from dualmech.model.equations import EquationSet, ModelError, Rows
 from dualmech.model.facts import (FidelityRung, Probe, SteadyMotion, StiffScene,
                                   declaration_errors)
 from dualmech.model.inputs import Input, input_errors
+from dualmech.model.phases import phase_errors
 from dualmech.model.kinematics import t
 
 __all__ = ["Parameter", "Coordinate", "Reaction", "Published", "Problem", "ProblemError",
@@ -314,6 +315,13 @@ class Problem:
         ``inputs = (Input(F, FORCE, "push on the block"),)`` with ``ne.force("push", block,
         F * O.x)`` and ``lg.generalized_force("push", [F])``; a simulation without it is
         refused, naming the input (:mod:`dualmech.numeric.inputs`).
+    phases : dict
+        What follows when a one-sided reaction lets go: ``{reaction: Phase(next problem,
+        {next coordinate: expression of these coordinates}, why)}``, the reaction declared in
+        ``unilateral`` (:mod:`dualmech.model.phases`); e.g. a ladder on a smooth floor and
+        wall, ``phases = {"N_w": Phase(FreeLadder, {x: L / 2 * sp.sin(theta), theta: theta},
+        "the ladder leaves the wall")}``.  :func:`~dualmech.numeric.phases.simulate_phases`
+        continues with it, the state mapped across.
 
     Every declaration is checked by :meth:`validate`: a reaction, parameter or model it
     names must exist, a state must have one value per coordinate and rate.
@@ -373,6 +381,7 @@ class Problem:
     initial_state: tuple | dict = ()
     steady_motion: SteadyMotion | None = None
     inputs: tuple = ()
+    phases: dict = {}
     referee: bool = True
     referee_note: str = ""
 
@@ -520,6 +529,7 @@ class Problem:
                 errors.append(f"coordinate `{c.name}` is declared but no model uses it")
         errors += declaration_errors(self)
         errors += input_errors(self)
+        errors += phase_errors(self)
         if errors:
             raise ProblemError(f"problem `{self.name or type(self).__name__}` has "
                                f"{len(errors)} mistake(s):\n  - " + "\n  - ".join(errors))
