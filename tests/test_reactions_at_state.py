@@ -168,3 +168,15 @@ def test_check_gives_the_same_values_in_text_and_json(capsys):
 def test_check_refuses_at_with_several_problems(capsys):
     status, _, err = run(capsys, "check", "simple_pendulum", "toy_car", "--at", "theta=0")
     assert status == 2 and "one problem" in err
+
+
+def test_report_json_holds_the_values_of_reactions_past_the_budget(capsys, tmp_path):
+    status, _, _ = run(capsys, "report", "n_link_pendulum", "--out", tmp_path, "--duration",
+                       "0.5")
+    assert status == 0
+    got = json.loads((tmp_path / "n_link_pendulum.json").read_text())["values_at_state"]
+    q = [got["state"][f"theta{i}"] for i in (1, 2, 3)]
+    qd = [got["state"][f"theta{i}_dot"] for i in (1, 2, 3)]
+    expected = cartesian_tensions(*_values(problems.get("n_link_pendulum")), q, qd)
+    assert [got["values"][f"T{i}"]["direct"] for i in (1, 2, 3)] == pytest.approx(expected,
+                                                                                 rel=1e-10)

@@ -20,7 +20,7 @@ import argparse
 from dualmech.cli.errors import UsageError
 
 __all__ = ["add_at_option", "parse_at", "check_at", "values_wanted", "state_values",
-           "with_values"]
+           "with_values", "report_data"]
 
 
 def add_at_option(p: argparse.ArgumentParser) -> None:
@@ -56,7 +56,8 @@ def check_at(problem, text: str) -> dict:
 def values_wanted(problem, c, at_text: str | None) -> bool:
     """Whether to give values: ``--at`` was given, or a declared reaction has no formula."""
     formulas = getattr(c, "reactions", None)   # None: a failure, or a worker's finished text
-    if not getattr(problem, "reactions", ()) or formulas is None or not c.equivalent:
+    if not getattr(problem, "reactions", ()) or formulas is None \
+            or not getattr(c, "equivalent", False):
         return False
     return at_text is not None or any(r.name not in formulas for r in problem.reactions)
 
@@ -86,3 +87,15 @@ def with_values(problem, c, text: str | None, data: dict | None, at_text: str | 
     if data is not None:
         data = {**data, "values_at_state": values.to_dict()}
     return text, data
+
+
+def report_data(problem, c) -> dict:
+    """``c.to_dict()`` for ``dualmech report``'s ``<name>.json``, with the values at the default
+    state of reactions past the display budget; a state where they cannot be solved (a
+    singular matrix) is said in ``values_at_state.error``, never a lost report."""
+    from dualmech.numeric.model import SingularityError
+    data = c.to_dict()
+    try:
+        return with_values(problem, c, None, data, None)[1]
+    except (ValueError, SingularityError) as exc:
+        return {**data, "values_at_state": {"error": str(exc)}}

@@ -46,8 +46,8 @@ from typing import Sequence
 
 from dualmech import __version__
 from dualmech.cli import names as _names
-from dualmech.cli.at_state import (add_at_option, check_at, state_values, values_wanted,
-                                   with_values)
+from dualmech.cli.at_state import (add_at_option, check_at, report_data, state_values,
+                                   values_wanted, with_values)
 from dualmech.cli.options import positive_number
 from dualmech.cli.errors import (DISAGREE, EXIT_STATUS, OK, USAGE_OR_MODEL_ERROR, Failure,
                                  UsageError, about, describe, guarded, worst)
@@ -716,7 +716,7 @@ def _cmd_report(args) -> int:
             _, c = _printed(problem, c, args.notation)   # what the page shows, or its error
         _say_failed("report", c)
         results.append((problem, c))
-        (out / f"{problem.name}.json").write_text(_json(c.to_dict()) + "\n")
+        (out / f"{problem.name}.json").write_text(_json(report_data(problem, c)) + "\n")
     if not args.json:
         print(_summary(results), flush=True)
     if not sys.stderr.isatty():
