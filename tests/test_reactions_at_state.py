@@ -180,3 +180,14 @@ def test_report_json_holds_the_values_of_reactions_past_the_budget(capsys, tmp_p
     expected = cartesian_tensions(*_values(problems.get("n_link_pendulum")), q, qd)
     assert [got["values"][f"T{i}"]["direct"] for i in (1, 2, 3)] == pytest.approx(expected,
                                                                                  rel=1e-10)
+
+
+def test_reactions_no_referee_derives_get_the_other_derivations_beside(capsys):
+    """The rolling disk has no referee (its rolling constraint is rows of the direct model);
+    its contact forces are derived again by its multiplier model(s): a different route."""
+    got = _show_at(capsys, "rolling_disk", "theta=0.3, phi_dot=2, psi_dot=0.5")
+    for name in ("F_x", "F_y", "F_z"):
+        value = got["values"][name]
+        assert value["referee"] is None and "multiplier" in value["others"]
+        assert value["others"]["multiplier"] == pytest.approx(value["direct"], rel=1e-9)
+    assert abs(got["values"]["F_z"]["direct"]) > 0.1

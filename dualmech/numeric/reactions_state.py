@@ -45,7 +45,9 @@ class StateReactions:
 
     ``state`` holds every coordinate and rate (``name``, ``name_dot``) of the reference model;
     ``given`` the names the caller set (the rest are the default state's); ``direct`` maps a
-    reaction to its value; ``referee`` to ``(value, referee name)`` where a referee derives it.
+    reaction to its value; ``referee`` to ``(value, referee name)`` where a referee derives it;
+    ``others`` to ``[(value, model name)]``, the other derivations of a reaction no referee
+    derives (a multiplier model's, say).
     """
 
     problem: str
@@ -55,6 +57,7 @@ class StateReactions:
     direct: dict = field(default_factory=dict)
     referee: dict = field(default_factory=dict)
     notes: list = field(default_factory=list)
+    others: dict = field(default_factory=dict)
 
     def where(self) -> str:
         """The state as ``theta = 0.3, theta_dot = 0``, saying which values are defaults."""
@@ -75,8 +78,10 @@ class StateReactions:
                 other, who = self.referee[name]
                 gap = abs(other - value) / max(1.0, abs(value))
                 line += f";  {other:.10g} ({who}, Kane; relative gap {gap:.1e})"
+            elif self.others.get(name):
+                line += "".join(f";  {v:.10g} ({who})" for v, who in self.others[name])
             else:
-                line += ";  no referee derives it"
+                line += ";  no other derivation gives it"
             out.append(line)
         return out + [f"  {n}" for n in self.notes]
 
@@ -85,7 +90,8 @@ class StateReactions:
                 "default_state": not self.given,
                 "values": {name: {"direct": value,
                                   "referee": self.referee.get(name, (None, None))[0],
-                                  "referee_model": self.referee.get(name, (None, None))[1]}
+                                  "referee_model": self.referee.get(name, (None, None))[1],
+                                  "others": {who: v for v, who in self.others.get(name, ())}}
                            for name, value in self.direct.items()},
                 "notes": list(self.notes)}
 
@@ -149,11 +155,33 @@ def reactions_at_state(problem, at: Mapping[str, float] | None = None,
                                             fns).items():
             if rname in out.direct and rname not in out.referee:
                 out.referee[rname] = (value, name)
-    if comparison is not None and any(k not in out.referee for k in out.direct):
+    lonely = [k for k in out.direct if k not in out.referee]
+    if lonely:   # no referee: the problem's other derivations of them, beside
+        for mname, got in _other_models(problem, values, fns, q, qd, time).items():
+            for k in lonely:
+                if k in got:
+                    out.others.setdefault(k, []).append((got[k], mname))
+    if comparison is not None and lonely:
         out.notes += list(comparison.referees.notes)
     missing = [k for k in declared if k not in out.direct]
     if missing:
         out.notes.append(f"no square direct model gives {', '.join(missing)}")
+    return out
+
+
+def _other_models(problem, values, fns, q, qd, time) -> dict:
+    """``{model: {reaction: value}}`` of every model with reactions after the first (the one
+    :func:`reactions_at` reads), each by the reference accelerations and its linear solve."""
+    from dualmech.numeric.simulation import direct_models
+    ref = problem.model(problem.reference)
+    qdd = NumericModel(ref, values, inputs=fns).accelerations(time, q, qd)
+    out = {}
+    for m in list(direct_models(problem))[1:]:
+        A, b = NumericModel(m, values, backend="python", inputs=fns).system(time, q, qd)
+        if np.linalg.matrix_rank(A[:, m.n:]) < len(m.unknowns):
+            continue
+        lam = np.linalg.lstsq(A[:, m.n:], b - A[:, : m.n] @ qdd, rcond=None)[0]
+        out[m.name] = {u.name: float(v) for u, v in zip(m.unknowns, lam)}
     return out
 
 
