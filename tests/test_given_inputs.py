@@ -195,3 +195,23 @@ def test_show_at_takes_the_input_value(capsys):
     assert values["state"]["F"] == 4.0
     assert values["values"]["N"]["direct"] == pytest.approx(M * G + 2.0, rel=1e-12)
     assert values["values"]["N"]["referee"] == pytest.approx(M * G + 2.0, rel=1e-12)
+
+
+def test_an_input_in_a_direct_model_position_is_refused(block):
+    mod = _module(block)
+
+    class Moved(type(block)):
+        def newton_euler(self):   # the block placed at x + F: a given motion, not a load
+            ground = mod.O
+            moved = mod.Particle("block", mod.m, mod.Point.origin(ground).locate(
+                "P", (mod.x + mod.F / mod.k) * ground.x))
+            ne = mod.NewtonEuler(coordinates=[mod.x], ground=ground)
+            ne.gravity(-mod.g * ground.y)
+            ne.force("spring", moved, -mod.k * mod.x * ground.x)
+            ne.reaction("N", moved, ground.y)
+            ne.linear_momentum(moved, ground.x)
+            ne.linear_momentum(moved, ground.y)
+            return ne.equations()
+    with pytest.raises(ProblemError, match="input `F` appears in the position or rotation of "
+                                           "body `block`"):
+        Moved().validate()

@@ -109,8 +109,18 @@ def input_errors(problem) -> list[str]:
 
 
 def _energies(builder) -> dict:
-    """``{"T": [...], "V": [...], ...}`` of a Lagrangian builder (nothing for any other)."""
+    """``{"T": [...], "V": [...], ...}`` of a Lagrangian builder, ``{"the position of B":
+    [...]}`` of each body of a direct model's builder (nothing for any other)."""
     out = {}
+    declarations = getattr(builder, "declarations", None)
+    if callable(declarations) and hasattr(builder, "_reactions"):
+        decl = declarations()
+        for body in decl.bodies:
+            where = body.masscenter.pos_from().express(decl.ground).components
+            spin = getattr(body, "frame", None)
+            turn = spin.ang_vel_in(decl.ground).express(decl.ground).components \
+                if spin is not None else []
+            out[f"the position or rotation of body `{body.name}`"] = list(where) + list(turn)
     for part, attr in (("T", "_T"), ("V", "_V"), ("R (dissipation)", "_R")):
         terms = getattr(builder, attr, None)
         if isinstance(terms, dict):
