@@ -15,8 +15,9 @@ generalised force ``lg.generalized_force("push", [F])`` in Lagrange's.  What the
 
 A given *motion* (a support moved as ``u(t)``) is not an input of this kind: its rates and
 accelerations enter the equations; declare it as a prescribed coordinate instead.  So an
-input may not appear in a Lagrangian's ``T``, ``V``, ``R`` or constraints
-(:func:`input_errors` says so), where its time derivative would be needed and lost.
+input may not appear in a Lagrangian's ``T``, ``V``, ``R`` or constraints, nor in a direct
+model's body positions or rotations (:func:`input_errors` says so), where its time derivative
+would be needed and lost.
 
 Example
 -------
@@ -75,7 +76,8 @@ class Input:
 def input_errors(problem) -> list[str]:
     """Every mistake in ``problem.inputs`` (empty when none): a declaration that is not an
     :class:`Input`, a name declared twice or also a parameter, an input no model uses, or one
-    inside a Lagrangian's energies or constraints (a given motion, not a load)."""
+    inside a Lagrangian's energies or constraints or a direct model's body positions (a given
+    motion, not a load)."""
     from dualmech.model.declared import builder_of
     declared = getattr(problem, "inputs", ()) or ()
     errors, seen = [], set()
