@@ -121,7 +121,9 @@ def _bind(code_params: tuple, params: Mapping, what: str) -> tuple:
         values[_key(k, code_params)] = v
     missing = [s for s in code_params if s not in values]
     if missing:
-        raise ModelError(f"`params` lacks values for {sorted(map(str, missing))} ({what}).")
+        raise ModelError(f"`params` lacks values for {sorted(map(str, missing))} ({what}); "
+                         "if one is a given input (Problem.inputs), pass its history: "
+                         "simulate(..., inputs={name: function of t or (times, values)}).")
     out = []
     for s in code_params:
         try:
