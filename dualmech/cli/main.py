@@ -5,6 +5,7 @@
     dualmech list                                  the catalogue (and registered ones)
     dualmech check NAME [NAME...] | --all          Newton-Euler vs Lagrange, exactly
     dualmech show NAME [--latex] [--model M]       equations of motion and reactions
+                   [--at 'q=V, q_dot=W']         (and their values at a state)
     dualmech report [NAME...] [--all] [--out DIR]  checked and written to DIR (report.html)
     dualmech grade NAME --answer TEXT              a typed answer, checked exactly
     dualmech chart | atlas | fidelity NAME         work-precision, where methods fail, model ladder
@@ -45,6 +46,8 @@ from typing import Sequence
 
 from dualmech import __version__
 from dualmech.cli import names as _names
+from dualmech.cli.at_state import (add_at_option, check_at, report_data, state_values,
+                                   values_wanted, with_values)
 from dualmech.cli.options import positive_number
 from dualmech.cli.errors import (DISAGREE, EXIT_STATUS, OK, USAGE_OR_MODEL_ERROR, Failure,
                                  UsageError, about, describe, guarded, worst)
@@ -123,6 +126,7 @@ def build_parser() -> argparse.ArgumentParser:
                         "CPU when several problems are checked)")
     _points_seed(p)
     _notation_option(p)
+    add_at_option(p)
     p.set_defaults(func=_cmd_check)
 
     p = sub.add_parser("show", help="print a problem's equations of motion and reactions",
@@ -133,7 +137,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--latex", action="store_true", help="LaTeX instead of pretty text")
     p.add_argument("--model", metavar="M", help="show only model M (e.g. lagrange)")
     _notation_option(p)
-    _json_flag(p, "models (coordinates, unknowns, labelled equations) and reactions")
+    add_at_option(p)
+    _json_flag(p, "models (coordinates, unknowns, labelled equations), reactions and "
+                  "reaction values at a state (with --at, or when a formula is too long)")
     p.set_defaults(func=_cmd_show)
 
     p = sub.add_parser("report", help="check problems and write report.html with charts",
@@ -455,20 +461,21 @@ def _text(c, notation: str = "dots") -> str:
     return text(notation) if callable(text) else str(c)
 
 
-def _check_in_worker(i: int, points: int, seed: int, notation: str) -> _Checked:
+def _check_in_worker(i: int, points: int, seed: int, notation: str,
+                     at: str | None = None) -> _Checked:
     problem = _CHOSEN[i]
     c = _compare(problem, points, seed)
     try:   # the report is written here, where the error's traceback (its user line) is
         with about(problem):
-            return _Checked(_text(c, notation), c.to_dict(), bool(c.equivalent),
-                            getattr(c, "failure", None))
+            text, data = with_values(problem, c, _text(c, notation), c.to_dict(), at)
+            return _Checked(text, data, bool(c.equivalent), getattr(c, "failure", None))
     except Exception as exc:  # noqa: BLE001 - the parent reports it
         failed = _Failed(problem, exc, getattr(c, "seconds", 0.0))
         return _Checked(str(failed), failed.to_dict(), False, failed.failure)
 
 
 def _compared(chosen: list, points: int, seed: int, jobs: int | None,
-              notation: str = "dots"):
+              notation: str = "dots", at: str | None = None):
     """``compare`` of each problem, in order; several at once in forked worker processes
     (each problem's check is independent) when there are several problems and CPUs."""
     import os
@@ -486,7 +493,7 @@ def _compared(chosen: list, points: int, seed: int, jobs: int | None,
     _CHOSEN[:] = chosen
     try:
         with ProcessPoolExecutor(max_workers=jobs, mp_context=fork) as pool:
-            futures = [pool.submit(_check_in_worker, i, points, seed, notation)
+            futures = [pool.submit(_check_in_worker, i, points, seed, notation, at)
                        for i in range(len(chosen))]
             for problem, future in zip(_progress(chosen, "checking"), futures):
                 yield problem, future.result()
@@ -494,23 +501,43 @@ def _compared(chosen: list, points: int, seed: int, jobs: int | None,
         _CHOSEN.clear()
 
 
-def _printed(problem, c, notation: str):
-    """``(text, c)``: the report of ``c``, or of the failure writing it raised."""
+def _printed(problem, c, notation: str, at: str | None = None):
+    """``(text, c)``: the report of ``c`` (with reaction values at a state, see
+    :mod:`dualmech.cli.at_state`), or of the failure writing it raised."""
     try:
         with about(problem):
-            return _text(c, notation), c
+            return with_values(problem, c, _text(c, notation), None, at)[0], c
     except Exception as exc:  # noqa: BLE001 - e.g. a model the display cannot solve
         failed = _Failed(problem, exc, getattr(c, "seconds", 0.0))
         return str(failed), failed
+
+
+class _JsonValues:
+    """A comparison whose ``to_dict`` also holds the reaction values at a state."""
+
+    def __init__(self, problem, c, at: str | None):
+        self._problem, self._c, self._at = problem, c, at
+
+    def __getattr__(self, name):
+        return getattr(self._c, name)
+
+    def to_dict(self) -> dict:
+        return with_values(self._problem, self._c, None, self._c.to_dict(), self._at)[1]
 
 
 def _cmd_check(args) -> int:
     from dualmech.startup import load
     load("dualmech.verify.check")   # sympy, symengine and the comparator (see dualmech.startup)
     chosen = _selected(args)
+    if args.at is not None:
+        if len(chosen) != 1:
+            raise UsageError("`--at` names one problem's coordinates: check one problem with it.")
+        check_at(chosen[0], args.at)
     results = []
-    for problem, c in _compared(chosen, args.points, args.seed, args.jobs, args.notation):
-        text, c = _printed(problem, c, args.notation) if not args.json else (None, c)
+    for problem, c in _compared(chosen, args.points, args.seed, args.jobs, args.notation,
+                                args.at):
+        text, c = (_printed(problem, c, args.notation, args.at) if not args.json
+                   else (None, _JsonValues(problem, c, args.at)))
         results.append((problem, c))
         _say_failed("check", c)
         if not args.json and getattr(c, "failure", None) is None:
@@ -534,6 +561,8 @@ def _cmd_show(args) -> int:
 
 
 def _show(problem, args) -> int:
+    if args.at is not None:
+        check_at(problem, args.at)   # a bad --at is refused before any derivation
     models = problem.models()
     if args.model is not None:
         if args.model not in models:
@@ -541,7 +570,7 @@ def _show(problem, args) -> int:
                              f"{', '.join(models)}.")
         models = {args.model: models[args.model]}
     if args.json:
-        return _show_json(problem, models)
+        return _show_json(problem, models, args)
     from dualmech.sources import source_name
     print(f"{problem.name}: {problem.title}  ({source_name(problem.source)})")
     for name, eqs in models.items():
@@ -572,6 +601,12 @@ def _show(problem, args) -> int:
             print(f"{rname}{note} =")
             print(notation.pretty(expr, args.notation, coords))
         print()
+    for note in c.display_notes:
+        print(f"({note})")
+    if values_wanted(problem, c, args.at):
+        print()
+        print(_heading("reaction values at a state (direct form; Kane referee beside it)"))
+        print("\n".join(state_values(problem, c, args.at).lines()))
     return _status(c)
 
 
@@ -586,7 +621,7 @@ def _notation_option(p) -> None:
                         "(θ′); default: %(default)s")
 
 
-def _show_json(problem, models: dict) -> int:
+def _show_json(problem, models: dict, args) -> int:
     """``show --json``: each model's labelled equations, then the recovered reactions (the
     expressions as ``check --json`` writes them)."""
     from dualmech.model.notation import machine
@@ -615,6 +650,9 @@ def _show_json(problem, models: dict) -> int:
                 "machine": machine(expr, problem.coordinate_functions
                                    + tuple(problem.model(problem.reference).coordinates)),
                 "direction": where.direction if where is not None else ""}
+        doc["display_notes"] = list(getattr(c, "display_notes", ()))
+        if values_wanted(problem, c, args.at):
+            doc["values_at_state"] = state_values(problem, c, args.at).to_dict()
         status = _status(c)
     print(_json(doc))
     return status
@@ -678,7 +716,7 @@ def _cmd_report(args) -> int:
             _, c = _printed(problem, c, args.notation)   # what the page shows, or its error
         _say_failed("report", c)
         results.append((problem, c))
-        (out / f"{problem.name}.json").write_text(_json(c.to_dict()) + "\n")
+        (out / f"{problem.name}.json").write_text(_json(report_data(problem, c)) + "\n")
     if not args.json:
         print(_summary(results), flush=True)
     if not sys.stderr.isatty():

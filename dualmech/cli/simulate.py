@@ -3,7 +3,8 @@
 ::
 
     dualmech simulate NAME [--duration T] [--rtol R] [--atol A] [--method M]
-                           [--param NAME=VALUE ...] [--samples K] [--n N] [--json]
+                           [--param NAME=VALUE ...] [--input NAME=HISTORY ...]
+                           [--samples K] [--n N] [--phases PNG] [--json]
 
 NAME is anything :func:`dualmech.problems.load` takes: a catalogue name, ``path.py[:Class]``
 or ``module:Class``.  The reference model is integrated from the problem's initial state
@@ -70,6 +71,13 @@ def register(subparsers) -> None:
                         "right-hand side")
     p.add_argument("--param", metavar="NAME=VALUE", action="append", default=[],
                    help="a parameter value instead of the problem's default (repeatable)")
+    p.add_argument("--input", metavar="NAME=HISTORY", action="append", default=[],
+                   help="a given input's history (a problem declaring inputs needs one each): "
+                        "an expression of t, e.g. 'F=2*sin(3*t)', or a CSV table of time, "
+                        "value rows, e.g. F=push.csv (repeatable)")
+    p.add_argument("--phases", metavar="PNG", default=None,
+                   help="chain the contact phases the problem declares (Problem.phases): "
+                        "print each switch and write a chart of every phase to PNG")
     p.add_argument("--samples", metavar="K", type=whole_number(2, 100_000), default=None,
                    help="also give the state at K evenly spaced times (2 to 100000)")
     p.add_argument("--n", metavar="N", type=int, default=None,
@@ -113,9 +121,44 @@ def _params(pairs) -> dict:
     return out
 
 
+def _phases(problem, args) -> int:
+    """``--phases PNG``: the run across the declared contact phases, its switches, a chart."""
+    from dualmech.numeric.phases import phase_chart, simulate_phases
+    try:
+        run = simulate_phases(problem, (0.0, args.duration), params=_params(args.param),
+                              samples=args.samples or 400)
+    except ValueError as exc:
+        raise UsageError(str(exc).replace("`params`", "`--param`")) from None
+    try:
+        path = phase_chart(run, args.phases)
+    except OSError as exc:
+        raise UsageError(f"`--phases`: cannot write {args.phases!r} ({exc.strerror}).") \
+            from None
+    doc = {"name": problem.name, "phases": [ph.problem for ph in run.phases],
+           "switches": [vars(s) for s in run.switches], "ended": run.ended, "chart": path}
+    if args.json:
+        print(json.dumps(doc, indent=1))
+    else:
+        print(" -> ".join(doc["phases"]) or "no phase ran")
+        print("\n".join(str(s) for s in run.switches))
+        print(run.ended or f"reached t = {args.duration:g} s")
+        print(f"chart: {path}")
+    return OK if not run.ended else STOPPED
+
+
+def _inputs(problem, params: dict, texts) -> dict:
+    """The ``--input`` histories (expressions may name the parameters, at this run's values)."""
+    if not texts:
+        return {}
+    from dualmech.cli.inputs import parse_inputs
+    from dualmech.numeric.simulation import problem_parameters
+    values = {s.name: float(v) for s, v in problem_parameters(problem, params).items()}
+    return parse_inputs(texts, values)
+
+
 def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1e-10,
             method: str = "auto", params: dict | None = None,
-            samples: int | None = None) -> dict:
+            samples: int | None = None, inputs: dict | None = None) -> dict:
     """Integrate ``problem``'s reference model over ``[0, duration]``: what ``dualmech
     simulate --json`` prints.
 
@@ -132,9 +175,13 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
     from dualmech.numeric.cvode import CVODE_METHODS, integrate
     from dualmech.numeric.simulation import default_initial_state, problem_parameters
 
+    from dualmech.numeric.inputs import input_functions
     values = problem_parameters(problem, params)
+    drive = input_functions(problem, inputs, (0.0, duration))
+    if drive and method == "auto":
+        method = "DOP853"   # the inputs are Python functions: no compiled route calls them
     ref = problem.model(problem.reference)
-    model = NumericModel(ref, values)
+    model = NumericModel(ref, values, inputs=drive)
     q0, qd0 = default_initial_state(problem)
     y0 = [float(v) for v in q0 + qd0]
     t_eval = np.linspace(0.0, duration, samples) if samples else None
@@ -169,13 +216,20 @@ def _simulate(args) -> int:
     if args.method not in METHODS:
         raise UsageError(f"`--method` {args.method!r} is not one of {', '.join(METHODS)}.")
     problem = _load(args)
+    if args.phases is not None:
+        with about(problem):
+            return _phases(problem, args)
     try:
         with about(problem):
+            params = _params(args.param)
+            inputs = _inputs(problem, params, args.input)
             result = summary(problem, args.duration, args.rtol, args.atol, args.method,
-                             _params(args.param), args.samples)
-    except ValueError as exc:  # a misspelt or out-of-range --param
+                             params, args.samples, inputs)
+    except ValueError as exc:  # a misspelt or out-of-range --param, a missing --input
         if "`params`" in str(exc):
             raise UsageError(str(exc).replace("`params`", "`--param`")) from None
+        if "`inputs`" in str(exc) or "input" in str(exc).split(":")[0]:
+            raise UsageError(str(exc).replace("`inputs`", "`--input`")) from None
         raise
     if result["fallback"]:
         print(f"dualmech simulate: CVODE cannot run here ({result['fallback']}); fell back to "

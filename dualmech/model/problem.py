@@ -36,6 +36,8 @@ from dualmech.model.dimensions import ENERGY, Dimension, as_dimension, audit_row
 from dualmech.model.equations import EquationSet, ModelError, Rows
 from dualmech.model.facts import (FidelityRung, Probe, SteadyMotion, StiffScene,
                                   declaration_errors)
+from dualmech.model.inputs import Input, input_errors
+from dualmech.model.phases import phase_errors
 from dualmech.model.kinematics import t
 
 __all__ = ["Parameter", "Coordinate", "Reaction", "Published", "Problem", "ProblemError",
@@ -304,6 +306,22 @@ class Problem:
         The steady motion ``dualmech stability`` linearises about by default, e.g.
         ``SteadyMotion({rate(phi): v / r, rate(x): v}, "v", (0, 10, 101), "upright
         rolling")`` (:mod:`dualmech.model.stability`).
+    inputs : tuple of :class:`~dualmech.model.inputs.Input`
+        Given inputs: a load's magnitude known only as a function of time, written in the
+        models as a plain symbol where the load acts.  The verdict treats it as a free value
+        at each sample point (the models agree for every input history); a simulation takes
+        its history from the caller (``simulate(p, inputs={"F": lambda t: 2 * sin(t)})``, a
+        table ``(times, values)``, or ``dualmech simulate --input 'F=2*sin(t)'``), e.g.
+        ``inputs = (Input(F, FORCE, "push on the block"),)`` with ``ne.force("push", block,
+        F * O.x)`` and ``lg.generalized_force("push", [F])``; a simulation without it is
+        refused, naming the input (:mod:`dualmech.numeric.inputs`).
+    phases : dict
+        What follows when a one-sided reaction lets go: ``{reaction: Phase(next problem,
+        {next coordinate: expression of these coordinates}, why)}``, the reaction declared in
+        ``unilateral`` (:mod:`dualmech.model.phases`); e.g. a ladder on a smooth floor and
+        wall, ``phases = {"N_w": Phase(FreeLadder, {x: L / 2 * sp.sin(theta), theta: theta},
+        "the ladder leaves the wall")}``.  :func:`~dualmech.numeric.phases.simulate_phases`
+        continues with it, the state mapped across.
 
     Every declaration is checked by :meth:`validate`: a reaction, parameter or model it
     names must exist, a state must have one value per coordinate and rate.
@@ -362,6 +380,8 @@ class Problem:
     chaotic_state: tuple | dict = ()
     initial_state: tuple | dict = ()
     steady_motion: SteadyMotion | None = None
+    inputs: tuple = ()
+    phases: dict = {}
     referee: bool = True
     referee_note: str = ""
 
@@ -401,7 +421,14 @@ class Problem:
 
     @property
     def parameter_symbols(self) -> tuple:
-        return tuple(p.symbol for p in self.parameters)
+        """Every symbol a sample point gives a value to: the parameters, then the given
+        inputs (:attr:`inputs`: free values at each point, like a rate)."""
+        return tuple(p.symbol for p in self.parameters) + self.input_symbols
+
+    @property
+    def input_symbols(self) -> tuple:
+        """The symbols of the given inputs (:attr:`inputs`), in declaration order."""
+        return tuple(x.symbol for x in (self.inputs or ()) if isinstance(x, Input))
 
     @property
     def coordinate_functions(self) -> tuple:
@@ -413,6 +440,8 @@ class Problem:
     def dimensions(self) -> dict:
         """Declared dimension of every symbol and coordinate (and ``t``)."""
         dims = {p.symbol: p.dimension for p in self.parameters}
+        dims.update({x.symbol: x.dimension for x in (self.inputs or ())
+                     if isinstance(x, Input)})
         for c in self.all_coordinates():
             dims[c.function] = c.dimension
         for r in self.reactions:
@@ -499,6 +528,8 @@ class Problem:
             if c.function not in used_coords:
                 errors.append(f"coordinate `{c.name}` is declared but no model uses it")
         errors += declaration_errors(self)
+        errors += input_errors(self)
+        errors += phase_errors(self)
         if errors:
             raise ProblemError(f"problem `{self.name or type(self).__name__}` has "
                                f"{len(errors)} mistake(s):\n  - " + "\n  - ".join(errors))

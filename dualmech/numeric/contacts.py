@@ -47,13 +47,15 @@ def unilateral_of(problem) -> dict:
 
 @dataclass(frozen=True)
 class ContactBreak:
-    """A one-sided reaction reaching zero: when, where, which way, and what it means."""
+    """A one-sided reaction reaching zero: when, where, which way, and what it means
+    (``y``: the whole state ``[q..., q'...]`` there)."""
 
     reaction: str
     time: float
     state: dict
     meaning: str
     at_start: bool = False
+    y: tuple = ()
 
     def __str__(self) -> str:
         where = ", ".join(f"{k} = {v:.4g}" for k, v in self.state.items())
@@ -128,7 +130,7 @@ def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = No
         report.minimum[k] = (value, float(t_span[0]))
         if value < 0:
             report.first = ContactBreak(k, float(t_span[0]), dict(zip(coords, y0[:n])),
-                                        watched[k], at_start=True)
+                                        watched[k], at_start=True, y=tuple(map(float, y0)))
             report.t_end = float(t_span[0])
             return report
     if not names and not extra_events:
@@ -151,9 +153,9 @@ def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = No
         j = int(np.argmin(vals))
         report.minimum[k] = (float(vals[j]), float(grid[j]))
     for k, times, ys in zip(names, sol.t_events, sol.y_events):
-        if len(times):
+        if len(times) and (report.first is None or times[0] < report.first.time):
             report.first = ContactBreak(k, float(times[0]), dict(zip(coords, ys[0][:n])),
-                                        watched[k])
+                                        watched[k], y=tuple(map(float, ys[0])))
     for ev, times in zip(extra_events, sol.t_events[len(names):]):
         if len(times) and (report.stopped is None or times[0] < report.stopped[1]):
             report.stopped = (ev.what, float(times[0]))

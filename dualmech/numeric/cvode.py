@@ -162,10 +162,12 @@ def _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
     if sol.status == 1:  # a terminal event: the singular set
         hit = next(i for i, ts in enumerate(sol.t_events) if len(ts))
         raise events.error(float(sol.t_events[hit][0]), sol.y_events[hit][0])
-    return Run(method=method, t=sol.t, y=sol.y, success=sol.status >= 0, message=sol.message,
+    t = np.asarray(sol.t, dtype=float)   # a list when the run fails before any t_eval
+    y = np.asarray(sol.y, dtype=float).reshape(len(y0), t.size)
+    return Run(method=method, t=t, y=y, success=sol.status >= 0, message=sol.message,
                cpu=cpu, calls=int(sol.nfev), evaluations=int(sol.nfev),
-               steps=max(len(sol.t) - 1, 0), jacobians=int(sol.njev),
-               factorisations=int(sol.nlu), t_end=float(sol.t[-1]) if sol.t.size else t0)
+               steps=max(t.size - 1, 0), jacobians=int(sol.njev),
+               factorisations=int(sol.nlu), t_end=float(t[-1]) if t.size else t0)
 
 
 def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:

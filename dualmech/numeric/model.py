@@ -38,6 +38,7 @@ from dualmech.model.equations import EquationSet, ModelError, state_symbols, to_
 from dualmech.model.kinematics import t
 from dualmech.numeric import cbackend, codegen
 from dualmech.numeric._cache import digest, load_module
+from dualmech.numeric.inputs import InputError
 
 __all__ = ["NumericModel", "SingularityError", "StateFunction"]
 
@@ -120,7 +121,9 @@ def _bind(code_params: tuple, params: Mapping, what: str) -> tuple:
         values[_key(k, code_params)] = v
     missing = [s for s in code_params if s not in values]
     if missing:
-        raise ModelError(f"`params` lacks values for {sorted(map(str, missing))} ({what}).")
+        raise ModelError(f"`params` lacks values for {sorted(map(str, missing))} ({what}); "
+                         "if one is a given input (Problem.inputs), pass its history: "
+                         "simulate(..., inputs={name: function of t or (times, values)}).")
     out = []
     for s in code_params:
         try:
@@ -157,6 +160,10 @@ class NumericModel:
         cached).  ``"auto"`` (default; ``$DUALMECH_BACKEND`` overrides) compiles square
         systems of 3 to 120 unknowns when a C compiler exists.  :meth:`system` always runs
         the Python/NumPy code.
+    inputs : mapping symbol (or its name) -> callable, optional
+        Given inputs (:class:`~dualmech.model.inputs.Input`): each a function of time whose
+        value is bound at every evaluation (:mod:`dualmech.numeric.inputs` builds them from
+        callables, tables and expressions, with the checks); the code then runs in Python.
 
     Notes
     -----
@@ -164,7 +171,8 @@ class NumericModel:
     states in the columns); ``time`` is a number or, for many states, an array ``(K,)``.
     """
 
-    def __init__(self, eqs: EquationSet, params: Mapping, *, backend: str | None = None):
+    def __init__(self, eqs: EquationSet, params: Mapping, *, backend: str | None = None,
+                 inputs: Mapping | None = None):
         backend = backend or os.environ.get("DUALMECH_BACKEND", "auto")
         if backend not in ("auto", "python", "c"):
             raise ValueError(f"`backend` must be 'auto', 'python' or 'c', got {backend!r}.")
@@ -172,11 +180,39 @@ class NumericModel:
         self.states = [state_symbols(q) for q in eqs.coordinates]
         self.n = eqs.n
         self._code = code = _generated(eqs)
-        p = _bind(code.params, params, f"model `{eqs.name}`")
-        self._setup(p, backend)
+        inputs = {_key(k, code.params): f for k, f in (inputs or {}).items()}
+        inputs = {k: f for k, f in inputs.items() if k in code.params}
+        p = _bind(code.params, {**params, **{k: 0.0 for k in inputs}}, f"model `{eqs.name}`")
+        self._setup(p, "python" if inputs else backend)
+        if inputs:   # given inputs F(t): their values bound at each time (Python code only)
+            self._inputs = [(code.params.index(k), f) for k, f in inputs.items()]
+            self._p = list(p)
+            self._scalar, self._vector = self._driven_scalar, self._driven_vector
+
+    # -- given inputs ----------------------------------------------------------------------
+    def _bound_at(self, time):
+        """The generated scalar code with each given input's value at ``time`` bound."""
+        p = list(self._p)
+        for i, f in self._inputs:
+            p[i] = f(float(time))
+        p = tuple(p)
+        module = self._code.module
+        return module.scalar(p, module.static(p))
+
+    def _driven_scalar(self, time, y):
+        return self._bound_at(time)(time, y)
+
+    def _driven_vector(self, time, Y):
+        K = Y.shape[1]
+        times = np.broadcast_to(np.asarray(time, dtype=float), (K,))
+        cols = [self._bound_at(times[i])(times[i], Y[:, i].tolist()) for i in range(K)]
+        return [np.array([c[j] for c in cols], dtype=float) for j in range(len(cols[0]))]
 
     def __getstate__(self) -> dict:
         """Pickled as the equations, parameter values and backend (code is rebuilt)."""
+        if getattr(self, "_inputs", None):
+            raise TypeError("a model driven by given inputs (Python functions of time) does "
+                            "not pickle; build it where it runs.")
         return {"eqs": self.eqs, "p": tuple(self._c_args[0].tolist()), "backend": self.backend}
 
     def __setstate__(self, state: dict) -> None:
@@ -352,6 +388,8 @@ class NumericModel:
     def _eval_one(self, time, y: list) -> tuple:
         try:
             return self._scalar(time, y)
+        except InputError:
+            raise   # the input's own history failed: its message says where
         except (ValueError, ZeroDivisionError, OverflowError) as exc:
             raise ValueError(_failed(self.eqs.name, self._state_text(time, y), exc)) from None
 

@@ -26,6 +26,7 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 from dualmech.model.facts import is_declared, state_vector
+from dualmech.numeric.inputs import input_functions
 from dualmech.numeric.model import NumericModel, SingularityError
 
 __all__ = ["Trajectory", "simulate", "reactions_at", "reactions_along", "direct_models",
@@ -165,7 +166,7 @@ def right_hand_side(problem, params: Mapping | None = None, *,
 def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
              samples: int = 200, rtol: float = 1e-9, atol: float = 1e-11,
              method: str = "DOP853", *, check_ranges: bool = True,
-             **solve_ivp_kwargs) -> Trajectory:
+             inputs: Mapping | None = None, **solve_ivp_kwargs) -> Trajectory:
     """Integrate the reference model and recover the direct model's reactions along the way.
 
     Parameters
@@ -184,6 +185,10 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
         Passed to :func:`scipy.integrate.solve_ivp`.
     check_ranges : bool
         Refuse parameter values outside their declared ranges (default).
+    inputs : mapping, optional
+        The history of each given input the problem declares (``Problem.inputs``), by name:
+        a function of ``t`` or a table ``(times, values)`` interpolated linearly
+        (:func:`~dualmech.numeric.inputs.input_functions`); required when it declares any.
 
     Raises
     ------
@@ -205,8 +210,9 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:
         raise ValueError(f"`samples` must be an integer >= 2, got {samples!r}.")
     values = problem_parameters(problem, params, check_ranges=check_ranges)
+    drive = input_functions(problem, inputs, (t0, t1))
     ref = problem.model(problem.reference)
-    model = NumericModel(ref, values)
+    model = NumericModel(ref, values, inputs=drive)
     n = ref.n
     if y0 is None:
         q0, qd0 = default_initial_state(problem)
@@ -227,7 +233,7 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
         raise SingularityError(f"integration of `{problem.name}` failed: {sol.message}")
     traj = Trajectory(sol.t, sol.y[:n], sol.y[n:], [q.func.__name__ for q in ref.coordinates],
                       message=sol.message)
-    traj.reactions = reactions_along(problem, traj, values)
+    traj.reactions = reactions_along(problem, traj, values, drive)
     return traj
 
 
@@ -242,32 +248,40 @@ def direct_models(problem, square: bool = False):
 
 
 def reactions_at(problem, q: Sequence[float], qd: Sequence[float], time: float = 0.0,
-                 params: Mapping | None = None, *, check_ranges: bool = True) -> dict:
+                 params: Mapping | None = None, *, check_ranges: bool = True,
+                 inputs: Mapping | None = None) -> dict:
     """Reactions ``{name: value}`` of the direct model(s) at one state (reference coordinates).
 
     The accelerations are the reference model's; each direct model's reactions are then its
-    solution of ``A [q''; lambda] = b``.
+    solution of ``A [q''; lambda] = b`` (a model whose reaction columns are rank-deficient at
+    the state, so that they do not fix its reactions, gives none).
     """
     values = problem_parameters(problem, params, check_ranges=check_ranges)
+    drive = input_functions(problem, inputs)
     ref = problem.model(problem.reference)
-    qdd = NumericModel(ref, values).accelerations(time, q, qd)
+    qdd = NumericModel(ref, values, inputs=drive).accelerations(time, q, qd)
     out: dict = {}
     for m in direct_models(problem):
-        A, b = NumericModel(m, values).system(time, q, qd)
+        A, b = NumericModel(m, values, inputs=drive).system(time, q, qd)
+        if np.linalg.matrix_rank(A[:, m.n:]) < len(m.unknowns):
+            continue    # the reactions are not fixed by this model: no least-norm guess
         lam = np.linalg.lstsq(A[:, m.n:], b - A[:, : m.n] @ qdd, rcond=None)[0]
         for u, v in zip(m.unknowns, lam):
             out.setdefault(u.name, float(v))
     return out
 
 
-def reactions_along(problem, traj: Trajectory, values: Mapping) -> dict:
-    """Reactions of every direct model (in the reference coordinates) along ``traj``.
+def reactions_along(problem, traj: Trajectory, values: Mapping,
+                    inputs: Mapping | None = None) -> dict:
+    """Reactions of every direct model (in the reference coordinates) along ``traj``
+    (``inputs``: the given inputs' functions of time, as :func:`simulate` binds them).
 
     Each direct model is solved at all samples at once (one batched solve).
     """
     out: dict = {}
     for m in direct_models(problem):  # one batched solve: nothing to compile for it
-        rows = NumericModel(m, values, backend="python").solve(traj.t, traj.q, traj.qd)[m.n:]
+        rows = NumericModel(m, values, backend="python", inputs=inputs).solve(
+            traj.t, traj.q, traj.qd)[m.n:]
         for name, row in zip((u.name for u in m.unknowns), rows):
             out.setdefault(name, row)
     return out

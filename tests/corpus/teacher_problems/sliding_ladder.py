@@ -1,0 +1,87 @@
+"""A teacher's sliding ladder: a uniform rod (mass m, length L) against a smooth wall (x = 0)
+on a smooth floor (y = 0), released from rest.  theta is its angle from the wall.
+
+Phase 1, on wall and floor: one coordinate theta; the centre is at (L/2 sin theta,
+L/2 cos theta); the wall pushes N_w along +x at the top, the floor N_f up at the bottom.
+Phase 2, after N_w reaches zero: the ladder leaves the wall and slides on the floor alone; its
+centre's horizontal position x is free, its height L/2 cos theta (the bottom on the floor).
+"""
+import sympy as sp
+from dualmech import (Coordinate, Frame, Lagrangian, NewtonEuler, Parameter, Phase, Point,
+                      Problem, Reaction, RigidBody, coordinate, rate, rot_z, thin_rod,
+                      ACCELERATION, ANGLE, FORCE, LENGTH, MASS)
+
+m, L, g = sp.symbols("m L g", positive=True)
+theta, x = coordinate("theta"), coordinate("x")
+PARAMETERS = (Parameter(m, MASS, 10, (0.1, 100), "mass of the ladder"),
+              Parameter(L, LENGTH, 4, (0.5, 10), "length of the ladder"),
+              Parameter(g, ACCELERATION, 9.81, (1, 20)))
+ANGLE_ = Coordinate(theta, ANGLE, (0.05, 1.5), (-5, 5), "ladder from the wall")
+
+
+def ladder(centre):
+    """The ground, the ladder's frame and body, its top and its bottom."""
+    O = Frame.ground("O")
+    B = O.child("B", rot_z(theta))              # B.y: from the bottom to the top
+    C = Point.origin(O, "O").locate("C", centre(O))
+    rod = RigidBody("ladder", m, C, B, thin_rod(m, L, axis="y"))
+    return O, B, rod, C.locate("top", L / 2 * B.y), C.locate("bottom", -L / 2 * B.y)
+
+
+def balances(ne, O, B, rod):
+    ne.linear_momentum(rod, O.x)
+    ne.linear_momentum(rod, O.y)
+    ne.angular_momentum(rod, B.z)
+    return ne.equations()
+
+
+class FreeLadder(Problem):
+    name, title, source = "free_ladder", "Ladder sliding on a smooth floor", "my notes: ex. 9b"
+    parameters = PARAMETERS
+    coordinates = (Coordinate(x, LENGTH, (-10, 10), (-20, 20), "centre, horizontally"), ANGLE_)
+    reactions = (Reaction("N_f", FORCE, "floor on the bottom, up"),)
+    unilateral = {"N_f": "the ladder leaves the floor"}
+
+    def newton_euler(self):
+        O, B, rod, top, bottom = ladder(lambda O: x * O.x + L / 2 * sp.cos(theta) * O.y)
+        ne = NewtonEuler(coordinates=[x, theta], ground=O)
+        ne.gravity(-g * O.y)
+        ne.reaction("N_f", rod, O.y, at=bottom)
+        return balances(ne, O, B, rod)
+
+    def lagrange(self):
+        lg = Lagrangian(coordinates=[x, theta])
+        lg.kinetic("translation", m * (rate(x)**2 + (L / 2 * sp.sin(theta) * rate(theta))**2) / 2)
+        lg.kinetic("rotation", m * L**2 / 12 * rate(theta)**2 / 2)
+        lg.potential("gravity", m * g * L / 2 * sp.cos(theta))
+        return lg.equations()
+
+
+class WallLadder(Problem):
+    name, title, source = "wall_ladder", "Ladder sliding down a smooth wall", "my notes: ex. 9a"
+    parameters = PARAMETERS
+    coordinates = (ANGLE_,)
+    reactions = (Reaction("N_w", FORCE, "wall on the top, along +x"),
+                 Reaction("N_f", FORCE, "floor on the bottom, up"))
+    unilateral = {"N_w": "the ladder leaves the wall", "N_f": "the ladder leaves the floor"}
+    phases = {"N_w": Phase(FreeLadder, {x: L / 2 * sp.sin(theta), theta: theta},
+                           "the ladder leaves the wall and slides on the floor alone")}
+    initial_state = {theta: 0.3}
+
+    def newton_euler(self):
+        O, B, rod, top, bottom = ladder(lambda O: L / 2 * (sp.sin(theta) * O.x
+                                                          + sp.cos(theta) * O.y))
+        ne = NewtonEuler(coordinates=[theta], ground=O)
+        ne.gravity(-g * O.y)
+        ne.reaction("N_w", rod, O.x, at=top)
+        ne.reaction("N_f", rod, O.y, at=bottom)
+        return balances(ne, O, B, rod)
+
+    def lagrange(self):
+        lg = Lagrangian(coordinates=[theta])
+        lg.kinetic("T", m * L**2 / 6 * rate(theta)**2)
+        lg.potential("gravity", m * g * L / 2 * sp.cos(theta))
+        return lg.equations()
+
+
+PROBLEMS = (WallLadder, FreeLadder)
