@@ -118,7 +118,8 @@ def _best(expr, targets, ctx, scale, equation, mode, parts=None) -> Diagnosis | 
         return None
     if len(mine.terms) > 1 and set(mine.terms) <= set(_differences(mine, tab, c)):
         return None     # every term the student wrote changes: a rewrite, not an edit
-    return _describe(mine, tab, c, ctx, equation, plan)
+    d = _describe(mine, tab, c, ctx, equation, plan)
+    return d if d.size <= MAX_EDITS else None    # described in more edits than believable
 
 
 def _small(size: int, matched: int, written: int, kept: int | None = None) -> bool:

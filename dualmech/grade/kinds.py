@@ -46,7 +46,9 @@ from dualmech.grade.context import ProblemContext, zero
 
 __all__ = ["category", "sources"]
 
-_GRAVITY, _SPRING = (ACCELERATION,), (STIFFNESS, TORSIONAL_STIFFNESS)
+#: an acceleration (g) or a gravitational parameter (mu = G M, L^3 T^-2)
+_GRAVITY = (ACCELERATION, LENGTH**3 / TIME**2)
+_SPRING = (STIFFNESS, TORSIONAL_STIFFNESS)
 _DAMPER = (DAMPING, TORSIONAL_DAMPING)
 
 
@@ -107,7 +109,7 @@ def category(term, ctx: ProblemContext) -> str:
     names: list = []
     for key, (coeff, value, _) in tab.terms.items():
         found = table.get(key)
-        name = _traced(found, key, value, ctx) if found else _by_rates(key, coeff, ctx)
+        name = _traced(found, key, value, coeff, ctx) if found else _by_rates(key, coeff, ctx)
         if not name:
             return ""
         if name not in names:
@@ -135,7 +137,8 @@ def _by_rates(key, coeff, ctx) -> str:
                 if name:
                     out.setdefault(_signature(k, ctx), set()).add(name)
         return out
-    names = ctx.memo("term_signatures", build).get(_signature(key, ctx), set())
+    names = {n for n in ctx.memo("term_signatures", build).get(_signature(key, ctx), set())
+             if _supported(n, key * coeff, ctx)}
     certain = _certain(key * coeff, ctx)
     if len(names) == 1 and (not certain or certain in names):
         return next(iter(names))
@@ -147,15 +150,42 @@ def _by_rates(key, coeff, ctx) -> str:
     return ""
 
 
-def _traced(found: list, key, value, ctx) -> str:
-    """The name of a term on ``key`` from the ingredients that produce that state part."""
-    named = [(_name(kind, coeff, key, ctx), v) for kind, coeff, v in found]
+def _supported(name: str, term, ctx) -> bool:
+    """Whether ``term``'s own make-up allows ``name``: gravity needs a parameter declared as
+    gravity, a spring a stiffness, a centrifugal term a rate parameter, inertia an
+    acceleration, ... (a term at another scale keeps what defines its kind)."""
+    syms = term.free_symbols
+    declared = _declared(ctx)
+    dims = {declared.get(s) for s in syms if s in declared}
+    rates = any(s.qd in syms for s in ctx.states)
+    needs = (("gravity", lambda: dims & set(_GRAVITY)), ("spring", lambda: dims & set(_SPRING)),
+             ("damping", lambda: dims & set(_DAMPER) or rates),
+             ("torque", lambda: TORQUE in dims), ("force", lambda: FORCE in dims),
+             ("centrifugal", lambda: any(reduce(d) == reduce(1 / TIME) for d in dims if d)),
+             ("prescribed", lambda: t in syms),
+             ("inertia", lambda: any(s.qdd in syms for s in ctx.states)),
+             ("Coriolis", lambda: rates), ("centripetal", lambda: rates))
+    return all(bool(test()) for word, test in needs if word in name)
+
+
+def _traced(found: list, key, value, coeff, ctx) -> str:
+    """The name of a term on ``key`` from the ingredients that produce that state part: the
+    one whose coefficient the term has; else what its own parameters make certain (a term at
+    another scale, or made up: ``5 M g x`` where only ``k x`` sits on ``x``); else every
+    ingredient's name."""
+    named = [(_name(kind, c, key, ctx), v) for kind, c, v in found]
     kinds = list(dict.fromkeys(n for n, _ in named if n))
-    if len(kinds) <= 1:
-        return kinds[0] if kinds else ""
     exact = list(dict.fromkeys(n for n, v in named if n and zero(value - v, [value, v])))
     if len(exact) == 1:
         return exact[0]
+    certain = _certain(key * coeff, ctx)
+    if certain:
+        return certain
+    kinds = [k for k in kinds if _supported(k, key * coeff, ctx)]
+    if not kinds:
+        return _by_rates(key, coeff, ctx)
+    if len(kinds) == 1:
+        return kinds[0]
     words = [k.split(" ", 1)[1].removesuffix(" term") for k in kinds]
     article = "an" if words[0][0] in "aeiou" else "a"
     return f"{article} {' or '.join(words)} term"
@@ -217,7 +247,8 @@ def _certain(term, ctx) -> str:
     rates = any(s.qd in syms for s in ctx.states)
     if rates and dims & set(_DAMPER):
         return "a damping term"
-    for group, name in (((TORQUE,), "a torque term"), ((FORCE,), "an applied force term"),
+    driven = "a driving" if t in syms else "an applied"
+    for group, name in (((TORQUE,), f"{driven} torque term"), ((FORCE,), f"{driven} force term"),
                         (_SPRING, "a spring term"), (_GRAVITY, "a gravity term")):
         if not rates and dims & set(group) and len(dims - {None}) >= 1:
             others = dims - set(group) - {None}
