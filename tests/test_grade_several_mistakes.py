@@ -157,7 +157,7 @@ def test_scores_count_edits_per_equation():
      "the theta equation, its centripetal and gravity terms differ"),
     # spring_mass_damper: damping, spring and drive all wrong
     ("spring_mass_damper", "m*x'' + 3*b*x'^2 + k*sin(x) = 0",
-     "the x equation, its driving, spring and damping terms differ"),
+     "the x equation, its driving force, spring and damping terms differ"),
 ])
 def test_the_kind_of_term_is_named_when_no_edit_is(problem, answer, kinds):
     r = _grade(problem, answer)

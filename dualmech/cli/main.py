@@ -207,11 +207,13 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=_cmd_new)
 
     from dualmech.cli.grade import register as _register_grade
+    from dualmech.cli.handout import register as _register_handout
     from dualmech.cli.studies import register as _register_numeric
     from dualmech.cli.serve import register as _register_web
     from dualmech.cli.simulate import register as _register_simulate
     from dualmech.cli.stability import register as _register_stability
     _register_grade(sub)
+    _register_handout(sub)
     _register_numeric(sub)
     _register_web(sub)
     _register_simulate(sub)

@@ -15,6 +15,7 @@ from sympy.printing.str import StrPrinter
 
 from dualmech.model.dimensions import format_dimension, reduce
 from dualmech.grade.formula import Formula, tree_to_sympy
+from dualmech.grade.tidy import tidy
 
 __all__ = ["display", "dimension_issues", "expected_dimension", "reduced", "Dims",
            "notation_of", "restyle", "label_words", "NOTATIONS"]
@@ -35,8 +36,9 @@ class _PrimePrinter(StrPrinter):
 
 def display(expr, names: dict | None = None) -> str:
     """``expr`` as text, with ``names`` (symbol -> text) for the coordinates' derivatives,
-    powers written ``^`` as students type them."""
-    return _PrimePrinter(names or {}).doprint(expr).replace("**", "^")
+    powers written ``^`` as students type them, reduced as a person would write it
+    (:func:`dualmech.grade.tidy.tidy`)."""
+    return _PrimePrinter(names or {}).doprint(tidy(expr)).replace("**", "^")
 
 
 #: How a student may write the rates of ``theta``: first and second derivative.

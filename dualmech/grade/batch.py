@@ -139,7 +139,9 @@ def warm(names: Iterable[str] | str, limits: Limits = LIMITS) -> None:
 def warm_targets(ctx) -> None:
     """Build the exact points of ``ctx`` and its equations' feedback targets in every mode,
     with their written groups (what explaining a wrong equation reads), now."""
+    from dualmech.grade.kinds import sources
     from dualmech.grade.terms import MODES, equation_targets
+    sources(ctx)    # what each term of a correct equation is made of (names kinds of terms)
     if ctx.method == "exact":
         ctx.points("exact")
         for mode in MODES:

@@ -37,13 +37,12 @@ from fractions import Fraction
 import mpmath
 import sympy as sp
 
-from dualmech.model.dimensions import (ACCELERATION, DAMPING, FORCE, STIFFNESS, TORQUE,
-                                      TIME, TORSIONAL_DAMPING, TORSIONAL_STIFFNESS)
 from dualmech.exact.form import MP_DIGITS
 from dualmech.model.kinematics import t
 from dualmech.grade.context import ProblemContext, zero
-from dualmech.grade.audit import display, reduced
+from dualmech.grade.audit import display
 from dualmech.grade.formula import Formula
+from dualmech.grade.kinds import category as _category
 from dualmech.grade.result import Edit
 from dualmech.grade.terms import MODES, TermTable, coefficient_env, state_symbols, term_table
 
@@ -119,7 +118,8 @@ def _best(expr, targets, ctx, scale, equation, mode, parts=None) -> Diagnosis | 
         return None
     if len(mine.terms) > 1 and set(mine.terms) <= set(_differences(mine, tab, c)):
         return None     # every term the student wrote changes: a rewrite, not an edit
-    return _describe(mine, tab, c, ctx, equation, plan)
+    d = _describe(mine, tab, c, ctx, equation, plan)
+    return d if d.size <= MAX_EDITS else None    # described in more edits than believable
 
 
 def _small(size: int, matched: int, written: int, kept: int | None = None) -> bool:
@@ -630,42 +630,10 @@ def _swap_of(have, right, swaps) -> str:
     return ""
 
 
-_CATEGORY_DIMS = None
-
-
 def category(term, ctx: ProblemContext) -> str:
-    """A short name for what a term is (inertia, Coriolis, centripetal, damping, ...)."""
-    syms = term.free_symbols
-    qdd = {s.qdd for s in ctx.states}
-    qd = {s.qd for s in ctx.states}
-    if syms & qdd:
-        return "an inertia term"
-    if syms & set(ctx.reactions):
-        return "a reaction term"
-    rates = [s for s in qd if s in syms]
-    dims = {p: ctx.dims.get(p) for p in ctx.parameters if p in syms}
-    damping = {reduced(DAMPING), reduced(TORSIONAL_DAMPING)}
-    if rates and any(d in damping for d in dims.values()):
-        return "a damping term"
-    if len(rates) >= 2:
-        return "a Coriolis term"
-    if rates:
-        powers = term.as_powers_dict()
-        if any(powers.get(r, 0) >= 2 for r in rates):
-            return "a centripetal term"
-        return "a velocity term"
-    if t in syms:
-        return "a driving term"
-    powers = term.as_powers_dict()
-    if any(d == reduced(1 / TIME) and powers.get(p, 0) >= 2 for p, d in dims.items()):
-        return "a centripetal term"     # of a rotation the problem prescribes (omega^2)
-    if any(d == reduced(ACCELERATION) for d in dims.values()):
-        return "a gravity term"
-    if any(d in (reduced(STIFFNESS), reduced(TORSIONAL_STIFFNESS)) for d in dims.values()):
-        return "a spring term"
-    if any(d in (reduced(FORCE), reduced(TORQUE)) for d in dims.values()):
-        return "an applied force term"
-    return ""
+    """A short name for what a term is (inertia, Coriolis, gravity, torque, ...), decided
+    from what it is made of (:func:`dualmech.grade.kinds.category`)."""
+    return _category(term, ctx)
 
 
 def concrete_state(ctx: ProblemContext, answer: Formula, truth: Formula | None,

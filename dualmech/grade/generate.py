@@ -388,16 +388,23 @@ def names_mistake(ctx: ProblemContext, sample: Sample, edits: list) -> bool:
     m, T = sample.mistake, sp.expand(sample.term)
     if m in ("missing", "group", "damping"):
         return kinds == {"missing"} and (len(edits) == 1 or m == "damping") and \
-            sp.expand(sum(c for _, c in val) - T) == 0
+            _nil(sum(c for _, c in val) - T)
     if len(edits) != 1:
         return False
     have, right = val[0]
     if m in ("sign", "factor sign", "like-term sign", "sign (own coordinates)"):
-        return edits[0].kind == "sign" and sp.expand(right - have - 2 * T) == 0
+        return edits[0].kind == "sign" and _nil(right - have - 2 * T)
     if m in ("coefficient", "swap"):
         return edits[0].kind in ("coefficient", "swap") and \
-            sp.expand(right - have - (sample.correct - sample.term)) == 0
+            _nil(right - have - (sample.correct - sample.term))
     return False
+
+
+def _nil(expr) -> bool:
+    """``expr`` is exactly zero after expansion, modulo ``sin^2 + cos^2 = 1`` (shown terms
+    are reduced by that identity, :mod:`.tidy`)."""
+    from dualmech.grade.terms import _normal
+    return sp.expand(expr) == 0 or _normal(expr, "pythagoras") == 0
 
 
 def _read(ctx, text: str):

@@ -422,7 +422,7 @@ def _wrong_equations(ctx, formulas, wrong, dims, method, degree, name, deadline,
             d = best_edit(mine.sympy(), targets, seen,
                           equation=i if k > 1 else None, parts=mine.written_terms())
         if d is not None:
-            target = _target_words(d, ctx)
+            target = _target_words(d, ctx, in_their_words(seen, formulas[i].text))
             if seen is not ctx:
                 target += f", written in {', '.join(smap.names)}"
             where = _equation_name(d) if k > 1 else ""
@@ -496,11 +496,13 @@ def _equation_name(d) -> str:
     return ""
 
 
-def _target_words(d, ctx) -> str:
+def _target_words(d, ctx, echo=None) -> str:
     """The closest correct equation in words: ``the theta equation``, ``the force
-    balance on m2 along y``, times a factor if the answer is scaled."""
+    balance on m2 along y``, times a factor if the answer is scaled (written as the student
+    writes, by ``echo``)."""
     _, _, label = d.label.partition(": ")
-    scale = "" if d.scale == 1 else f", times {display(d.scale, ctx.names)}"
+    factor = display(d.scale, ctx.names)
+    scale = "" if d.scale == 1 else f", times {echo(factor) if echo else factor}"
     return f"{_row_words(label)}{scale}"
 
 

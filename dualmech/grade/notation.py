@@ -19,6 +19,7 @@ import sympy as sp
 from dualmech.model.kinematics import t
 from dualmech.grade.audit import notation_of, restyle
 from dualmech.grade.context import ProblemContext
+from dualmech.grade.echo import is_latex, letters, spelling, to_latex
 from dualmech.grade.formula import Formula
 
 __all__ = ["for_student", "coordinate_names", "in_their_words"]
@@ -69,14 +70,41 @@ def in_their_words(ctx: ProblemContext, text: str):
     coords = coordinate_names(ctx)
     style = notation_of(text, coords) if text else "primes"
     used = _aliases_used(ctx, text)
+    rates = {sym: (name, order) for name, syms in _coordinate_states(ctx)
+             for order, sym in enumerate(syms) if order and sym is not None}
+    typed = spelling(text or "", rates)
+    for target, alias in used.items():
+        typed.names[target] = typed.name(alias)
 
-    def mine(s):
+    def plain(s):
         s = restyle(s, coords, style)
         for target, alias in used.items():
             s = re.sub(r"(?<![A-Za-z0-9_'])" + re.escape(target) + r"(?![A-Za-z0-9_])",
                        alias, s)
-        return s
+        return letters(s, typed)
+
+    def latex(s):
+        try:
+            return to_latex(_read(ctx, s), typed)
+        except Exception:   # a display aid only: text the parser cannot read stays as it is
+            return plain(s)
+
+    if not is_latex(text):
+        return plain
+
+    def mine(s):
+        if not s:
+            return s
+        if "`" in s:
+            return re.sub(r"`([^`]*)`", lambda m: f"`{latex(m.group(1))}`", s)
+        return latex(s)
     return mine
+
+
+def _read(ctx: ProblemContext, text: str):
+    """A term the feedback wrote (``theta'``, ``^``), read back by the answer parser."""
+    from dualmech.grade.parser import parse
+    return Formula.from_node(parse(text)[0].lhs, ctx.vocabulary).sympy()
 
 
 def _aliases_used(ctx: ProblemContext, text: str) -> dict:
