@@ -77,7 +77,8 @@ def energy_drift(energy_change, run) -> float:
     -------
     >>> import numpy as np
     >>> from dualmech.numeric.integrators import Run
-    >>> r = Run("midpoint", np.zeros(1), np.zeros((2, 1)), True, "", 0.0, 0, 0, 0,
+    >>> r = Run(method="midpoint", t=np.zeros(1), y=np.zeros((2, 1)), success=True,
+    ...         message="", cpu=0.0, calls=0, evaluations=0, steps=1,
     ...         nodes=(np.arange(2.0), np.array([[1.0, 0.0], [0.0, 1.0]])))
     >>> energy_drift(lambda y: 0.5 * (y**2).sum(axis=0) - 0.5, r)
     0.0
