@@ -206,8 +206,11 @@ def _chaos(problem):
         agreement = chaos(problem, y0=y0)
     except ValueError as exc:
         raise _NotApplicable(str(exc)) from None
+    if agreement.regular:        # no chaos: no horizons of a chaotic run, no exponent
+        return [agreement]
     return [agreement, horizons(problem, y0=y0, duration=10.0,
-                                tolerances=[r["rtol"] for r in agreement.rows])]
+                                tolerances=[r["rtol"] for r in agreement.rows],
+                                exponent=agreement.lyapunov)]
 
 
 def _floquet(problem):
@@ -321,10 +324,18 @@ def _chart_linear(lin, stem: Path) -> list[Path]:
 def _chart_chaos(results, stem: Path) -> list[Path]:
     from dualmech.numeric.charts import panels, save
     c, h = (results + [None])[:2] if isinstance(results, list) else (results, None)
-    fig, (ax,) = panels(1, f"{c.problem}: how long a chaotic run stays right", height=3.4)
+    title = (f"{c.problem}: how long a chaotic run stays right" if not c.regular else
+             f"{c.problem}: regular motion -- no chaos, no Lyapunov exponent")
+    fig, axes = panels(2, title, height=3.0, sharex=False)
+    _draw_exponents(axes[0], c)
+    ax = axes[1]
     x = [-np.log(r["rtol"]) for r in c.rows]
     ax.plot(x, [r["horizon"] for r in c.rows], marker="o",
-            label=f"{c.pair[0]} and {c.pair[1]} agree (each other, not the truth)")
+            label=f"{c.pair[0]} and {c.pair[1]} agree (each other, not the truth; hollow: "
+                  "the whole run, at least)")
+    for xx, r in zip(x, c.rows):
+        if not r["diverged"]:
+            ax.plot([xx], [r["horizon"]], marker="o", color="white", markersize=4)
     if h is not None:
         xs = [-np.log(r["rtol"]) for r in h.rows]
         ax.plot(xs, [r["horizon"] for r in h.rows], marker="s",
@@ -333,17 +344,38 @@ def _chart_chaos(results, stem: Path) -> list[Path]:
             if r["bound"]:
                 ax.plot([xx], [r["horizon"]], marker="s", color="white", markersize=4)
         good = [(xx, r["horizon"]) for xx, r in zip(xs, h.rows) if not r["bound"]]
-        if good and np.isfinite(h.lyapunov):
+        if good and np.isfinite(h.lyapunov) and h.lyapunov > 0:
             x0, t0 = np.mean(good, axis=0)
             line = np.array([min(xs), max(xs)])
             ax.plot(line, t0 + (line - x0) / h.lyapunov, linestyle="--", color="0.4",
-                    label=f"slope $1/\\lambda$, Benettin's $\\lambda$ = {h.lyapunov:.3g} 1/s")
+                    label=f"slope $1/\\lambda$ of the exponent above")
         ax.axhline(h.reference_valid, color="0.7", linestyle=":",
                    label=f"reference trusted until {h.reference_valid:.3g} s")
     ax.set_xlabel("-ln(relative tolerance) [1]")
     ax.set_ylabel("horizon [s]")
     ax.legend(fontsize="x-small")
     return save(fig, stem)
+
+
+def _draw_exponents(ax, c) -> None:
+    """Benettin's finite-time exponent against its window, with ``ln(t)/t`` (what a
+    separation growing like ``t`` gives) through the first point for comparison."""
+    w, e = np.array(c.windows), np.array(c.exponents)
+    ax.plot(w, np.where(e > 0, e, np.nan), marker="o", label="finite-time exponent")
+    ref = e[0] * np.log(w) / w / (np.log(w[0]) / w[0]) if w[0] > 1 else None
+    if ref is not None and e[0] > 0:
+        ax.plot(w, ref, linestyle=":", color="0.4", label="ln(t)/t through the first point "
+                "(regular motion)")
+    if not c.regular:
+        ax.axhline(c.lyapunov, color="0.4", linestyle="--", linewidth=0.9,
+                   label=f"$\\lambda$ = {c.lyapunov:.3g} 1/s (window {w[-1]:g} s)")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("window [s]")
+    ax.set_ylabel("exponent [1/s]")
+    ax.set_title("chaotic: the exponent settles" if not c.regular else
+                 "regular: the exponent falls with the window", fontsize="small")
+    ax.legend(fontsize="x-small")
 
 
 def _chart_floquet(fl, stem: Path) -> list[Path]:
