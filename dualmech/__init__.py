@@ -37,6 +37,7 @@ _HOME = {
     "model.problem": ("Problem", "Parameter", "Coordinate", "Reaction", "Published",
                       "ProblemError"),
     "model.facts": ("Probe", "StiffScene", "FidelityRung", "SteadyMotion"),
+    "model.drawing": ("Drawing", "ChartScene"),
     "model.dimensions": ("Dimension", "DIMENSIONLESS", "MASS", "LENGTH", "TIME", "ANGLE",
                          "FORCE", "TORQUE", "ENERGY", "VELOCITY", "ACCELERATION", "STIFFNESS",
                          "DAMPING", "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA",
