@@ -272,3 +272,17 @@ def test_atlas_command_refuses_an_unknown_section(capsys):
     args = _cli().parse_args(["atlas", "toy_car", "--section", "gimbal"])
     assert args.func(args) == 2
     assert "unknown section(s) gimbal; choose from singularities" in capsys.readouterr().err
+
+
+def test_atlas_charts_state_their_parameters_and_start(tmp_path):
+    # the toy car's declared values (problems/toy_car.py: m 0.2 kg, R 0.5 m, g 9.81 m/s^2)
+    # and its default start, 60 % into each declared range (theta in [-1.2, 1.2] -> 0.24)
+    a = atlas(get("toy_car"), sections=("singularities",), progress=False)
+    text = a.conditions["singularities"]
+    assert text.startswith(r"$m$ = 0.2 kg, $R$ = 0.5 m, $g$ = 9.81 m/s^2; from $\theta$ = "
+                           r"0.24 rad, $\phi$ = 0.6 rad, $\dot{\theta}$ = 0 rad/s, "
+                           r"$\dot{\phi}$ = 0 rad/s")
+    from dualmech.numeric.charts import conditions
+    assert conditions(get("toy_car"), {"R": 2.0}, [0.1, 0.2, 0.3, 0.4]).startswith(
+        "m = 0.2 kg, R = 2 m, g = 9.81 m/s^2; from theta = 0.1 rad, phi = 0.2 rad, "
+        "theta' = 0.3 rad/s, phi' = 0.4 rad/s")

@@ -122,8 +122,8 @@ def test_a_panel_of_constant_reactions_is_not_drawn_but_said(charts):
     m, M, g, al = 1.0, 3.0, 9.81, 0.6
     n1 = m * M * g * np.cos(al) / (M + m * np.sin(al)**2)
     assert f"$N_{{1}}$ = {n1:.4g} N" in chart.caption
-    assert chart.caption.startswith("m = 1 kg, M = 3 kg, g = 9.81 m/s^2, alpha = 0.6 rad; "
-                                    "from q1 = 1.2 m, q2 = 0.2 m")
+    assert chart.caption.startswith(r"$m$ = 1 kg, $M$ = 3 kg, $g$ = 9.81 m/s^2, $\alpha$ = "
+                                    r"0.6 rad; from $q_{1}$ = 1.2 m, $q_{2}$ = 0.2 m")
 
 
 def test_kapitza_chart_shows_it_held_up_and_falling_when_shaken_too_slowly(tmp_path):
@@ -141,7 +141,7 @@ def test_kapitza_chart_shows_it_held_up_and_falling_when_shaken_too_slowly(tmp_p
     fell = simulate(problem, t_span=(0.0, 5.0), samples=2001, params=slow.params)
     assert np.abs(fell.q[0] - np.pi).max() > 2.0
     chart = trajectory_chart(problem, tmp_path, 5.0)
-    assert "Dashed: shaken too slowly" in chart.caption and "Omega = 251.3 1/s" in \
+    assert "Dashed: shaken too slowly" in chart.caption and r"$\Omega$ = 251.3 1/s" in \
         chart.caption
     # no aliasing of the 40 Hz tension: at least 24 samples per period of the drive
     assert chart.samples >= 24 * 5.0 / (2 * np.pi / (80 * np.pi))

@@ -58,10 +58,9 @@ def save(fig, stem: Path, dpi: int = 110, tight: bool = True,
     ``caption`` (the scene, :func:`conditions`) is written under the panels."""
     stem = Path(stem)
     stem.parent.mkdir(parents=True, exist_ok=True)
-    if tight:
-        fig.tight_layout(rect=(0, 0.05 if caption else 0, 1, 1))
-    if caption:
-        _caption(fig, caption)
+    lines = _caption(fig, caption) if caption else 0
+    if tight:   # room at the bottom for the caption's lines (0.15 in each)
+        fig.tight_layout(rect=(0, min(0.5, (0.15 * lines + 0.05) / fig.get_figheight()), 1, 1))
     out = [stem.with_suffix(".png"), stem.with_suffix(".svg")]
     fig.savefig(out[0], dpi=dpi)
     fig.savefig(out[1])
@@ -74,26 +73,38 @@ def style_of(index: int) -> tuple:
     return FORM_STYLES[index % len(FORM_STYLES)]
 
 
-def _caption(fig, text: str) -> None:
-    """``text`` along the bottom edge, wrapped to the figure's width."""
+def _caption(fig, text: str) -> int:
+    """``text`` along the bottom edge, wrapped to the figure's width; its line count."""
     import textwrap
-    width = int(fig.get_figwidth() * 14)
-    fig.text(0.01, 0.005, "\n".join(textwrap.wrap(text, width)), fontsize="x-small",
-             color="0.25", ha="left", va="bottom")
+    lines = textwrap.wrap(text, int(fig.get_figwidth() * 14))
+    fig.text(0.01, 0.005, "\n".join(lines), fontsize="x-small", color="0.25", ha="left",
+             va="bottom")
+    return len(lines)
 
 
-def conditions(problem, params=None, state=None, t0: float = 0.0) -> str:
+def conditions(problem, params=None, state=None, t0: float = 0.0, start: bool = True,
+               tex: bool = False) -> str:
     """The scene in one line: every parameter's value with its unit (``params`` overriding
     the defaults, by symbol or name), then the initial state in the reference coordinates
     (``state``: ``[q..., q'...]`` or a mapping as ``initial_state`` takes it; default: the
-    problem's initial state) -- ``"m = 0.2 kg, ...; from theta = 1.3 rad, theta' = 0 rad/s"``.
+    problem's initial state) -- ``"m = 0.2 kg, ...; from theta = 1.3 rad, theta' = 0 rad/s"``;
+    ``start=False`` for the parameters alone (a chart over many starts); ``tex=True`` writes
+    each name in mathtext (``$\\theta$``, ``$\\dot{\\theta}$``), as a chart's other texts.
     """
+    from dualmech.model.notation import mathtext
+
+    def name_of(name: str, order: int = 0) -> str:
+        if tex:
+            return mathtext(name, order)
+        return name + "'" * order
     from dualmech.model.facts import state_vector
     from dualmech.numeric.simulation import default_initial_state, problem_parameters
     from dualmech.numeric.units import rate_unit, unit
     values = problem_parameters(problem, params, check_ranges=False)
-    parts = [f"{p.symbol.name} = {_number(values[p.symbol])} {unit(p.dimension)}"
+    parts = [f"{name_of(p.symbol.name)} = {_number(values[p.symbol])} {unit(p.dimension)}"
              for p in problem.parameters]
+    if not start:
+        return ", ".join(parts)
     coords = list(problem.model(problem.reference).coordinates)
     n = len(coords)
     if state is None:
@@ -108,11 +119,11 @@ def conditions(problem, params=None, state=None, t0: float = 0.0) -> str:
     for i, q in enumerate(coords):
         name = q.func.__name__
         dim = info[name].dimension if name in info else None
-        start.append(f"{name} = {_number(y0[i])} {unit(dim)}")
+        start.append(f"{name_of(name)} = {_number(y0[i])} {unit(dim)}")
     for i, q in enumerate(coords):
         name = q.func.__name__
         dim = info[name].dimension if name in info else None
-        start.append(f"{name}' = {_number(y0[n + i])} {rate_unit(dim)}")
+        start.append(f"{name_of(name, 1)} = {_number(y0[n + i])} {rate_unit(dim)}")
     when = f" at t = {t0:g} s" if t0 else ""
     return ", ".join(parts) + f"; from{when} " + ", ".join(start)
 

@@ -139,8 +139,9 @@ def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400
     if not reactions:
         title += " (no reaction unknowns)"
     elif not forces:
-        title += " (reactions in the caption: none varies)"
-    fig.suptitle(title, fontsize="medium")
+        title += " (reactions constant: below)"
+    import textwrap
+    fig.suptitle("\n".join(textwrap.wrap(title, 90)), fontsize="medium")
     for ax, (u, curves) in zip(axes, panels):
         said = _draw(ax, u, curves, traj.t, chart, "default scene" if extra else "")
         for (label, t_x, traj_x) in extra:
@@ -153,14 +154,14 @@ def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400
             ax.legend(loc="best", fontsize="x-small")
     axes[-1].set_xlabel("t [s]")
     axes[-1].set_xlim(span.t0, max([span.t_end] + [t for _, t, _ in extra]))
-    caption = ("solid: " if extra else "") + conditions(problem)
+    caption = ("solid: " if extra else "") + conditions(problem, tex=True)
     if constants:
         caption += ". Constant along the whole motion (not drawn): " + ", ".join(constants)
+    if zero:
+        caption += ". Zero along the whole motion (not drawn): " + _tex(zero, ", ")
     for k, (label, _, _) in enumerate(extra):
         caption += f". Dashed{'' if len(extra) == 1 else f' ({k + 1})'}: {label}"
-    fig.tight_layout(rect=(0, 0.06, 1, 1))
-    chart.paths = save(fig, Path(out_dir) / f"{problem.name}_reactions", tight=False,
-                       caption=caption)
+    chart.paths = save(fig, Path(out_dir) / f"{problem.name}_reactions", caption=caption)
     chart.caption = caption
     return chart
 
@@ -209,7 +210,7 @@ def _extra_scenes(problem, duration, samples, chart) -> list:
             _note(chart, f"the scene '{scene.why}' could not be simulated -- "
                   f"{type(exc).__name__}: {exc}")
             continue
-        label = f"{scene.why} ({conditions(problem, scene.params, y0)})"
+        label = f"{scene.why} ({conditions(problem, scene.params, y0)})"   # page text
         _note(chart, f"dashed: {label}, simulated for t in [{span.t0:g}, {span.t_end:.3g}] s"
               + (f"; it stops there because {span.reason}" if span.reason else ""))
         out.append((scene.why, span.t_end, traj))
@@ -281,13 +282,20 @@ def _draw(ax, u: str, curves, t, chart: Chart, scene: str = "") -> list[str]:
     kind = _KIND.get(u, "value")
     ax.set_ylabel(f"{kind} [{u}]")
     said, drawn = [], 0
-    for group in group_curves(names, values, scale):
+    groups = group_curves(names, values, scale)
+    # a panel of flat lines only is drawn as flat lines (never an empty box)
+    flat_only = all(np.ptp(values[names.index(g[0])]) <= SAME * scale for g in groups)
+    for group in groups:
         v = values[names.index(group[0])]
         label = _tex(group) if len(group) == 1 else f"{_tex(group, ' = ')} (identical)"
         if len(group) > 1:
             _note(chart, *_names(group, " and "), " coincide along the whole motion "
                   "(drawn once)")
-        if np.ptp(v) <= SAME * scale:      # a flat line: say its value instead
+        if flat_only:
+            label += f" = {v[0]:.4g} {u} (constant)"
+            _note(chart, *_names(group, " = "), f" stays at {v[0]:.4g} {u} (drawn flat: "
+                  "nothing on its panel varies)")
+        elif np.ptp(v) <= SAME * scale:      # a flat line beside curves: say its value
             said.append(f"{_tex(group, ' = ')} = {v[0]:.4g} {u}, constant along the whole "
                         "motion")
             _note(chart, *_names(group, " = "), f" stays at {v[0]:.4g} {u} (not drawn)")

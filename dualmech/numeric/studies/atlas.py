@@ -57,12 +57,14 @@ SECTIONS = ("singularities", "dae_drift", "stiffness", "linearisation", "floquet
 
 @dataclass
 class Atlas:
-    """Results per section (a result object) and why the others were left out."""
+    """Results per section (a result object), why the others were left out, and the scene of
+    each section's chart (``conditions``: parameters and initial state, its caption)."""
 
     problem: str
     title: str
     results: dict = field(default_factory=dict)
     skipped: dict = field(default_factory=dict)
+    conditions: dict = field(default_factory=dict)
 
     def __str__(self) -> str:
         lines = [f"stability atlas of {self.problem}: {self.title}"]
@@ -90,7 +92,8 @@ class Atlas:
         for name, result in self.results.items():
             draw = _CHARTS.get(name)
             if draw is not None:
-                paths += draw(result, out_dir / f"{self.problem}_atlas_{name}")
+                paths += draw(result, out_dir / f"{self.problem}_atlas_{name}",
+                              self.conditions.get(name, ""))
         return paths
 
 
@@ -137,7 +140,26 @@ def atlas(problem, sections: Sequence[str] = SECTIONS, progress: bool = True) ->
             out.skipped[name] = f"{type(exc).__name__}: {exc}"
             continue
         out.results[name] = result
+        out.conditions[name] = _scene_of(problem, name)
     return out
+
+
+def _scene_of(problem, section: str) -> str:
+    """The caption of a section's chart: the parameters, and the state it starts from."""
+    from functools import partial
+    from dualmech.numeric.charts import conditions
+    scene = partial(conditions, problem, tex=True)
+    if section in ("linearisation", "floquet"):
+        return scene(start=False) + " (starts: see the legend)"
+    if section == "stiffness":
+        sc = problem.stiff_scene
+        return scene(state=state_vector(problem, sc.state, "`stiff_scene`")) + \
+            f"; {mathtext(sc.parameter)} swept"
+    if section == "chaos" and is_declared(problem.chaotic_state):
+        return scene(state=state_vector(problem, problem.chaotic_state, "`chaotic_state`"))
+    if section == "singularities":
+        return scene() + " (each coordinate swept, the others held here)"
+    return scene()
 
 
 class _NotApplicable(Exception):
@@ -226,7 +248,7 @@ _RUN = {"singularities": _singularities, "dae_drift": _dae, "stiffness": _stiff,
 
 
 # -- charts ------------------------------------------------------------------------------------
-def _chart_singularities(results, stem: Path) -> list[Path]:
+def _chart_singularities(results, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import panels, save
     s = results[0]
     fig, axes = panels(len(s.curves), f"{s.problem}: degeneracy of each formulation "
@@ -243,7 +265,7 @@ def _chart_singularities(results, stem: Path) -> list[Path]:
         ax.set_xlabel(f"{mathtext(coord)} [{s.units.get(coord, '?')}]")
         ax.set_ylabel(r"degeneracy $\kappa$ [1]")
         ax.legend(fontsize="x-small", loc="upper right")
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
 #: a constraint residual at or below this (in SI units, scenes of order 1 m) is rounding: a
@@ -251,7 +273,7 @@ def _chart_singularities(results, stem: Path) -> list[Path]:
 ROUNDING = 1e3 * float(np.finfo(float).eps)
 
 
-def _chart_drift(d, stem: Path) -> list[Path]:
+def _chart_drift(d, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import panels, save
     fig, (ax,) = panels(1, f"{d.problem}: constraint drift of {d.model}, {d.method} at rtol "
                         f"{d.rtol:g}", height=3.2)
@@ -275,10 +297,10 @@ def _chart_drift(d, stem: Path) -> list[Path]:
     ax.set_ylabel(f"$|g|$ [{d.unit}]")
     if ax.get_legend_handles_labels()[0]:
         ax.legend(fontsize="small")
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
-def _chart_stiffness(s, stem: Path) -> list[Path]:
+def _chart_stiffness(s, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import METHOD_COLORS, panels, save
     fig, axes = panels(2, f"{s.problem}: stiffness in {mathtext(s.parameter)} (declared "
                        f"{s.declared[0]:g}-{s.declared[1]:g} {s.unit}), rtol {s.rtol:g}",
@@ -300,10 +322,10 @@ def _chart_stiffness(s, stem: Path) -> list[Path]:
         ax.axvspan(*s.declared, color="0.9", label="declared range")
         ax.legend(fontsize="x-small", ncol=2)
     axes[-1].set_xlabel(f"{mathtext(s.parameter)} [{s.unit}]")
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
-def _chart_linear(lin, stem: Path) -> list[Path]:
+def _chart_linear(lin, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import panels, save
     fig, (ax,) = panels(1, f"{lin.problem}: small-oscillation model against the nonlinear "
                         "one, over one period", height=3.4)
@@ -318,10 +340,10 @@ def _chart_linear(lin, stem: Path) -> list[Path]:
     ax.set_yscale("log")
     ax.set_xlabel(f"amplitude of {mathtext(lin.coordinate)} [{lin.unit}]")
     ax.set_ylabel("largest error / amplitude [1]")
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
-def _chart_chaos(results, stem: Path) -> list[Path]:
+def _chart_chaos(results, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import panels, save
     c, h = (results + [None])[:2] if isinstance(results, list) else (results, None)
     title = (f"{c.problem}: how long a chaotic run stays right" if not c.regular else
@@ -354,7 +376,7 @@ def _chart_chaos(results, stem: Path) -> list[Path]:
     ax.set_xlabel("-ln(relative tolerance) [1]")
     ax.set_ylabel("horizon [s]")
     ax.legend(fontsize="x-small")
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
 def _draw_exponents(ax, c) -> None:
@@ -378,7 +400,7 @@ def _draw_exponents(ax, c) -> None:
     ax.legend(fontsize="x-small")
 
 
-def _chart_floquet(fl, stem: Path) -> list[Path]:
+def _chart_floquet(fl, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import panels, save
     from dualmech.numeric.studies.mathieu import draw_chart
     points = {f"{_orbit(o)}: {'stable' if o.stable else 'unstable'}": o.mathieu
@@ -408,7 +430,7 @@ def _chart_floquet(fl, stem: Path) -> list[Path]:
         draw_chart(axes[2], (0.0, 2.5 * qmax), (-2.5 * amax, 2.5 * amax), points)
         axes[2].set_title("near the problem's own parameters", fontsize="small")
         axes[2].legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0))
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
 def _orbit(orbit) -> str:
