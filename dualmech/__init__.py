@@ -52,6 +52,7 @@ _HOME = {
     "numeric.simulation": ("simulate", "Trajectory"),
     "grade.api": ("grade", "Grader"),
     "report": ("write_report",),
+    "report.animation": ("animate", "Animation"),
 }
 
 __all__ = [name for names in _HOME.values() for name in names]

@@ -53,11 +53,14 @@ class Arrow:
 
 
 class Scene:
-    """Positions and velocities of named points in the ground frame (see the module doc)."""
+    """Positions and velocities of named points in the ground frame (see the module doc);
+    ``hidden`` are the indices of points kept only to attach a reaction arrow (a declared
+    drawing that places the body its own way), not drawn and not measured."""
 
     def __init__(self, names, exprs, velocity_exprs, coordinates, values, lines=(),
-                 view=(), arrows=(), arrow_exprs=()):
+                 view=(), arrows=(), arrow_exprs=(), hidden=()):
         self.names, self.lines = tuple(names), tuple(lines)
+        self.hidden = frozenset(hidden)   # points only an arrow needs (not drawn)
         self.coordinates = tuple(coordinates)
         self.n = len(self.coordinates)
         self._pos = StateFunction(exprs, self.coordinates, values)
@@ -100,8 +103,9 @@ class Scene:
         if k == 0:
             return float("nan")
         worst = 0.0
+        keep = [i for i in range(len(self.names)) if i not in self.hidden]
         for f in (self.positions, self.velocities):
-            a, b = f(t[:k], Y[:, :k]), f(t[:k], truth[:, :k])
+            a, b = f(t[:k], Y[:, :k])[keep], f(t[:k], truth[:, :k])[keep]
             spread = (b - b.mean(axis=2, keepdims=True))**2
             moving = spread.sum(axis=(1, 2)) > 0        # a fixed point has no size
             size = float(np.sqrt(spread[moving].sum(axis=1).mean())) if moving.any() else 1.0
@@ -157,16 +161,16 @@ def scene(problem, params: Mapping | None = None) -> Scene:
         for body in decl.bodies:
             points[body.name] = _ground_components(body.masscenter.pos_from(), ground)
             where_of[id(body.masscenter)] = body.name
-    arrows, arrow_exprs = [], []
+    arrows, arrow_exprs, hidden = [], [], []
     for r in (decl.reactions if decl is not None else ()):
         if r.kind != "force":
             continue
         at = r.point if r.point is not None else r.body.masscenter
         name = where_of.get(id(at))
-        if name is None:
-            if drawing is not None:
-                continue                     # a point the drawing leaves out
+        if name is None:                     # (a drawing's own points: kept for the arrow)
             name = at.name if at.name not in points else f"{at.name} ({r.symbol})"
+            if drawing is not None:
+                hidden.append(name)
             points[name] = _ground_components(at.pos_from(), ground)
             where_of[id(at)] = name
         arrows.append(Arrow(str(r.symbol), list(points).index(name), len(arrows)))
@@ -178,7 +182,8 @@ def scene(problem, params: Mapping | None = None) -> Scene:
     return Scene(names, exprs, vel, coords, values,
                  lines=drawing.lines if drawing is not None else (),
                  view=drawing.view if drawing is not None else (),
-                 arrows=arrows, arrow_exprs=arrow_exprs)
+                 arrows=arrows, arrow_exprs=arrow_exprs,
+                 hidden=[names.index(h) for h in hidden])
 
 
 def _time(coords):

@@ -41,7 +41,7 @@ from dualmech.model.dimensions import ANGLE
 from dualmech.model.notation import mathtext, symbol_text
 from dualmech.numeric.units import unit
 
-__all__ = ["Chart", "trajectory_chart", "group_curves"]
+__all__ = ["Chart", "trajectory_chart", "group_curves", "animation_for"]
 
 #: Curves closer than this fraction of their panel's scale are the same curve; a reaction
 #: smaller than this fraction of the largest reaction (or of 1 N when all vanish) is zero.
@@ -54,7 +54,9 @@ _KIND = {"m": "position", "rad": "angle", "N": "force", "N m": "torque or moment
 class Chart:
     """What :func:`trajectory_chart` drew (``paths``, ``notes``) or why not (``error``);
     ``caption`` is the scene line under the panels (parameters and initial states);
-    ``panels`` the unit of each panel drawn, top to bottom; ``samples`` the default scene's.
+    ``panels`` the unit of each panel drawn, top to bottom; ``samples`` the default scene's;
+    ``animation`` the GIF of the motion (:mod:`.animation`) or why none
+    (``animation_error``).
 
     ``notes`` are the caption's sentences as text (names in the page's one-line form, ``θ₁``);
     ``notes_html`` the same sentences as HTML, each name typeset (MathML ``<msub>``).
@@ -68,11 +70,25 @@ class Chart:
     caption: str = ""
     panels: list = field(default_factory=list)
     samples: int = 0
+    animation: Path | None = None
+    animation_error: str = ""
 
     def _repr_html_(self) -> str:
         """Jupyter: the picture and its one caption."""
         from dualmech.report.jupyter import chart_html
         return chart_html(self)
+
+
+def animation_for(problem, chart: Chart, out_dir: Path, duration: float,
+                  frames: int = 48) -> None:
+    """Draw ``out_dir/NAME_motion.gif`` (:func:`~dualmech.report.animation.animate`) into
+    ``chart.animation``, or say in ``chart.animation_error`` why there is none."""
+    from dualmech.report.animation import animate
+    try:
+        a = animate(problem, duration, frames)
+        chart.animation = a.save_gif(Path(out_dir) / f"{problem.name}_motion.gif")
+    except Exception as exc:  # noqa: BLE001 - the verdicts do not depend on the picture
+        chart.animation_error = f"{type(exc).__name__}: {exc}"
 
 
 def group_curves(names, values, scale: float) -> list[list[str]]:
