@@ -70,3 +70,15 @@ def test_the_report_embeds_the_animation(tmp_path):
     assert "simple_pendulum_motion.gif" in written.markdown.read_text()
     frames = Image.open(io.BytesIO((tmp_path / "simple_pendulum_motion.gif").read_bytes()))
     assert frames.n_frames == 48
+
+
+def test_bad_drawings_and_scenes_are_refused_saying_what_to_fix():
+    from dualmech import ChartScene, Drawing
+    with pytest.raises(TypeError, match="non-empty dict"):
+        Drawing({})
+    with pytest.raises(ValueError, match=r"names \['tip'\]"):
+        Drawing({"O": (0, 0), "bob": (1, 0)}, lines=(("O", "tip"),))
+    with pytest.raises(ValueError, match="two of"):
+        Drawing({"O": (0, 0)}, view=("x", "w"))
+    with pytest.raises(TypeError, match=r"`ChartScene.params\['Omega'\]` must be a number"):
+        ChartScene({"Omega": "fast"})

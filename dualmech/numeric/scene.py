@@ -143,7 +143,6 @@ def scene(problem, params: Mapping | None = None) -> Scene:
     coords = tuple(problem.model(problem.reference).coordinates)
     decl = _declared_model(problem)
     drawing = getattr(problem, "drawing", None)
-    t = sp.Symbol("t")
     if drawing is not None and not isinstance(drawing, Drawing):
         raise TypeError(f"`{problem.name}.drawing` must be a Drawing, got {drawing!r:.60}.")
     if drawing is None and decl is None:
@@ -195,6 +194,10 @@ def _components(where, ground, problem: str, name: str) -> list:
         if ground is None:
             raise NoScene(f"`{problem}.drawing`: point `{name}` is a Point, but the problem "
                           "has no direct form in the reference coordinates to place it in.")
-        return _ground_components(where.pos_from(), ground)
+        try:
+            return _ground_components(where.pos_from(), ground)
+        except ValueError as exc:
+            raise NoScene(f"`{problem}.drawing`: point `{name}` is not in the direct form's "
+                          f"frames ({exc}); give its ground components instead.") from None
     comps = [sp.sympify(c) for c in where]
     return comps + [sp.Integer(0)] * (3 - len(comps))

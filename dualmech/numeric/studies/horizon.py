@@ -238,8 +238,8 @@ def regular(windows: Sequence[float], exponents: Sequence[float]) -> bool:
     False
     """
     e = np.asarray(exponents, dtype=float)
-    if not (e > 0).all():
-        return bool(e.max() <= 0) or bool(e[-1] <= 0)
     if e.size < 3:
         raise ValueError("telling regular from chaotic motion needs at least 3 windows.")
+    if not (e > 0).all():        # an exponent at or below zero: no positive limit
+        return True
     return bool(np.polyfit(np.log(windows), np.log(e), 1)[0] < FALLING)

@@ -19,7 +19,9 @@ problem's declared singular set (:attr:`Problem.singular`), and classified:
 :func:`probe` runs each integrator from a state that heads for the singular set (a
 :class:`~dualmech.model.facts.Probe` the problem declares in ``probes``): unguarded
 (what the integrator does: slows down, stops with an error, or returns garbage -- judged by
-its error against a tight run and by the energy), guarded (a terminal event where ``kappa``
+its error against a tight run and by the energy; the error is measured where the
+singularity cannot distort it, in the ground frame's positions and velocities of the
+problem's points (:mod:`dualmech.numeric.scene`), not in the angles that degenerate), guarded (a terminal event where ``kappa``
 reaches the limit: a clear message), and, where another formulation is regular there, the
 guarded run continues in that safe form (the state lifted into its coordinates by Newton
 continuation along the run).
