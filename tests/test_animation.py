@@ -60,6 +60,8 @@ def test_a_declared_drawing_joins_its_points():
     # the rod's force is drawn at the bob (a point kept for the arrow, not drawn twice)
     at = a.arrow_at[0]
     assert at in a.hidden
+    # 2 pi / (80 pi) = 0.025 s between pushes, 0.01 s between frames: faster than 4 frames
+    assert a.notes and "the drive's period (0.025 s)" in a.notes[0]
     assert a.xy[at] == pytest.approx(a.xy[a.names.index("bob")], abs=1e-12)
 
 

@@ -253,7 +253,26 @@ def animate(problem, duration: float = 5.0, frames: int = 60, params: Mapping | 
                        for n in names]).reshape(len(names), traj.t.size)
     forces = (D * values[:, None, :])[:, [i, j], :] if names else np.zeros((0, 2, traj.t.size))
     notes = [f"stops at t = {span.t_end:.3g} s: {span.reason}"] if span.reason else []
+    notes += _strobe(problem, params, traj.t)
     caption = conditions(problem, params, None if y0 is None else y0, tex=True)
     return Animation(problem.name, problem.title, traj.t, P[:, [i, j], :], list(sc.names),
                      sc.lines, names, [a.at for a in sc.arrows], forces,
                      ("xyz"[i], "xyz"[j]), caption, inches, notes, sorted(sc.hidden))
+
+
+def _strobe(problem, params, t) -> list[str]:
+    """A note when a periodic drive is faster than the frames: the arrows then show the
+    forces at the frames' instants, not their oscillation (a stroboscope)."""
+    from dualmech.numeric.simulation import problem_parameters
+    from dualmech.numeric.studies.floquet import NotDriven, forcing_period
+    try:
+        period = forcing_period(problem.model(problem.reference),
+                                problem_parameters(problem, params))
+    except (NotDriven, ValueError, TypeError):
+        return []
+    gap = float(np.median(np.diff(t))) if t.size > 1 else 0.0
+    if gap <= period / 4:
+        return []
+    return [f"the drive's period ({period:.3g} s) is shorter than four frames' spacing "
+            f"({gap:.3g} s): the arrows show the forces at the frames' instants, not their "
+            "oscillation -- see the chart for that"]
