@@ -82,7 +82,9 @@ def test_the_page_caption_typesets_the_names(tmp_path):
     from dualmech.report import write_report
     written = write_report([compare(get("falling_container"))], tmp_path, 1.0, progress=False)
     page = written.html.read_text(encoding="utf-8")
-    (caption,) = re.findall(r"<figcaption>(.*?)</figcaption>", page, flags=re.S)
+    # the chart's caption, then the animation's (one sentence on the arrows)
+    caption, animation = re.findall(r"<figcaption>(.*?)</figcaption>", page, flags=re.S)
+    assert animation.startswith("The motion, each reaction force an arrow")
     # H1, H2 vanish along the whole motion (the guides push nothing sideways)
     h1 = "<msub><mi>H</mi><mi>1</mi></msub>"
     assert caption.startswith("Simulated for t in [0, ") and h1 in caption

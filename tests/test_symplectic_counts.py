@@ -7,7 +7,6 @@ interpolation between steps errs by ``O(h^4)``; the evaluation count is checked 
 counter wrapped around the model (independent of the integrator's own bookkeeping).
 """
 import numpy as np
-import sympy as sp
 
 from dualmech import EquationSet, coordinate, t
 from dualmech.numeric.energy import EnergyFunction
@@ -49,7 +48,7 @@ def test_midpoint_energy_drift_is_measured_on_its_steps():
     assert T.size == run.steps + 1 == 41
     energy = 0.5 * (Y**2).sum(axis=0)
     assert np.abs(energy - 0.5).max() <= 1e-14           # quadratic invariant: exact
-    change = lambda y: E.along(y[:1], y[1:])               # noqa: E731
+    change = lambda y: E.along(y[:1], y[1:])               # noqa: E731 -- a one-liner
     assert energy_drift(change, run) <= 1e-14
     # the interpolated samples are not the method: their energy errs by O(h^4) ~ 1e-4
     assert np.abs(change(run.y)).max() > 1e-6

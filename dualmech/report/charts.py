@@ -251,8 +251,7 @@ def _all_flat(u: str, curves, chart: Chart, constants: list) -> bool:
     for name, v in curves:
         constants.append(f"{_tex([name])} = {float(np.asarray(v)[0]):.4g} {u}")
         _note(chart, sp.Symbol(name) if _symbolic(name) else name,
-              f" stays at {float(np.asarray(v)[0]):.4g} {u} along the whole motion "
-              "(constant: said here, not drawn)")
+              f" stays at {float(np.asarray(v)[0]):.4g} {u} (not drawn)")
     return True
 
 

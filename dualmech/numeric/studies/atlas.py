@@ -370,7 +370,7 @@ def _chart_chaos(results, stem: Path, caption: str = "") -> list[Path]:
             x0, t0 = np.mean(good, axis=0)
             line = np.array([min(xs), max(xs)])
             ax.plot(line, t0 + (line - x0) / h.lyapunov, linestyle="--", color="0.4",
-                    label=f"slope $1/\\lambda$ of the exponent above")
+                    label="slope $1/\\lambda$ of the exponent above")
         ax.axhline(h.reference_valid, color="0.7", linestyle=":",
                    label=f"reference trusted until {h.reference_valid:.3g} s")
     ax.set_xlabel("-ln(relative tolerance) [1]")
