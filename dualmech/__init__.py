@@ -39,6 +39,7 @@ _HOME = {
     "model.facts": ("Probe", "StiffScene", "FidelityRung", "SteadyMotion"),
     "model.inputs": ("Input",),
     "model.phases": ("Phase",),
+    "model.drawing": ("Drawing", "ChartScene"),
     "model.dimensions": ("Dimension", "DIMENSIONLESS", "MASS", "LENGTH", "TIME", "ANGLE",
                          "FORCE", "TORQUE", "ENERGY", "VELOCITY", "ACCELERATION", "STIFFNESS",
                          "DAMPING", "TORSIONAL_STIFFNESS", "TORSIONAL_DAMPING", "INERTIA",
@@ -53,6 +54,7 @@ _HOME = {
     "numeric.simulation": ("simulate", "Trajectory"),
     "grade.api": ("grade", "Grader"),
     "report": ("write_report",),
+    "report.animation": ("animate", "Animation"),
 }
 
 __all__ = [name for names in _HOME.values() for name in names]

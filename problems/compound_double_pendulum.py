@@ -89,9 +89,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
-                      Problem, Published, Reaction, RigidBody, coordinate, rate, rot_z, t,
-                      ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS)
+from dualmech import (Coordinate, Drawing, EquationSet, Frame, Lagrangian, NewtonEuler,
+                      Parameter, Point, Problem, Published, Reaction, RigidBody, coordinate,
+                      rate, rot_z, t, ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS)
 
 __all__ = ["CompoundDoublePendulum", "PROBLEMS", "m", "a", "b", "I0", "g", "theta1", "theta2",
            "printed_reduced", "scene"]
@@ -161,6 +161,11 @@ class CompoundDoublePendulum(Problem):
     )
     extra_models = ("moments", "multiplier")
     chaotic_state = (2.0, 2.5, 0.0, 0.0)   # both released at rest, high: a chaotic motion
+    # pictures: the link from the pivot to the hinge A, the body from A to its centre G
+    drawing = Drawing({"O": (0, 0), "A": (a * sp.sin(theta1), -a * sp.cos(theta1)),
+                       "G": (a * sp.sin(theta1) + b * sp.sin(theta2),
+                             -a * sp.cos(theta1) - b * sp.cos(theta2))},
+                      lines=(("O", "A", "G"),), view=("x", "y"))
 
     def coordinate_maps(self) -> dict:
         return {"multiplier": {theta1: theta1, theta2: theta2, u: 0, v: 0}}

@@ -66,8 +66,9 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Particle,
-                      Point, Problem, Published, Reaction, coordinate, rate, rot_z, t,
+from dualmech import (ChartScene, Coordinate, Drawing, EquationSet, Frame, Lagrangian, NewtonEuler,
+                      Parameter, Particle, Point, Problem, Published, Reaction, coordinate, rate,
+                      rot_z, t,
                       ACCELERATION, ANGLE, FORCE, FREQUENCY, LENGTH, MASS)
 
 __all__ = ["KapitzaPendulum", "PROBLEMS", "m", "l", "a", "Omega", "g", "theta", "r",
@@ -124,14 +125,23 @@ class KapitzaPendulum(Problem):
         Parameter(g, ACCELERATION, 9.81, (1.0, 20.0), "gravitational acceleration"),
     )
     coordinates = (
-        Coordinate(theta, ANGLE, (-3.0, 3.0), (-10.0, 10.0),
-                   "angle of the rod from the downward vertical"),
+        Coordinate(theta, ANGLE, (-3.5, 3.5), (-10.0, 10.0),
+                   "angle of the rod from the downward vertical (pi: inverted)"),
     )
     extra_coordinates = (
         Coordinate(r, LENGTH, (0.05, 2.0), (-1.0, 1.0), "distance of the bob from the pivot"),
     )
     reactions = (Reaction("T", FORCE, "rod on bob, along arm.y (towards the pivot)"),)
     extra_models = ("multiplier",)
+    # the lesson: released 0.14 rad from upside down, the fast shaking holds it up (it
+    # rocks about theta = pi); shaken half as fast (a^2 Omega^2 = 1.6 < 2 g l = 3.9 m^2/s^2)
+    # the same pendulum falls
+    initial_state = {theta: 3.0}
+    chart_scenes = (ChartScene({"Omega": float(40 * sp.pi)}, {theta: 3.0},
+                               "shaken too slowly (a^2 Omega^2 < 2 g l): it falls"),)
+    drawing = Drawing({"pivot": (0, pivot_height),
+                       "bob": (l * sp.sin(theta), pivot_height - l * sp.cos(theta))},
+                      lines=(("pivot", "bob"),), view=("x", "y"))
 
     def coordinate_maps(self) -> dict:
         return {"multiplier": {theta: theta, r: l}}

@@ -36,6 +36,7 @@ def _texts(fig) -> list[str]:
             out += [t.get_text() for t in ax.get_legend().get_texts()]
     for leg in fig.legends:
         out += [t.get_text() for t in leg.get_texts()]
+    out += [t.get_text() for t in fig.texts]       # the caption: the scene and what is said
     return [t for t in out if t]
 
 
@@ -62,12 +63,13 @@ def test_trajectory_chart_names_every_curve_by_its_symbol(figures, tmp_path, nam
         assert legends == [[r"$\theta$", r"$\phi$"], [r"$F_{r}$"]]
     elif name == "compound_double_pendulum":
         assert {r"$\theta_{1}$", r"$\theta_{2}$", r"$R_{x}$", r"$R_{y}$"} <= set(texts)
-    else:   # nothing drawn: the constant tilt and the zero reactions are said in symbols
+    else:   # the constant tilt drawn flat (not an empty box); the zero reactions said
         assert any(r"$\phi$ = 0.6 rad" in t for t in texts)
         assert any(r"$F_{x}$, $F_{y}$, $R_{x}$" in t for t in texts)
         # the caption's text is the page's one-line text, no markup; its HTML typesets
         # each name (F_y with a real subscript, where unicode has no subscript y)
-        assert "\u03c6 stays at 0.6 rad (not drawn)" in chart.notes
+        assert "\u03c6 stays at 0.6 rad (drawn flat: nothing on its panel varies)" in \
+            chart.notes
         assert not any("$" in n for n in chart.notes)
         assert len(chart.notes_html) == len(chart.notes)
         fy = "<msub><mi>F</mi><mi>y</mi></msub>"
@@ -80,7 +82,9 @@ def test_the_page_caption_typesets_the_names(tmp_path):
     from dualmech.report import write_report
     written = write_report([compare(get("falling_container"))], tmp_path, 1.0, progress=False)
     page = written.html.read_text(encoding="utf-8")
-    (caption,) = re.findall(r"<figcaption>(.*?)</figcaption>", page, flags=re.S)
+    # the chart's caption, then the animation's (one sentence on the arrows)
+    caption, animation = re.findall(r"<figcaption>(.*?)</figcaption>", page, flags=re.S)
+    assert animation.startswith("The motion, each reaction force an arrow")
     # H1, H2 vanish along the whole motion (the guides push nothing sideways)
     h1 = "<msub><mi>H</mi><mi>1</mi></msub>"
     assert caption.startswith("Simulated for t in [0, ") and h1 in caption

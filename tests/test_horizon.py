@@ -52,3 +52,21 @@ def test_state_sizes_measure_coordinates_and_rates_each_as_a_block():
     # fall back to 1 (no division by zero)
     y = np.array([[3.0, -4.0], [0.0, 0.0], [0.0, 0.0], [0.0, 0.0]])
     assert state_sizes(y).tolist() == pytest.approx([2.5, 2.5, 1.0, 1.0])
+
+
+@pytest.mark.parametrize("noise", [0.0, 0.05, 0.4], ids=["on a line", "scatter", "wide"])
+def test_the_slope_error_comes_from_the_fits_residuals(noise):
+    # regression: the '+-' was (X^T X)^-1 alone for three horizons -- a number fixed by the
+    # tolerances, the same however the horizons scattered.  Reference: scipy's linregress
+    # (standard error on N - 2 degrees of freedom), floored by the horizons' grid rounding.
+    from scipy.stats import linregress
+    from dualmech.numeric.studies.horizon import fit_slope
+    x = -np.log([1e-4, 1e-5, 1e-6, 1e-7])
+    y = 0.8 * x + noise * np.array([1.0, -1.0, -0.5, 0.7])
+    slope, err = fit_slope(x, y, 0.005)
+    ref = linregress(x, y)
+    floor = 0.005 / np.sqrt(12 * ((x - x.mean()) ** 2).sum())
+    assert slope == pytest.approx(ref.slope, rel=1e-12)
+    assert err == pytest.approx(max(ref.stderr, floor), rel=1e-9)
+    if noise:
+        assert err > 10 * floor          # the scatter, not the grid, sets it

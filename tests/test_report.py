@@ -110,3 +110,38 @@ def test_unwritable_directory_raises_oserror(tmp_path):
     blocker.write_text("")
     with pytest.raises(OSError):
         write_report([], Path(blocker / "sub"), 5.0)
+
+
+def test_a_panel_of_constant_reactions_is_not_drawn_but_said(charts):
+    # regression: the wedge's force panel was an empty box with text in it.  Both normal
+    # forces are constant (the wedge's acceleration is constant); by hand, N1 = m M g
+    # cos(al) / (M + m sin^2 al) with m = 1 kg, M = 3 kg, al = 0.6 rad
+    _, c = charts
+    chart = c["block_on_wedge"]
+    assert chart.panels == ["m"]
+    m, M, g, al = 1.0, 3.0, 9.81, 0.6
+    n1 = m * M * g * np.cos(al) / (M + m * np.sin(al)**2)
+    assert f"$N_{{1}}$ = {n1:.4g} N" in chart.caption
+    assert chart.caption.startswith(r"$m$ = 1 kg, $M$ = 3 kg, $g$ = 9.81 m/s^2, $\alpha$ = "
+                                    r"0.6 rad; from $q_{1}$ = 1.2 m, $q_{2}$ = 0.2 m")
+
+
+def test_kapitza_chart_shows_it_held_up_and_falling_when_shaken_too_slowly(tmp_path):
+    # Landau & Lifshitz section 30 problem 1: the inverted position is stable when
+    # a^2 Omega^2 > 2 g l.  Defaults: 0.01^2 (80 pi)^2 = 6.3 > 3.9 m^2/s^2 (held up); the
+    # declared contrast scene: 0.01^2 (40 pi)^2 = 1.6 < 3.9 (it falls)
+    from dualmech.numeric.simulation import simulate
+    problem = get("kapitza_pendulum")
+    (lo, hi) = problem.coordinate_info(problem.coordinates[0].function).range
+    assert lo < -np.pi and np.pi < hi                 # the inverted position is in range
+    held = simulate(problem, t_span=(0.0, 5.0), samples=2001)
+    assert np.abs(held.q[0] - np.pi).max() < 0.3
+    (slow,) = problem.chart_scenes
+    assert 0.01**2 * slow.params["Omega"]**2 < 2 * 9.81 * 0.2
+    fell = simulate(problem, t_span=(0.0, 5.0), samples=2001, params=slow.params)
+    assert np.abs(fell.q[0] - np.pi).max() > 2.0
+    chart = trajectory_chart(problem, tmp_path, 5.0)
+    assert "Dashed: shaken too slowly" in chart.caption and r"$\Omega$ = 251.3 1/s" in \
+        chart.caption
+    # no aliasing of the 40 Hz tension: at least 24 samples per period of the drive
+    assert chart.samples >= 24 * 5.0 / (2 * np.pi / (80 * np.pi))

@@ -34,6 +34,7 @@ import sympy as sp
 from dualmech.model._expr import as_expr
 from dualmech.model.dimensions import ENERGY, Dimension, as_dimension, audit_rows, quoted, reduce
 from dualmech.model.equations import EquationSet, ModelError, Rows
+from dualmech.model.drawing import ChartScene, Drawing
 from dualmech.model.facts import (FidelityRung, Probe, SteadyMotion, StiffScene,
                                   declaration_errors)
 from dualmech.model.inputs import Input, input_errors
@@ -322,6 +323,15 @@ class Problem:
         wall, ``phases = {"N_w": Phase(FreeLadder, {x: L / 2 * sp.sin(theta), theta: theta},
         "the ladder leaves the wall")}``.  :func:`~dualmech.numeric.phases.simulate_phases`
         continues with it, the state mapped across.
+    drawing : :class:`~dualmech.model.drawing.Drawing` or None
+        How pictures draw the bodies (points and the lines joining them), e.g.
+        ``Drawing({"pivot": (0, y_p), "bob": (l * sp.sin(theta), y_p - l * sp.cos(theta))},
+        lines=(("pivot", "bob"),))``; default: the direct form's mass centres and reaction
+        points, no lines (:mod:`dualmech.numeric.scene`).
+    chart_scenes : tuple of :class:`~dualmech.model.drawing.ChartScene`
+        Further scenes the report's chart draws beside the default one -- other parameter
+        values or initial states that teach the contrast, e.g. ``ChartScene({"Omega": 20},
+        {theta: 3.0}, "too slow: a^2 Omega^2 < 2 g l, the pendulum falls")``.
 
     Every declaration is checked by :meth:`validate`: a reaction, parameter or model it
     names must exist, a state must have one value per coordinate and rate.
@@ -382,6 +392,8 @@ class Problem:
     steady_motion: SteadyMotion | None = None
     inputs: tuple = ()
     phases: dict = {}
+    drawing: Drawing | None = None
+    chart_scenes: tuple = ()
     referee: bool = True
     referee_note: str = ""
 

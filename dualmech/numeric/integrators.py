@@ -87,6 +87,10 @@ class Run:
     event_states : list of ndarray
         The states there, one ``(k, m)`` array per event function (a guarded probe
         keeps its last accepted state here).
+    nodes : (ndarray (K,), ndarray (m, K)) or None
+        A fixed-step method's own steps, times and states (``None`` for the others):
+        measures that are properties of the steps (a symplectic method's bounded energy
+        error) are taken there, not on the interpolated samples.
 
     Example
     -------
@@ -110,6 +114,7 @@ class Run:
     t_end: float = float("nan")
     events: list = field(default_factory=list)
     event_states: list = field(default_factory=list)
+    nodes: tuple | None = None
 
 
 class _Counted:

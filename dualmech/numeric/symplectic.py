@@ -18,7 +18,10 @@ of size ``O(h^2)``) instead of drifting as an error-controlled Runge--Kutta run'
   round-off.
 
 Each returns a :class:`~dualmech.numeric.integrators.Run` sampled at ``t_eval`` by cubic
-interpolation of the steps (fourth order, below the methods' second).
+interpolation of the steps (fourth order, below the methods' second), with the steps
+themselves in ``Run.nodes`` ``(T, Y)``: the bounded energy error is a property of the steps,
+so an energy drift is measured there (:func:`energy_drift`), not on interpolated samples.
+``Run.calls`` counts every evaluation of the model (``step_terms`` or ``force``).
 
 Example
 -------
@@ -35,7 +38,8 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["midpoint", "verlet", "rattle", "constraint_functions", "SymplecticError"]
+__all__ = ["midpoint", "verlet", "rattle", "constraint_functions", "energy_drift",
+           "SymplecticError"]
 
 
 class SymplecticError(RuntimeError):
@@ -60,7 +64,28 @@ def _run(name, t0, h, qs, vs, t_eval, calls, steps, message=""):
     y = _lagrange4(T, Y, np.asarray(t_eval, dtype=float))
     return Run(method=name, t=np.asarray(t_eval, dtype=float).copy(), y=y, success=True,
                message=message or f"{steps} steps of {h:.4g} s", cpu=0.0, calls=calls,
-               evaluations=calls, steps=steps, t_end=float(T[-1]))
+               evaluations=calls, steps=steps, t_end=float(T[-1]), nodes=(T, Y))
+
+
+def energy_drift(energy_change, run) -> float:
+    """The largest ``|E - E_0|`` of ``run`` on its own steps (``run.nodes``) when it has
+    them, else on its samples; ``energy_change(y)`` gives ``E - E_0`` along states ``y``
+    (``(2n, K)``), e.g. :meth:`Formulation.energy_change
+    <dualmech.numeric.formulations.Formulation.energy_change>`.
+
+    Example
+    -------
+    >>> import numpy as np
+    >>> from dualmech.numeric.integrators import Run
+    >>> r = Run(method="midpoint", t=np.zeros(1), y=np.zeros((2, 1)), success=True,
+    ...         message="", cpu=0.0, calls=0, evaluations=0, steps=1,
+    ...         nodes=(np.arange(2.0), np.array([[1.0, 0.0], [0.0, 1.0]])))
+    >>> energy_drift(lambda y: 0.5 * (y**2).sum(axis=0) - 0.5, r)
+    0.0
+    """
+    y = run.nodes[1] if getattr(run, "nodes", None) is not None else run.y
+    dE = energy_change(y)
+    return float("nan") if dE is None or not np.size(dE) else float(np.abs(dE).max())
 
 
 def midpoint(energy, t_span, y0, t_eval, h: float, max_steps: int = 2_000_000,
@@ -92,6 +117,7 @@ def midpoint(energy, t_span, y0, t_eval, h: float, max_steps: int = 2_000_000,
         previous = here
         last, size = np.inf, np.inf
         R = residual(z, q, p)
+        calls += 2                       # a residual evaluates the model twice
         for it in range(40):
             if J is None:
                 J = _jacobian(lambda w: residual(w, q, p), z, R)

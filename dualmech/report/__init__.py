@@ -15,7 +15,7 @@ Example
 >>> with tempfile.TemporaryDirectory() as out:
 ...     w = write_report([compare(get("simple_pendulum"))], Path(out), 1.0)
 ...     sorted(p.name for p in Path(out).iterdir())
-['report.html', 'report.md', 'simple_pendulum_reactions.png', 'simple_pendulum_reactions.svg']
+['report.html', 'report.md', 'simple_pendulum_motion.gif', 'simple_pendulum_reactions.png', 'simple_pendulum_reactions.svg']
 """
 from __future__ import annotations
 
@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Sequence
 
-from dualmech.report.charts import Chart, trajectory_chart
+from dualmech.report.charts import Chart, animation_for, trajectory_chart
 from dualmech.report.pages import AUDIENCES, check_audience, html_page, markdown_page
 
 __all__ = ["write_report", "Written", "Chart", "trajectory_chart", "AUDIENCES"]
@@ -45,14 +45,16 @@ class Written:
 
 def write_report(comparisons: Sequence, out_dir: Path, duration: float = 5.0,
                  progress: bool = True, audience: str = "teachers",
-                 notation: str = "dots") -> Written:
+                 notation: str = "dots", animations: bool = True) -> Written:
     """Draw every problem's chart and write ``out_dir/report.md`` and ``out_dir/report.html``.
 
     ``duration`` is the longest simulated span in seconds; each chart stops earlier where
     its scene ends.  ``audience`` is ``"teachers"`` (why each wrong printed answer is wrong,
     and the full text report) or ``"students"`` (verdicts only, corrections hidden: a page
     to hand out).  ``notation`` writes rates as ``"dots"`` (``θ̇``) or ``"primes"`` (``θ′``)
-    in every expression of both pages.  Raises ``OSError`` when ``out_dir`` cannot be written.
+    in every expression of both pages.  ``animations`` adds each problem's motion as a GIF
+    with the reaction forces as arrows (:mod:`.animation`; ``NAME_motion.gif``, embedded in
+    the HTML page).  Raises ``OSError`` when ``out_dir`` cannot be written.
 
     Examples
     --------
@@ -76,6 +78,8 @@ def write_report(comparisons: Sequence, out_dir: Path, duration: float = 5.0,
     for c in _progress(comparisons, "charts", quiet=not progress,
                        label=lambda c: c.problem.name):
         charts[c.problem.name] = trajectory_chart(c.problem, out, duration)
+        if animations and not charts[c.problem.name].error:
+            animation_for(c.problem, charts[c.problem.name], out, duration)
     md = out / "report.md"
     md.write_text(markdown_page(comparisons, charts, duration, audience, notation),
                   encoding="utf-8")

@@ -143,6 +143,7 @@ def markdown_page(comparisons, charts: dict, duration: float,
         else:
             lines += [f"![{name}: simulated motion and reactions]({name}_reactions.png)", ""]
             lines += ["*" + _caption(chart) + "*", ""]
+            lines += _animation_md(name, chart)
     return "\n".join(lines)
 
 
@@ -257,6 +258,29 @@ def _chart_html(name: str, chart, out_dir: Path) -> list[str]:
             f"<figcaption>{_caption_html(chart)}</figcaption></figure>"]
 
 
+_ANIMATION_NOTE = ("The motion, each reaction force an arrow at its point (one scale for all; "
+                   "the legend gives each one's largest value).")
+
+
+def _animation_md(name: str, chart) -> list[str]:
+    if getattr(chart, "animation", None) is not None:
+        return [f"![{name}: the motion, reaction forces as arrows]({name}_motion.gif)", "",
+                f"*{_ANIMATION_NOTE}*", ""]
+    why = getattr(chart, "animation_error", "")
+    return [f"No animation: {why}", ""] if why else []
+
+
+def _animation_html(name: str, chart) -> list[str]:
+    path = getattr(chart, "animation", None)
+    if path is None:
+        why = getattr(chart, "animation_error", "")
+        return [f"<p class='note'>No animation: {html.escape(why)}</p>"] if why else []
+    data = base64.b64encode(Path(path).read_bytes()).decode("ascii")
+    return [f'<figure><img alt="{html.escape(name)}: the motion, reaction forces as arrows" '
+            f'src="data:image/gif;base64,{data}">'
+            f"<figcaption>{html.escape(_ANIMATION_NOTE)}</figcaption></figure>"]
+
+
 def _published_html(c, teachers: bool, notation: str) -> list[str]:
     pubs = _published(c)
     if not pubs:
@@ -309,6 +333,7 @@ def html_page(comparisons, charts: dict, out_dir: Path, duration: float,
         parts += _published_html(c, teachers, notation)
         parts.append("<h3>Simulated motion</h3>")
         parts += _chart_html(name, charts.get(name), out_dir)
+        parts += _animation_html(name, charts.get(name))
         if teachers:
             parts.append(f"<details><summary>full text report</summary><pre>"
                          f"{html.escape(_full_text(c, notation))}</pre></details>")

@@ -57,12 +57,14 @@ SECTIONS = ("singularities", "dae_drift", "stiffness", "linearisation", "floquet
 
 @dataclass
 class Atlas:
-    """Results per section (a result object) and why the others were left out."""
+    """Results per section (a result object), why the others were left out, and the scene of
+    each section's chart (``conditions``: parameters and initial state, its caption)."""
 
     problem: str
     title: str
     results: dict = field(default_factory=dict)
     skipped: dict = field(default_factory=dict)
+    conditions: dict = field(default_factory=dict)
 
     def __str__(self) -> str:
         lines = [f"stability atlas of {self.problem}: {self.title}"]
@@ -90,7 +92,8 @@ class Atlas:
         for name, result in self.results.items():
             draw = _CHARTS.get(name)
             if draw is not None:
-                paths += draw(result, out_dir / f"{self.problem}_atlas_{name}")
+                paths += draw(result, out_dir / f"{self.problem}_atlas_{name}",
+                              self.conditions.get(name, ""))
         return paths
 
 
@@ -137,7 +140,26 @@ def atlas(problem, sections: Sequence[str] = SECTIONS, progress: bool = True) ->
             out.skipped[name] = f"{type(exc).__name__}: {exc}"
             continue
         out.results[name] = result
+        out.conditions[name] = _scene_of(problem, name)
     return out
+
+
+def _scene_of(problem, section: str) -> str:
+    """The caption of a section's chart: the parameters, and the state it starts from."""
+    from functools import partial
+    from dualmech.numeric.charts import conditions
+    scene = partial(conditions, problem, tex=True)
+    if section in ("linearisation", "floquet"):
+        return scene(start=False) + " (starts: see the legend)"
+    if section == "stiffness":
+        sc = problem.stiff_scene
+        return scene(state=state_vector(problem, sc.state, "`stiff_scene`")) + \
+            f"; {mathtext(sc.parameter)} swept"
+    if section == "chaos" and is_declared(problem.chaotic_state):
+        return scene(state=state_vector(problem, problem.chaotic_state, "`chaotic_state`"))
+    if section == "singularities":
+        return scene() + " (each coordinate swept, the others held here)"
+    return scene()
 
 
 class _NotApplicable(Exception):
@@ -206,8 +228,11 @@ def _chaos(problem):
         agreement = chaos(problem, y0=y0)
     except ValueError as exc:
         raise _NotApplicable(str(exc)) from None
+    if agreement.regular:        # no chaos: no horizons of a chaotic run, no exponent
+        return [agreement]
     return [agreement, horizons(problem, y0=y0, duration=10.0,
-                                tolerances=[r["rtol"] for r in agreement.rows])]
+                                tolerances=[r["rtol"] for r in agreement.rows],
+                                exponent=agreement.lyapunov)]
 
 
 def _floquet(problem):
@@ -223,7 +248,7 @@ _RUN = {"singularities": _singularities, "dae_drift": _dae, "stiffness": _stiff,
 
 
 # -- charts ------------------------------------------------------------------------------------
-def _chart_singularities(results, stem: Path) -> list[Path]:
+def _chart_singularities(results, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import panels, save
     s = results[0]
     fig, axes = panels(len(s.curves), f"{s.problem}: degeneracy of each formulation "
@@ -240,7 +265,7 @@ def _chart_singularities(results, stem: Path) -> list[Path]:
         ax.set_xlabel(f"{mathtext(coord)} [{s.units.get(coord, '?')}]")
         ax.set_ylabel(r"degeneracy $\kappa$ [1]")
         ax.legend(fontsize="x-small", loc="upper right")
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
 #: a constraint residual at or below this (in SI units, scenes of order 1 m) is rounding: a
@@ -248,7 +273,7 @@ def _chart_singularities(results, stem: Path) -> list[Path]:
 ROUNDING = 1e3 * float(np.finfo(float).eps)
 
 
-def _chart_drift(d, stem: Path) -> list[Path]:
+def _chart_drift(d, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import panels, save
     fig, (ax,) = panels(1, f"{d.problem}: constraint drift of {d.model}, {d.method} at rtol "
                         f"{d.rtol:g}", height=3.2)
@@ -272,10 +297,10 @@ def _chart_drift(d, stem: Path) -> list[Path]:
     ax.set_ylabel(f"$|g|$ [{d.unit}]")
     if ax.get_legend_handles_labels()[0]:
         ax.legend(fontsize="small")
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
-def _chart_stiffness(s, stem: Path) -> list[Path]:
+def _chart_stiffness(s, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import METHOD_COLORS, panels, save
     fig, axes = panels(2, f"{s.problem}: stiffness in {mathtext(s.parameter)} (declared "
                        f"{s.declared[0]:g}-{s.declared[1]:g} {s.unit}), rtol {s.rtol:g}",
@@ -297,10 +322,10 @@ def _chart_stiffness(s, stem: Path) -> list[Path]:
         ax.axvspan(*s.declared, color="0.9", label="declared range")
         ax.legend(fontsize="x-small", ncol=2)
     axes[-1].set_xlabel(f"{mathtext(s.parameter)} [{s.unit}]")
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
-def _chart_linear(lin, stem: Path) -> list[Path]:
+def _chart_linear(lin, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import panels, save
     fig, (ax,) = panels(1, f"{lin.problem}: small-oscillation model against the nonlinear "
                         "one, over one period", height=3.4)
@@ -315,16 +340,24 @@ def _chart_linear(lin, stem: Path) -> list[Path]:
     ax.set_yscale("log")
     ax.set_xlabel(f"amplitude of {mathtext(lin.coordinate)} [{lin.unit}]")
     ax.set_ylabel("largest error / amplitude [1]")
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
-def _chart_chaos(results, stem: Path) -> list[Path]:
+def _chart_chaos(results, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import panels, save
     c, h = (results + [None])[:2] if isinstance(results, list) else (results, None)
-    fig, (ax,) = panels(1, f"{c.problem}: how long a chaotic run stays right", height=3.4)
+    title = (f"{c.problem}: how long a chaotic run stays right" if not c.regular else
+             f"{c.problem}: regular motion -- no chaos, no Lyapunov exponent")
+    fig, axes = panels(2, title, height=3.0, sharex=False)
+    _draw_exponents(axes[0], c)
+    ax = axes[1]
     x = [-np.log(r["rtol"]) for r in c.rows]
     ax.plot(x, [r["horizon"] for r in c.rows], marker="o",
-            label=f"{c.pair[0]} and {c.pair[1]} agree (each other, not the truth)")
+            label=f"{c.pair[0]} and {c.pair[1]} agree (each other, not the truth; hollow: "
+                  "the whole run, at least)")
+    for xx, r in zip(x, c.rows):
+        if not r["diverged"]:
+            ax.plot([xx], [r["horizon"]], marker="o", color="white", markersize=4)
     if h is not None:
         xs = [-np.log(r["rtol"]) for r in h.rows]
         ax.plot(xs, [r["horizon"] for r in h.rows], marker="s",
@@ -333,20 +366,41 @@ def _chart_chaos(results, stem: Path) -> list[Path]:
             if r["bound"]:
                 ax.plot([xx], [r["horizon"]], marker="s", color="white", markersize=4)
         good = [(xx, r["horizon"]) for xx, r in zip(xs, h.rows) if not r["bound"]]
-        if good and np.isfinite(h.lyapunov):
+        if good and np.isfinite(h.lyapunov) and h.lyapunov > 0:
             x0, t0 = np.mean(good, axis=0)
             line = np.array([min(xs), max(xs)])
             ax.plot(line, t0 + (line - x0) / h.lyapunov, linestyle="--", color="0.4",
-                    label=f"slope $1/\\lambda$, Benettin's $\\lambda$ = {h.lyapunov:.3g} 1/s")
+                    label="slope $1/\\lambda$ of the exponent above")
         ax.axhline(h.reference_valid, color="0.7", linestyle=":",
                    label=f"reference trusted until {h.reference_valid:.3g} s")
     ax.set_xlabel("-ln(relative tolerance) [1]")
     ax.set_ylabel("horizon [s]")
     ax.legend(fontsize="x-small")
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
-def _chart_floquet(fl, stem: Path) -> list[Path]:
+def _draw_exponents(ax, c) -> None:
+    """Benettin's finite-time exponent against its window, with ``ln(t)/t`` (what a
+    separation growing like ``t`` gives) through the first point for comparison."""
+    w, e = np.array(c.windows), np.array(c.exponents)
+    ax.plot(w, np.where(e > 0, e, np.nan), marker="o", label="finite-time exponent")
+    ref = e[0] * np.log(w) / w / (np.log(w[0]) / w[0]) if w[0] > 1 else None
+    if ref is not None and e[0] > 0:
+        ax.plot(w, ref, linestyle=":", color="0.4", label="ln(t)/t through the first point "
+                "(regular motion)")
+    if not c.regular:
+        ax.axhline(c.lyapunov, color="0.4", linestyle="--", linewidth=0.9,
+                   label=f"$\\lambda$ = {c.lyapunov:.3g} 1/s (window {w[-1]:g} s)")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("window [s]")
+    ax.set_ylabel("exponent [1/s]")
+    ax.set_title("chaotic: the exponent settles" if not c.regular else
+                 "regular: the exponent falls with the window", fontsize="small")
+    ax.legend(fontsize="x-small")
+
+
+def _chart_floquet(fl, stem: Path, caption: str = "") -> list[Path]:
     from dualmech.numeric.charts import panels, save
     from dualmech.numeric.studies.mathieu import draw_chart
     points = {f"{_orbit(o)}: {'stable' if o.stable else 'unstable'}": o.mathieu
@@ -376,7 +430,7 @@ def _chart_floquet(fl, stem: Path) -> list[Path]:
         draw_chart(axes[2], (0.0, 2.5 * qmax), (-2.5 * amax, 2.5 * amax), points)
         axes[2].set_title("near the problem's own parameters", fontsize="small")
         axes[2].legend(fontsize="x-small", loc="upper left", bbox_to_anchor=(1.02, 1.0))
-    return save(fig, stem)
+    return save(fig, stem, caption=caption)
 
 
 def _orbit(orbit) -> str:

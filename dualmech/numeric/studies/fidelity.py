@@ -37,6 +37,7 @@ import numpy as np
 
 from dualmech.model.facts import not_declared
 from dualmech.model.notation import mathtext
+from dualmech.numeric.charts import conditions
 from dualmech.numeric.contacts import scene_span
 from dualmech.numeric.formulations import formulations
 from dualmech.numeric.integrators import integrate
@@ -71,12 +72,14 @@ class Rung:
 
 @dataclass
 class Ladder:
-    """Rungs simplest first; the last is the richest (its errors are zero by definition)."""
+    """Rungs simplest first; the last is the richest (its errors are zero by definition);
+    ``conditions`` the scene's parameters and start, written under the chart."""
 
     scene: str
     span: tuple
     span_note: str
     rungs: list
+    conditions: str = ""     # the scene's parameters and start (the chart's caption)
 
     def __str__(self) -> str:
         head = (f"fidelity ladder of {self.scene}, t in [{self.span[0]:g}, {self.span[1]:.3g}] s"
@@ -116,7 +119,7 @@ class Ladder:
         ax.set_xlabel("t [s]")
         ax.set_ylabel("state error [relative to range]")
         ax.legend(fontsize="small")
-        return [stem.with_suffix(".json")] + save(fig, stem)
+        return [stem.with_suffix(".json")] + save(fig, stem, caption=self.conditions)
 
 
 def _legend(rung: Rung) -> str:
@@ -216,7 +219,8 @@ def ladder(problem, duration: float = 5.0, rtol: float = 1e-10, samples: int = 2
         names += [f"{c}'" for c in names]
         rung.by_coordinate = {c: float(e.max()) for c, e in zip(names, each)} if k else {}
         rungs.append(rung)
-    return Ladder(top.name, (float(te[0]), float(te[-1])), scene.reason, rungs)
+    return Ladder(top.name, (float(te[0]), float(te[-1])), scene.reason, rungs,
+                  conditions(top, state=list(y0), tex=True))
 
 
 def _reactions(problem, Y: np.ndarray) -> dict:

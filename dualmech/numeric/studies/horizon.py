@@ -36,7 +36,8 @@ from typing import Sequence
 import numpy as np
 from scipy.integrate import solve_ivp
 
-__all__ = ["Reference", "reference", "Horizons", "horizons", "lyapunov", "state_sizes"]
+__all__ = ["Reference", "reference", "Horizons", "horizons", "lyapunov", "state_sizes",
+           "fit_slope", "finite_time_exponents", "regular", "FALLING"]
 
 #: Tolerances of the reference and of its check.
 REFERENCE_RTOL, CHECK_RTOL = 1e-13, 1e-12
@@ -84,7 +85,8 @@ def reference(f, span: tuple, t_eval: np.ndarray, threshold: float) -> Reference
 @dataclass
 class Horizons:
     """Per tolerance: the horizon (s) and whether it is only a lower bound; the fitted and
-    the independently estimated Lyapunov exponents (1/s)."""
+    the independently estimated Lyapunov exponents (1/s).  ``slope_error`` is the standard
+    error of the fitted slope (s), from the fit's residuals (:func:`fit_slope`)."""
 
     problem: str
     formulation: str
@@ -104,18 +106,28 @@ class Horizons:
         for r in self.rows:
             mark = "at least " if r["bound"] else ""
             lines.append(f"  rtol {r['rtol']:.0e}: right until {mark}t = {r['horizon']:.3g} s")
-        lines.append(f"  horizon against -ln(rtol): slope {1 / self.fitted:.3g} +- "
-                     f"{self.slope_error:.2g} s, i.e. "
-                     f"lambda = {self.fitted:.3g} 1/s; Benettin's estimate {self.lyapunov:.3g}"
-                     " 1/s")
+        if np.isfinite(self.fitted):
+            slope = 1 / self.fitted
+            lo, hi = slope + self.slope_error, slope - self.slope_error
+            band = (f"{1 / lo:.3g} to {1 / hi:.3g}" if hi > 0 else f"above {1 / lo:.3g}")
+            lines.append(f"  horizon against -ln(rtol): slope {slope:.3g} +- "
+                         f"{self.slope_error:.2g} s (standard error from the fit's residuals), "
+                         f"i.e. lambda = {self.fitted:.3g} 1/s ({band}) implied by the horizons, "
+                         f"against Benettin's {self.lyapunov:.3g} 1/s")
+        else:
+            lines.append("  fewer than 3 horizons before the reference's validity ends: no "
+                         f"slope fitted (Benettin's {self.lyapunov:.3g} 1/s)")
         return "\n".join(lines)
 
 
 def horizons(problem, y0=None, tolerances: Sequence[float] = tuple(10.0 ** -k for k in
                                                                    range(4, 11)),
              duration: float = 15.0, threshold: float = 0.01, method: str = "DOP853",
-             samples: int = 3001, lyapunov_time: float = 60.0) -> Horizons:
-    """The horizons of the module docstring for the problem's reference formulation."""
+             samples: int = 3001, lyapunov_time: float = 60.0,
+             exponent: float | None = None) -> Horizons:
+    """The horizons of the module docstring for the problem's reference formulation;
+    ``exponent`` is Benettin's exponent when already measured (the atlas passes the chaos
+    section's, so a report shows one), else measured over ``lyapunov_time`` seconds."""
     from dualmech.numeric.formulations import formulations
     f = formulations(problem, y0=y0, models=[problem.reference])[0][0]
     te = np.linspace(0.0, duration, samples)
@@ -133,13 +145,36 @@ def horizons(problem, y0=None, tolerances: Sequence[float] = tuple(10.0 ** -k fo
                          "bound": bool(bound)})
     good = [r for r in out.rows if not r["bound"]]
     if len(good) >= 3:
-        (slope, _), cov = np.polyfit(-np.log([r["rtol"] for r in good]),
-                                     [r["horizon"] for r in good], 1, cov="unscaled"
-                                     if len(good) == 3 else True)
+        slope, out.slope_error = fit_slope(-np.log([r["rtol"] for r in good]),
+                                           [r["horizon"] for r in good], te[1] - te[0])
         out.fitted = float(1 / slope)
-        out.slope_error = float(np.sqrt(cov[0, 0]))
-    out.lyapunov = lyapunov(f.rhs, f.y0, lyapunov_time)
+    out.lyapunov = float(exponent) if exponent is not None else \
+        lyapunov(f.rhs, f.y0, lyapunov_time)
     return out
+
+
+def fit_slope(x, horizons, resolution: float) -> tuple[float, float]:
+    """The least-squares slope of ``horizons`` against ``x`` and its standard error.
+
+    The error is the classical one of a straight-line fit, ``s / sqrt(sum (x - mean x)^2)``,
+    with ``s^2`` the residuals' variance on ``N - 2`` degrees of freedom -- but never below
+    what the horizons' own rounding allows: each is found on a grid of spacing
+    ``resolution`` (a uniform error of variance ``resolution^2 / 12``).  So a fit whose
+    points scatter has a large error, one through points on a line a small one.
+
+    Example
+    -------
+    >>> slope, err = fit_slope([1.0, 2.0, 3.0, 4.0], [1.0, 2.2, 2.8, 4.1], 0.001)
+    >>> round(slope, 3), round(err, 4)      # scipy.stats.linregress: 0.99, 0.0933
+    (0.99, 0.0933)
+    """
+    x, y = np.asarray(x, dtype=float), np.asarray(horizons, dtype=float)
+    if x.size < 3:
+        raise ValueError(f"a slope and its error need at least 3 horizons, got {x.size}.")
+    slope, intercept = np.polyfit(x, y, 1)
+    rss = float(((y - slope * x - intercept) ** 2).sum())
+    variance = max(rss / (x.size - 2), resolution**2 / 12)
+    return float(slope), float(np.sqrt(variance / ((x - x.mean()) ** 2).sum()))
 
 
 def lyapunov(rhs, y0, duration: float, d0: float = 1e-8, every: float = 0.5,
@@ -147,19 +182,64 @@ def lyapunov(rhs, y0, duration: float, d0: float = 1e-8, every: float = 0.5,
     """Benettin's estimate of the largest Lyapunov exponent: a companion ``d0`` away
     (relative to the state's size), renormalised every ``every`` seconds; the growth after
     ``transient`` seconds, averaged."""
+    return finite_time_exponents(rhs, y0, (duration,), d0, every, transient)[0]
+
+
+def finite_time_exponents(rhs, y0, windows: Sequence[float], d0: float = 1e-8,
+                          every: float = 0.5, transient: float = 0.0) -> list[float]:
+    """Benettin's finite-time exponent over each window ``[transient, transient + T]`` of
+    ``windows`` (increasing), from one run of the longest: ``ln(growth) / T``.
+
+    For chaotic motion they settle on the largest Lyapunov exponent as ``T`` grows; for
+    regular motion the separation grows at most like a power of ``t`` and they fall like
+    ``ln(t) / t`` (:func:`regular`).
+    """
+    windows = [float(w) for w in windows]
+    if not windows or any(b <= a for a, b in zip(windows, windows[1:])) or windows[0] <= 0:
+        raise ValueError(f"`windows` must be positive and increasing, got {windows}.")
     y = np.asarray(y0, dtype=float).copy()
     scale = max(1.0, np.abs(y).max())
     direction = np.ones_like(y) / np.sqrt(y.size)
     z = y + d0 * scale * direction
-    total, t, counted = 0.0, 0.0, 0.0
-    while t < duration - 1e-12:
-        span = (t, min(t + every, duration))
+    total, t, counted, out = 0.0, 0.0, 0.0, []
+    ends = [transient + w for w in windows]
+    while t < ends[-1] - 1e-12:
+        nxt = min(t + every, ends[-1], *[e for e in ends if e > t + 1e-12])
+        span = (t, nxt)
         y = solve_ivp(rhs, span, y, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
         z = solve_ivp(rhs, span, z, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
         d = np.linalg.norm(z - y)
-        if span[0] >= transient:
+        if span[0] >= transient - 1e-12:
             total += np.log(d / (d0 * scale))
             counted += span[1] - span[0]
         z = y + (z - y) * (d0 * scale / d)
         t = span[1]
-    return float(total / counted)
+        if any(abs(t - e) <= 1e-9 for e in ends[len(out):len(out) + 1]):
+            out.append(float(total / counted))
+    return out
+
+
+#: The log-log slope of the finite-time exponent against its window below which it is falling
+#: (regular motion: ``ln(t)/t`` gives about -0.7 over a 16-fold range of windows, a separation
+#: growing like ``t`` near -1) rather than settling on a positive limit (chaos: near 0).
+FALLING = -0.3
+
+
+def regular(windows: Sequence[float], exponents: Sequence[float]) -> bool:
+    """Whether finite-time exponents over ``windows`` say "regular": none is positive, or
+    they fall with the window (least-squares slope of ``ln exponent`` against ``ln window``
+    below :data:`FALLING`) instead of settling on a positive limit.
+
+    Example
+    -------
+    >>> regular([5, 10, 20, 40, 80], [0.31, 0.20, 0.09, 0.08, 0.05])   # toy car: regular
+    True
+    >>> regular([5, 10, 20, 40, 80], [2.2, 2.4, 2.6, 2.6, 2.7])        # double pendulum
+    False
+    """
+    e = np.asarray(exponents, dtype=float)
+    if e.size < 3:
+        raise ValueError("telling regular from chaotic motion needs at least 3 windows.")
+    if not (e > 0).all():        # an exponent at or below zero: no positive limit
+        return True
+    return bool(np.polyfit(np.log(windows), np.log(e), 1)[0] < FALLING)

@@ -12,7 +12,10 @@
   error over one linear period as a function of the amplitude, and the amplitudes where it
   passes 1 % and 10 %.
 * :func:`chaos` -- two formulations of one problem from one state at each tolerance: how
-  long their trajectories agree, and the Lyapunov exponent that explains it.
+  long their trajectories agree; and first whether the motion is chaotic at all: Benettin's
+  finite-time exponents over doubling windows settle on a positive limit (chaos: that limit
+  is the Lyapunov exponent) or fall with the window like ``ln(t)/t`` (regular motion: no
+  chaos verdict, no exponent).
 * :func:`dae_drift` -- the constraint residual over time for each DAE stabilisation, with
   its growth exponent (``|g| ~ t^p``).
 
@@ -38,6 +41,7 @@ from dualmech.model.facts import StiffScene, not_declared, state_vector
 from dualmech.numeric.formulations import formulations
 from dualmech.numeric.integrators import EXPLICIT
 from dualmech.numeric.simulation import problem_parameters
+from dualmech.numeric.studies.horizon import finite_time_exponents, regular
 from dualmech.numeric.units import unit
 
 __all__ = ["stability_radius", "stable_equilibrium", "jacobian", "Stiffness", "stiffness",
@@ -292,9 +296,16 @@ def _linear(J, dy0, te) -> np.ndarray:
 
 
 # -- chaos -------------------------------------------------------------------------------------
+#: Benettin windows of :func:`chaos` [s]: doubling, a 16-fold range.
+WINDOWS = (5.0, 10.0, 20.0, 40.0, 80.0)
+
+
 @dataclass
 class Chaos:
-    """How long two formulations agree at each tolerance; the Lyapunov exponent."""
+    """How long two formulations agree at each tolerance, and whether the motion is chaotic:
+    Benettin's finite-time exponents (``exponents``, 1/s) over ``windows`` (s) -- settling on
+    a positive limit (chaotic; ``lyapunov`` is the longest window's) or falling with the
+    window (``regular``; ``lyapunov`` is then ``nan``: there is no positive exponent)."""
 
     problem: str
     pair: tuple
@@ -302,12 +313,26 @@ class Chaos:
     span: tuple
     threshold: float
     rows: list
+    windows: list
+    exponents: list
+    regular: bool
     lyapunov: float
 
+    def verdict(self) -> str:
+        """One sentence: chaotic with the exponent and its window, or regular and why."""
+        shown = ", ".join(f"{e:.2g}" for e in self.exponents)
+        over = f"over windows of {', '.join(f'{w:g}' for w in self.windows)} s"
+        if self.regular:
+            return (f"regular motion, no chaos: Benettin's finite-time exponents {shown} 1/s "
+                    f"{over} fall with the window (as ln(t)/t does when nearby motions part "
+                    "only like a power of t), so no positive Lyapunov exponent")
+        return (f"chaotic: largest Lyapunov exponent {self.lyapunov:.3g} 1/s (Benettin, "
+                f"window {self.windows[-1]:g} s; finite-time exponents {shown} 1/s {over})")
+
     def __str__(self) -> str:
-        lines = [f"{self.problem}: {self.pair[0]} against {self.pair[1]} from {self.y0}; "
-                 f"agreement = every coordinate within {self.threshold:g} of its declared "
-                 f"range; largest Lyapunov exponent {self.lyapunov:.3g} 1/s"]
+        lines = [f"{self.problem}: {self.verdict()}",
+                 f"{self.pair[0]} against {self.pair[1]} from {self.y0}: agreement = every "
+                 f"coordinate within {self.threshold:g} of its declared range"]
         for r in self.rows:
             lines.append(f"  rtol {r['rtol']:.0e}: agree until t = {r['horizon']:.3g} s")
         return "\n".join(lines)
@@ -315,8 +340,11 @@ class Chaos:
 
 def chaos(problem, pair: Sequence[str] | None = None, y0=None, duration: float = 20.0,
           tolerances: Sequence[float] = tuple(10.0 ** -k for k in range(4, 13, 2)),
-          threshold: float = 0.01, samples: int = 2001) -> Chaos:
-    """Agreement horizon of two formulations against tolerance (see the module docstring).
+          threshold: float = 0.01, samples: int = 2001,
+          windows: Sequence[float] = WINDOWS) -> Chaos:
+    """Agreement horizon of two formulations against tolerance (see the module docstring),
+    and whether the motion is chaotic at all (:func:`~.horizon.finite_time_exponents` over
+    ``windows``, judged by :func:`~.horizon.regular`).
 
     ``threshold`` is the disagreement, as a fraction of each coordinate's declared range,
     beyond which two runs no longer describe the same motion.
@@ -340,24 +368,11 @@ def chaos(problem, pair: Sequence[str] | None = None, y0=None, duration: float =
         out = np.flatnonzero(gap > threshold)
         rows.append({"rtol": tol, "horizon": float(te[out[0]]) if out.size else duration,
                      "diverged": bool(out.size)})
+    exps = finite_time_exponents(a.rhs, a.y0, windows)
+    calm = regular(windows, exps)
     return Chaos(problem.name, (a.name, b.name), [float(x) for x in a.y0], (0.0, duration),
-                 threshold, rows, _lyapunov(a, duration))
-
-
-def _lyapunov(f, duration: float, d0: float = 1e-8, every: float = 0.5) -> float:
-    """Benettin's estimate: a companion ``d0`` away, renormalised every ``every`` seconds."""
-    y, z = f.y0.copy(), f.y0.copy()
-    z[0] += d0
-    total, t = 0.0, 0.0
-    while t < duration - 1e-12:
-        span = (t, min(t + every, duration))
-        y = solve_ivp(f.rhs, span, y, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
-        z = solve_ivp(f.rhs, span, z, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
-        d = np.linalg.norm((z - y) / f.scales)
-        total += np.log(d / (d0 / f.scales[0]))
-        z = y + (z - y) * (d0 / f.scales[0]) / d
-        t = span[1]
-    return total / duration
+                 threshold, rows, [float(w) for w in windows], exps, calm,
+                 float("nan") if calm else exps[-1])
 
 
 # -- DAE drift --------------------------------------------------------------------------------

@@ -19,7 +19,9 @@ problem's declared singular set (:attr:`Problem.singular`), and classified:
 :func:`probe` runs each integrator from a state that heads for the singular set (a
 :class:`~dualmech.model.facts.Probe` the problem declares in ``probes``): unguarded
 (what the integrator does: slows down, stops with an error, or returns garbage -- judged by
-its error against a tight run and by the energy), guarded (a terminal event where ``kappa``
+its error against a tight run and by the energy; the error is measured where the
+singularity cannot distort it, in the ground frame's positions and velocities of the
+problem's points (:mod:`dualmech.numeric.scene`), not in the angles that degenerate), guarded (a terminal event where ``kappa``
 reaches the limit: a clear message), and, where another formulation is regular there, the
 guarded run continues in that safe form (the state lifted into its coordinates by Newton
 continuation along the run).
@@ -46,6 +48,7 @@ from dualmech.model.facts import Probe, not_declared, state_vector
 from dualmech.numeric.formulations import Formulation, formulations
 from dualmech.numeric.integrators import Run
 from dualmech.numeric.model import NumericModel, SingularityError, StateFunction
+from dualmech.numeric.scene import NoScene, scene
 from dualmech.numeric.studies.horizon import state_sizes
 from dualmech.numeric.simulation import problem_parameters
 from dualmech.numeric.units import unit
@@ -268,11 +271,12 @@ class ProbeReport:
     span: tuple
     description: str
     rtol: float
+    measured: str = ""
     runs: list = field(default_factory=list)
 
     def __str__(self) -> str:
         lines = [f"{self.problem}: {self.description}; {self.formulation} from {self.y0}, "
-                 f"rtol {self.rtol:g}"]
+                 f"rtol {self.rtol:g}; errors in {self.measured}"]
         for r in self.runs:
             lines.append(f"  {r.method:8s} {r.mode:9s} {r.verdict}")
         return "\n".join(lines)
@@ -344,19 +348,43 @@ def probe(problem, declared: Probe | None = None, *, methods: Sequence[str] = ("
     te = np.linspace(*span, samples)
     tight = ref.run("DOP853", span, te, rtol=1e-12)
     truth = f.from_reference(tight.t, tight.y[: ref.n], tight.y[ref.n:])
-    # errors relative to each component's own size along the truth, not a declared range
-    sizes = state_sizes(truth)
+    measure, measured = _measure(problem, params, f, ref, te, truth)
     kappa = _kappa_of(f, values)
     ref_kappa = _kappa_of(ref, values)
-    out = ProbeReport(problem.name, fname, list(y0), span, description, rtol)
+    out = ProbeReport(problem.name, fname, list(y0), span, description, rtol, measured)
     for method in methods:
         run = f.run(method, span, te, rtol=rtol)
-        out.runs.append(_judge(f, run, "unguarded", truth, kappa, rtol, sizes))
+        out.runs.append(_judge(f, run, "unguarded", measure, kappa, rtol))
         g = _guarded(f, method, span, te, rtol, kappa)
-        out.runs.append(_judge(f, g, "guarded", truth, kappa, rtol, sizes))
+        out.runs.append(_judge(f, g, "guarded", measure, kappa, rtol))
         if g.t_end < span[1] and f is not ref:
-            out.runs.append(_switch(f, ref, g, te, truth, rtol, ref_kappa, sizes))
+            out.runs.append(_switch(f, ref, g, te, truth, rtol, ref_kappa, measure))
     return out
+
+
+def _measure(problem, params, f, ref, te, truth):
+    """``(error(y), what it measures)``: a run's error against ``truth`` in the ground
+    frame's positions and velocities of the problem's points (:mod:`dualmech.numeric.scene`)
+    where its states are in the reference coordinates -- near a pole the angles themselves
+    are distorted, a tiny move of the body a large change of one angle -- else in the form's
+    own coordinates, relative to each component's size along the truth."""
+    sc = None
+    if tuple(f.coordinates) == tuple(ref.coordinates) and f.n == ref.n:
+        try:
+            sc = scene(problem, params)
+        except NoScene:
+            sc = None
+    if sc is not None:
+        def cartesian(y):
+            return sc.error(te, y, truth) if y.shape[1] else np.nan
+        return cartesian, ("positions and velocities of " + ", ".join(sc.names) +
+                           " in the ground frame, relative to their motion's size")
+    sizes = state_sizes(truth)
+
+    def own(y):
+        k = y.shape[1]
+        return float((np.abs(y - truth[:, :k]) / sizes[:, None]).max()) if k else np.nan
+    return own, f"{f.name}'s coordinates and rates, relative to their size along the run"
 
 
 def verdict_word(error: float, rtol: float) -> str:
@@ -367,10 +395,10 @@ def verdict_word(error: float, rtol: float) -> str:
     return "right" if error <= GARBAGE * rtol else "degraded"
 
 
-def _judge(f, run, mode, truth, kappa, rtol, sizes) -> ProbeRun:
+def _judge(f, run, mode, measure, kappa, rtol) -> ProbeRun:
     k = run.y.shape[1]
     kmax = max((kappa(run.y[:, j]) for j in range(k)), default=np.nan)
-    err = float((np.abs(run.y - truth[:, :k]) / sizes[:, None]).max()) if k else np.nan
+    err = measure(run.y)
     dE = f.energy_change(run.y) if k else None
     energy = float(np.abs(dE).max()) if dE is not None else np.nan
     word = verdict_word(err, rtol)
@@ -385,7 +413,7 @@ def _judge(f, run, mode, truth, kappa, rtol, sizes) -> ProbeRun:
         verdict = (f"degraded: relative error {err:.2g} (> {GARBAGE:g} x rtol, below "
                    f"{WRONG:g}) after degeneracy {kmax:.2g}")
     else:
-        verdict = (f"wrong: reports success, but its state is off by {err:.2g} of its own "
+        verdict = (f"wrong: reports success, but it is off by {err:.2g} of the motion's "
                    f"size (> {WRONG:g}) after degeneracy {kmax:.2g}")
         if np.isfinite(energy):
             verdict += f"; its energy error is {energy:.2g} N m"
@@ -442,7 +470,7 @@ def _guarded(f: Formulation, method: str, span, te, rtol, kappa) -> Run:
                t_end=float(t_end), event_states=[y_end])
 
 
-def _switch(f, ref, run, te, truth, rtol, ref_kappa, sizes) -> ProbeRun:
+def _switch(f, ref, run, te, truth, rtol, ref_kappa, measure) -> ProbeRun:
     """Continue a guarded run in the reference form from where the guard stopped it."""
     from dualmech.numeric.integrators import integrate
     n = ref.n
@@ -461,7 +489,7 @@ def _switch(f, ref, run, te, truth, rtol, ref_kappa, sizes) -> ProbeRun:
     Y = np.hstack([lifted, cont.y[:, 1:]])
     k = min(Y.shape[1], truth.shape[1])
     back = f.from_reference(0.0, Y[:n, :k], Y[n:, :k])
-    err = float((np.abs(back - truth[:, :k]) / sizes[:, None]).max())
+    err = measure(back)
     verdict = (f"switched to {ref.name} at t = {t_sw:.6g} s (its degeneracy there "
                f"{k_sw:.2g}); the joined run's error is {err:.2g}")
     return ProbeRun(run.method, "switched", cont.success, str(cont.message), cont.t_end,
