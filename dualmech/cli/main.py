@@ -147,7 +147,7 @@ def build_parser() -> argparse.ArgumentParser:
                                    "or with --all), print the summary table and write "
                                    "DIR/report.html (open it in a browser: one page, charts "
                                    "included), DIR/report.md, DIR/<name>.json and "
-                                   "DIR/<name>_reactions.png.")
+                                   "DIR/<name>_reactions.png and DIR/<name>_motion.gif.")
     p.add_argument("names", nargs="*", metavar="NAME",
                    help="problems to report: catalogue names, path.py[:Class], module:Class, "
                         "a registered catalogue's problem or the catalogue's name for all of "
@@ -158,6 +158,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="output directory (default: %(default)s)")
     p.add_argument("--duration", metavar="T", default=5.0, type=_duration,
                    help="simulated time for the charts, in seconds (default: %(default)s)")
+    p.add_argument("--no-animations", dest="animations", action="store_false",
+                   help="leave out the animation of each motion (about 3 s a problem)")
     p.add_argument("--for", dest="audience", choices=("teachers", "students"),
                    default="teachers",
                    help="teachers: why each wrong printed answer is wrong; students: a page "
@@ -725,7 +727,8 @@ def _cmd_report(args) -> int:
         print(f"report: writing the charts and {out / 'report.html'}", file=sys.stderr,
               flush=True)
     w = write_report([c for _, c in results], out, args.duration,
-                     audience=args.audience, notation=args.notation)
+                     audience=args.audience, notation=args.notation,
+                     animations=args.animations)
     if args.json:
         print(_json({"problems": [_summary_row(p, c) for p, c in results],
                      "files": {"html": str(w.html), "markdown": str(w.markdown),
