@@ -321,3 +321,37 @@ def test_help_of_problem_documents_every_declaration():
     for attr in ("unilateral", "probes", "stiff_scene", "fidelity_ladder", "chaotic_state",
                  "initial_state"):
         assert f"\n    {attr} :" in doc, attr
+
+
+def test_a_wrong_drawing_or_chart_scene_is_listed_by_validate():
+    """Each mistake in `drawing` and `chart_scenes` is named (the pendulum's parameters are
+    M, a, g; its coordinate theta)."""
+    import sympy as sp
+
+    from dualmech import ChartScene, Drawing
+    base = type(get("simple_pendulum"))
+    th = base.coordinates[0].function
+    b = sp.Symbol("b", positive=True)
+
+    class Wrong(base):
+        drawing = Drawing({"pivot": (0, 0), "bob": (b * sp.sin(th), -b * sp.cos(th))},
+                          (("pivot", "bob"),))
+        chart_scenes = (ChartScene({"G": 3.0}, (), "typo"),
+                        ChartScene({"g": 1e6}, (), "out of range"),
+                        ChartScene({}, (1.0, 2.0, 3.0), "a state too long"))
+
+    with pytest.raises(ProblemError) as err:
+        Wrong().validate()
+    text = str(err.value)
+    assert "`drawing.points['bob']` uses b" in text
+    assert "`chart_scenes[0]`: `G` is not a declared parameter" in text
+    assert "`chart_scenes[1]`: `g` = 1000000.0 is outside its declared range" in text
+    assert "`chart_scenes[2].state`" in text
+
+    class Right(base):
+        a = base.parameters[1].symbol
+        drawing = Drawing({"pivot": (0, 0), "bob": (a * sp.sin(th), -a * sp.cos(th))},
+                          (("pivot", "bob"),))
+        chart_scenes = (ChartScene({"g": 3.0}, (), "weaker gravity"),)
+
+    Right().validate()

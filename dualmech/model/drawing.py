@@ -32,7 +32,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-__all__ = ["Drawing", "ChartScene", "VIEWS"]
+__all__ = ["Drawing", "ChartScene", "VIEWS", "drawing_errors"]
 
 #: The names of the ground axes a view may pick.
 VIEWS = ("x", "y", "z")
@@ -104,3 +104,58 @@ class ChartScene:
                 raise TypeError(f"`ChartScene.params[{k!r}]` must be a number, got {v!r:.40}.")
         if not isinstance(self.why, str):
             raise TypeError(f"`ChartScene.why` must be text, got {self.why!r:.40}.")
+
+
+def drawing_errors(problem) -> list[str]:
+    """Every mistake in ``problem``'s ``drawing`` and ``chart_scenes``, one sentence each:
+    components naming symbols that are not the time, a coordinate or a parameter; a scene's
+    parameter that is not declared or lies outside its range; a scene's state that does not
+    fit the reference coordinates.
+
+    >>> import sympy as sp
+    >>> from dualmech import get
+    >>> class Typo(type(get("simple_pendulum"))):
+    ...     chart_scenes = (ChartScene({"G": 3.0}, (), "weaker gravity"),)
+    >>> drawing_errors(Typo())
+    ['`chart_scenes[0]`: `G` is not a declared parameter (declared: M, a, g)']
+    """
+    from dualmech.model.facts import _state_errors, _tuple_of, is_declared
+    from dualmech.model.kinematics import t
+    errors: list[str] = []
+    drawing = getattr(problem, "drawing", None)
+    names = {str(p.symbol): p for p in problem.parameters}
+    if drawing is not None and not isinstance(drawing, Drawing):
+        errors.append(f"`drawing` must be a Drawing(...) or None, got {drawing!r:.60}")
+    elif drawing is not None:
+        allowed = {t, *(p.symbol for p in problem.parameters)}
+        coords = {c.function for c in problem.all_coordinates()}
+        for name, where in drawing.points.items():
+            if hasattr(where, "pos_from"):
+                continue
+            for x in where:
+                expr = x if hasattr(x, "free_symbols") else None
+                if expr is None:
+                    continue
+                stray = expr.free_symbols - allowed
+                odd = {f for f in expr.atoms(_applied()) if f not in coords}
+                if stray or odd:
+                    what = ", ".join(sorted(map(str, stray | odd)))
+                    errors.append(f"`drawing.points[{name!r}]` uses {what}: not the time, a "
+                                  "coordinate or a parameter")
+                    break
+    for i, scene in enumerate(_tuple_of(problem, "chart_scenes", ChartScene, errors)):
+        for k, v in scene.params.items():
+            if k not in names:
+                errors.append(f"`chart_scenes[{i}]`: `{k}` is not a declared parameter "
+                              f"(declared: {', '.join(sorted(names))})")
+            elif not names[k].range[0] <= v <= names[k].range[1]:
+                errors.append(f"`chart_scenes[{i}]`: `{k}` = {v} is outside its declared "
+                              f"range {names[k].range}")
+        if is_declared(scene.state) and problem.reference in problem.models():
+            errors += _state_errors(problem, scene.state, f"`chart_scenes[{i}].state`")
+    return errors
+
+
+def _applied():
+    from sympy.core.function import AppliedUndef
+    return AppliedUndef

@@ -34,7 +34,7 @@ import sympy as sp
 from dualmech.model._expr import as_expr
 from dualmech.model.dimensions import ENERGY, Dimension, as_dimension, audit_rows, quoted, reduce
 from dualmech.model.equations import EquationSet, ModelError, Rows
-from dualmech.model.drawing import ChartScene, Drawing
+from dualmech.model.drawing import ChartScene, Drawing, drawing_errors
 from dualmech.model.facts import (FidelityRung, Probe, SteadyMotion, StiffScene,
                                   declaration_errors)
 from dualmech.model.inputs import Input, input_errors
@@ -542,6 +542,7 @@ class Problem:
         errors += declaration_errors(self)
         errors += input_errors(self)
         errors += phase_errors(self)
+        errors += drawing_errors(self)
         if errors:
             raise ProblemError(f"problem `{self.name or type(self).__name__}` has "
                                f"{len(errors)} mistake(s):\n  - " + "\n  - ".join(errors))
