@@ -55,19 +55,26 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
+from dualmech.model.equations import ModelError
 from dualmech.numeric.contacts import scene_span
 from dualmech.numeric.dae import BAUMGARTE_GAINS, DAE_SOLVED, STABILISATIONS
 from dualmech.numeric.daesolve import DAE_METHODS
 from dualmech.numeric.formulations import Formulation, formulations
-from dualmech.numeric.integrators import METHODS, Run
+from dualmech.numeric.integrators import DID_NOT_FINISH, METHODS, Budget, Run
 from dualmech.numeric.units import work_conjugate_unit
 
-__all__ = ["RunResult", "WorkPrecision", "work_precision", "TOLERANCES", "STEPS", "MEASURES"]
+__all__ = ["RunResult", "WorkPrecision", "work_precision", "TOLERANCES", "STEPS", "MEASURES",
+           "BUDGET", "QUICK_BUDGET"]
 
 TOLERANCES = tuple(10.0 ** -k for k in range(3, 11))
 #: Steps per span of the midpoint rule's sweep.
 STEPS = (32, 64, 128, 256, 512, 1024, 2048)
 REFERENCE_RTOL, CHECK_RTOL = 1e-13, 1e-12
+#: The most one point may spend by default (the reference run: ten times as much); a run
+#: past it is a *did not finish* point.  The quick sweep of ``dualmech chart`` uses
+#: :data:`QUICK_BUDGET`.
+BUDGET = Budget(seconds=20.0, evaluations=2_000_000)
+QUICK_BUDGET = Budget(seconds=2.0, evaluations=200_000)
 #: ``(field, axis label)`` of the measures, one chart panel each.
 MEASURES = (("final_error", "state error at the end\n[relative to range]"),
             ("path_error", "state error along the path\n[relative to range]"),
@@ -99,6 +106,7 @@ class RunResult:
     backend: str = ""
     repeats: int = 1
     cpu_spread: float = math.nan
+    did_not_finish: bool = False
 
     @property
     def curve(self) -> tuple[str, str]:
@@ -248,13 +256,20 @@ def _measure(f: Formulation, run: Run, ref: dict, te: np.ndarray) -> dict:
     return out
 
 
-def _reference(forms, span, te) -> tuple[dict, float]:
+def _scaled(budget: Budget, factor: float) -> Budget:
+    return Budget(budget.seconds and budget.seconds * factor,
+                  budget.evaluations and int(budget.evaluations * factor))
+
+
+def _reference(forms, span, te, budget: Budget | None = None) -> tuple[dict, float]:
     base = forms[0]
     n = base.n
-    run = base.run("DOP853", span, te, rtol=REFERENCE_RTOL)
-    check = base.run("DOP853", span, te, rtol=CHECK_RTOL)
+    run = base.run("DOP853", span, te, rtol=REFERENCE_RTOL, budget=budget)
+    check = base.run("DOP853", span, te, rtol=CHECK_RTOL, budget=budget) if run.success \
+        else run
     if not (run.success and check.success):
-        raise RuntimeError(f"the reference run failed: {run.message or check.message}")
+        raise RuntimeError(f"the reference run ({base.name}, DOP853 at rtol "
+                           f"{REFERENCE_RTOL:g}) failed: {run.message or check.message}")
     error = float((np.abs(run.y - check.y) / base.scales[:, None]).max())
     states = {f.name: f.from_reference(te, run.y[:n], run.y[n:]) for f in forms}
     reactions = {}
@@ -290,20 +305,33 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
                    params: Mapping | None = None, y0=None, progress: bool = True,
                    stabilisations: Sequence[str] = STABILISATIONS + DAE_SOLVED,
                    baumgarte_gains: Sequence[float] = BAUMGARTE_GAINS,
-                   repeats: int = 5) -> WorkPrecision:
+                   repeats: int = 5, budget: Budget | None = BUDGET) -> WorkPrecision:
     """The sweep of the module docstring over ``duration`` seconds (cut to fit the scene);
     ``models``, ``stabilisations`` and ``baumgarte_gains`` narrow the formulations;
-    ``repeats`` runs per point give its CPU time (their median)."""
+    ``repeats`` runs per point give its CPU time (their median; fewer once a point's runs
+    have spent ``budget.seconds``).  A run past ``budget`` (:class:`~dualmech.numeric.
+    integrators.Budget`) is a *did not finish* point (``did_not_finish``); the reference run
+    gets ten times the budget."""
     if repeats < 1:
         raise ValueError(f"`repeats` must be at least 1, got {repeats}.")
+    budget = budget or Budget()
     from tqdm import tqdm
+    asked = None if models is None else tuple(models) + (problem.reference,)
+    forms, skipped = formulations(problem, params, y0, models=asked,
+                                  stabilisations=stabilisations,
+                                  baumgarte_gains=baumgarte_gains)
+    if not forms or forms[0].model.name != problem.reference:
+        why = skipped.get(problem.reference, "it has no formulation").rstrip(".")
+        raise ModelError(f"not applicable: the reference model `{problem.reference}` of "
+                         f"`{problem.name}`, which gives the chart's reference motion, cannot "
+                         f"be integrated as an ODE: {why}.")
     scene = scene_span(problem, duration, y0, params)
     span = (scene.t0, scene.t_end)
     te = np.linspace(span[0], span[1], samples)
-    forms, skipped = formulations(problem, params, y0, models=models,
-                                  stabilisations=stabilisations,
-                                  baumgarte_gains=baumgarte_gains)
-    ref, ref_error = _reference(forms, span, te)
+    ref, ref_error = _reference(forms, span, te, _scaled(budget, 10))
+    if models is not None:  # the reference model gives the reference, charted if asked
+        forms = [f for f in forms if f.model.name in models]
+        skipped = {k: v for k, v in skipped.items() if k in models}
     units = {work_conjugate_unit(problem.reaction_info()[u.name].dimension)
              for f in forms if f.constrained for u in f.constrained.constraints.multipliers
              if u.name in problem.reaction_info()}
@@ -320,19 +348,25 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
     bar = tqdm(jobs, desc=f"{problem.name}: work-precision", unit="run", file=sys.stderr,
                leave=False, disable=not progress)
     for f, m, tol in bar:
-        try:
-            run = f.run(m, span, te, rtol=tol, step=tol)
-        except Exception as exc:  # noqa: BLE001 - a failed run is a point of the diagram
-            wp.runs.append(RunResult(f.name, f.kind, m, tol, math.nan, 0, 0, 0, False,
-                                     f"{type(exc).__name__}: {exc}"))
-            continue
-        cpus = [run.cpu]
-        for _ in range(repeats - 1 if run.success else 0):
-            cpus.append(f.run(m, span, te, rtol=tol, step=tol).cpu)
-        wp.runs.append(RunResult(f.name, f.kind, m, tol, float(np.median(cpus)), run.calls,
-                                 run.evaluations, run.steps, run.success, str(run.message),
-                                 **_measure(f, run, ref, te), backend=f.backend,
-                                 repeats=len(cpus),
-                                 cpu_spread=float(max(cpus) / max(min(cpus), 1e-9))))
+        wp.runs.append(_point(f, m, tol, span, te, ref, repeats, budget))
     _identical(wp.runs)
     return wp
+
+
+def _point(f: Formulation, m: str, tol: float, span, te, ref, repeats: int,
+           budget: Budget) -> RunResult:
+    """One point: the run, its repeats (while they fit in the budget's seconds), measures."""
+    try:
+        run = f.run(m, span, te, rtol=tol, step=tol, budget=budget)
+    except Exception as exc:  # noqa: BLE001 - a failed run is a point of the diagram
+        return RunResult(f.name, f.kind, m, tol, math.nan, 0, 0, 0, False,
+                         f"{type(exc).__name__}: {exc}", backend=f.backend)
+    cpus = [run.cpu]
+    while run.success and len(cpus) < repeats and \
+            (budget.seconds is None or sum(cpus) + cpus[0] <= budget.seconds):
+        cpus.append(f.run(m, span, te, rtol=tol, step=tol, budget=budget).cpu)
+    return RunResult(f.name, f.kind, m, tol, float(np.median(cpus)), run.calls,
+                     run.evaluations, run.steps, run.success, str(run.message),
+                     **_measure(f, run, ref, te), backend=f.backend, repeats=len(cpus),
+                     cpu_spread=float(max(cpus) / max(min(cpus), 1e-9)),
+                     did_not_finish=str(run.message).startswith(DID_NOT_FINISH))
