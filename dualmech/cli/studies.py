@@ -65,7 +65,7 @@ def register(subparsers) -> None:
                         "with --quick 1)")
     p.add_argument("--budget", metavar="S", type=positive_number, default=None,
                    help="CPU seconds one point may spend before it is a 'did not finish' "
-                        "point (default: 20, with --quick 2)")
+                        "point (default: 20, with --quick 1)")
     p.add_argument("--jobs", metavar="J", type=whole_number(1, 64), default=None,
                    help="problems charted at once, one process each (default: the cores "
                         "this process may use)")

@@ -9,17 +9,22 @@ make ``g'`` drift linearly and ``g`` quadratically in time.  Two cures:
 
 * **Baumgarte**: the constraint rows become ``g'' + 2 alpha g' + beta^2 g = 0`` -- with
   ``alpha = beta`` a critically damped error, ``(1 + beta t) e^{-beta t}``;
-* **projection**: after each output interval the state is put back on the manifold, the
-  configuration by Gauss--Newton steps ``dq = -M^{-1} G^T (G M^{-1} G^T)^{-1} g`` and the
-  rates by ``dq' = -M^{-1} G^T (G M^{-1} G^T)^{-1} G q'`` (both in the kinetic-energy metric:
-  the least change of the motion that satisfies the constraints).
+* **projection**: after every accepted step (:mod:`~dualmech.numeric.stepping`) the state
+  is put back on the manifold, the configuration by Gauss--Newton steps
+  ``dq = -W^{-1} G^T (G W^{-1} G^T)^{-1} g`` and the rates by
+  ``dq' = -W^{-1} G^T (G W^{-1} G^T)^{-1} G q'``, in the metric ``W = M + s G^T G``: on the
+  constraint's level sets it measures the kinetic energy exactly as ``M`` does (the least
+  change of the motion that satisfies the constraints), and it stays regular where parts
+  are massless and ``M`` alone is singular (:meth:`ConstrainedModel.project`, with a
+  rank-revealing test, :func:`metric_defect`).
 
 The position-level constraints ``g`` are not stored in the equations; :func:`constraints_of`
 recovers them from the acceleration rows (the coefficients of ``q''`` are ``G = dg/dq``; the
 rest must be ``q'^T (dG/dq) q'``, checked exactly) by integrating ``G`` coordinate by
 coordinate, and checks ``dg/dq = G`` exactly.  A direct model in the same maximal
-coordinates (the inertial Newton--Euler form of :mod:`dualmech.problems.pendulum_particle`, which
-imposes the rod length only through its coordinate map) is made square by the same rows.
+coordinates that imposes the constraints only through its coordinate map (fewer equations
+than unknowns) is made square by the same rows, borrowed from the multiplier model
+(:func:`~dualmech.numeric.formulations.formulations`).
 
 Example
 -------
