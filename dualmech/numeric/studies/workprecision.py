@@ -134,6 +134,8 @@ class WorkPrecision:
     skipped: dict = field(default_factory=dict)
     #: the parameter values and initial conditions of the runs, as a line of text
     scene: str = ""
+    #: the most one point could spend (:class:`~dualmech.numeric.integrators.Budget`, as text)
+    budget: str = ""
 
     def curves(self) -> dict:
         """``{(formulation, method): [RunResult, ...]}`` in sweep order."""
@@ -145,7 +147,7 @@ class WorkPrecision:
     def to_dict(self) -> dict:
         head = {k: getattr(self, k) for k in ("problem", "title", "span", "span_note",
                                               "samples", "reference_error", "drift_unit",
-                                              "skipped", "scene")}
+                                              "skipped", "scene", "budget")}
         head["span"] = list(self.span)
         head["runs"] = [{k: _json(v) for k, v in asdict(r).items()} for r in self.runs]
         return head
@@ -376,7 +378,7 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
              if u.name in problem.reaction_info()}
     wp = WorkPrecision(problem.name, problem.title, span, scene.reason, samples, ref_error,
                        ", ".join(sorted(units)) or "-", skipped=skipped,
-                       scene=scene_text(problem, params, y0))
+                       scene=scene_text(problem, params, y0), budget=str(budget))
     jobs = []
     for f in forms:
         for m in f.methods(methods):

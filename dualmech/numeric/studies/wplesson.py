@@ -82,7 +82,8 @@ def _footnotes(wp, best: dict) -> list[str]:
         form, runs = best[m]
         dnf = [r for r in runs if r.did_not_finish]
         if dnf:
-            notes.append(f"{m} ({form}): did not finish within the budget at rtol "
+            notes.append(f"{m} ({form}): did not finish within the budget"
+                         + (f" ({wp.budget})" if wp.budget else "") + " at rtol "
                          + ", ".join(f"{r.tolerance:g}" for r in dnf))
     return notes
 
@@ -93,7 +94,7 @@ def lesson_chart(wp, stem: Path) -> list[Path]:
     plt = pyplot()
     best = best_curves(wp)
     notes = _footnotes(wp, best)
-    fig, ax = plt.subplots(figsize=(9.0, 6.2 + 0.16 * len(notes)))
+    fig, ax = plt.subplots(figsize=(10.0, 6.4 + 0.16 * len(notes)))
     ends = []
     for method, (form, runs) in best.items():
         ok = [r for r in runs if r.success and np.isfinite(r.path_error)]
@@ -107,10 +108,10 @@ def lesson_chart(wp, stem: Path) -> list[Path]:
             ax.annotate(tag, (x, y), xytext=(0, -10), textcoords="offset points",
                         fontsize=6.5, color=colour, ha="center")
         end = int(np.argmin(ys))
-        ends.append((xs[end], ys[end], f"{method}\n{form}", colour))
+        ends.append((xs[end], ys[end], f"{method}\n" + form.replace(" (", "\n("), colour))
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.margins(x=0.3, y=0.08)
+    ax.margins(x=0.08, y=0.08)
     _label_ends(ax, ends)
     ax.axhline(wp.reference_error, color="0.5", linewidth=0.8, linestyle=":")
     ax.annotate("reference's own error", (1, wp.reference_error), xycoords=("axes fraction",
@@ -124,39 +125,44 @@ def lesson_chart(wp, stem: Path) -> list[Path]:
     head = _wrap(f"The scene: t in [{wp.span[0]:g}, {wp.span[1]:.3g}] s; {wp.scene}", 125) \
         + "\nEach integrator on its best formulation; each point marked with its tolerance " \
         "(rtol)."
-    fig.text(0.5, 0.99, title, ha="center", va="top", fontsize="large")
-    fig.text(0.5, 0.99 - 0.035 * (title.count("\n") + 1), head, ha="center", va="top",
+    fig.text(0.45, 0.99, title, ha="center", va="top", fontsize="large")
+    fig.text(0.45, 0.99 - 0.035 * (title.count("\n") + 1), head, ha="center", va="top",
              fontsize=7.5, color="0.2")
     text = "\n".join(_wrap(n, 130) for n in notes)
     if text:
         fig.text(0.02, 0.01, text, fontsize=7, va="bottom", color="0.2")
     lines = title.count("\n") + 1
-    fig.subplots_adjust(left=0.12, right=0.97,
+    fig.subplots_adjust(left=0.11, right=0.76,
                         top=0.97 - 0.035 * lines - 0.022 * (head.count("\n") + 1),
                         bottom=0.1 + (0.022 * (text.count("\n") + 1) if text else 0))
     from dualmech.numeric.charts import save
     return save(fig, stem, tight=False)
 
 
-def _label_ends(ax, ends: list, gap: float = 30.0) -> None:
-    """Label each line at its most accurate point, to the right, nudged apart vertically so
-    that no two labels overlap (``gap`` pixels between their anchors)."""
+def _label_ends(ax, ends: list, fontsize: float = 8.0) -> None:
+    """Label each line at its most accurate point: the labels in a column right of the
+    panel, at the height of their point, nudged apart so that none overlaps another, each
+    joined to its point by a thin line of its colour."""
     ax.autoscale_view()
+    box = ax.get_window_extent()
+    line = 1.25 * fontsize * ax.figure.dpi / 72.0          # pixels per line of text
     pixels = [ax.transData.transform((x, y)) for x, y, _, _ in ends]
     order = sorted(range(len(ends)), key=lambda i: pixels[i][1])
+    half = [0.5 * line * (ends[i][2].count("\n") + 1) + 2 for i in order]
     placed: list = []
-    for i in order:
+    for k, i in enumerate(order):
         y = pixels[i][1]
-        if placed and y < placed[-1] + gap:
-            y = placed[-1] + gap
-        placed.append(y)
+        placed.append(max(y, placed[-1] + half[k - 1] + half[k]) if placed else y)
+    overflow = (placed[-1] + half[-1] - box.y1) if placed else 0.0
+    if overflow > 0:  # move the column down to stay inside the panel, gaps kept
+        placed = [y - overflow for y in placed]
+    for i, y in zip(order, placed):
         x0, y0, text, colour = ends[i]
-        shift = y - pixels[i][1]
-        ax.annotate(text, (x0, y0), xytext=(10, shift), textcoords="offset pixels",
-                    fontsize=8.5, color=colour, fontweight="bold", va="center",
-                    bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.8, "pad": 0.5},
-                    arrowprops={"arrowstyle": "-", "color": colour, "linewidth": 0.6}
-                    if shift > 4 else None)
+        ax.annotate(text, (x0, y0), xytext=(1.02, (y - box.y0) / box.height),
+                    textcoords="axes fraction", fontsize=fontsize, color=colour,
+                    fontweight="bold", va="center", ha="left", annotation_clip=False,
+                    arrowprops={"arrowstyle": "-", "color": colour, "linewidth": 0.5,
+                                "alpha": 0.6, "shrinkA": 0, "shrinkB": 3})
 
 
 def _wrap(text: str, width: int) -> str:
