@@ -244,12 +244,13 @@ class ConstrainedModel:
         regular wherever the motion is determined (``M`` positive definite on the tangent
         space ``G dq = 0``) even where parts are massless and ``M`` itself is singular.  The
         test is rank-revealing (:func:`metric_defect`), never a Cholesky accident; rows that
-        are not a metric (a direct model's, not symmetric) give the Euclidean one.
+        are not a metric (a direct model's: not symmetric, or with a negative eigenvalue)
+        give the Euclidean one.
         """
         A, _ = self.numeric.system(time, q, qd)
         G = self.gradient(q)
         M = A[: self.n, : self.n]
-        if not np.allclose(M, M.T, rtol=1e-12, atol=1e-14 * np.abs(M).max()):
+        if not _is_metric(M):
             M = np.eye(self.n)
         _check_rank(G, "the constraint gradients G = dg/dq", self, time, q)
         W = M + np.abs(M).max() / max(np.abs(G).max(), 1e-300) ** 2 * (G.T @ G)
@@ -260,9 +261,9 @@ class ConstrainedModel:
                 f"model `{self.eqs.name}` at t={float(time):.6g}: the motion along "
                 f"{_direction(bad[0], self.eqs.coordinates)} carries no kinetic energy and no "
                 f"constraint holds it (massless: {', '.join(names)}; smallest eigenvalue "
-                f"{bad[2]:.3g} of the metric, relative to its largest); nothing fixes "
-                "those coordinates' accelerations -- give the massless part's static "
-                "balance as a constraint, or a mass.")
+                f"{bad[2]:.3g} of the metric, relative to its largest), so projection has "
+                "no metric for it -- eliminate the coordinate through its static balance, "
+                "hold it by a constraint, or give the part a mass.")
         return W, G
 
     def project(self, time, y: np.ndarray, tol: float = 1e-13, iterations: int = 8) -> np.ndarray:
@@ -316,6 +317,16 @@ def metric_defect(W: np.ndarray) -> tuple[np.ndarray, list[int], float] | None:
     v = vectors[:, 0]
     where = [int(j) for j in np.flatnonzero(np.abs(v) > 0.1 * np.abs(v).max())]
     return v, where, float(values[0] / top) if top > 0 else 0.0
+
+
+def _is_metric(M: np.ndarray) -> bool:
+    """Whether ``M`` is symmetric positive semi-definite (eigenvalues down to
+    ``-RANK_RTOL`` times the largest): a kinetic-energy metric, possibly with massless parts."""
+    top = float(np.abs(M).max())
+    if top == 0 or not np.allclose(M, M.T, rtol=1e-12, atol=1e-14 * top):
+        return False
+    values = np.linalg.eigvalsh(0.5 * (M + M.T))
+    return bool(values[0] >= -RANK_RTOL * np.abs(values).max())
 
 
 def _direction(v: np.ndarray, coordinates) -> str:
