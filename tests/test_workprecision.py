@@ -129,7 +129,9 @@ def test_ggl_error_follows_the_tolerance(wp):
 @pytest.mark.slow
 def test_data_and_charts_are_written(wp, tmp_path):
     paths = wp.write(tmp_path)
-    assert sorted(p.suffix for p in paths) == [".csv", ".json", ".png", ".svg"]
+    assert sorted(p.name for p in paths) == [
+        f"pendulum_particle_workprecision{end}" for end in
+        (".csv", ".json", ".png", ".svg", "_lesson.png", "_lesson.svg")]
     assert all(p.stat().st_size > 0 for p in paths)
     with open(tmp_path / "pendulum_particle_workprecision.csv") as fh:
         rows = list(csv.DictReader(fh))
@@ -137,6 +139,26 @@ def test_data_and_charts_are_written(wp, tmp_path):
     assert [float(r["path_error"]) for r in rows] == [r.path_error for r in wp.runs]
     data = json.loads((tmp_path / "pendulum_particle_workprecision.json").read_text())
     assert data["span"] == [0.0, 3.0] and len(data["runs"]) == len(wp.runs)
+    # the scene the figures state: the problem's defaults and the y0 given to the sweep
+    assert data["scene"] == ("m = 1 kg, l = 1 m, g = 9.81 m/s^2; from theta = 1 rad, "
+                             "theta' = 0 rad/s")
+
+
+@pytest.mark.slow
+def test_the_lesson_figure_draws_one_curve_per_integrator_at_its_best_formulation(wp):
+    from dualmech.numeric.studies.wplesson import best_curves
+    best = best_curves(wp)
+    assert set(best) == {"RK45", "DOP853", "midpoint", "IDA"}
+    for method, (form, runs) in best.items():
+        assert not runs[0].same_as            # a curve drawn once is chosen under its first name
+        rivals = [rs for (f, m), rs in wp.curves().items() if m == method and not rs[0].same_as]
+        # no rival with as many successes is cheaper at each of its errors on average
+        good = sum(r.success for r in runs)
+        for rs in rivals:
+            assert sum(r.success for r in rs) <= good
+            if sum(r.success for r in rs) == good:
+                assert np.mean([np.log10(r.cpu * r.path_error) for r in rs if r.success]) >= \
+                    np.mean([np.log10(r.cpu * r.path_error) for r in runs if r.success]) - 1e-12
 
 
 # -- the `chart` command (dualmech.cli.studies) ------------------------------------------

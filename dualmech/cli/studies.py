@@ -31,6 +31,8 @@ Example
 """
 from __future__ import annotations
 
+import contextlib
+import os
 import sys
 from pathlib import Path
 
@@ -58,8 +60,15 @@ def register(subparsers) -> None:
                    help="simulated seconds, cut to fit the scene (default: %(default)s)")
     p.add_argument("--quick", action="store_true",
                    help="three tolerances and two step counts instead of the full sweep")
-    p.add_argument("--repeats", metavar="K", type=whole_number(1, 50), default=5,
-                   help="runs per point; its CPU time is their median (default: %(default)s)")
+    p.add_argument("--repeats", metavar="K", type=whole_number(1, 50), default=None,
+                   help="runs per point; its CPU time is their median (default: 5, "
+                        "with --quick 1)")
+    p.add_argument("--budget", metavar="S", type=positive_number, default=None,
+                   help="CPU seconds one point may spend before it is a 'did not finish' "
+                        "point (default: 20, with --quick 1)")
+    p.add_argument("--jobs", metavar="J", type=whole_number(1, 64), default=None,
+                   help="problems charted at once, one process each (default: the cores "
+                        "this process may use)")
     p.set_defaults(func=guarded(_chart))
 
     p = subparsers.add_parser(
@@ -112,36 +121,69 @@ def _writable(out: Path) -> Path:
 
 def _chart(args) -> int:
     from dualmech.progress import progress
-    from dualmech.numeric.studies.workprecision import STEPS, TOLERANCES, work_precision
     if not args.all and not args.names:
         raise UsageError("name at least one problem, or use --all.")
     chosen = _names.selected(args.names, args.all)
     out = _writable(args.out)
-    tolerances = (1e-3, 1e-6, 1e-9) if args.quick else TOLERANCES
-    steps = (32, 256) if args.quick else STEPS
-    failed, done = [], []
-    for p in progress(chosen, "charting"):
-        try:
-            with about(p):
-                wp = work_precision(p, duration=args.duration, tolerances=tolerances,
-                                    steps=steps, repeats=args.repeats)
-            paths = wp.write(out)
-        except OSError:
-            raise
-        except Exception as exc:  # noqa: BLE001 - one problem's failure does not stop --all
-            failed.append((p.name, describe(exc, p)))
-            continue
-        if args.json:
-            done.append({**wp.to_dict(), "files": [str(x) for x in paths]})
-            continue
-        print(f"{p.name}: {len(wp.runs)} runs over t in [0, {wp.span[1]:.3g}] s"
-              + (f" ({wp.span_note})" if wp.span_note else "") + "; wrote "
-              + ", ".join(str(x) for x in paths))
+    jobs = min(args.jobs or len(os.sched_getaffinity(0)), len(chosen)) or 1
+    _CHART_JOB.clear()
+    _CHART_JOB.update(problems=chosen, args=args, out=out, bars=jobs == 1)
+    results = []
+    with contextlib.ExitStack() as stack:
+        if jobs == 1:
+            each = map(_chart_one, progress(range(len(chosen)), "charting"))
+        else:
+            import multiprocessing
+            pool = stack.enter_context(multiprocessing.get_context("fork").Pool(jobs))
+            each = pool.imap(_chart_one, range(len(chosen)))
+        for r in each:
+            results.append(r)
+            if jobs > 1:
+                print(f"charting: {len(results)}/{len(chosen)} ({r[0]})", file=sys.stderr,
+                      flush=True)
+            if r[1] is None and not args.json:
+                print(r[3], flush=True)
+    done = [r[2] for r in results if r[1] is None]
+    failed = [(r[0], r[1]) for r in results if r[1] is not None]
     if args.json:
         _print_json(done[0] if len(done) == 1 and not args.all and not failed else done)
     for name, failure in failed:
         print(f"dualmech chart: no chart for {name}: {failure.message}", file=sys.stderr)
     return worst([OK] + [failure.status for _, failure in failed])
+
+
+#: What the chart workers read (set before they fork): the problems, the arguments.
+_CHART_JOB: dict = {}
+
+
+def _chart_one(i: int) -> tuple:
+    """Chart problem ``i`` of :data:`_CHART_JOB`: ``(name, failure, json, text line)``."""
+    from dualmech.numeric.integrators import Budget
+    from dualmech.numeric.studies.workprecision import (BUDGET, QUICK_BUDGET, STEPS,
+                                                        TOLERANCES, work_precision)
+    p, args, out = _CHART_JOB["problems"][i], _CHART_JOB["args"], _CHART_JOB["out"]
+    tolerances = (1e-3, 1e-6, 1e-9) if args.quick else TOLERANCES
+    steps = (32, 256) if args.quick else STEPS
+    budget = QUICK_BUDGET if args.quick else BUDGET
+    if args.budget is not None:
+        budget = Budget(args.budget, budget.evaluations)
+    repeats = args.repeats or (1 if args.quick else 5)
+    try:
+        with about(p):
+            wp = work_precision(p, duration=args.duration, tolerances=tolerances,
+                                steps=steps, repeats=repeats, budget=budget,
+                                progress=_CHART_JOB["bars"])
+        paths = wp.write(out)
+    except OSError:
+        raise
+    except Exception as exc:  # noqa: BLE001 - one problem's failure does not stop --all
+        return p.name, describe(exc, p), None, ""
+    unfinished = sum(r.did_not_finish for r in wp.runs)
+    line = (f"{p.name}: {len(wp.runs)} runs over t in [0, {wp.span[1]:.3g}] s"
+            + (f" ({wp.span_note})" if wp.span_note else "")
+            + (f"; {unfinished} did not finish within {budget}" if unfinished else "")
+            + "; wrote " + ", ".join(str(x) for x in paths))
+    return p.name, None, {**wp.to_dict(), "files": [str(x) for x in paths]}, line
 
 
 def _atlas(args) -> int:

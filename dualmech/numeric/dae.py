@@ -9,17 +9,22 @@ make ``g'`` drift linearly and ``g`` quadratically in time.  Two cures:
 
 * **Baumgarte**: the constraint rows become ``g'' + 2 alpha g' + beta^2 g = 0`` -- with
   ``alpha = beta`` a critically damped error, ``(1 + beta t) e^{-beta t}``;
-* **projection**: after each output interval the state is put back on the manifold, the
-  configuration by Gauss--Newton steps ``dq = -M^{-1} G^T (G M^{-1} G^T)^{-1} g`` and the
-  rates by ``dq' = -M^{-1} G^T (G M^{-1} G^T)^{-1} G q'`` (both in the kinetic-energy metric:
-  the least change of the motion that satisfies the constraints).
+* **projection**: after every accepted step (:mod:`~dualmech.numeric.stepping`) the state
+  is put back on the manifold, the configuration by Gauss--Newton steps
+  ``dq = -W^{-1} G^T (G W^{-1} G^T)^{-1} g`` and the rates by
+  ``dq' = -W^{-1} G^T (G W^{-1} G^T)^{-1} G q'``, in the metric ``W = M + s G^T G``: on the
+  constraint's level sets it measures the kinetic energy exactly as ``M`` does (the least
+  change of the motion that satisfies the constraints), and it stays regular where parts
+  are massless and ``M`` alone is singular (:meth:`ConstrainedModel.project`, with a
+  rank-revealing test, :func:`metric_defect`).
 
 The position-level constraints ``g`` are not stored in the equations; :func:`constraints_of`
 recovers them from the acceleration rows (the coefficients of ``q''`` are ``G = dg/dq``; the
 rest must be ``q'^T (dG/dq) q'``, checked exactly) by integrating ``G`` coordinate by
 coordinate, and checks ``dg/dq = G`` exactly.  A direct model in the same maximal
-coordinates (the inertial Newton--Euler form of :mod:`dualmech.problems.pendulum_particle`, which
-imposes the rod length only through its coordinate map) is made square by the same rows.
+coordinates that imposes the constraints only through its coordinate map (fewer equations
+than unknowns) is made square by the same rows, borrowed from the multiplier model
+(:func:`~dualmech.numeric.formulations.formulations`).
 
 Example
 -------
@@ -43,7 +48,8 @@ from dualmech.numeric.energy import dynamic_rows, identically_zero
 from dualmech.numeric.model import NumericModel, StateFunction
 
 __all__ = ["Constraints", "ConstrainedModel", "constraints_of", "index1_equations",
-           "ALPHA", "BETA", "STABILISATIONS", "DAE_SOLVED", "BAUMGARTE_GAINS"]
+           "metric_defect", "RANK_RTOL", "ALPHA", "BETA", "STABILISATIONS", "DAE_SOLVED",
+           "BAUMGARTE_GAINS"]
 
 #: Baumgarte's parameters (symbols of the index-1 equations; values given at run time).
 ALPHA = sp.Symbol("baumgarte_alpha", nonnegative=True)
@@ -230,37 +236,111 @@ class ConstrainedModel:
         return self.numeric.solve(time, q, qd)[self.n:]
 
     def _metric(self, time, q, qd) -> tuple[np.ndarray, np.ndarray]:
-        """The kinetic-energy metric ``M`` (identity if the first rows give none) and ``G``."""
+        """The projection's metric ``W`` and ``G`` at a configuration (see :meth:`project`).
+
+        ``W = M + s G^T G`` with ``M`` the kinetic-energy metric of the first rows and
+        ``s = |M| / |G|^2``: on the set ``G dq = c`` the term ``s |G dq|^2`` is constant, so
+        ``W`` gives the least change in kinetic energy exactly as ``M`` would, and ``W`` is
+        regular wherever the motion is determined (``M`` positive definite on the tangent
+        space ``G dq = 0``) even where parts are massless and ``M`` itself is singular.  The
+        test is rank-revealing (:func:`metric_defect`), never a Cholesky accident; rows that
+        are not a metric (a direct model's: not symmetric, or with a negative eigenvalue)
+        give the Euclidean one.
+        """
         A, _ = self.numeric.system(time, q, qd)
         G = self.gradient(q)
         M = A[: self.n, : self.n]
-        try:
-            np.linalg.cholesky(M)
-            if np.allclose(M, M.T, rtol=1e-12, atol=0.0):
-                return M, G
-        except np.linalg.LinAlgError:
-            pass
-        return np.eye(self.n), G
+        if not _is_metric(M):
+            M = np.eye(self.n)
+        _check_rank(G, "the constraint gradients G = dg/dq", self, time, q)
+        W = M + np.abs(M).max() / max(np.abs(G).max(), 1e-300) ** 2 * (G.T @ G)
+        bad = metric_defect(W)
+        if bad is not None:
+            names = [str(self.eqs.coordinates[j]).replace("(t)", "") for j in bad[1]]
+            raise ModelError(
+                f"model `{self.eqs.name}` at t={float(time):.6g}: the motion along "
+                f"{_direction(bad[0], self.eqs.coordinates)} carries no kinetic energy and no "
+                f"constraint holds it (massless: {', '.join(names)}; smallest eigenvalue "
+                f"{bad[2]:.3g} of the metric, relative to its largest), so projection has "
+                "no metric for it -- eliminate the coordinate through its static balance, "
+                "hold it by a constraint, or give the part a mass.")
+        return W, G
 
     def project(self, time, y: np.ndarray, tol: float = 1e-13, iterations: int = 8) -> np.ndarray:
         """``y = [q; q']`` put back on the manifold (configuration, then rates; see the module
-        docstring).  Raises :class:`ModelError` if Gauss--Newton does not converge."""
+        docstring), in the metric of :meth:`_metric`.  Raises :class:`ModelError` if
+        Gauss--Newton does not converge, the constraints are dependent, or a massless
+        coordinate is not held by them (naming it)."""
         n = self.n
         q, qd = y[:n].copy(), y[n:].copy()
         for _ in range(iterations):
             g, _ = self.residuals(q, qd)
-            M, G = self._metric(time, q, qd)
             scale = max(1.0, float(np.abs(q).max()))
             if np.abs(g).max() <= tol * scale:
                 break
-            MiGt = np.linalg.solve(M, G.T)
-            q -= MiGt @ np.linalg.solve(G @ MiGt, g)
+            W, G = self._metric(time, q, qd)
+            WiGt = np.linalg.solve(W, G.T)
+            q -= WiGt @ np.linalg.solve(G @ WiGt, g)
         else:
             raise ModelError(f"projection onto the constraints of `{self.eqs.name}` did not "
                              f"converge at t={float(time):.6g} (residual {np.abs(g).max():.3g})"
                              "; the state has left the manifold's neighbourhood -- use a "
                              "tighter tolerance or project more often.")
-        M, G = self._metric(time, q, qd)
-        MiGt = np.linalg.solve(M, G.T)
-        qd -= MiGt @ np.linalg.solve(G @ MiGt, G @ qd)
+        W, G = self._metric(time, q, qd)
+        WiGt = np.linalg.solve(W, G.T)
+        qd -= WiGt @ np.linalg.solve(G @ WiGt, G @ qd)
         return np.concatenate([q, qd])
+
+
+#: Relative threshold of the rank tests: a singular value (eigenvalue) below ``RANK_RTOL``
+#: times the largest counts as zero.  Round-off leaves a massless direction at about
+#: ``1e-16`` relative; the catalogue's lightest real inertia is above ``1e-4``.
+RANK_RTOL = 1e-10
+
+
+def metric_defect(W: np.ndarray) -> tuple[np.ndarray, list[int], float] | None:
+    """``None`` if the symmetric ``W`` is positive definite by the rank test (eigenvalues
+    above :data:`RANK_RTOL` times the largest), else ``(direction, coordinates, ratio)``:
+    the eigenvector of the smallest eigenvalue, the indices of its large components and
+    that eigenvalue relative to the largest.
+
+    >>> metric_defect(np.diag([2.0, 1.0])) is None
+    True
+    >>> d, where, ratio = metric_defect(np.diag([2.0, 1e-17, 1.0]))
+    >>> where, ratio < RANK_RTOL
+    ([1], True)
+    """
+    values, vectors = np.linalg.eigh(0.5 * (W + W.T))
+    top = float(np.abs(values).max())
+    if top > 0 and values[0] > RANK_RTOL * top:
+        return None
+    v = vectors[:, 0]
+    where = [int(j) for j in np.flatnonzero(np.abs(v) > 0.1 * np.abs(v).max())]
+    return v, where, float(values[0] / top) if top > 0 else 0.0
+
+
+def _is_metric(M: np.ndarray) -> bool:
+    """Whether ``M`` is symmetric positive semi-definite (eigenvalues down to
+    ``-RANK_RTOL`` times the largest): a kinetic-energy metric, possibly with massless parts."""
+    top = float(np.abs(M).max())
+    if top == 0 or not np.allclose(M, M.T, rtol=1e-12, atol=1e-14 * top):
+        return False
+    values = np.linalg.eigvalsh(0.5 * (M + M.T))
+    return bool(values[0] >= -RANK_RTOL * np.abs(values).max())
+
+
+def _direction(v: np.ndarray, coordinates) -> str:
+    big = np.abs(v) > 0.1 * np.abs(v).max()
+    v = v / v[np.argmax(np.abs(v))]
+    return "(" + ", ".join(f"{str(q).replace('(t)', '')}: {x:+.3g}"
+                           for q, x, b in zip(coordinates, v, big) if b) + ")"
+
+
+def _check_rank(G: np.ndarray, what: str, cm: "ConstrainedModel", time, q) -> None:
+    """Raise :class:`ModelError` when ``G``'s rows are dependent (SVD, :data:`RANK_RTOL`)."""
+    s = np.linalg.svd(G, compute_uv=False)
+    if s.size and s[-1] <= RANK_RTOL * max(s[0], 1e-300):
+        raise ModelError(f"model `{cm.eqs.name}` at t={float(time):.6g}, q={np.round(q, 6)}: "
+                         f"{what} are dependent (smallest singular value {s[-1]:.3g}, relative "
+                         f"{s[-1] / max(s[0], 1e-300):.3g}): a singular configuration of the "
+                         "loop, where projection is not defined.")

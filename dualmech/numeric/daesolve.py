@@ -46,7 +46,7 @@ from typing import Sequence
 import numpy as np
 
 from dualmech.model.equations import ModelError
-from dualmech.numeric.integrators import Run
+from dualmech.numeric.integrators import Budget, BudgetExceeded, Run, _Meter
 
 __all__ = ["DAE_FORMS", "DAE_METHODS", "IDASolver"]
 
@@ -76,11 +76,13 @@ class IDASolver:
         self.constrained = np.array([any(row[j] != 0 for row in constrained.constraints.gradients)
                                      for j in range(self.n)])
         self.calls = 0
+        self._meter = _Meter(None)
 
     def residual(self, t: float, y: np.ndarray, yp: np.ndarray, res: np.ndarray) -> None:
         """IDA's residual ``F(t, y, y') = 0`` written into ``res``."""
         n, k = self.n, self.k
         self.calls += 1
+        self._meter.charge(t)
         q, v, lam = y[:n], y[n:2 * n], y[2 * n:2 * n + k]
         A, b = self.cm.numeric.system(t, q, v)
         res[:n] = yp[:n] - v
@@ -102,13 +104,17 @@ class IDASolver:
         return y, yp
 
     def run(self, t_span: Sequence[float], y0, t_eval, *, rtol: float, atol,
-            max_steps: int = 500_000) -> Run:
-        """Integrate from ``y0 = [q, v]``; the :class:`Run` holds ``[q; v]`` at ``t_eval``."""
+            max_steps: int = 500_000, budget: Budget | None = None) -> Run:
+        """Integrate from ``y0 = [q, v]``; the :class:`Run` holds ``[q; v]`` at ``t_eval``.
+
+        Past ``budget`` (CPU seconds and residual calls,
+        :class:`~dualmech.numeric.integrators.Budget`) the run ends as *did not finish*."""
         import sksundae as sun
         n = self.n
         t_eval = np.asarray(t_eval, dtype=float)
         start = _time.process_time()
         self.calls = 0
+        self._meter = _Meter(budget)
         tol = np.full(self.size, _EXCLUDED)
         atol = np.broadcast_to(np.asarray(atol, dtype=float), (2 * n,))
         tol[:2 * n] = atol
@@ -139,6 +145,8 @@ class IDASolver:
                 if steps >= max_steps:
                     ok, message = False, f"more than {max_steps} steps"
                     break
+        except BudgetExceeded as exc:
+            ok, message = False, str(exc)
         except (ModelError, RuntimeError, ValueError, ZeroDivisionError, FloatingPointError,
                 np.linalg.LinAlgError) as exc:
             ok, message = False, f"IDA failed: {exc}"

@@ -37,13 +37,15 @@ from dualmech.model.equations import EquationSet, ModelError
 from dualmech.model.kinematics import t
 from dualmech.numeric.dae import STABILISATIONS, ConstrainedModel, constraints_of
 from dualmech.numeric.daesolve import DAE_FORMS, IDASolver
-from dualmech.numeric.energy import EnergyFunction, conservative_reason, dynamic_rows
-from dualmech.numeric.integrators import Run, integrate
+from dualmech.numeric.energy import (EnergyFunction, conservative_reason, dynamic_rows,
+                                     identically_zero)
+from dualmech.numeric.integrators import Budget, Run, integrate
 from dualmech.numeric.model import NumericModel, StateFunction
 from dualmech.numeric.simulation import default_initial_state, problem_parameters
 from dualmech.numeric.stepping import projected_run
 
-__all__ = ["Formulation", "formulations", "state_scales", "outside_parameters"]
+__all__ = ["Formulation", "formulations", "state_scales", "outside_parameters",
+           "static_coordinates"]
 
 _LABEL = {"none": "DAE, index 1", "baumgarte": "DAE, Baumgarte", "projection": "DAE, projection",
           "index3": "DAE, index 3", "ggl": "DAE, GGL index 2"}
@@ -131,22 +133,26 @@ class Formulation:
         return [m for m in candidates if m != "IDA"]
 
     def run(self, method: str, t_span, t_eval, rtol: float = 1e-6, step: float | None = None,
-            events: Sequence = ()) -> Run:
+            events: Sequence = (), budget: Budget | None = None) -> Run:
         """Integrate from ``y0`` (``atol = rtol * scales``; projection after every accepted
-        step for ``"projection"``; IDA for the index-3 and GGL forms)."""
+        step for ``"projection"``; IDA for the index-3 and GGL forms); past ``budget`` the
+        run ends as *did not finish* (:class:`~dualmech.numeric.integrators.Budget`)."""
         atol = rtol * self.scales
         if self.dae_solver is not None or method == "IDA":
             if self.dae_solver is None or events:
                 raise ValueError(f"`{self.name}` is not solved by IDA (no events either); "
                                  f"its methods: {', '.join(self.methods(['RK45', 'DOP853']))}.")
-            return self.dae_solver.run(t_span, self.y0, t_eval, rtol=rtol, atol=atol)
+            return self.dae_solver.run(t_span, self.y0, t_eval, rtol=rtol, atol=atol,
+                                       budget=budget)
         if self.stabilisation == "projection":
             if events:
                 raise ValueError("projection after every step takes no events.")
             return projected_run(self.rhs, t_span, self.y0, method, t_eval, rtol=rtol,
-                                 atol=atol, projector=self.constrained.project)
+                                 atol=atol, projector=self.constrained.project,
+                                 budget=budget)
         return integrate(self.rhs, t_span, self.y0, method, t_eval=t_eval, rtol=rtol,
-                         atol=atol, step=step, events=events, hamiltonian=self.energy)
+                         atol=atol, step=step, events=events, hamiltonian=self.energy,
+                         budget=budget)
 
 
 def state_scales(problem, coordinates) -> np.ndarray:
@@ -261,6 +267,7 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations, gains) -> list[Form
     constraint_rows = len(eqs.equations) - len(dynamic_rows(eqs))
     square = len(eqs.equations) == eqs.n + len(eqs.unknowns)
     if square and not constraint_rows:
+        _refuse_static(eqs)
         nm = NumericModel(eqs, values)
         own = bool(eqs.unknowns)
         in_ref = tuple(eqs.coordinates) == tuple(ref.coordinates)
@@ -275,6 +282,7 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations, gains) -> list[Form
         constraints = _borrowed_constraints(problem, eqs)
     else:
         raise ModelError(f"model `{eqs.name}` has more equations than unknowns.")
+    _refuse_static(eqs, constraints)
     out = []
     for stab in stabilisations:
         for gain in (gains or (None,)) if stab == "baumgarte" else (None,):
@@ -288,6 +296,42 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations, gains) -> list[Form
                                    IDASolver(cm, stab) if stab in DAE_FORMS else None,
                                    cm.numeric))
     return out
+
+
+def static_coordinates(eqs: EquationSet, constraints=None) -> list:
+    """The coordinates whose acceleration no equation holds (nor a constraint): a massless
+    part's, whose rows are static balances -- the model is then a DAE in them, not an ODE.
+
+    Decided exactly (a column of ``A [q''; unknowns] = b`` identically zero).
+
+    >>> from dualmech.problems import get
+    >>> static_coordinates(get("copying_machine").model("lagrange"))
+    [theta(t)]
+    """
+    A, _ = eqs.plain_matrix()
+    held = set()
+    if constraints is not None:
+        for row in constraints.gradients:
+            held |= {j for j, d in enumerate(row) if d != 0}
+    out = []
+    for j, q in enumerate(eqs.coordinates):
+        column = [A[i, j] for i in range(A.rows)]
+        symbols = sorted(set().union(*[e.free_symbols for e in column]), key=lambda x: x.name)
+        if j not in held and identically_zero(column, symbols):
+            out.append(q)
+    return out
+
+
+def _refuse_static(eqs: EquationSet, constraints=None) -> None:
+    static = static_coordinates(eqs, constraints)
+    if static:
+        names = ", ".join(str(q).replace("(t)", "") for q in static)
+        raise ModelError(
+            f"model `{eqs.name}` is a differential-algebraic system, not an ODE: no equation "
+            f"holds the acceleration of {names} (a massless part: its rows are static "
+            "balances), so its square system is singular at every state.  Not applicable "
+            "to ODE integrators; eliminate the static coordinate(s) through their static "
+            "rows in a model of its own (fewer coordinates), or give the part a mass.")
 
 
 def _borrowed_constraints(problem, eqs: EquationSet):

@@ -11,7 +11,10 @@ long runs instead of drifting.
 
 Every :class:`Run` says what it cost: CPU seconds, right-hand-side calls, states evaluated
 (a vectorised call evaluates many -- the implicit methods' finite-difference Jacobians),
-accepted steps, Jacobians and LU factorisations.  With ``projector`` (a callable
+accepted steps, Jacobians and LU factorisations.  A :class:`Budget` (CPU seconds and states
+evaluated) ends a run that would spend more as a *did not finish* run
+(:data:`DID_NOT_FINISH` opens its message; ``success = False``, ``t_end`` where it got to)
+instead of letting it stall.  With ``projector`` (a callable
 ``(t, y) -> y``) the run is cut at every sample time and the state projected there (see
 :class:`~dualmech.numeric.dae.ConstrainedModel`).
 
@@ -34,7 +37,7 @@ from scipy.integrate import solve_ivp
 
 from dualmech.numeric.model import SingularityError
 
-__all__ = ["Run", "integrate", "METHODS", "SCIPY_METHODS", "EXPLICIT", "IMPLICIT",
+__all__ = ["Run", "integrate", "Budget", "BudgetExceeded", "DID_NOT_FINISH", "METHODS", "SCIPY_METHODS", "EXPLICIT", "IMPLICIT",
            "STRUCTURE_PRESERVING", "SYMPLECTIC", "IntegrationError"]
 
 SCIPY_METHODS = ("RK45", "DOP853", "Radau", "BDF", "LSODA")
@@ -48,6 +51,78 @@ IMPLICIT = ("Radau", "BDF")
 
 class IntegrationError(RuntimeError):
     """An integrator could not go on; the message says where and what to change."""
+
+
+#: How the message of a run cut by its :class:`Budget` begins.
+DID_NOT_FINISH = "did not finish"
+
+
+class BudgetExceeded(IntegrationError):
+    """A run spent its :class:`Budget`; ``t`` is the last time it evaluated."""
+
+    def __init__(self, message: str, t: float):
+        super().__init__(message)
+        self.t = float(t)
+
+
+@dataclass(frozen=True)
+class Budget:
+    """The most work one run may do: CPU seconds of this process and states evaluated.
+
+    ``None`` leaves a measure unbounded.  :meth:`meter` starts the clock; the meter's
+    :meth:`~_Meter.charge` raises :class:`BudgetExceeded` once either is spent.  CPU time,
+    not wall time: on a shared machine a wall-clock budget would cut runs that other
+    processes slowed down.
+
+    Example
+    -------
+    >>> meter = Budget(seconds=None, evaluations=3).meter()
+    >>> meter.charge(0.0, 3)
+    >>> try:
+    ...     meter.charge(0.5, 1)
+    ... except BudgetExceeded as exc:
+    ...     print(exc)
+    did not finish: 4 states evaluated at t=0.5 s, over the budget of 3
+    """
+
+    seconds: float | None = None
+    evaluations: int | None = None
+
+    def __post_init__(self):
+        for name in ("seconds", "evaluations"):
+            v = getattr(self, name)
+            if v is not None and not v > 0:
+                raise ValueError(f"`{name}` of a budget must be positive or None, got {v!r}.")
+
+    def meter(self) -> "_Meter":
+        return _Meter(self)
+
+    def __str__(self) -> str:
+        parts = ([f"{self.seconds:g} s of CPU"] if self.seconds else []) + \
+            ([f"{self.evaluations} states evaluated"] if self.evaluations else [])
+        return " or ".join(parts) or "unbounded"
+
+
+class _Meter:
+    """One run's spending against a :class:`Budget` (see :meth:`Budget.meter`)."""
+
+    def __init__(self, budget: Budget | None):
+        self.budget = budget or Budget()
+        self.start, self.evaluations = _time.process_time(), 0
+
+    def charge(self, t: float, evaluations: int = 1) -> None:
+        """Count ``evaluations`` states evaluated at time ``t``; raise when over budget."""
+        self.evaluations += evaluations
+        b = self.budget
+        if b.evaluations is not None and self.evaluations > b.evaluations:
+            raise BudgetExceeded(f"{DID_NOT_FINISH}: {self.evaluations} states evaluated at "
+                                 f"t={float(t):.6g} s, over the budget of {b.evaluations}", t)
+        if b.seconds is not None:
+            spent = _time.process_time() - self.start
+            if spent > b.seconds:
+                raise BudgetExceeded(f"{DID_NOT_FINISH}: {spent:.3g} s of CPU spent by "
+                                     f"t={float(t):.6g} s, over the budget of "
+                                     f"{b.seconds:g} s", t)
 
 
 @dataclass(frozen=True, kw_only=True, eq=False)
@@ -118,14 +193,18 @@ class Run:
 
 
 class _Counted:
-    """A right-hand side that counts its calls and the states it evaluated."""
+    """A right-hand side that counts its calls and the states it evaluated (and charges
+    them to a budget's meter)."""
 
-    def __init__(self, fun: Callable):
+    def __init__(self, fun: Callable, budget: Budget | None = None):
         self.fun, self.calls, self.evaluations = fun, 0, 0
+        self.meter = _Meter(budget)
 
     def __call__(self, t, y):
         self.calls += 1
-        self.evaluations += 1 if np.ndim(y) == 1 else np.shape(y)[1]
+        k = 1 if np.ndim(y) == 1 else np.shape(y)[1]
+        self.evaluations += k
+        self.meter.charge(t, k)
         return self.fun(t, y)
 
 
@@ -133,7 +212,8 @@ def integrate(fun: Callable, t_span: Sequence[float], y0, method: str, *,
               t_eval: np.ndarray, rtol: float = 1e-6, atol: float | np.ndarray = 1e-9,
               step: float | None = None, events: Sequence[Callable] = (),
               projector: Callable | None = None, hamiltonian=None,
-              constraint: tuple | None = None, max_steps: int = 2_000_000) -> Run:
+              constraint: tuple | None = None, max_steps: int = 2_000_000,
+              budget: Budget | None = None) -> Run:
     """Integrate ``y' = fun(t, y)`` (vectorised ``fun`` accepted) and count the work.
 
     Parameters
@@ -147,6 +227,9 @@ def integrate(fun: Callable, t_span: Sequence[float], y0, method: str, *,
     hamiltonian : :class:`~dualmech.numeric.energy.EnergyFunction`, for a symplectic method
     constraint : ``(g, G)`` for ``"rattle"``: ``g(q)`` the constraint residuals, ``G(q)``
         their gradients
+    budget : :class:`Budget`, optional
+        The most the run may spend (scipy methods; the symplectic methods' fixed steps
+        bound their work already); past it the run ends as *did not finish*.
 
     Notes
     -----
@@ -159,7 +242,7 @@ def integrate(fun: Callable, t_span: Sequence[float], y0, method: str, *,
     y0 = np.asarray(y0, dtype=float)
     if not t_span[1] > t_span[0]:
         raise ValueError(f"`t_span` must run forward, got {tuple(t_span)}.")
-    counted = _Counted(fun)
+    counted = _Counted(fun, budget)
     start = _time.process_time()
     if method in SYMPLECTIC:
         from dualmech.numeric import symplectic
@@ -195,6 +278,9 @@ def _scipy(fun, t_span, y0, method, t_eval, rtol, atol, events, first_step=None)
     try:
         sol = solve_ivp(fun, tuple(t_span), y0, method=method, rtol=rtol, atol=atol,
                         dense_output=True, events=list(events) or None, **kwargs)
+    except BudgetExceeded as exc:
+        return Run(method=method, t=t_eval[:0], y=np.empty((y0.size, 0)), success=False,
+                   message=str(exc), cpu=0.0, calls=0, evaluations=0, steps=0, t_end=exc.t)
     except (SingularityError, ValueError, ZeroDivisionError, FloatingPointError) as exc:
         # a singular system or a state outside the model's domain (a square root of a
         # negative number): the run ends here, with the model's own message

@@ -34,7 +34,7 @@ import numpy as np
 from scipy.integrate import BDF, DOP853, RK45, Radau
 
 from dualmech.model.equations import ModelError
-from dualmech.numeric.integrators import Run
+from dualmech.numeric.integrators import Budget, BudgetExceeded, Run, _Meter
 
 __all__ = ["projected_run", "PROJECTABLE", "CHECKED_SCIPY"]
 
@@ -47,18 +47,21 @@ CHECKED_SCIPY = ("1.17",)
 
 
 class _Counter:
-    def __init__(self, fun):
+    def __init__(self, fun, budget: Budget | None = None):
         self.fun, self.calls, self.evaluations = fun, 0, 0
+        self.meter = _Meter(budget)
 
     def __call__(self, t, y):
         self.calls += 1
-        self.evaluations += 1 if np.ndim(y) == 1 else np.shape(y)[1]
+        k = 1 if np.ndim(y) == 1 else np.shape(y)[1]
+        self.evaluations += k
+        self.meter.charge(t, k)
         return self.fun(t, y)
 
 
 def projected_run(fun: Callable, t_span: Sequence[float], y0, method: str, t_eval, *,
                   rtol: float, atol, projector: Callable,
-                  max_steps: int = 2_000_000) -> Run:
+                  max_steps: int = 2_000_000, budget: Budget | None = None) -> Run:
     """Integrate with ``projector(t, y) -> y`` applied after every accepted step.
 
     Parameters
@@ -68,6 +71,8 @@ def projected_run(fun: Callable, t_span: Sequence[float], y0, method: str, t_eva
     t_eval : increasing sample times in ``t_span``
     rtol, atol : the stepper's tolerances
     projector : the projection onto the manifold
+    budget : the most the run may spend (:class:`~dualmech.numeric.integrators.Budget`);
+        past it the run ends as *did not finish*
 
     Notes
     -----
@@ -80,7 +85,7 @@ def projected_run(fun: Callable, t_span: Sequence[float], y0, method: str, t_eva
         raise ValueError(f"projection after every step drives {', '.join(PROJECTABLE)}; "
                          f"{method!r} keeps its state out of reach (LSODA: inside Fortran).")
     t_eval = np.asarray(t_eval, dtype=float)
-    counted = _Counter(fun)
+    counted = _Counter(fun, budget)
     start = _time.process_time()
     y = projector(float(t_span[0]), np.asarray(y0, dtype=float))
     kwargs = {"vectorized": True} if method in ("Radau", "BDF") else {}
@@ -109,7 +114,7 @@ def projected_run(fun: Callable, t_span: Sequence[float], y0, method: str, t_eva
             y = projector(t, solver.y)
             _restart_from(solver, y)
     except (ModelError, ValueError, ZeroDivisionError, FloatingPointError,
-            np.linalg.LinAlgError) as exc:
+            np.linalg.LinAlgError, BudgetExceeded) as exc:
         ok, message = False, str(exc)
     y_out = np.array(ys).T if ys else np.empty((np.size(y0), 0))
     return Run(method=method, t=t_eval[: len(ys)].copy(), y=y_out,

@@ -26,7 +26,10 @@ row per measure, CPU time on the left and evaluations on the right, log scales, 
 marked with its tolerance's exponent (``-6`` for 1e-6; the midpoint rule's with its step
 count), a legend for the integrators (colours) and one for the formulations (line styles);
 curves that coincide exactly (two forms that are the same ODE) are drawn once and named in
-the legend.
+the legend, whatever backend ran them; a point that did not finish within its budget is an
+``x`` at the top of its panel, at the work it spent.  The figure for a lesson -- one panel,
+one line per integrator at its best formulation, the scene's parameters and initial state
+stated -- is :func:`~dualmech.numeric.studies.wplesson.lesson_chart`, written beside it.
 
 Example
 -------
@@ -40,8 +43,10 @@ them all):
 >>> [(r.formulation, r.method, r.success) for r in wp.runs]
 [('lagrange', 'DOP853', True)]
 >>> with tempfile.TemporaryDirectory() as out:
-...     sorted(p.suffix for p in wp.write(Path(out)))
-['.csv', '.json', '.png', '.svg']
+...     sorted(p.name for p in wp.write(Path(out)))  # doctest: +NORMALIZE_WHITESPACE
+['simple_pendulum_workprecision.csv', 'simple_pendulum_workprecision.json',
+ 'simple_pendulum_workprecision.png', 'simple_pendulum_workprecision.svg',
+ 'simple_pendulum_workprecision_lesson.png', 'simple_pendulum_workprecision_lesson.svg']
 """
 from __future__ import annotations
 
@@ -55,20 +60,28 @@ from typing import Mapping, Sequence
 
 import numpy as np
 
+from dualmech.model.equations import ModelError
 from dualmech.numeric.contacts import scene_span
 from dualmech.numeric.dae import BAUMGARTE_GAINS, DAE_SOLVED, STABILISATIONS
 from dualmech.numeric.daesolve import DAE_METHODS
 from dualmech.numeric.formulations import Formulation, formulations
 from dualmech.numeric.symplectic import energy_drift
-from dualmech.numeric.integrators import METHODS, Run
+from dualmech.numeric.integrators import DID_NOT_FINISH, METHODS, Budget, Run
+from dualmech.numeric.studies.wplesson import lesson_chart, scene_text
 from dualmech.numeric.units import work_conjugate_unit
 
-__all__ = ["RunResult", "WorkPrecision", "work_precision", "TOLERANCES", "STEPS", "MEASURES"]
+__all__ = ["RunResult", "WorkPrecision", "work_precision", "TOLERANCES", "STEPS", "MEASURES",
+           "BUDGET", "QUICK_BUDGET"]
 
 TOLERANCES = tuple(10.0 ** -k for k in range(3, 11))
 #: Steps per span of the midpoint rule's sweep.
 STEPS = (32, 64, 128, 256, 512, 1024, 2048)
 REFERENCE_RTOL, CHECK_RTOL = 1e-13, 1e-12
+#: The most one point may spend by default (the reference run: ten times as much); a run
+#: past it is a *did not finish* point.  The quick sweep of ``dualmech chart`` uses
+#: :data:`QUICK_BUDGET`.
+BUDGET = Budget(seconds=20.0, evaluations=2_000_000)
+QUICK_BUDGET = Budget(seconds=1.0, evaluations=100_000)
 #: ``(field, axis label)`` of the measures, one chart panel each.
 MEASURES = (("final_error", "state error at the end\n[relative to range]"),
             ("path_error", "state error along the path\n[relative to range]"),
@@ -100,6 +113,7 @@ class RunResult:
     backend: str = ""
     repeats: int = 1
     cpu_spread: float = math.nan
+    did_not_finish: bool = False
 
     @property
     def curve(self) -> tuple[str, str]:
@@ -119,6 +133,10 @@ class WorkPrecision:
     drift_unit: str
     runs: list = field(default_factory=list)
     skipped: dict = field(default_factory=dict)
+    #: the parameter values and initial conditions of the runs, as a line of text
+    scene: str = ""
+    #: the most one point could spend (:class:`~dualmech.numeric.integrators.Budget`, as text)
+    budget: str = ""
 
     def curves(self) -> dict:
         """``{(formulation, method): [RunResult, ...]}`` in sweep order."""
@@ -130,13 +148,16 @@ class WorkPrecision:
     def to_dict(self) -> dict:
         head = {k: getattr(self, k) for k in ("problem", "title", "span", "span_note",
                                               "samples", "reference_error", "drift_unit",
-                                              "skipped")}
+                                              "skipped", "scene", "budget")}
         head["span"] = list(self.span)
         head["runs"] = [{k: _json(v) for k, v in asdict(r).items()} for r in self.runs]
         return head
 
     def write(self, out_dir: Path) -> list[Path]:
-        """``NAME_workprecision.{csv,json,png,svg}`` in ``out_dir``; returns the paths."""
+        """``NAME_workprecision.{csv,json,png,svg}`` (the full grid) and
+        ``NAME_workprecision_lesson.{png,svg}`` (the one-panel figure of
+        :func:`~dualmech.numeric.studies.wplesson.lesson_chart`) in ``out_dir``; returns the
+        paths."""
         out_dir = Path(out_dir)
         out_dir.mkdir(parents=True, exist_ok=True)
         stem = out_dir / f"{self.problem}_workprecision"
@@ -146,7 +167,9 @@ class WorkPrecision:
             writer.writeheader()
             writer.writerows(rows)
         stem.with_suffix(".json").write_text(json.dumps(self.to_dict(), indent=1) + "\n")
-        return [stem.with_suffix(".csv"), stem.with_suffix(".json")] + self.chart(stem)
+        lesson = out_dir / f"{self.problem}_workprecision_lesson"
+        return [stem.with_suffix(".csv"), stem.with_suffix(".json")] + self.chart(stem) \
+            + lesson_chart(self, lesson)
 
     def chart(self, stem: Path) -> list[Path]:
         from dualmech.numeric.charts import METHOD_COLORS, panels, save, style_of
@@ -175,6 +198,12 @@ class WorkPrecision:
                     for r, x, y in zip(ok, xs, ys):
                         ax.annotate(_tag(r), (x, y), xytext=(2, 2), textcoords="offset points",
                                     fontsize=4.5, color=colour, alpha=0.8)
+                for r in self.runs:  # did not finish: an x at the top, at the work spent
+                    if r.did_not_finish and np.isfinite(getattr(r, work)) and \
+                            getattr(r, work) > 0:
+                        ax.plot([getattr(r, work)], [0.97], "x", markersize=6,
+                                color=METHOD_COLORS.get(r.method, "k"),
+                                transform=ax.get_xaxis_transform(), clip_on=False)
                 ax.set_xscale("log")
                 ax.set_yscale("log")
                 if col == 0:
@@ -211,6 +240,8 @@ def _legends(fig, wp: WorkPrecision, forms) -> None:
         tag = f" [{backends[f]}]" if backends.get(f) else ""
         h2.append(Line2D([], [], color="0.3", linestyle=ls, marker=mk, label=f + tag + note))
     h2.append(Line2D([], [], color="0.5", linestyle=":", label="reference's own error"))
+    h2.append(Line2D([], [], color="0.3", linestyle="", marker="x",
+                     label="did not finish within the budget\n    (at the top, at the work spent)"))
     fig.legend(handles=h1, title="integrator (colour)", fontsize="small", loc="upper left",
                bbox_to_anchor=(0.735, 0.96))
     fig.legend(handles=h2, title="formulation [backend of its generated code]\n"
@@ -248,13 +279,27 @@ def _measure(f: Formulation, run: Run, ref: dict, te: np.ndarray) -> dict:
     return out
 
 
-def _reference(forms, span, te) -> tuple[dict, float]:
+def _reference_form(forms, coordinates: tuple) -> Formulation | None:
+    """The formulation that gives the reference motion: the first ODE in the reference
+    model's coordinates (the reference model itself unless it is constrained)."""
+    return next((f for f in forms if f.kind == "ode" and tuple(f.coordinates) == coordinates),
+                None)
+
+
+def _scaled(budget: Budget, factor: float) -> Budget:
+    return Budget(budget.seconds and budget.seconds * factor,
+                  budget.evaluations and int(budget.evaluations * factor))
+
+
+def _reference(forms, span, te, budget: Budget | None = None) -> tuple[dict, float]:
     base = forms[0]
     n = base.n
-    run = base.run("DOP853", span, te, rtol=REFERENCE_RTOL)
-    check = base.run("DOP853", span, te, rtol=CHECK_RTOL)
+    run = base.run("DOP853", span, te, rtol=REFERENCE_RTOL, budget=budget)
+    check = base.run("DOP853", span, te, rtol=CHECK_RTOL, budget=budget) if run.success \
+        else run
     if not (run.success and check.success):
-        raise RuntimeError(f"the reference run failed: {run.message or check.message}")
+        raise RuntimeError(f"the reference run ({base.name}, DOP853 at rtol "
+                           f"{REFERENCE_RTOL:g}) failed: {run.message or check.message}")
     error = float((np.abs(run.y - check.y) / base.scales[:, None]).max())
     states = {f.name: f.from_reference(te, run.y[:n], run.y[n:]) for f in forms}
     reactions = {}
@@ -266,12 +311,15 @@ def _reference(forms, span, te) -> tuple[dict, float]:
 
 
 def _identical(runs: list[RunResult]) -> None:
-    """Mark curves whose every run equals an earlier curve's (same steps, same errors)."""
+    """Mark curves whose every run equals an earlier curve's (same steps, same errors, and
+    the same backend: a C curve identical to a NumPy one in its numbers differs in CPU time,
+    the point of the CPU panel, and stays drawn)."""
     curves: dict = {}
     for r in runs:
         curves.setdefault(r.curve, []).append(r)
     seen = []
-    keys = ("steps", "calls", "final_error", "path_error", "reaction_error", "energy_drift")
+    keys = ("steps", "calls", "final_error", "path_error", "reaction_error", "energy_drift",
+            "backend")
     for curve, rs in curves.items():
         sig = [tuple(_json(getattr(r, k)) for k in keys) for r in rs]
         for other, osig in seen:
@@ -290,25 +338,47 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
                    params: Mapping | None = None, y0=None, progress: bool = True,
                    stabilisations: Sequence[str] = STABILISATIONS + DAE_SOLVED,
                    baumgarte_gains: Sequence[float] = BAUMGARTE_GAINS,
-                   repeats: int = 5) -> WorkPrecision:
+                   repeats: int = 5, budget: Budget | None = BUDGET) -> WorkPrecision:
     """The sweep of the module docstring over ``duration`` seconds (cut to fit the scene);
     ``models``, ``stabilisations`` and ``baumgarte_gains`` narrow the formulations;
-    ``repeats`` runs per point give its CPU time (their median)."""
+    ``repeats`` runs per point give its CPU time (their median; fewer once a point's runs
+    have spent ``budget.seconds``).  A run past ``budget`` (:class:`~dualmech.numeric.
+    integrators.Budget`) is a *did not finish* point (``did_not_finish``), and so are the
+    tighter tolerances of its curve, recorded as not run (a tighter tolerance costs more);
+    the reference run gets ten times the budget."""
     if repeats < 1:
         raise ValueError(f"`repeats` must be at least 1, got {repeats}.")
+    budget = budget or Budget()
     from tqdm import tqdm
+    asked = None if models is None else tuple(models) + (problem.reference,)
+    forms, skipped = formulations(problem, params, y0, models=asked,
+                                  stabilisations=stabilisations,
+                                  baumgarte_gains=baumgarte_gains)
+    coords = tuple(problem.model(problem.reference).coordinates)
+    if models is not None and not _reference_form(forms, coords):
+        forms, skipped = formulations(problem, params, y0, stabilisations=stabilisations,
+                                      baumgarte_gains=baumgarte_gains)
+    base = _reference_form(forms, coords)
+    if base is None:
+        why = skipped.get(problem.reference, "it has no formulation").rstrip(".")
+        raise ModelError(f"not applicable: no model of `{problem.name}` in its reference "
+                         f"coordinates integrates as an ODE to give the chart's reference "
+                         f"motion; the reference model `{problem.reference}`: {why}.")
+    forms.remove(base)
+    forms.insert(0, base)
     scene = scene_span(problem, duration, y0, params)
     span = (scene.t0, scene.t_end)
     te = np.linspace(span[0], span[1], samples)
-    forms, skipped = formulations(problem, params, y0, models=models,
-                                  stabilisations=stabilisations,
-                                  baumgarte_gains=baumgarte_gains)
-    ref, ref_error = _reference(forms, span, te)
+    ref, ref_error = _reference(forms, span, te, _scaled(budget, 10))
+    if models is not None:  # the reference motion comes from forms[0], charted if asked
+        forms = [f for f in forms if f.model.name in models]
+        skipped = {k: v for k, v in skipped.items() if k in models}
     units = {work_conjugate_unit(problem.reaction_info()[u.name].dimension)
              for f in forms if f.constrained for u in f.constrained.constraints.multipliers
              if u.name in problem.reaction_info()}
     wp = WorkPrecision(problem.name, problem.title, span, scene.reason, samples, ref_error,
-                       ", ".join(sorted(units)) or "-", skipped=skipped)
+                       ", ".join(sorted(units)) or "-", skipped=skipped,
+                       scene=scene_text(problem, params, y0), budget=str(budget))
     jobs = []
     for f in forms:
         for m in f.methods(methods):
@@ -319,20 +389,35 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
                 jobs += [(f, m, tol) for tol in tolerances]
     bar = tqdm(jobs, desc=f"{problem.name}: work-precision", unit="run", file=sys.stderr,
                leave=False, disable=not progress)
+    spent: dict = {}   # curves whose looser tolerance already spent the whole budget
     for f, m, tol in bar:
-        try:
-            run = f.run(m, span, te, rtol=tol, step=tol)
-        except Exception as exc:  # noqa: BLE001 - a failed run is a point of the diagram
+        if (f.name, m) in spent and m != "midpoint" and tol < spent[f.name, m]:
             wp.runs.append(RunResult(f.name, f.kind, m, tol, math.nan, 0, 0, 0, False,
-                                     f"{type(exc).__name__}: {exc}"))
+                                     f"{DID_NOT_FINISH}: not run, rtol {spent[f.name, m]:g} "
+                                     f"already spent the budget ({budget})",
+                                     backend=f.backend, did_not_finish=True))
             continue
-        cpus = [run.cpu]
-        for _ in range(repeats - 1 if run.success else 0):
-            cpus.append(f.run(m, span, te, rtol=tol, step=tol).cpu)
-        wp.runs.append(RunResult(f.name, f.kind, m, tol, float(np.median(cpus)), run.calls,
-                                 run.evaluations, run.steps, run.success, str(run.message),
-                                 **_measure(f, run, ref, te), backend=f.backend,
-                                 repeats=len(cpus),
-                                 cpu_spread=float(max(cpus) / max(min(cpus), 1e-9))))
+        wp.runs.append(_point(f, m, tol, span, te, ref, repeats, budget))
+        if wp.runs[-1].did_not_finish:
+            spent.setdefault((f.name, m), tol)
     _identical(wp.runs)
     return wp
+
+
+def _point(f: Formulation, m: str, tol: float, span, te, ref, repeats: int,
+           budget: Budget) -> RunResult:
+    """One point: the run, its repeats (while they fit in the budget's seconds), measures."""
+    try:
+        run = f.run(m, span, te, rtol=tol, step=tol, budget=budget)
+    except Exception as exc:  # noqa: BLE001 - a failed run is a point of the diagram
+        return RunResult(f.name, f.kind, m, tol, math.nan, 0, 0, 0, False,
+                         f"{type(exc).__name__}: {exc}", backend=f.backend)
+    cpus = [run.cpu]
+    while run.success and len(cpus) < repeats and \
+            (budget.seconds is None or sum(cpus) + cpus[0] <= budget.seconds):
+        cpus.append(f.run(m, span, te, rtol=tol, step=tol, budget=budget).cpu)
+    return RunResult(f.name, f.kind, m, tol, float(np.median(cpus)), run.calls,
+                     run.evaluations, run.steps, run.success, str(run.message),
+                     **_measure(f, run, ref, te), backend=f.backend, repeats=len(cpus),
+                     cpu_spread=float(max(cpus) / max(min(cpus), 1e-9)),
+                     did_not_finish=str(run.message).startswith(DID_NOT_FINISH))
