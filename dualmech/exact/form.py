@@ -189,6 +189,7 @@ class ExactForm:
     _world: World | None = field(default=None, repr=False)
     _fn: Callable | None = field(default=None, repr=False)
     _radicands: Callable | None = field(default=None, repr=False)
+    _twins: Callable | None = field(default=None, repr=False)
     _choices: list = field(default_factory=list, repr=False)
     _program: object = field(default=None, repr=False)
     _domains: dict = field(default_factory=dict, repr=False)
@@ -249,9 +250,12 @@ class ExactForm:
         args = _world_args(world)
         fn = _compile(args, world.exprs)
         radicands = _compile(args, [r for _, r in world.radicals]) if world.radicals else None
+        # sqrt(X) written sqrt(r) sqrt(X_j): X - r X_j must vanish at every point used
+        twins = _compile(args, [x - sp.Rational(r.numerator, r.denominator) * xj
+                                for x, r, xj in world.twins]) if world.twins else None
         choices = [[_compile(args, c) for c in b.choices] for b in world.branches]
         form = cls(method="exact", cases=cases, _world=world, _fn=fn, _radicands=radicands,
-                   _choices=choices, **base)
+                   _twins=twins, _choices=choices, **base)
         form.degree = _degree(world)
         if world.radicals:
             form._check_radicals()
@@ -270,16 +274,20 @@ class ExactForm:
         """Radicands dependent at every one of a few random points are dependent identically
         (the exact method would skip every point): leave them to intervals."""
         rng = random.Random(7)
-        dependent = 0
+        dependent = None
         for _ in range(4 * len(self.cases)):
             try:
                 self._args(self._sample_exact(rng))
                 break
             except ZeroDivisionError:
                 continue
-            except ValueError:
-                dependent += 1
+            except ValueError as exc:
+                dependent = str(exc)
         else:
+            if dependent and "proportional" in dependent:
+                raise NotExact(self._world.twins[0][0], "square roots screened as multiples "
+                                                       "of one another are not (write them "
+                                                       "with one root)")
             if dependent:
                 raise NotExact(self._world.radicals[0][1], "square roots whose product is a "
                                                           "perfect square (write them with "
@@ -381,6 +389,8 @@ class ExactForm:
         return vals
 
     def _roots(self, args) -> list:
+        if self._twins is not None and any(v != 0 for v in self._twins(*args)):
+            raise ValueError("radicands taken as proportional are not, at this point")
         ds = self._radicand_list(args)
         irr = [d for d in ds if d != 0 and not is_square(d)]
         if not independent(irr):
@@ -542,6 +552,8 @@ def _degree(world: World) -> int:
         parts = [degree_bound(c, weights, memo) for c in b.choices]
         weights[b.dummy] = (max(p[0] for p in parts), max(p[1] for p in parts))
     total = max((sum(degree_bound(e, weights, memo)) for e in world.exprs), default=0)
+    for x, _, xj in world.twins:     # X - r X_j vanishing at a point by chance
+        total = max(total, sum(degree_bound(x * xj, weights, memo)))
     return max(total, 1) * 2 ** len(world.radicals)
 
 
