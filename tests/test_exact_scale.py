@@ -96,3 +96,22 @@ def test_opposite_radicands_are_not_merged(expr):
     # X and -X: never both positive, the ratio is negative: no shared root is invented
     form = ExactForm.build([expr], [phi])
     assert not form._world or not form._world.twins
+
+
+def test_mpmath_values_of_a_sum_too_long_to_compile():
+    """``lambdify`` of 4000 terms raises RecursionError in CPython's compiler; the flat
+    program gives the values.  Reference: mpmath's own sum of the same terms."""
+    import mpmath
+    from dualmech.exact.mp_program import flat_program, mp_function
+    x, y = sp.symbols("x y")
+    n = 4000
+    big = sp.Add(*[x ** k * y ** (k % 7) / (k + 1) for k in range(n)])
+    fn = flat_program([x, y], [big, sp.cos(x) ** 2 + sp.sin(x) ** 2])
+    half, two = mpmath.mpf("0.5"), mpmath.mpf(2)
+    with mpmath.workdps(30):
+        ref = mpmath.fsum(half ** k * two ** (k % 7) / (k + 1) for k in range(n))
+        got = fn(half, two)
+        assert abs(got[0] - ref) < mpmath.mpf(10) ** -28 and abs(got[1] - 1) < 1e-28
+    assert callable(mp_function([x], [x + 1]))
+    with pytest.raises(ValueError, match="no mpmath evaluation"):
+        flat_program([x], [sp.Piecewise((x, x > 0), (0, True))])

@@ -291,3 +291,20 @@ def test_entries_too_large_to_expand_keep_their_trees(backend):
         A = np.array(A.tolist(), dtype=float)
         ref = np.linalg.solve(A, np.array(b.tolist(), dtype=float).ravel())
         assert np.allclose(many[:, k], ref, rtol=0, atol=_bound(A, ref))
+
+
+def test_a_sum_of_thousands_of_terms_compiles():
+    """A sum of 3000 distinct terms (printed as one chain of ``+`` it would exceed CPython's
+    compiler depth) compiles and runs.  Reference: the same sum in plain Python floats."""
+    from dualmech.numeric import codegen
+    x, v, c = sp.symbols("x v c")
+    n = 3000
+    f = sp.Add(*[c * sp.sin(k * x) * v ** (k % 3) / (k + 1) for k in range(1, n + 1)])
+    prog = codegen.program([f], t=t, q=[x], qd=[v], params=[c])
+    space: dict = {}
+    exec(compile(codegen.python_source(prog, "long", [c]), "long", "exec"), space)
+    p = (1.5,)
+    one = space["scalar"](p, space["static"](p))
+    for q, u in ((0.3, -0.8), (1.2, 0.5)):
+        ref = sum(1.5 * np.sin(k * q) * u ** (k % 3) / (k + 1) for k in range(1, n + 1))
+        assert one(0.0, [q, u])[0] == pytest.approx(ref, rel=1e-12, abs=1e-12)

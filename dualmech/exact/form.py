@@ -97,6 +97,7 @@ from dualmech.exact import interval as _iv
 from dualmech.exact.branches import Case, find_cases, regions
 from dualmech.exact.trig_values import world_values
 from dualmech.exact.surds import Surd, independent, is_square
+from dualmech.exact.mp_program import flat_program
 from dualmech.exact.register_program import NotRationalProgram, compile_rational
 from dualmech.exact.sample_space import (AtomKey, NotExact, Undecidable, World, analyse,
                                          analyse_se, degree_bound)
@@ -266,6 +267,8 @@ class ExactForm:
         syms = list(base["_read"])
         try:
             fn = sp.lambdify(syms, exprs, modules="mpmath", cse=True, dummify=True)
+        except RecursionError:     # source too deep for CPython's compiler: a flat program
+            fn = flat_program(syms, exprs)
         except (SyntaxError, NameError) as exc:  # pragma: no cover - lambdify's own limits
             raise Undecidable(exprs, f"cannot compile for mpmath: {exc}") from None
         return cls(method="mpmath", _fn=fn, **base)

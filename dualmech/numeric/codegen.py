@@ -382,11 +382,7 @@ class Printer:
     _Exp1 = _Pi
 
     def _Add(self, e):
-        parts = [self(a) for a in e.args]
-        text = parts[0]
-        for p in parts[1:]:
-            text += f" - {p[1:]}" if p.startswith("-") and not p.startswith("-(") else f" + {p}"
-        return f"({text})"
+        return _sum_text([self(a) for a in e.args])
 
     def _Mul(self, e):
         num, den, sign = [], [], ""
@@ -397,9 +393,9 @@ class Printer:
                 den.append(self(se.Pow(a.args[0], -a.args[1])))
             else:
                 num.append(self(a))
-        text = "*".join(num) if num else "1.0"
+        text = _product_text(num) if num else "1.0"
         if den:
-            text += f"/({'*'.join(den)})"
+            text += f"/({_product_text(den)})"
         return f"{sign}{text}"
 
     def _Pow(self, e):
@@ -440,6 +436,30 @@ class Printer:
         if "Not supported" in text:
             raise NotImplementedError(f"cannot generate code for {expr}")
         return f"({text})"
+
+
+#: Terms or factors printed in one run; longer sums and products are printed in parenthesised
+#: runs of runs, so the parsed tree stays shallow (CPython's compiler refuses a chain of a few
+#: thousand ``+``: "maximum recursion depth exceeded during compilation").
+RUN = 64
+
+
+def _sum_text(parts: list) -> str:
+    """``(a + b - c ...)`` in parenthesised runs of at most :data:`RUN` terms."""
+    if len(parts) > RUN:
+        return _sum_text([_sum_text(parts[i:i + RUN]) for i in range(0, len(parts), RUN)])
+    text = parts[0]
+    for p in parts[1:]:
+        text += f" - {p[1:]}" if p.startswith("-") and not p.startswith("-(") else f" + {p}"
+    return f"({text})"
+
+
+def _product_text(parts: list) -> str:
+    """``a*b*c ...`` in parenthesised runs of at most :data:`RUN` factors."""
+    if len(parts) > RUN:
+        return _product_text([f"({_product_text(parts[i:i + RUN])})"
+                              for i in range(0, len(parts), RUN)])
+    return "*".join(parts)
 
 
 def _block(assignments, printer, indent: str) -> list[str]:
