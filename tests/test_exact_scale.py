@@ -115,3 +115,30 @@ def test_mpmath_values_of_a_sum_too_long_to_compile():
     assert callable(mp_function([x], [x + 1]))
     with pytest.raises(ValueError, match="no mpmath evaluation"):
         flat_program([x], [sp.Piecewise((x, x > 0), (0, True))])
+
+
+def test_a_wrong_model_too_long_to_compile_still_names_its_wrong_rows(monkeypatch):
+    """Where lambdify's source cannot be compiled (RecursionError, as for a bicycle-size
+    wrong model), the explanation runs on the flat program and names the same rows: the toy
+    car's Lagrangian without its cos^2 term is wrong in both its equations (test_blame)."""
+    from dualmech.exact import mp_program
+    from dualmech.verify.check import compare
+    from test_blame import ToyCarNoCos2
+
+    def refuse(args, exprs):
+        raise RecursionError("maximum recursion depth exceeded during compilation")
+
+    flat = []
+    original = mp_program.flat_program
+
+    def counted(args, exprs):
+        flat.append(len(exprs))
+        return original(args, exprs)
+
+    monkeypatch.setattr(mp_program, "_lambdified", refuse)
+    monkeypatch.setattr(mp_program, "flat_program", counted)
+    c = compare(ToyCarNoCos2())
+    assert not c.equivalent and c.judgement.odd == ["lagrange"]
+    assert {mm.equation for mm in c.mismatches if mm.model == "lagrange"} \
+        == {"Lagrange, theta", "Lagrange, phi"}
+    assert flat, "the flat program was not used"

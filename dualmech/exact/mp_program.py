@@ -34,9 +34,13 @@ def mp_function(args: Sequence, exprs: Sequence) -> Callable:
     """``f(*values) -> list`` of the values of ``exprs`` (mpmath numbers) at ``args = values``:
     ``sympy.lambdify`` where it compiles, else :func:`flat_program`."""
     try:
-        return sp.lambdify(list(args), list(exprs), modules="mpmath")
+        return _lambdified(args, exprs)
     except RecursionError:
         return flat_program(args, exprs)
+
+
+def _lambdified(args, exprs) -> Callable:
+    return sp.lambdify(list(args), list(exprs), modules="mpmath")
 
 
 def flat_program(args: Sequence, exprs: Sequence) -> Callable:

@@ -206,7 +206,13 @@ EXPAND_LIMIT = 400
 
 def expanded_terms(e, memo: dict) -> int:
     """Upper bound on the terms of ``se.expand(e)`` (capped just above the limit); a factor
-    with a negative or fractional power counts one (it is split on its own)."""
+    with a negative or fractional power counts one (it is split on its own).
+
+    >>> import symengine as se
+    >>> a, b, c = se.symbols("a b c")
+    >>> expanded_terms((a + b) * (a + c + 1) ** 2 + 1 / (a + b), {})   # 2 * 3**2 + 1
+    19
+    """
     hit = memo.get(e)
     if hit is not None:
         return hit
