@@ -204,8 +204,11 @@ def child(kind: str, n: int) -> None:
 
 # -- the parent ------------------------------------------------------------------------------
 def measure(kind: str, n: int, limit: float) -> dict:
-    proc = subprocess.run([sys.executable, __file__, "--child", kind, str(n)], cwd=ROOT,
-                          capture_output=True, text=True, timeout=limit)
+    try:
+        proc = subprocess.run([sys.executable, __file__, "--child", kind, str(n)], cwd=ROOT,
+                              capture_output=True, text=True, timeout=limit)
+    except subprocess.TimeoutExpired:
+        return {"failed": f"killed at the limit, {limit:g} s"}
     if proc.returncode != 0:
         return {"failed": proc.stderr.strip().splitlines()[-1][:200]}
     return json.loads(proc.stdout.strip().splitlines()[-1])
@@ -221,7 +224,7 @@ def _ratio(a, b) -> str:
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--ns", type=int, nargs="+", default=[5, 10, 20])
+    ap.add_argument("--ns", type=int, nargs="*", default=[5, 10, 20])
     ap.add_argument("--limit", type=float, default=900.0)
     ap.add_argument("--no-bicycle", action="store_true")
     ap.add_argument("--child", nargs=2, help=argparse.SUPPRESS)
@@ -245,6 +248,7 @@ def main(argv=None) -> int:
     if not args.no_bicycle:
         ours, peer = measure("bicycle", 0, args.limit), measure("bicycle-peer", 0, args.limit)
         print("\nWhipple bicycle (sympy's test_kane3), square roots in the front contact:")
+        peer = {k.replace("failed", "codegen (lambdify)"): v for k, v in peer.items()}
         for key, value in {**{f"peer {k}": v for k, v in peer.items()}, **ours}.items():
             print(f"  {key:<24} {_s(value)}")
         if "codegen" in ours and "codegen" in peer:
