@@ -179,6 +179,7 @@ def bicycle_ours(_: int) -> dict:
 def bicycle_peer(_: int) -> dict:
     import sympy as sp
     derive, w = _timed(_bicycle)
+    print(json.dumps({"derive": derive}), flush=True)   # kept if lambdify is killed
     km = w["KM"]
     (M, f), rule = _plain([km.mass_matrix, km.forcing], km.q, km.u)
     args = sorted(set().union(*[e.free_symbols for e in list(M) + list(f)]), key=str)
@@ -207,8 +208,10 @@ def measure(kind: str, n: int, limit: float) -> dict:
     try:
         proc = subprocess.run([sys.executable, __file__, "--child", kind, str(n)], cwd=ROOT,
                               capture_output=True, text=True, timeout=limit)
-    except subprocess.TimeoutExpired:
-        return {"failed": f"killed at the limit, {limit:g} s"}
+    except subprocess.TimeoutExpired as exc:
+        out = exc.stdout.decode() if isinstance(exc.stdout, bytes) else (exc.stdout or "")
+        done = [json.loads(x) for x in out.splitlines() if x.startswith("{")]
+        return {**(done[-1] if done else {}), "failed": f"killed at the limit, {limit:g} s"}
     if proc.returncode != 0:
         return {"failed": proc.stderr.strip().splitlines()[-1][:200]}
     return json.loads(proc.stdout.strip().splitlines()[-1])
