@@ -149,7 +149,7 @@ def bicycle_ours(_: int) -> dict:
     roots = {a: sp.sqrt(sp.expand(a.base)) ** (2 * a.exp) for a in two.atoms(sp.Pow)
              if a.exp.is_Rational and a.exp.q == 2}
     two = two.xreplace(roots)
-    (one, two), rule2 = _plain([one, two], w["KM"].q, km.u)
+    (one, two), _ = _plain([one, two], km.q, km.u)
     symbols = sorted(set().union(*[e.free_symbols for e in list(one) + list(two)]), key=str)
     out = {"codegen": codegen, "roots rewritten": len(roots)}
     for label, wrong in (("verdict", 0), ("verdict (wrong)", 1)):
@@ -157,7 +157,7 @@ def bicycle_ours(_: int) -> dict:
         if wrong:
             exprs[0] += sp.sin(symbols[0]) * one[1] / 97
 
-        def decide():
+        def decide(exprs=exprs, wrong=wrong):
             form = ExactForm.build(exprs, symbols)
             rng = random.Random(1)
             zero, certain = True, True
@@ -181,7 +181,7 @@ def bicycle_peer(_: int) -> dict:
     derive, w = _timed(_bicycle)
     print(json.dumps({"derive": derive}), flush=True)   # kept if lambdify is killed
     km = w["KM"]
-    (M, f), rule = _plain([km.mass_matrix, km.forcing], km.q, km.u)
+    (M, f), _ = _plain([km.mass_matrix, km.forcing], km.q, km.u)
     args = sorted(set().union(*[e.free_symbols for e in list(M) + list(f)]), key=str)
     codegen, _ = _timed(lambda: sp.lambdify(args, [M, f], modules="numpy", cse=True))
     return {"derive": derive, "codegen": codegen}
