@@ -247,3 +247,64 @@ def test_math_error_names_the_state():
         nm.accelerations(0.0, [-1.0], [0.0])
     with pytest.raises(ValueError, match=r"x=4, x'=1 failed \(ZeroDivisionError"):
         nm.rhs(0.0, np.array([4.0, 1.0]))
+
+
+def _large_model():
+    """Three angles, ``M = B^T B + I`` with every entry of ``B`` a long sum of products of
+    sines, cosines and a square root, and a forcing of the same kind: entries whose
+    expansion runs to thousands of terms, so the generator keeps their trees."""
+    q = [coordinate(f"b{i}") for i in range(3)]
+    c = sp.symbols("c0:6", positive=True)
+    root = sp.sqrt(2 + sp.sin(q[0]) * sp.cos(q[1] - q[2]))
+    fs = [sp.sin, sp.cos]
+    B = sp.Matrix(3, 3, lambda i, j: sum(
+        c[(i + j + k) % 6] * fs[k % 2](q[k % 3] + (k // 3 + 1) * q[(i + k) % 3])
+        * fs[(k + j) % 2](q[j]) for k in range(12)) * root + c[i])
+    M = B.T * B + sp.eye(3)
+    f = B * sp.Matrix([qi.diff(t) ** 2 for qi in q]) + sp.Matrix(c[:3]) * root
+    acc = sp.Matrix([qi.diff(t, 2) for qi in q])
+    values = dict(zip(c, (1.1, 0.4, 2.3, 0.9, 1.7, 0.6)))
+    return EquationSet("large", tuple(q), tuple(M * acc - f)), M, f, q, values
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_entries_too_large_to_expand_keep_their_trees(backend):
+    """Reference: numpy.linalg.solve of the matrix and forcing evaluated by sympy (30
+    digits) at the same states."""
+    from dualmech.numeric.codegen import EXPAND_LIMIT, expanded_terms
+    import symengine as se
+    eqs, M, f, q, values = _large_model()
+    assert expanded_terms(se.sympify(M[0, 1]), {}) > EXPAND_LIMIT   # the tree path is taken
+    nm = NumericModel(eqs, values, backend=backend)
+    rng = np.random.default_rng(4)
+    Y = rng.uniform(-2, 2, size=(6, 5))
+    many = nm.solve(0.0, Y[:3], Y[3:])
+    import mpmath
+    plain = sp.symbols("x0:6")
+    rename = {qi.diff(t): plain[3 + i] for i, qi in enumerate(q)}
+    rename.update({qi: plain[i] for i, qi in enumerate(q)})
+    ref_fn = sp.lambdify(plain, [M.xreplace(rename).subs(values), f.xreplace(rename).subs(values)],
+                         modules="mpmath")
+    for k in range(5):
+        with mpmath.workdps(30):
+            A, b = ref_fn(*[mpmath.mpf(float(v)) for v in Y[:, k]])
+        A = np.array(A.tolist(), dtype=float)
+        ref = np.linalg.solve(A, np.array(b.tolist(), dtype=float).ravel())
+        assert np.allclose(many[:, k], ref, rtol=0, atol=_bound(A, ref))
+
+
+def test_a_sum_of_thousands_of_terms_compiles():
+    """A sum of 3000 distinct terms (printed as one chain of ``+`` it would exceed CPython's
+    compiler depth) compiles and runs.  Reference: the same sum in plain Python floats."""
+    from dualmech.numeric import codegen
+    x, v, c = sp.symbols("x v c")
+    n = 3000
+    f = sp.Add(*[c * sp.sin(k * x) * v ** (k % 3) / (k + 1) for k in range(1, n + 1)])
+    prog = codegen.program([f], t=t, q=[x], qd=[v], params=[c])
+    space: dict = {}
+    exec(compile(codegen.python_source(prog, "long", [c]), "long", "exec"), space)
+    p = (1.5,)
+    one = space["scalar"](p, space["static"](p))
+    for q, u in ((0.3, -0.8), (1.2, 0.5)):
+        ref = sum(1.5 * np.sin(k * q) * u ** (k % 3) / (k + 1) for k in range(1, n + 1))
+        assert one(0.0, [q, u])[0] == pytest.approx(ref, rel=1e-12, abs=1e-12)

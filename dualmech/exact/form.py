@@ -97,6 +97,7 @@ from dualmech.exact import interval as _iv
 from dualmech.exact.branches import Case, find_cases, regions
 from dualmech.exact.trig_values import world_values
 from dualmech.exact.surds import Surd, independent, is_square
+from dualmech.exact.mp_program import flat_program
 from dualmech.exact.register_program import NotRationalProgram, compile_rational
 from dualmech.exact.sample_space import (AtomKey, NotExact, Undecidable, World, analyse,
                                          analyse_se, degree_bound)
@@ -189,6 +190,7 @@ class ExactForm:
     _world: World | None = field(default=None, repr=False)
     _fn: Callable | None = field(default=None, repr=False)
     _radicands: Callable | None = field(default=None, repr=False)
+    _twins: Callable | None = field(default=None, repr=False)
     _choices: list = field(default_factory=list, repr=False)
     _program: object = field(default=None, repr=False)
     _domains: dict = field(default_factory=dict, repr=False)
@@ -249,9 +251,12 @@ class ExactForm:
         args = _world_args(world)
         fn = _compile(args, world.exprs)
         radicands = _compile(args, [r for _, r in world.radicals]) if world.radicals else None
+        # sqrt(X) written sqrt(r) sqrt(X_j): X - r X_j must vanish at every point used
+        twins = _compile(args, [x - sp.Rational(r.numerator, r.denominator) * xj
+                                for x, r, xj in world.twins]) if world.twins else None
         choices = [[_compile(args, c) for c in b.choices] for b in world.branches]
         form = cls(method="exact", cases=cases, _world=world, _fn=fn, _radicands=radicands,
-                   _choices=choices, **base)
+                   _twins=twins, _choices=choices, **base)
         form.degree = _degree(world)
         if world.radicals:
             form._check_radicals()
@@ -262,6 +267,8 @@ class ExactForm:
         syms = list(base["_read"])
         try:
             fn = sp.lambdify(syms, exprs, modules="mpmath", cse=True, dummify=True)
+        except RecursionError:     # source too deep for CPython's compiler: a flat program
+            fn = flat_program(syms, exprs)
         except (SyntaxError, NameError) as exc:  # pragma: no cover - lambdify's own limits
             raise Undecidable(exprs, f"cannot compile for mpmath: {exc}") from None
         return cls(method="mpmath", _fn=fn, **base)
@@ -270,16 +277,20 @@ class ExactForm:
         """Radicands dependent at every one of a few random points are dependent identically
         (the exact method would skip every point): leave them to intervals."""
         rng = random.Random(7)
-        dependent = 0
+        dependent = None
         for _ in range(4 * len(self.cases)):
             try:
                 self._args(self._sample_exact(rng))
                 break
             except ZeroDivisionError:
                 continue
-            except ValueError:
-                dependent += 1
+            except ValueError as exc:
+                dependent = str(exc)
         else:
+            if dependent and "proportional" in dependent:
+                raise NotExact(self._world.twins[0][0], "square roots screened as multiples "
+                                                       "of one another are not (write them "
+                                                       "with one root)")
             if dependent:
                 raise NotExact(self._world.radicals[0][1], "square roots whose product is a "
                                                           "perfect square (write them with "
@@ -381,6 +392,8 @@ class ExactForm:
         return vals
 
     def _roots(self, args) -> list:
+        if self._twins is not None and any(v != 0 for v in self._twins(*args)):
+            raise ValueError("radicands taken as proportional are not, at this point")
         ds = self._radicand_list(args)
         irr = [d for d in ds if d != 0 and not is_square(d)]
         if not independent(irr):
@@ -542,6 +555,8 @@ def _degree(world: World) -> int:
         parts = [degree_bound(c, weights, memo) for c in b.choices]
         weights[b.dummy] = (max(p[0] for p in parts), max(p[1] for p in parts))
     total = max((sum(degree_bound(e, weights, memo)) for e in world.exprs), default=0)
+    for x, _, xj in world.twins:     # X - r X_j vanishing at a point by chance
+        total = max(total, sum(degree_bound(x * xj, weights, memo)))
     return max(total, 1) * 2 ** len(world.radicals)
 
 

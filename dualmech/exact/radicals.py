@@ -13,6 +13,14 @@ sympy can factor.  Factoring serves two ends:
   over independent ones with the signs ``|f_i| = +-f_i`` as branch cases
   (:func:`factored_sqrt`).
 
+Before any factoring, radicands that are constant multiples of one another (the same root
+written twice, expanded once and factored once, as two derivations of one model do) are
+recognised from their values at random points -- the numbers, not the polynomials -- and
+written over one root: ``sqrt(X_i) = sqrt(r) sqrt(X_j)`` for a rational ``r > 0`` is an
+identity of principal roots wherever ``X_i = r X_j`` (:func:`proportional`).  That equality is
+checked again, exactly, at every point the verdict uses (:attr:`World.twins`), so a value
+there is the exact value of the expression as written, whatever the screening concluded.
+
 Example
 -------
 >>> import sympy as sp
@@ -34,7 +42,8 @@ from dualmech.exact.trig_values import world_values
 from dualmech.exact.errors import NotExact, Undecidable
 from dualmech.exact.surds import independent, is_square
 
-__all__ = ["u_rule", "factor_signs", "square_sqrt", "factored_sqrt", "radicals_dependent"]
+__all__ = ["u_rule", "factor_signs", "square_sqrt", "factored_sqrt", "radicals_dependent",
+           "const_root", "proportional"]
 
 _MAX_MULTIPLE = 16   # larger multiples are not expanded into polynomials in u
 _MAX_OPS = 400       # larger expressions are not factored
@@ -132,11 +141,57 @@ def _world_point(b, rng) -> dict:
 
 
 def _values(b, exprs, seed: int) -> list:
-    point = _world_point(b, random.Random(seed))
+    """Values of world expressions at the random world point of ``seed`` (cached per builder:
+    radicands are screened more than once)."""
+    cache = b.value_cache
+    point = cache.get(seed)
+    if point is None:
+        point = cache[seed] = _world_point(b, random.Random(seed))
     out = []
     for e in exprs:
-        v = e.xreplace(point)
-        out.append(Fraction(int(v.p), int(v.q)) if v.is_Rational else None)
+        hit = cache.get((seed, e))
+        if hit is None:
+            v = e.xreplace(point)
+            hit = cache[(seed, e)] = (Fraction(int(v.p), int(v.q)) if v.is_Rational else False)
+        out.append(hit if hit is not False else None)
+    return out
+
+
+_SCREEN_SEEDS = (3, 4, 5)
+
+
+def proportional(b, radicands) -> list:
+    """For each radicand, ``(j, r)``: it equals ``r`` times radicand ``j`` (``j`` its own index
+    and ``r = 1`` when no earlier radicand is a positive constant multiple of it).
+
+    Screened at three random world points: the ratio of the values must be one positive
+    rational at each.  Only a screen -- the caller checks ``X_i = r X_j`` exactly at every point
+    it evaluates (a false screen then leaves every point skipped, and the verdict refuses).
+
+    >>> import sympy as sp
+    >>> from dualmech.exact.sample_space import analyse
+    >>> a, b = sp.symbols("a b")
+    >>> w = analyse([sp.sqrt(a**2 + b**2) - 2 * sp.sqrt((a**2 + b**2) / 4)], [a, b])
+    >>> len(w.radicals), len(w.twins)
+    (1, 1)
+    """
+    columns = [_values(b, radicands, seed) for seed in _SCREEN_SEEDS]
+    seen: dict = {}
+    out = []
+    for i in range(len(radicands)):
+        vals = [col[i] for col in columns]
+        if any(v is None or v == 0 for v in vals):
+            out.append((i, Fraction(1)))
+            continue
+        shape = tuple(v / vals[0] for v in vals[1:])   # equal for proportional radicands
+        for j in seen.get(shape, ()):
+            r = vals[0] / columns[0][j]
+            if r > 0:
+                out.append((j, r))
+                break
+        else:
+            seen.setdefault(shape, []).append(i)
+            out.append((i, Fraction(1)))
     return out
 
 
@@ -171,11 +226,11 @@ def square_sqrt(b, node, radicand):
                                 "it is defined")
     abs_y = b._abs_branch(sp.Abs(Y), Y, b._real_form(Y)) if Y.free_symbols else abs(Y)
     if rest == 1:
-        return _const_root(b, c) * abs_y
+        return const_root(b, c) * abs_y
     return abs_y * b._radical_dummy(c * rest)
 
 
-def _const_root(b, c):
+def const_root(b, c):
     """``sqrt(c)`` for a rational ``c > 0``: rational, or a rational times a radical dummy."""
     root = sp.sqrt(sp.Rational(c))
     coeff, rest = root.as_coeff_Mul()
@@ -195,7 +250,7 @@ def factored_sqrt(b, node, radicand):
         raise NotExact(node, "square roots whose product is a perfect square, too large to "
                              "factor (write them with one root)")
     c, Y, num, den = parts
-    out = _const_root(b, abs(c))
+    out = const_root(b, abs(c))
     if Y.free_symbols:
         out *= b._abs_branch(sp.Abs(Y), Y, b._real_form(Y))
     else:

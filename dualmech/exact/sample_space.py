@@ -32,14 +32,15 @@ Example
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Callable, Sequence
 
 import sympy as sp
 
 from dualmech.exact.errors import NotExact, Undecidable
-from dualmech.exact.radicals import factor_signs, factored_sqrt, radicals_dependent, square_sqrt
+from dualmech.exact.radicals import (const_root, factor_signs, factored_sqrt, proportional,
+                                     radicals_dependent, square_sqrt)
 from dualmech.model import trees
 
 __all__ = ["Undecidable", "NotExact", "AtomKey", "World", "analyse", "analyse_se",
@@ -112,6 +113,7 @@ class World:
     conds: list                        # Cond
     branches: list                     # Branch, inner before outer
     scales: list                       # per atom: (kind, monomial, L): the atom is monomial/L
+    twins: list = field(default_factory=list)   # (X, r, X_j): sqrt(X) written r^(1/2) sqrt(X_j)
 
 
 # ---------------------------------------------------------------------------------------
@@ -428,6 +430,8 @@ class _Builder:
         self.branches: list = []
         self.scales: list = []
         self.u_cache: dict = {}
+        self.value_cache: dict = {}   # screening values at random world points
+        self.twins: list = []         # (radicand, r, radicand j): checked X = r X_j
 
     # -- atoms and arguments -------------------------------------------------------------
     def _atoms(self) -> None:
@@ -478,17 +482,30 @@ class _Builder:
         self._trig_rules()
         roots = [(node, radicand.xreplace(self.rule), p)
                  for node, (radicand, p) in self.scan.radicals.items()]
-        # independent radicands stay whole; dependent ones (sqrt(2)*sqrt(x^2+1) beside
-        # sqrt(2*x^2+2)) are split into roots of irreducible factors, with their signs as cases
-        split = len(roots) > 1 and radicals_dependent(self, [r for _, r, _ in roots])
-        for node, radicand, p in roots:
-            root = factored_sqrt(self, node, radicand) if split else self._radical(node, radicand)
+        # a radicand that is a constant multiple of another shares its root (checked at
+        # every point); independent radicands stay whole; dependent ones (sqrt(2)*sqrt(x^2+1)
+        # beside sqrt(2*x^2+2)) are split into roots of irreducible factors, signs as cases
+        same = proportional(self, [r for _, r, _ in roots]) if len(roots) > 1 \
+            else [(0, 1)] * len(roots)
+        heads = [i for i, (j, _) in enumerate(same) if i == j]
+        split = len(heads) > 1 and radicals_dependent(self, [roots[i][1] for i in heads])
+        made: dict = {}
+        for i in heads:
+            node, radicand, _ = roots[i]
+            made[i] = factored_sqrt(self, node, radicand) if split \
+                else self._radical(node, radicand)
+        for i, (node, radicand, p) in enumerate(roots):
+            j, r = same[i]
+            root = made[j]
+            if j != i:
+                self.twins.append((radicand, r, roots[j][1]))
+                root = const_root(self, sp.Rational(r.numerator, r.denominator)) * root
             self.rule[node] = root ** p
         for node in self.scan.branches:
             self._branch(node)
         out = [e.xreplace(self.rule) for e in exprs] if self.rule else list(exprs)
         return World(out, self.symbols, self.atoms, self.args, self.pi, self.u, self.radicals,
-                     self.conds, self.branches, self.scales)
+                     self.conds, self.branches, self.scales, self.twins)
 
     def _radical(self, node, radicand) -> sp.Expr:
         """``sqrt(radicand)``: a radical dummy, or ``|Y| * sqrt(rest)`` for a square factor."""

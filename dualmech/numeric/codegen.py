@@ -8,7 +8,10 @@ A list of expressions in the state ``(t, q, q')`` and the parameters becomes one
 2. each expression is expanded (symengine) and written as a sum of *static* coefficients (the
    parameter-only factors) times *dynamic* monomials (products of powers of the state and of
    functions of it); every distinct coefficient becomes one static value ``k_i``, computed once
-   per parameter set instead of once per call; ``c X cos^2 + c X sin^2`` becomes ``c X``;
+   per parameter set instead of once per call; ``c X cos^2 + c X sin^2`` becomes ``c X``.
+   An expression whose expansion would run past :data:`EXPAND_LIMIT` terms (a bicycle's mass
+   matrix: products of long sums) is not expanded: its tree is kept, its parameter-only sums
+   and products hoisted as static values all the same;
 3. each sum is factored by its most frequent factor, recursively (a multivariate Horner
    scheme), then common subexpressions of the dynamic part (and, separately, of the static
    part) are eliminated (``symengine.cse``);
@@ -36,10 +39,11 @@ from typing import Sequence
 import symengine as se
 import sympy as sp
 
-__all__ = ["GENERATOR_VERSION", "Program", "Printer", "program", "python_source"]
+__all__ = ["GENERATOR_VERSION", "EXPAND_LIMIT", "Program", "Printer", "program", "python_source",
+           "expanded_terms"]
 
 #: Bumped whenever the generated code changes meaning or form (invalidates every cache entry).
-GENERATOR_VERSION = "9"
+GENERATOR_VERSION = "10"
 
 
 @dataclass(frozen=True)
@@ -90,6 +94,8 @@ class _Splitter:
         self.dynamic = dynamic
         self.statics = _Statics()
         self._inner: dict = {}
+        self._tree: dict = {}
+        self._terms: dict = {}
 
     def is_static(self, e) -> bool:
         return not (e.free_symbols & self.dynamic)
@@ -107,14 +113,52 @@ class _Splitter:
 
     def split(self, expr):
         """``expr`` as static coefficients times dynamic monomials, with the most frequent
-        factors taken out of the sums (``s1 (k1 c2 + k2 c3)``, not ``k1 s1 c2 + k2 s1 c3``)."""
+        factors taken out of the sums (``s1 (k1 c2 + k2 c3)``, not ``k1 s1 c2 + k2 s1 c3``).
+
+        An expression whose expansion would exceed :data:`EXPAND_LIMIT` terms keeps its tree
+        (:meth:`tree`): expanding a bicycle's mass matrix multiplies out products of long
+        sums."""
         if self.is_static(expr):
             return self.statics.symbol(expr)
+        if expanded_terms(expr, self._terms) > EXPAND_LIMIT:
+            return self.tree(expr)
         terms = []
         for d, c in self.groups(expr).items():
             k = self.statics.symbol(c)
             terms.append([f for f in _args(k, "Mul") + _args(d, "Mul") if f != 1])
         return _horner(terms)
+
+    def tree(self, e):
+        """``e`` as it is written, its parameter-only sums and products hoisted as statics."""
+        if self.is_static(e):
+            return self.statics.symbol(e)
+        hit = self._tree.get(e)
+        if hit is not None:
+            return hit
+        name = type(e).__name__
+        if name in ("Add", "Mul"):
+            op = se.Add if name == "Add" else se.Mul
+            fixed = [a for a in e.args if self.is_static(a)]
+            moving = [self.tree(a) for a in e.args if not self.is_static(a)]
+            hit = op(*([self.statics.symbol(op(*fixed))] if fixed else []), *moving)
+        else:
+            hit = self.inner(e)
+        self._tree[e] = hit
+        return hit
+
+    def bound(self, e):
+        """An upper bound of ``|e|`` without expanding (sin, cos taken as 1): the magnitude of
+        an expression too large to expand."""
+        if self.is_static(e):
+            return self.statics.symbol(se.Abs(e))
+        name = type(e).__name__
+        if name in ("Add", "Mul"):
+            return (se.Add if name == "Add" else se.Mul)(*[self.bound(a) for a in e.args])
+        if name in _TRIG:
+            return se.Integer(1)
+        if name == "Pow" and e.args[1].is_Integer and e.args[1] > 0:
+            return self.bound(e.args[0]) ** e.args[1]
+        return se.Abs(self.inner(e))
 
     def inner(self, f):
         """A dynamic factor with the static parts of its arguments hoisted as well."""
@@ -141,14 +185,50 @@ class _Splitter:
         even when its condition number (which ignores scale) looks harmless.
         """
         by_mono: dict = {}
+        bounds = []
         for e in exprs:
+            if not self.is_static(e) and expanded_terms(e, self._terms) > EXPAND_LIMIT:
+                bounds.append(self.bound(e))
+                continue
             if self.is_static(e):
                 by_mono[se.Integer(1)] = by_mono.get(se.Integer(1), 0) + se.Abs(e)
                 continue
             for d, c in self.groups(e).items():
                 mono = se.Mul(*[_untrig(f) for f in _args(d, "Mul")])
                 by_mono[mono] = by_mono.get(mono, 0) + se.Abs(c)
-        return se.Add(*[self.statics.symbol(c) * m for m, c in by_mono.items()])
+        return se.Add(*[self.statics.symbol(c) * m for m, c in by_mono.items()], *bounds)
+
+
+#: Estimated terms of an expanded expression beyond which :meth:`_Splitter.split` keeps the
+#: tree (the estimate multiplies the terms of a product's factors: an upper bound).
+EXPAND_LIMIT = 400
+
+
+def expanded_terms(e, memo: dict) -> int:
+    """Upper bound on the terms of ``se.expand(e)`` (capped just above the limit); a factor
+    with a negative or fractional power counts one (it is split on its own).
+
+    >>> import symengine as se
+    >>> a, b, c = se.symbols("a b c")
+    >>> expanded_terms((a + b) * (a + c + 1) ** 2 + 1 / (a + b), {})   # 2 * 3**2 + 1
+    19
+    """
+    hit = memo.get(e)
+    if hit is not None:
+        return hit
+    name = type(e).__name__
+    if name == "Add":
+        n = sum(expanded_terms(a, memo) for a in e.args)
+    elif name == "Mul":
+        n = 1
+        for a in e.args:
+            n = min(n * expanded_terms(a, memo), EXPAND_LIMIT + 1)
+    elif name == "Pow" and e.args[1].is_Integer and e.args[1] > 0:
+        n = expanded_terms(e.args[0], memo) ** min(int(e.args[1]), 64)
+    else:
+        n = 1
+    memo[e] = n = min(n, EXPAND_LIMIT + 1)
+    return n
 
 
 def _pythagoras(groups: dict) -> dict:
@@ -308,11 +388,7 @@ class Printer:
     _Exp1 = _Pi
 
     def _Add(self, e):
-        parts = [self(a) for a in e.args]
-        text = parts[0]
-        for p in parts[1:]:
-            text += f" - {p[1:]}" if p.startswith("-") and not p.startswith("-(") else f" + {p}"
-        return f"({text})"
+        return _sum_text([self(a) for a in e.args])
 
     def _Mul(self, e):
         num, den, sign = [], [], ""
@@ -323,9 +399,9 @@ class Printer:
                 den.append(self(se.Pow(a.args[0], -a.args[1])))
             else:
                 num.append(self(a))
-        text = "*".join(num) if num else "1.0"
+        text = _product_text(num) if num else "1.0"
         if den:
-            text += f"/({'*'.join(den)})"
+            text += f"/({_product_text(den)})"
         return f"{sign}{text}"
 
     def _Pow(self, e):
@@ -366,6 +442,30 @@ class Printer:
         if "Not supported" in text:
             raise NotImplementedError(f"cannot generate code for {expr}")
         return f"({text})"
+
+
+#: Terms or factors printed in one run; longer sums and products are printed in parenthesised
+#: runs of runs, so the parsed tree stays shallow (CPython's compiler refuses a chain of a few
+#: thousand ``+``: "maximum recursion depth exceeded during compilation").
+RUN = 64
+
+
+def _sum_text(parts: list) -> str:
+    """``(a + b - c ...)`` in parenthesised runs of at most :data:`RUN` terms."""
+    if len(parts) > RUN:
+        return _sum_text([_sum_text(parts[i:i + RUN]) for i in range(0, len(parts), RUN)])
+    text = parts[0]
+    for p in parts[1:]:
+        text += f" - {p[1:]}" if p.startswith("-") and not p.startswith("-(") else f" + {p}"
+    return f"({text})"
+
+
+def _product_text(parts: list) -> str:
+    """``a*b*c ...`` in parenthesised runs of at most :data:`RUN` factors."""
+    if len(parts) > RUN:
+        return _product_text([f"({_product_text(parts[i:i + RUN])})"
+                              for i in range(0, len(parts), RUN)])
+    return "*".join(parts)
 
 
 def _block(assignments, printer, indent: str) -> list[str]:

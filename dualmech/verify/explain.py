@@ -20,6 +20,7 @@ from dualmech.model.equations import from_plain
 from dualmech.exact.form import is_zero
 from dualmech.model.kinematics import t
 from dualmech.exact import linalg as la
+from dualmech.exact.mp_program import mp_function
 from dualmech.verify.coordinates import OwnCoordinates
 from dualmech.verify.display import Budget, OverBudget, dotted, solve_display, tidy
 from dualmech.verify.sampling import Context, System, solve_model
@@ -294,7 +295,7 @@ def _real_states(judgement, name, ref, ctx: Context, seed: int, want: int = 8) -
     coords = models[ref].coordinates
     systems = [System.of(models[ref], coords), System.of(models[name], coords)]
     exprs = systems[0].flat() + systems[1].flat()
-    fn = sp.lambdify(ctx.base, exprs, modules="mpmath")
+    fn = mp_function(ctx.base, exprs)
     rng = random.Random(seed + 7)
     n = len(coords)
     trig = set()
@@ -428,7 +429,7 @@ def explain_reaction(reaction: str, suspect: str, against: tuple, judgement, ctx
     coords = models[other].coordinates
     n = len(coords)
     systems = [System.of(models[other], coords), System.of(models[suspect], coords)]
-    fn = sp.lambdify(ctx.base, systems[0].flat() + systems[1].flat(), modules="mpmath")
+    fn = mp_function(ctx.base, systems[0].flat() + systems[1].flat())
     rng = random.Random(seed + 11)
     found = None
     with mpmath.workdps(30):
