@@ -26,15 +26,15 @@ Example
 """
 from __future__ import annotations
 
-import inspect
 import math
 import re
 import shutil
 import subprocess
-import textwrap
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Mapping
+
+from dualmech.model.sketch import sketch_of
 
 __all__ = ["write_handout", "problem_sheet", "solution_sheet", "parse_numbers", "escape",
            "Handout", "numbers_of"]
@@ -196,7 +196,7 @@ def _statement(problem, values: dict) -> list:
     out = []
     if problem.summary:
         out.append(escape(problem.summary))
-    figure = _sketch(problem)
+    figure = sketch_of(problem)
     if figure:
         out += [r"\subsection*{Figure and sign convention}", r"{\ttfamily\small"]
         out += [("~" if not line.strip() else "".join(
@@ -222,26 +222,6 @@ def _reactions_task(problem) -> str:
     if not names:
         return ""
     return " Find the reactions " + ", ".join(_name(n) for n in names) + "."
-
-
-def _sketch(problem) -> str:
-    """The first literal block after a mention of the sign convention in the problem's module
-    docstring (else its first literal block); "" when there is none."""
-    doc = inspect.getmodule(type(problem)).__doc__ or ""
-    lines = doc.splitlines()
-    starts = [i for i, line in enumerate(lines) if line.rstrip().endswith("::")]
-    if not starts:
-        return ""
-    near = [i for i in starts if "sign convention" in " ".join(
-        lines[max(0, i - 3):i + 1]).lower()]
-    i = (near or starts)[0]
-    base = len(lines[i]) - len(lines[i].lstrip())
-    block: list[str] = []
-    for line in lines[i + 1:i + 60]:
-        if line.strip() and len(line) - len(line.lstrip()) <= base:
-            break
-        block.append(line)
-    return textwrap.dedent("\n".join(block)).strip("\n")
 
 
 # -- typesetting expressions safely ------------------------------------------------------------

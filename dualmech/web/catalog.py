@@ -16,9 +16,9 @@ True
 """
 from __future__ import annotations
 
-import inspect
-import textwrap
 from dataclasses import dataclass, field
+
+from dualmech.model.sketch import sketch_of
 
 __all__ = ["ProblemInfo", "unit", "sketch_of"]
 
@@ -46,27 +46,6 @@ def unit(dimension) -> str:
             parts.append(symbol if e == 1 else f"{symbol}{str(e).translate(_SUPER)}")
     parts += [f"{n}{str(e).translate(_SUPER)}" for n, e in exps.items()]
     return " ".join(parts) or "1"
-
-
-def sketch_of(problem) -> str:
-    """The sign-convention sketch of ``problem``'s module docstring (its first literal block
-    after a line that mentions the sign convention, else its first literal block); ``""``
-    when there is none."""
-    doc = inspect.getmodule(type(problem)).__doc__ or ""
-    lines = doc.splitlines()
-    starts = [i for i, line in enumerate(lines) if line.rstrip().endswith("::")]
-    if not starts:
-        return ""
-    preferred = [i for i in starts if "sign convention" in " ".join(
-        lines[max(0, i - 3):i + 1]).lower()]
-    i = (preferred or starts)[0]
-    base = len(lines[i]) - len(lines[i].lstrip())
-    block: list[str] = []
-    for line in lines[i + 1:]:
-        if line.strip() and len(line) - len(line.lstrip()) <= base:
-            break
-        block.append(line)
-    return textwrap.dedent("\n".join(block)).strip("\n")
 
 
 @dataclass
