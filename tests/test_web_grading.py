@@ -195,3 +195,19 @@ def test_a_state_changing_request_from_another_origin_is_refused(client, origin,
         assert "Origin" in r.json()["error"]
     else:   # no referrer leaves for other sites, and the page's own posts keep their Origin
         assert r.headers["referrer-policy"] == "same-origin"
+
+
+def test_results_csv_keeps_answers_starting_with_a_sign_as_text():
+    """An answer `-g*sin(theta) = ...` or `+...` would be read as a formula by a spreadsheet;
+    like `=` and `@` it is written behind a quote (the teacher's results.csv and the
+    gradebook share one rule, web.common.safe_cell)."""
+    from dualmech.web.app import _csv
+    rows = list(csv.reader(io.StringIO(_csv([
+        {"id": "-s1", "question": "simple_pendulum", "line": 2, "status": "wrong",
+         "summary": "+1", "answer": "-g*sin(theta) - a*theta'' = 0"},
+        {"id": "@s2", "question": "=cmd", "line": 3, "status": "right", "summary": "ok",
+         "answer": "a*theta'' + g*sin(theta) = 0"}]))))
+    assert rows[1][0] == "'-s1" and rows[1][4] == "'+1"
+    assert rows[1][6] == "'-g*sin(theta) - a*theta'' = 0"
+    assert rows[2][0] == "'@s2" and rows[2][1] == "'=cmd"
+    assert rows[2][6] == "a*theta'' + g*sin(theta) = 0"

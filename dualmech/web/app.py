@@ -49,7 +49,7 @@ from dualmech.web.assets import SCRIPT, STYLE
 from dualmech.web.batches import BatchError, BatchRunner, read_upload
 from dualmech.web.catalog import ProblemInfo
 from dualmech.web.classroom import Classroom
-from dualmech.web.common import error as _error, json_object
+from dualmech.web.common import error as _error, json_object, safe_cell, teacher_only
 from dualmech.web.guard import RateLimiter, SecurityHeaders, TooLarge, read_body
 from dualmech.web.openapi import SPEC
 from dualmech.web.preview import preview
@@ -268,16 +268,6 @@ async def _lifespan(app: Starlette):
 def _server(request: Request) -> _Server:
     """The state of the app serving ``request``."""
     return request.app.state.server
-
-
-def teacher_only(handler):
-    """``handler`` for the teacher alone (the token, or the session cookie of /teacher)."""
-    async def guarded(request: Request):
-        if not _server(request).teacher(request):
-            return _error(401, "this needs the teacher token (Authorization: Bearer "
-                               "<token>, or log in on /teacher).")
-        return await handler(request)
-    return guarded
 
 
 def _files(handler):
@@ -548,12 +538,9 @@ def _csv(results: list[dict]) -> str:
     for r in results:
         feedback = "; ".join([e.get("sentence", "") for e in r.get("edits", [])]
                              + [f"dimensions: {d}" for d in r.get("dimension_issues", [])])
-        w.writerow([_cell(r.get("id")), _cell(r.get("question")), r.get("line"),
-                    r.get("status"), _cell(r.get("summary")), _cell(feedback),
-                    _cell(r.get("answer"))])
+        w.writerow([safe_cell(r.get("id")), safe_cell(r.get("question")), r.get("line"),
+                    r.get("status"), safe_cell(r.get("summary")), safe_cell(feedback),
+                    safe_cell(r.get("answer"))])
     return out.getvalue()
 
 
-def _cell(v) -> str:
-    s = "" if v is None else str(v)
-    return "'" + s if s[:1] in ("=", "@", "\t", "\r") else s

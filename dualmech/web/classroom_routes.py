@@ -28,7 +28,7 @@ from starlette.responses import HTMLResponse, JSONResponse, Response
 from starlette.routing import Route
 
 from dualmech.web import gradebook, pages
-from dualmech.web.common import error, json_object
+from dualmech.web.common import error, json_object, server_of as _server
 from dualmech.web.numbers import Personal, draw_numbers, shared_ranges
 from dualmech.web.rules import RuleError, read_assignment
 from dualmech.web.student_script import SCRIPT
@@ -40,10 +40,6 @@ ROSTER_BYTES = 512 * 1024
 #: Longest answer a student may send.
 ANSWER_CHARS = 4000
 _SHAPE = '{"title", "questions": [{"problem", "quantity"}], "students": [ids], ...}'
-
-
-def _server(request: Request):
-    return request.app.state.server
 
 
 def _limited(srv, key: str, kind: str):

@@ -19,7 +19,7 @@ from starlette.responses import JSONResponse
 
 from dualmech.web.guard import TooLarge, read_body
 
-__all__ = ["error", "lone_surrogate", "json_object"]
+__all__ = ["error", "lone_surrogate", "json_object", "server_of", "teacher_only", "safe_cell"]
 
 
 def error(status: int, message: str, headers: dict | None = None) -> JSONResponse:
@@ -67,3 +67,29 @@ async def json_object(request, limit: int, shape: str):
         return None, error(400, f"`{bad}` holds a lone surrogate (an escape such as \\ud800 "
                                 "that is half of a character); send the text as it is typed.")
     return body, None
+
+
+def server_of(request):
+    """The state every endpoint shares (``app.state.server``) for ``request``."""
+    return request.app.state.server
+
+
+def teacher_only(handler):
+    """``handler`` for the teacher alone (the token, or the session cookie of /teacher)."""
+    async def guarded(request):
+        if not server_of(request).teacher(request):
+            return error(401, "this needs the teacher token (Authorization: Bearer <token>, "
+                              "or log in on /teacher).")
+        return await handler(request)
+    return guarded
+
+
+def safe_cell(v) -> str:
+    """``v`` as a CSV cell no spreadsheet reads as a formula (``'`` before ``= + - @``, a tab
+    or a carriage return): an answer ``-g*sin(theta)`` stays text.
+
+    >>> safe_cell("=HYPERLINK(1)"), safe_cell("-g*sin(theta)"), safe_cell("s1"), safe_cell(None)
+    ("'=HYPERLINK(1)", "'-g*sin(theta)", 's1', '')
+    """
+    s = "" if v is None else str(v)
+    return "'" + s if s[:1] in ("=", "+", "-", "@", "\t", "\r") else s

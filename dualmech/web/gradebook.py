@@ -35,7 +35,7 @@ from starlette.requests import Request
 from starlette.responses import JSONResponse, Response
 from starlette.routing import Route
 
-from dualmech.web.common import error
+from dualmech.web.common import error, safe_cell, server_of as _server, teacher_only as _teacher
 
 __all__ = ["routes", "record", "mistake", "safe_cell", "grades_csv", "statistics"]
 
@@ -60,26 +60,6 @@ def mistake(edit: dict) -> str:
     if c and kind in _KINDS:
         return _KINDS[kind].format(c=c)
     return _PLAIN.get(kind, kind or "another mistake")
-
-
-def safe_cell(v) -> str:
-    """``v`` as a CSV cell no spreadsheet reads as a formula (``'`` before ``= + - @``, a tab
-    or a carriage return)."""
-    s = "" if v is None else str(v)
-    return "'" + s if s[:1] in ("=", "+", "-", "@", "\t", "\r") else s
-
-
-def _server(request: Request):
-    return request.app.state.server
-
-
-def _teacher(handler):
-    async def guarded(request: Request):
-        if not _server(request).teacher(request):
-            return error(401, "this needs the teacher token (Authorization: Bearer <token>, "
-                              "or log in on /teacher).")
-        return await handler(request)
-    return guarded
 
 
 async def _rules(request: Request):
