@@ -309,6 +309,10 @@ VERDICTS = {
         # the thin disk upright at speed v: lambda^2 = 4 (g r - 3 v^2)/(5 r^2), stable for
         # v^2 > g r/3 (the classic result; derived by hand in the module docstring)
         "lean eigenvalues squared on upright rolling": "correct",
+        # the same as numbers at r = 0.3, g = 10: v_c = sqrt(3/3) = 1 and, at v = 1/2,
+        # lambda = +-sqrt(4 (3 - 3/4) / 0.45) = +-sqrt(20)
+        "critical speed (m/s)": "correct",
+        "lean eigenvalues at v = 0.5 m/s": "correct",
     },
     "rolling_cylinder": {
         "(a) v_C": "correct",
