@@ -66,9 +66,12 @@ from __future__ import annotations
 
 import sympy as sp
 
-from dualmech import (Coordinate, EquationSet, Lagrangian, Parameter, Problem, Published,
-                      Reaction, SteadyMotion, coordinate, rate, t, ACCELERATION, ANGLE, FORCE,
-                      INERTIA, LENGTH, MASS)
+from types import SimpleNamespace
+
+from dualmech import (Coordinate, EquationSet, Frame, Lagrangian, NewtonEuler, Parameter, Point,
+                      Problem, Published, Reaction, RigidBody, SteadyMotion, coordinate, rate,
+                      rot_x, rot_y, rot_z, t, ACCELERATION, ANGLE, FORCE, INERTIA, LENGTH, MASS,
+                      TORQUE)
 
 __all__ = ["WhippleBicycle", "PROBLEMS", "TABLE_2", "WEAVE_SPEED", "CAPSIZE_SPEED", "v",
            "COORDS"]
@@ -205,6 +208,42 @@ def front_contact(hand: _Hand | None = None) -> sp.Expr:
     return (h**2 - rF**2 * (1 - az**2)) / (2 * h)
 
 
+def scene() -> SimpleNamespace:
+    """The Newton-Euler model's frames, points and four bodies (built with the toolkit's
+    frames, separately from the Lagrange model's matrices)."""
+    (f1, f3), (h1, h3) = _offsets()
+    O = Frame.ground("O")
+    Y = O.child("Y", rot_z(psi))
+    L = Y.child("L", rot_x(phi))
+    B = L.child("B", rot_y(theta))
+    S = B.child("S", _tilt())
+    H = S.child("H", rot_z(delta))
+    H0 = H.child("H0", _tilt().T)            # fixed in H, upright axes at zero steer
+    WR = B.child("WR", rot_y(thetaR))
+    WF = H.child("WF", rot_y(thetaF))
+    origin = Point.origin(O)
+    P = origin.locate("P", x * O.x + y * O.y)
+    CR = P.locate("C_R", rR * L.z)
+    A = CR.locate("A", (w + c) * B.x - rR * B.z)
+    CF = A.locate("C_F", f1 * H.x + f3 * H.z)
+    GB = CR.locate("G_B", xB * B.x + (-zB - rR) * B.z)
+    GH = A.locate("G_H", h1 * H.x + h3 * H.z)
+    h = CF.pos_from(origin).dot(O.z)
+    az = H.y.dot(O.z)
+    arm_R = -rR * L.z
+    arm_F = -(rF**2 / h) * (O.z - az * H.y)     # C_F to the front contact, on the ground
+    PR = CR.locate("P_R", arm_R)
+    PF = CF.locate("P_F", arm_F)
+    bodies = SimpleNamespace(
+        R=RigidBody("rear wheel", mR, CR, WR, sp.diag(IRxx, IRyy, IRxx)),
+        B=RigidBody("rear frame", mB, GB, B, _inertia_B()),
+        H=RigidBody("front frame", mH, GH, H0,
+                    sp.Matrix([[IHxx, 0, -IHxz], [0, IHyy, 0], [-IHxz, 0, IHzz]])),
+        F=RigidBody("front wheel", mF, CF, WF, sp.diag(IFxx, IFyy, IFxx)))
+    return SimpleNamespace(O=O, L=L, B=B, H=H, WR=WR, WF=WF, A=A, CR=CR, CF=CF, PR=PR, PF=PF,
+                           arm_R=arm_R, arm_F=arm_F, bodies=bodies)
+
+
 class WhippleBicycle(Problem):
     """The Meijaard et al. (2007) benchmark bicycle (see the module docstring)."""
 
@@ -286,6 +325,62 @@ class WhippleBicycle(Problem):
             lg.velocity_constraint(name, [row.diff(r) for r in rates])
         lg.constraint("F_F_z", front_contact(hand))
         return lg.equations()
+
+    def newton_euler(self) -> EquationSet:
+        """Four free-body diagrams: contact forces at both wheels, the hubs' and the steering
+        joint's reactions (forces and the couples about the axes the joints do not turn
+        about); the rolling and contact conditions at acceleration level."""
+        s = scene()
+        b = s.bodies
+        ne = NewtonEuler("newton_euler", coordinates=COORDS, ground=s.O,
+                         description="four bodies, contact forces and joint reactions unknown")
+        ne.gravity(-g * s.O.z)
+        ne.reaction_vector("F_R", b.R, s.O, at=s.PR)
+        ne.reaction_vector("F_F", b.F, s.O, at=s.PF)
+        ne.reaction_vector("R_R", b.R, s.B, at=s.CR, against=b.B, against_at=s.CR)
+        ne.reaction_torque("M_Rx", b.R, s.B.x, against=b.B)
+        ne.reaction_torque("M_Rz", b.R, s.B.z, against=b.B)
+        ne.reaction_vector("R_F", b.F, s.H, at=s.CF, against=b.H, against_at=s.CF)
+        ne.reaction_torque("M_Fx", b.F, s.H.x, against=b.H)
+        ne.reaction_torque("M_Fz", b.F, s.H.z, against=b.H)
+        ne.reaction_vector("R_S", b.H, s.H, at=s.A, against=b.B, against_at=s.A)
+        ne.reaction_torque("M_Sx", b.H, s.H.x, against=b.B)
+        ne.reaction_torque("M_Sy", b.H, s.H.y, against=b.B)
+        for body, frame in ((b.R, s.B), (b.B, s.B), (b.H, s.H), (b.F, s.H)):
+            for axis in (s.O.x, s.O.y, s.O.z):
+                ne.linear_momentum(body, axis)
+            for axis in (frame.x, frame.y, frame.z):
+                ne.angular_momentum(body, axis)
+        vR = s.CR.vel(s.O) + s.WR.ang_vel_in(s.O).cross(s.arm_R)
+        vF = s.CF.vel(s.O) + s.WF.ang_vel_in(s.O).cross(s.arm_F)
+        for label, row in (("rear, O.x", vR.dot(s.O.x)), ("rear, O.y", vR.dot(s.O.y)),
+                           ("front, O.x", vF.dot(s.O.x)), ("front, O.y", vF.dot(s.O.y)),
+                           ("front, up", vF.dot(s.O.z))):
+            ne.equation(f"rolling: material contact point, {label} (acceleration level)",
+                        {"rolling": row.diff(t)})
+        return ne.equations()
+
+    def published(self) -> list[Published]:
+        where = "Meijaard et al. (2007)"
+        out = []
+        for speed, eig in TABLE_2.items():
+            values = []
+            for e in eig:
+                values += [e, e.conjugate()] if isinstance(e, complex) else [e]
+            out.append(Published(f"Table 2, eigenvalues at v = {speed} m/s", "eigenvalues",
+                                 tuple(_number(z) for z in values), at=speed, tolerance=1e-9,
+                                 where=f"{where}, Table 2"))
+        out.append(Published("weave speed (m/s)", "critical", (WEAVE_SPEED,), tolerance=5e-7,
+                             where=f"{where}, section 5"))
+        out.append(Published("capsize speed (m/s)", "critical", (CAPSIZE_SPEED,),
+                             tolerance=5e-7, where=f"{where}, section 5"))
+        return out
+
+
+def _number(z) -> sp.Expr:
+    """A printed decimal as the exact number it prints (``Float`` parts read from text)."""
+    z = complex(z)
+    return sp.Float(repr(z.real), 20) + sp.I * sp.Float(repr(z.imag), 20)
 
 
 PROBLEMS = (WhippleBicycle,)
