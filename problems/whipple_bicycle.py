@@ -16,7 +16,10 @@ mass ``mR``, ``IRxx = IRzz``, ``IRyy``); rear body and frame B (mass centre ``(x
 mass ``mB``, inertia ``IBxx, IByy, IBzz, IBxz``); front frame H, handlebar and fork
 (``(xH, 0, zH)``, ``mH``, ``IHxx, IHyy, IHzz, IHxz``); front wheel F (``rF``, ``mF``,
 ``IFxx = IFzz``, ``IFyy``).  Wheelbase ``w``, trail ``c``, steer-axis tilt ``lam`` (from the
-vertical, top leaning back), gravity ``g``.
+vertical, top leaning back), gravity ``g``.  Masses, inertias and ``g`` are parameters (the
+exact verdict samples them); the geometry is fixed at Table 1's values as exact numbers
+(module constants): with it symbolic, the expanded equations grow past what the derivation
+finishes in minutes (the nonlinear bicycle's trigonometric products of nine lengths).
 
 The models use z *up* and y to the *left* (a half turn about x from the paper's axes), so the
 heights of the mass centres are ``-zB``, ``-zH`` and the products of inertia change sign:
@@ -50,6 +53,16 @@ rows are ``v_CF . e - rF^2 (w_F x (O.z - a_z a)) . e / h = 0`` for ``e = O.x, O.
 roots.  So every multiplier is a contact force: ``F_R_x, F_R_y`` (rear rows), ``F_F_x,
 F_F_y`` (front rows), ``F_F_z`` (the front contact); only the direct form gives the rear
 normal force ``F_R_z``.
+
+Direct form (model ``newton_euler``), written with the toolkit's frames: a free-body
+diagram per body, ``sum F = m a_G`` on ``O.x, O.y, O.z`` and ``sum tau_G = dH_G/dt`` on the
+body's axes; unknown: the contact forces ``F_R``, ``F_F`` (ground axes) at the contact points,
+the rear and front hubs' forces ``R_R``, ``R_F`` and couples about the two axes normal to each
+axle (``M_Rx, M_Rz``, ``M_Fx, M_Fz``), the steering joint's force ``R_S`` and couples normal
+to the steer axis (``M_Sx, M_Sy``): 21 reactions.  Closing rows, at acceleration level: the
+material contact points' velocities -- rear along ``O.x, O.y``, front along ``O.x, O.y`` and
+up (its vertical velocity is the front contact's velocity-level form; the rear's vanishes
+identically) -- differentiated once: 24 + 5 = 29 rows for 8 accelerations and 21 reactions.
 
 Steady motion: upright straight running at speed ``v``: every angle zero, ``x' = v``,
 ``thetaR' = v / rR``, ``thetaF' = v / rF``.  Linearised, the state reduces to roll, steer and
@@ -294,6 +307,21 @@ class WhippleBicycle(Problem):
         Reaction("F_F_x", FORCE, "ground on front wheel at its contact, along O.x"),
         Reaction("F_F_y", FORCE, "ground on front wheel at its contact, along O.y"),
         Reaction("F_F_z", FORCE, "ground on front wheel at its contact, up"),
+        Reaction("R_R_x", FORCE, "rear frame on rear wheel at the hub, along B.x"),
+        Reaction("R_R_y", FORCE, "rear frame on rear wheel at the hub, along B.y"),
+        Reaction("R_R_z", FORCE, "rear frame on rear wheel at the hub, along B.z"),
+        Reaction("M_Rx", TORQUE, "rear frame on rear wheel, couple about B.x"),
+        Reaction("M_Rz", TORQUE, "rear frame on rear wheel, couple about B.z"),
+        Reaction("R_F_x", FORCE, "front frame on front wheel at the hub, along H.x"),
+        Reaction("R_F_y", FORCE, "front frame on front wheel at the hub, along H.y"),
+        Reaction("R_F_z", FORCE, "front frame on front wheel at the hub, along H.z"),
+        Reaction("M_Fx", TORQUE, "front frame on front wheel, couple about H.x"),
+        Reaction("M_Fz", TORQUE, "front frame on front wheel, couple about H.z"),
+        Reaction("R_S_x", FORCE, "rear frame on front frame at the steering joint, along H.x"),
+        Reaction("R_S_y", FORCE, "rear frame on front frame at the steering joint, along H.y"),
+        Reaction("R_S_z", FORCE, "rear frame on front frame at the steering joint, along H.z"),
+        Reaction("M_Sx", TORQUE, "rear frame on front frame, couple about H.x"),
+        Reaction("M_Sy", TORQUE, "rear frame on front frame, couple about H.y"),
     )
     unilateral = {"F_R_z": "the rear wheel lifts off", "F_F_z": "the front wheel lifts off"}
     steady_motion = SteadyMotion({rate(x): v, rate(thetaR): v / rR, rate(thetaF): v / rF},

@@ -176,7 +176,7 @@ def _critical(spectra: _Spectra, pub) -> tuple[str, str]:
                            f"tolerance {tol:g}")
     lo, hi, count = spectra.sweep or (value / 2, value * 2, 21)
     lo, hi = float(min(lo, value - tol)), float(max(hi, value + tol))
-    found = spectra.criticals(lo, hi, max(3, min(int(count), 81)))
+    found = spectra.criticals(lo, hi, max(3, min(int(count), 41)))
     where = (f"it changes at {name} = " + ", ".join(f"{c:.12g}" for c in found)) if found \
         else "it does not change there"
     return "wrong", (f"{below} unstable eigenvalue(s) both at {name} = {value - tol:.12g} and "
