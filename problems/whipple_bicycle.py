@@ -43,16 +43,15 @@ the front contact.  The front frame's mass centre is ``A + h1 H.x + h3 H.z`` wit
 
 Contacts.  The rear wheel's lowest point is ``C_R - rR L.z`` (``L.z`` is the unit vector of the
 wheel plane normal to the horizontal ``L.x``).  The front wheel (axle ``a = H.y``, centre
-height ``h = C_F . O.z``) touches the ground at ``C_F - rF (O.z - a_z a) / s`` with ``s =
-sqrt(1 - a_z^2)``: its height vanishes when ``h = rF s``, written without the root as the
-holonomic constraint ``(h^2 - rF^2 (1 - a_z^2)) / (2 h) = 0`` (the branch ``h > 0``); on it,
-its gradient is that of the contact point's height ``h - rF s``.  Rolling: the material point
-of each wheel at its contact has no horizontal velocity.  For the front wheel that velocity is
-``v_CF - rF (w_F x (O.z - a_z a)) / s``; with ``rF / s = rF^2 / h`` on the constraint, the
-rows are ``v_CF . e - rF^2 (w_F x (O.z - a_z a)) . e / h = 0`` for ``e = O.x, O.y``, free of
-roots.  So every multiplier is a contact force: ``F_R_x, F_R_y`` (rear rows), ``F_F_x,
-F_F_y`` (front rows), ``F_F_z`` (the front contact); only the direct form gives the rear
-normal force ``F_R_z``.
+height ``h = C_F . O.z``) has its lowest point at ``C_F - rF (O.z - a_z a) / s`` with ``s =
+sqrt(1 - a_z^2)``; the holonomic constraint is its height, ``h - rF s = 0``.  Rolling: the
+material point of each wheel at its lowest point has no horizontal velocity; for the front
+wheel that velocity is ``v_CF - rF (w_F x (O.z - a_z a)) / s``, and its vertical component is
+the time derivative of ``h - rF s`` (``(w_F x a) . O.z = a_z'``).  So every multiplier is a
+contact force: ``F_R_x, F_R_y`` (rear rows), ``F_F_x, F_F_y`` (front rows), ``F_F_z`` (the
+front contact); only the direct form gives the rear normal force ``F_R_z``.  The two models
+are the same system at every state, on the constraints or off them (the rows and the
+contact force's point are the same functions of the state).
 
 Direct form (model ``newton_euler``), written with the toolkit's frames: a free-body
 diagram per body, ``sum F = m a_G`` on ``O.x, O.y, O.z`` and ``sum tau_G = dH_G/dt`` on the
@@ -206,19 +205,17 @@ def _rolling_rows(hand: _Hand) -> list:
     Z = sp.Matrix([0, 0, 1])
     vR = hand.CR.diff(t) + _cross(hand.RB * hand.wR, -rR * hand.RL[:, 2])
     a = hand.RH[:, 1]
-    h = hand.CF[2]
     down = Z - a[2] * a
-    vF = hand.CF.diff(t) - rF**2 * _cross(hand.RH * hand.wF, down) / h
+    vF = hand.CF.diff(t) - rF * _cross(hand.RH * hand.wF, down) / sp.sqrt(1 - a[2]**2)
     return [vR[0], vR[1], vF[0], vF[1]]
 
 
 def front_contact(hand: _Hand | None = None) -> sp.Expr:
-    """``(h^2 - rF^2 (1 - a_z^2)) / (2 h)``: zero when the front wheel touches the ground
-    (there, its gradient is that of the contact point's height: its multiplier is the normal
-    force)."""
+    """``h - rF sqrt(1 - a_z^2)``, the height of the front wheel's lowest point: zero when it
+    touches the ground (its multiplier is the normal force)."""
     hand = hand or _Hand()
     h, az = hand.CF[2], hand.RH[2, 1]
-    return (h**2 - rF**2 * (1 - az**2)) / (2 * h)
+    return h - rF * sp.sqrt(1 - az**2)
 
 
 def scene() -> SimpleNamespace:
@@ -241,10 +238,9 @@ def scene() -> SimpleNamespace:
     CF = A.locate("C_F", f1 * H.x + f3 * H.z)
     GB = CR.locate("G_B", xB * B.x + (-zB - rR) * B.z)
     GH = A.locate("G_H", h1 * H.x + h3 * H.z)
-    h = CF.pos_from(origin).dot(O.z)
     az = H.y.dot(O.z)
     arm_R = -rR * L.z
-    arm_F = -(rF**2 / h) * (O.z - az * H.y)     # C_F to the front contact, on the ground
+    arm_F = -(rF / sp.sqrt(1 - az**2)) * (O.z - az * H.y)   # C_F to the wheel's lowest point
     PR = CR.locate("P_R", arm_R)
     PF = CF.locate("P_F", arm_F)
     bodies = SimpleNamespace(

@@ -150,9 +150,8 @@ def _solve(eqs, point, values):
 
 @pytest.mark.slow
 def test_both_models_give_the_same_motion_and_contact_forces_on_the_constraints(problem):
-    """Off its constraints the two models differ (the rolling rows use the front contact to
-    drop a root), so the exact verdict, which samples free states, cannot judge them; here
-    both are solved at random states *on* the constraints, at 60 digits: the accelerations
+    """Both nonlinear models solved at random states *on* the constraints (the motion a
+    bicycle has), at 60 digits, independently of the toolkit's verdict: the accelerations
     and every contact force both carry must agree to far more digits than a wrong term
     would leave."""
     import random
