@@ -23,7 +23,7 @@ Example
 -------
 >>> from dualmech.problems import get
 >>> [v.verdict for v in judge_stability_claims(get("rolling_disk"))]
-['correct']
+['correct', 'correct']
 """
 from __future__ import annotations
 
