@@ -49,9 +49,9 @@ def sympy_route(W):
     Y = N.orientnew("Y", "Axis", [q1, N.z])
     L = Y.orientnew("L", "Axis", [q2, Y.x])
     B = L.orientnew("B", "Axis", [q3, L.y])
-    S = B.orientnew("S", "DCM", W._tilt().T)          # the steer axis S.z leans back
+    S = B.orientnew("S", "DCM", W._tilt())            # the steer axis S.z leans back
     H = S.orientnew("H", "Axis", [q4, S.z])
-    H0 = H.orientnew("H0", "DCM", W._tilt())          # upright axes, fixed in H
+    H0 = H.orientnew("H0", "DCM", W._tilt().T)        # upright axes, fixed in H
     WR, WF = ReferenceFrame("WR"), ReferenceFrame("WF")
     Y.set_ang_vel(N, u1 * N.z)
     L.set_ang_vel(Y, u2 * Y.x)
