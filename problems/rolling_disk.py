@@ -248,6 +248,14 @@ class RollingDisk(Problem):
             Published("lean eigenvalues squared on upright rolling", "expression",
                       (lean_eigenvalue_squared().subs(spin),),
                       (-sp.cancel(coeffs[2] / coeffs[0]).subs(spin),), where=where),
+            # the same two results as numbers at the defaults (r = 0.3, g = 10), judged on
+            # the linearised steady motion: v_c = sqrt(g r / 3) = 1, and at v = 1/2 the lean
+            # eigenvalues are +-sqrt(4 (3 - 3/4) / (5 * 0.09)) = +-sqrt(20)
+            Published("critical speed (m/s)", "critical", (1.0,), tolerance=1e-9,
+                      where=where + ": v_c = sqrt(g r / 3) at r = 0.3, g = 10"),
+            Published("lean eigenvalues at v = 0.5 m/s", "eigenvalues",
+                      (sp.sqrt(20), -sp.sqrt(20)), at=0.5, tolerance=1e-12,
+                      where=where + ": +-sqrt(4 (g r - 3 v^2) / (5 r^2))"),
         ]
 
 

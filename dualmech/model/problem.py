@@ -183,7 +183,15 @@ class Published:
         from the derivations, and together they must determine every acceleration (a set
         such as ``(e1, 2*e1)`` or ``0 = 0`` is wrong: it determines nothing);
       * ``"expression"`` -- ``printed`` must equal ``reference`` (our own derivation, in the
-        same order) at every state of motion.
+        same order) at every state of motion;
+      * ``"eigenvalues"`` -- ``printed`` are the eigenvalues (numbers, complex ones with
+        ``sympy.I``) of the problem's declared
+        :attr:`~dualmech.model.problem.Problem.steady_motion`, linearised in the reference
+        model, at the value ``at`` of its parameter: the ones that do not vanish at every
+        value (a heading, a neighbouring steady motion), each within ``tolerance``;
+      * ``"critical"`` -- ``printed`` is one value of the steady motion's parameter where its
+        stability changes (the number of eigenvalues with a positive real part changes: a
+        weave speed, a capsize speed, a critical speed), within ``tolerance``.
 
     ``coordinates`` names the model whose coordinates the printed answer uses (default: the
     reference model's).  ``where`` says where in the source it is printed.
@@ -201,6 +209,11 @@ class Published:
     ...               (m * l**2 * rate(theta)**2 / 2,), where="(2)")
     >>> eom.kind, T.reference == (m * l**2 * rate(theta)**2 / 2,)
     ('motion', True)
+
+    A critical speed, as a benchmark prints it (judged against the linearised steady motion):
+
+    >>> Published("weave speed", "critical", (4.29238253634111,), tolerance=1e-6).printed
+    (4.29238253634111,)
     """
 
     label: str
@@ -209,16 +222,55 @@ class Published:
     reference: tuple = ()
     where: str = ""
     coordinates: str | None = None
+    at: object = None
+    tolerance: float = 0.0
 
     def __post_init__(self):
-        if self.kind not in ("equation", "motion", "expression"):
-            raise ValueError(f"`kind` must be 'equation', 'motion' or 'expression', got "
+        if self.kind not in KINDS:
+            raise ValueError(f"`kind` must be one of {', '.join(map(repr, KINDS))}, got "
                              f"{self.kind!r}.")
+        if self.kind in ("eigenvalues", "critical"):
+            _stability_claim(self)
+            return
         object.__setattr__(self, "printed", tuple(as_expr(p) for p in _tuple(self.printed)))
         object.__setattr__(self, "reference", tuple(as_expr(p) for p in _tuple(self.reference)))
         if self.kind == "expression" and len(self.reference) != len(self.printed):
             raise ValueError(f"published `{self.label}`: {len(self.printed)} printed expressions "
                              f"but {len(self.reference)} reference expressions.")
+
+
+#: the kinds of printed answer :class:`Published` takes
+KINDS = ("equation", "motion", "expression", "eigenvalues", "critical")
+
+
+def _stability_claim(pub: Published) -> None:
+    """Check and normalise a claim about a steady motion's stability (numbers, not formulas)."""
+    import math
+    values = []
+    for p in _tuple(pub.printed):
+        z = as_expr(p)
+        if z.free_symbols or not z.is_number or z.is_finite is False:
+            raise ValueError(f"published `{pub.label}`: a {pub.kind} claim prints numbers, "
+                             f"got {p!r:.60}.")
+        values.append(z)
+    if not values or (pub.kind == "critical" and len(values) != 1):
+        raise ValueError(f"published `{pub.label}`: a critical claim prints one value, an "
+                         "eigenvalues claim at least one.")
+    if pub.kind == "critical" and not values[0].is_real:
+        raise ValueError(f"published `{pub.label}`: a critical value is real, got {values[0]}.")
+    if isinstance(pub.tolerance, bool) or not isinstance(pub.tolerance, (int, float)) or \
+            not math.isfinite(pub.tolerance) or pub.tolerance <= 0:
+        raise ValueError(f"published `{pub.label}`: give `tolerance`, a positive number (how "
+                         "close a computed value must be to the printed one).")
+    if pub.kind == "eigenvalues":
+        at = as_expr(pub.at) if pub.at is not None else None
+        if at is None or at.free_symbols or not at.is_real:
+            raise ValueError(f"published `{pub.label}`: give `at`, the value of the steady "
+                             "motion's parameter the eigenvalues are printed for.")
+    elif pub.at is not None:
+        raise ValueError(f"published `{pub.label}`: a critical claim takes no `at`.")
+    object.__setattr__(pub, "printed", tuple(values))
+    object.__setattr__(pub, "reference", ())
 
 
 def _check_range(what: str, rng, finite: bool = True) -> None:

@@ -48,6 +48,7 @@ import sympy as sp
 from dualmech.model._expr import as_expr
 from dualmech.model.equations import EquationSet, ModelError, is_zero_expression
 from dualmech.model.kinematics import t
+from dualmech.model._linearise_se import at_steady as _at_steady_se
 
 __all__ = ["SteadyLinearisation", "linearize_about", "exact_number"]
 
@@ -147,16 +148,20 @@ def linearize_about(eqs: EquationSet, about: Mapping, values: Mapping | None = N
                          "to be linearised.")
     subs = {k: exact_number(v) for k, v in (values or {}).items() if k != parameter}
     x0 = _point(eqs, about, subs)
-    A, b = eqs.plain_matrix()
-    A, b = A.subs(subs), b.subs(subs)
     states = eqs.states
     qs, qds = [s.q for s in states], [s.qd for s in states]
     n = eqs.n
-    cons = _constraints(eqs, A, b, qs, qds)
-    A0, b0 = A.subs(x0), b.subs(x0)
-    w = sp.symbols(f"_w0:{A.rows}")
-    R = (A * sp.Matrix(w) - b).jacobian(qs + qds).subs(x0)
-    phi, kinds = _constraint_rows(cons, qs, qds, x0)
+    w = sp.symbols(f"_w0:{len(eqs.equations)}")
+    if eqs.plain_matrix_se() is not None:    # held in symengine: differentiate there
+        A0, b0, R, cons = _at_steady_se(eqs, subs, x0, w)
+    else:
+        A, b = eqs.plain_matrix()
+        A, b = A.subs(subs), b.subs(subs)
+        cons = [(lab, [as_expr(x).subs(x0) for x in a], _rates_of(a, qs, qds, x0), closed)
+                for lab, a, closed in _constraints(eqs, A, b, qs, qds)]
+        A0, b0 = A.subs(x0), b.subs(x0)
+        R = (A * sp.Matrix(w) - b).jacobian(qs + qds).subs(x0)
+    phi, kinds = _constraint_rows(cons, n)
     # cyclic: the coordinate enters neither the linearised equations nor the constraints
     dropped = [k for k in range(n) if all(is_zero_expression(sp.expand(e)) for e in R[:, k])
                and all(is_zero_expression(row[k]) for row in phi)]
@@ -174,18 +179,17 @@ def linearize_about(eqs: EquationSet, about: Mapping, values: Mapping | None = N
         else [{}]
     generic = checks[0]
     dep = _dependent(phi, kinds, keep, n, names, independent, generic, eqs.name)
-    parts = (A0, b0, R, w, phi, keep, dep, n, eqs.name, [lab for lab, _, _ in cons])
+    parts = (A0, b0, R, w, phi, keep, dep, n, eqs.name, [c[0] for c in cons])
     for value in checks:
         _check_steady(parts, x0, eqs, value)
-        for label, a, _ in cons:
-            c0 = sp.cancel(sum(as_expr(aj).subs(x0) * x0[qd] for aj, qd in zip(a, qds))
-                           .subs(value))
+        for label, a0, _, _ in cons:
+            c0 = sp.cancel(sum(aj * x0[qd] for aj, qd in zip(a0, qds)).subs(value))
             if not is_zero_expression(c0):
                 raise ModelError(f"the state {_show(x0)} breaks the constraint [{label}] of "
                                  f"`{eqs.name}` (its velocity level is {c0}, not 0); give "
                                  "rates that satisfy it.")
     symbolic = None
-    if parameter is None or A.rows <= SYMBOLIC_SIZE:
+    if parameter is None or A0.rows <= SYMBOLIC_SIZE:
         symbolic = _reduce(parts, {})
         if parameter is not None and sp.count_ops(symbolic) > SYMBOLIC_OPS:
             symbolic = None
@@ -195,7 +199,7 @@ def linearize_about(eqs: EquationSet, about: Mapping, values: Mapping | None = N
                                tuple(names[i] for i in dep),
                                tuple((lab, kind) for lab, kind in
                                      zip([c[0] for c in cons],
-                                         ["holonomic" if c[2] else "velocity" for c in cons])),
+                                         ["holonomic" if c[3] else "velocity" for c in cons])),
                                parts)
 
 
@@ -234,15 +238,19 @@ def _constraints(eqs: EquationSet, A, b, qs, qds) -> list:
     return out
 
 
-def _constraint_rows(cons, qs, qds, x0) -> tuple[list, list]:
+def _rates_of(a, qs, qds, x0) -> list:
+    """``d(a . q')/dq`` at the steady state ``x0``."""
+    c = sum(aj * qd for aj, qd in zip(a, qds))
+    return [sp.diff(c, q).subs(x0) for q in qs]
+
+
+def _constraint_rows(cons, n) -> tuple[list, list]:
     """Linearised constraints on ``(dq, dq')``: position rows, then velocity rows."""
     pos, vel = [], []
-    for _, a, holonomic in cons:
-        c = sum(aj * qd for aj, qd in zip(a, qds))
-        a0 = [as_expr(x).subs(x0) for x in a]
+    for _, a0, rates, holonomic in cons:
         if holonomic:
-            pos.append(a0 + [0] * len(qs))
-        vel.append([sp.diff(c, q).subs(x0) for q in qs] + a0)
+            pos.append(list(a0) + [0] * n)
+        vel.append(list(rates) + list(a0))
     return pos + vel, ["position"] * len(pos) + ["velocity"] * len(vel)
 
 

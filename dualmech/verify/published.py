@@ -8,7 +8,9 @@ derivations and the reactions from the models that determine them; then
   equations of motion: any combination of them is accepted);
 * a *motion* set is right when every equation is, and together they determine every
   acceleration (``(e1, 2*e1)`` or ``0 = 0`` determine nothing: wrong, with that reason);
-* an *expression* is right when it equals our own derivation there.
+* an *expression* is right when it equals our own derivation there;
+* a claim about a steady motion's stability (eigenvalues, a critical value) is judged on the
+  linearised steady motion by :mod:`dualmech.verify.stability_claims`.
 
 Nothing is solved symbolically to reach a verdict.  Why a wrong answer is wrong (the derived
 equation it most resembles, what is left over, its dimensions) is worked out when the detail
@@ -29,6 +31,7 @@ from dualmech.exact.form import MP_DIGITS, is_zero
 from dualmech.model.kinematics import t
 from dualmech.exact.errors import Undecidable
 from dualmech.verify.display import Budget, OverBudget, dotted, ops_within, solve_display, tidy
+from dualmech.verify.stability_claims import STABILITY_KINDS, judge_stability_claims
 from dualmech.verify.sampling import MAX_ATTEMPTS, Context, Sampler, System, shared_manifold, solve_model
 
 __all__ = ["PublishedVerdict", "check_published", "closest_equation"]
@@ -88,6 +91,13 @@ def check_published(problem, points: int = 8, seed: int = 0, context: Context | 
     the caller has already built them (``problem.published()`` by default)."""
     limits = limits or Budget()
     pubs = problem.published() if printed is None else printed
+    claims_about_stability = [p for p in pubs if p.kind in STABILITY_KINDS]
+    if claims_about_stability:
+        judged = {v.label: v for v in judge_stability_claims(problem, claims_about_stability)}
+        rest = check_published(problem, points, seed, context, limits, claims,
+                               [p for p in pubs if p.kind not in STABILITY_KINDS])
+        judged.update({v.label: v for v in rest})
+        return [judged[p.label] for p in pubs if p.label in judged]
     if not pubs:
         return []
     models = problem.models()
