@@ -50,7 +50,6 @@ MODELS = {
     "two_rod_linkage": ["newton_euler", "lagrange", "lagrange_x", "multiplier"],
     "wheel_on_pivot": ["newton_euler", "lagrange", "angular_momentum", "multiplier",
                        "pivot_multiplier"],
-    "whipple_bicycle": ["newton_euler", "lagrange"],
 }
 
 _MOBILE_ROBOT_COMMON = {"L": "correct", "I_P": "correct", "r_x, r_y, a_Px, a_Py": "correct",
@@ -432,10 +431,4 @@ VERDICTS = {
         "(b) F_y": "correct",
         "(b) contact force relation": "correct",
     },
-    # Meijaard et al. (2007): Table 2's eigenvalues at v = 0..10 m/s (within 1e-9) and the
-    # weave and capsize speeds of section 5 (within 5e-7); the paper derives them from the
-    # same linearised equations (M, C1, K0, K2), and sympy's own Kane model of the benchmark
-    # (tests/test_whipple_bicycle.py) gives the same eigenvalues
-    "whipple_bicycle": {**{f"Table 2, eigenvalues at v = {v} m/s": "correct" for v in range(11)},
-                        "weave speed (m/s)": "correct", "capsize speed (m/s)": "correct"},
 }
