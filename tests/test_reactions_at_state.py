@@ -180,6 +180,12 @@ def test_report_json_holds_the_values_of_reactions_past_the_budget(capsys, tmp_p
     expected = cartesian_tensions(*_values(problems.get("n_link_pendulum")), q, qd)
     assert [got["values"][f"T{i}"]["direct"] for i in (1, 2, 3)] == pytest.approx(expected,
                                                                                  rel=1e-10)
+    # the HTML page shows the same values (10 digits), and the referee's beside them
+    page = (tmp_path / "report.html").read_text()
+    assert "<h3>Reaction values at a state</h3>" in page
+    for i in (1, 2, 3):
+        v = got["values"][f"T{i}"]
+        assert f"<td>T{i}</td><td>{v['direct']:.10g}</td><td>{v['referee']:.10g} (" in page
 
 
 def test_reactions_no_referee_derives_get_the_other_derivations_beside(capsys):

@@ -221,9 +221,40 @@ def _equations_html(c, notation: str) -> list[str]:
             note = directions.get(str(name), "")
             out.append((f"<p class='note'>{html.escape(note)}</p>" if note else "")
                        + mathml.equation(sp.Symbol(str(name)), expr, notation))
+    out += _values_html(c)
     for note in getattr(c, "display_notes", []) or []:
         out.append(f"<p class='note'>{html.escape(note)}</p>")
     return out
+
+
+def _values_html(c) -> list[str]:
+    """The reactions without a formula (past the display budget), as values at the problem's
+    default state: the direct form's and, beside it, another derivation's."""
+    p = c.problem
+    formulas = getattr(c, "reactions", None)
+    if not getattr(c, "equivalent", False) or formulas is None or \
+            all(r.name in formulas for r in p.reactions):
+        return []
+    from dualmech.numeric.reactions_state import reactions_at_state
+    try:
+        v = reactions_at_state(p, None, comparison=c)
+    except Exception as exc:  # noqa: BLE001 -- a singular state must not lose the page
+        return [f"<p class='note'>reaction values at a state: {html.escape(str(exc))}</p>"]
+    rows = []
+    for name, value in v.direct.items():
+        if name in v.referee:
+            other = f"{v.referee[name][0]:.10g} ({html.escape(v.referee[name][1])}, Kane)"
+        elif v.others.get(name):
+            other = "; ".join(f"{x:.10g} ({html.escape(who)})" for x, who in v.others[name])
+        else:
+            other = "no other derivation gives it"
+        rows.append(f"<tr><td>{html.escape(name)}</td><td>{value:.10g}</td>"
+                    f"<td>{other}</td></tr>")
+    return ["<h3>Reaction values at a state</h3>",
+            f"<p class='note'>Too long to show as formulas; at t = {v.time:g} s, "
+            f"{html.escape(v.where())}.</p>",
+            "<table><tr><th>reaction</th><th>direct form</th><th>another derivation</th>"
+            "</tr>" + "".join(rows) + "</table>"]
 
 
 def _shortest(expr, limits=None):
