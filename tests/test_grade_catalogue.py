@@ -78,6 +78,8 @@ def _printed_answers(g, ctx):
     for pub in ctx.problem.published():
         if pub.coordinates and pub.coordinates != ctx.problem.reference:
             continue
+        if pub.kind in ("eigenvalues", "critical"):
+            continue   # numbers about a steady motion's stability: not an answer one types
         try:
             printed = [ctx.plain(e) for e in pub.printed]
             if pub.kind == "expression":

@@ -3,7 +3,8 @@ symengine: substitute the parameters, find the constraint rows, differentiate an
 at the steady state there, and bring back to sympy only the small results (numbers and
 polynomials in the swept parameter).
 
-A row is a constraint when it holds no reaction, its acceleration coefficients ``a(q)`` hold
+A row is a constraint when it may be one (:func:`~dualmech.model.stability.constraint_candidates`:
+a declared constraint's row, or any row of a model with multipliers), holds no reaction, its acceleration coefficients ``a(q)`` hold
 no rate, and its rest is ``-(da/dt) . q'``; that identity, and whether the form ``a . dq`` is
 closed (holonomic), are recognised by evaluating at :data:`PROBES` random rational states at
 :data:`BITS` bits (a structural recognition, not a verdict: a row taken for a constraint is
@@ -54,7 +55,9 @@ def at_steady(eqs, subs: dict, x0: dict, w) -> tuple:
     cons = []
     rng = random.Random(20071955)
     probes = [_probe(rng, qs, qds, rows, rest) for _ in range(PROBES)]
-    for i, row in enumerate(rows):
+    from dualmech.model.stability import constraint_candidates
+    for i in constraint_candidates(eqs):
+        row = rows[i]
         a = row[:n]
         if any(x != 0 for x in row[n:]) or all(x == 0 for x in a) or \
                 any(x.has(*qds) for x in a):

@@ -222,9 +222,7 @@ def _point(eqs: EquationSet, about: Mapping, subs: dict) -> dict:
 def _constraints(eqs: EquationSet, A, b, qs, qds) -> list:
     """``[(label, a(q), holonomic)]``: rows free of reactions that are ``d/dt (a . q') = 0``."""
     n, out = eqs.n, []
-    if not eqs.unknowns:
-        return out
-    for i in range(A.rows):
+    for i in constraint_candidates(eqs):
         a = list(A[i, :n])
         if any(not is_zero_expression(x) for x in A[i, n:]) or all(x == 0 for x in a) or \
                 any(x.has(*qds) for x in a):
@@ -236,6 +234,17 @@ def _constraints(eqs: EquationSet, A, b, qs, qds) -> list:
                      for j in range(n) for k in range(j + 1, n))
         out.append((eqs.labels[i], a, closed))
     return out
+
+
+def constraint_candidates(eqs: EquationSet) -> list[int]:
+    """The rows that may be a constraint's acceleration level: the declared constraints' rows
+    when the model records them (``EquationSet.constraints``), else every row of a model with
+    multipliers (none without: a cyclic coordinate's equation ``d/dt (a . q') = 0`` has the
+    same shape as a differentiated velocity constraint, and is not one)."""
+    declared = {c.label for c in getattr(eqs, "constraints", ())}
+    if declared:
+        return [i for i, label in enumerate(eqs.labels) if label in declared]
+    return list(range(len(eqs.labels))) if eqs.unknowns else []
 
 
 def _rates_of(a, qs, qds, x0) -> list:
