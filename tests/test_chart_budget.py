@@ -18,7 +18,7 @@ import pytest
 from dualmech.model.equations import ModelError
 from dualmech.numeric.dae import ConstrainedModel, metric_defect
 from dualmech.numeric.formulations import formulations, static_coordinates
-from dualmech.numeric.integrators import DID_NOT_FINISH, Budget, BudgetExceeded, integrate
+from dualmech.numeric.integrators import DID_NOT_FINISH, WorkBudget, BudgetExceeded, integrate
 from dualmech.numeric.studies.workprecision import work_precision
 from dualmech.problems import get
 
@@ -115,7 +115,7 @@ def test_the_chart_of_a_dae_reference_says_why_it_does_not_apply():
 def test_an_evaluation_budget_ends_the_run_as_did_not_finish():
     te = np.linspace(0.0, 10.0, 11)
     run = integrate(lambda t, y: np.array([y[1], -y[0]]), (0.0, 10.0), [0.0, 1.0], "RK45",
-                    t_eval=te, rtol=1e-10, atol=1e-12, budget=Budget(evaluations=120))
+                    t_eval=te, rtol=1e-10, atol=1e-12, budget=WorkBudget(evaluations=120))
     assert not run.success and run.message.startswith(DID_NOT_FINISH)
     assert "121 states evaluated" in run.message and 0.0 < run.t_end < 10.0
 
@@ -125,7 +125,7 @@ def test_the_index3_cart_pendulum_point_stops_within_its_cpu_budget():
     forms, _ = formulations(get("cart_pendulum"), stabilisations=("index3",))
     (f,) = [f for f in forms if f.dae_solver is not None]
     te = np.linspace(0.0, 5.0, 51)
-    run = f.run("IDA", (0.0, 5.0), te, rtol=1e-3, budget=Budget(seconds=0.5))
+    run = f.run("IDA", (0.0, 5.0), te, rtol=1e-3, budget=WorkBudget(seconds=0.5))
     if run.success:
         pytest.skip("IDA finished within half a second here; nothing to cut")
     assert run.message.startswith(DID_NOT_FINISH), run.message
@@ -134,9 +134,9 @@ def test_the_index3_cart_pendulum_point_stops_within_its_cpu_budget():
 
 def test_a_budget_must_be_positive():
     with pytest.raises(ValueError, match="`seconds`"):
-        Budget(seconds=0.0)
+        WorkBudget(seconds=0.0)
     with pytest.raises(BudgetExceeded):
-        Budget(evaluations=1).meter().charge(0.0, 2)
+        WorkBudget(evaluations=1).meter().charge(0.0, 2)
 
 
 def test_models_without_the_reference_are_charted_against_it():

@@ -121,14 +121,14 @@ def handle(args: argparse.Namespace) -> int:
         raise UsageError("`--workers` must be at least 1.")
     if args.connections_per_client < 1:
         raise UsageError("`--connections-per-client` must be at least 1.")
-    from dualmech.web.server import Limits, proxy_settings, serve
+    from dualmech.web.server import ConnectionLimits, proxy_settings, serve
     try:
         proxy_settings(args.trusted_proxy)
     except ValueError as exc:
         raise UsageError(f"`--trusted-proxy`: {exc}") from None
     token = read_token(args.token_file, os.environ, args.token)
     specs = served_specs(args.problems)
-    limits = Limits(args.header_timeout, args.body_timeout, args.connections_per_client)
+    limits = ConnectionLimits(args.header_timeout, args.body_timeout, args.connections_per_client)
     try:
         serve(args.host, args.port, specs, token=token, data=args.data,
               workers=args.workers, as_json=args.json, trusted_proxies=args.trusted_proxy,

@@ -158,7 +158,7 @@ _CHART_JOB: dict = {}
 
 def _chart_one(i: int) -> tuple:
     """Chart problem ``i`` of :data:`_CHART_JOB`: ``(name, failure, json, text line)``."""
-    from dualmech.numeric.integrators import Budget
+    from dualmech.numeric.integrators import WorkBudget
     from dualmech.numeric.studies.workprecision import (BUDGET, QUICK_BUDGET, STEPS,
                                                         TOLERANCES, work_precision)
     p, args, out = _CHART_JOB["problems"][i], _CHART_JOB["args"], _CHART_JOB["out"]
@@ -166,7 +166,7 @@ def _chart_one(i: int) -> tuple:
     steps = (32, 256) if args.quick else STEPS
     budget = QUICK_BUDGET if args.quick else BUDGET
     if args.budget is not None:
-        budget = Budget(args.budget, budget.evaluations)
+        budget = WorkBudget(args.budget, budget.evaluations)
     repeats = args.repeats or (1 if args.quick else 5)
     try:
         with about(p):

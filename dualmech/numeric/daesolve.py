@@ -46,7 +46,7 @@ from typing import Sequence
 import numpy as np
 
 from dualmech.model.equations import ModelError
-from dualmech.numeric.integrators import Budget, BudgetExceeded, Run, _Meter
+from dualmech.numeric.integrators import WorkBudget, BudgetExceeded, Run, _Meter
 
 __all__ = ["DAE_FORMS", "DAE_METHODS", "IDASolver"]
 
@@ -104,11 +104,11 @@ class IDASolver:
         return y, yp
 
     def run(self, t_span: Sequence[float], y0, t_eval, *, rtol: float, atol,
-            max_steps: int = 500_000, budget: Budget | None = None) -> Run:
+            max_steps: int = 500_000, budget: WorkBudget | None = None) -> Run:
         """Integrate from ``y0 = [q, v]``; the :class:`Run` holds ``[q; v]`` at ``t_eval``.
 
         Past ``budget`` (CPU seconds and residual calls,
-        :class:`~dualmech.numeric.integrators.Budget`) the run ends as *did not finish*."""
+        :class:`~dualmech.numeric.integrators.WorkBudget`) the run ends as *did not finish*."""
         import sksundae as sun
         n = self.n
         t_eval = np.asarray(t_eval, dtype=float)

@@ -39,7 +39,7 @@ from dualmech.numeric.dae import STABILISATIONS, ConstrainedModel, constraints_o
 from dualmech.numeric.daesolve import DAE_FORMS, IDASolver
 from dualmech.numeric.energy import (EnergyFunction, conservative_reason, dynamic_rows,
                                      identically_zero)
-from dualmech.numeric.integrators import Budget, Run, integrate
+from dualmech.numeric.integrators import WorkBudget, Run, integrate
 from dualmech.numeric.model import NumericModel, StateFunction
 from dualmech.numeric.simulation import default_initial_state, problem_parameters
 from dualmech.numeric.stepping import projected_run
@@ -133,10 +133,10 @@ class Formulation:
         return [m for m in candidates if m != "IDA"]
 
     def run(self, method: str, t_span, t_eval, rtol: float = 1e-6, step: float | None = None,
-            events: Sequence = (), budget: Budget | None = None) -> Run:
+            events: Sequence = (), budget: WorkBudget | None = None) -> Run:
         """Integrate from ``y0`` (``atol = rtol * scales``; projection after every accepted
         step for ``"projection"``; IDA for the index-3 and GGL forms); past ``budget`` the
-        run ends as *did not finish* (:class:`~dualmech.numeric.integrators.Budget`)."""
+        run ends as *did not finish* (:class:`~dualmech.numeric.integrators.WorkBudget`)."""
         atol = rtol * self.scales
         if self.dae_solver is not None or method == "IDA":
             if self.dae_solver is None or events:

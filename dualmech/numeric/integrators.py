@@ -11,7 +11,7 @@ long runs instead of drifting.
 
 Every :class:`Run` says what it cost: CPU seconds, right-hand-side calls, states evaluated
 (a vectorised call evaluates many -- the implicit methods' finite-difference Jacobians),
-accepted steps, Jacobians and LU factorisations.  A :class:`Budget` (CPU seconds and states
+accepted steps, Jacobians and LU factorisations.  A :class:`WorkBudget` (CPU seconds and states
 evaluated) ends a run that would spend more as a *did not finish* run
 (:data:`DID_NOT_FINISH` opens its message; ``success = False``, ``t_end`` where it got to)
 instead of letting it stall.  With ``projector`` (a callable
@@ -37,7 +37,7 @@ from scipy.integrate import solve_ivp
 
 from dualmech.numeric.model import SingularityError
 
-__all__ = ["Run", "integrate", "Budget", "BudgetExceeded", "DID_NOT_FINISH", "METHODS", "SCIPY_METHODS", "EXPLICIT", "IMPLICIT",
+__all__ = ["Run", "integrate", "WorkBudget", "BudgetExceeded", "DID_NOT_FINISH", "METHODS", "SCIPY_METHODS", "EXPLICIT", "IMPLICIT",
            "STRUCTURE_PRESERVING", "SYMPLECTIC", "IntegrationError"]
 
 SCIPY_METHODS = ("RK45", "DOP853", "Radau", "BDF", "LSODA")
@@ -53,12 +53,12 @@ class IntegrationError(RuntimeError):
     """An integrator could not go on; the message says where and what to change."""
 
 
-#: How the message of a run cut by its :class:`Budget` begins.
+#: How the message of a run cut by its :class:`WorkBudget` begins.
 DID_NOT_FINISH = "did not finish"
 
 
 class BudgetExceeded(IntegrationError):
-    """A run spent its :class:`Budget`; ``t`` is the last time it evaluated."""
+    """A run spent its :class:`WorkBudget`; ``t`` is the last time it evaluated."""
 
     def __init__(self, message: str, t: float):
         super().__init__(message)
@@ -66,7 +66,7 @@ class BudgetExceeded(IntegrationError):
 
 
 @dataclass(frozen=True)
-class Budget:
+class WorkBudget:
     """The most work one run may do: CPU seconds of this process and states evaluated.
 
     ``None`` leaves a measure unbounded.  :meth:`meter` starts the clock; the meter's
@@ -76,7 +76,7 @@ class Budget:
 
     Example
     -------
-    >>> meter = Budget(seconds=None, evaluations=3).meter()
+    >>> meter = WorkBudget(seconds=None, evaluations=3).meter()
     >>> meter.charge(0.0, 3)
     >>> try:
     ...     meter.charge(0.5, 1)
@@ -104,10 +104,10 @@ class Budget:
 
 
 class _Meter:
-    """One run's spending against a :class:`Budget` (see :meth:`Budget.meter`)."""
+    """One run's spending against a :class:`WorkBudget` (see :meth:`WorkBudget.meter`)."""
 
-    def __init__(self, budget: Budget | None):
-        self.budget = budget or Budget()
+    def __init__(self, budget: WorkBudget | None):
+        self.budget = budget or WorkBudget()
         self.start, self.evaluations = _time.process_time(), 0
 
     def charge(self, t: float, evaluations: int = 1) -> None:
@@ -196,7 +196,7 @@ class _Counted:
     """A right-hand side that counts its calls and the states it evaluated (and charges
     them to a budget's meter)."""
 
-    def __init__(self, fun: Callable, budget: Budget | None = None):
+    def __init__(self, fun: Callable, budget: WorkBudget | None = None):
         self.fun, self.calls, self.evaluations = fun, 0, 0
         self.meter = _Meter(budget)
 
@@ -213,7 +213,7 @@ def integrate(fun: Callable, t_span: Sequence[float], y0, method: str, *,
               step: float | None = None, events: Sequence[Callable] = (),
               projector: Callable | None = None, hamiltonian=None,
               constraint: tuple | None = None, max_steps: int = 2_000_000,
-              budget: Budget | None = None) -> Run:
+              budget: WorkBudget | None = None) -> Run:
     """Integrate ``y' = fun(t, y)`` (vectorised ``fun`` accepted) and count the work.
 
     Parameters
@@ -227,7 +227,7 @@ def integrate(fun: Callable, t_span: Sequence[float], y0, method: str, *,
     hamiltonian : :class:`~dualmech.numeric.energy.EnergyFunction`, for a symplectic method
     constraint : ``(g, G)`` for ``"rattle"``: ``g(q)`` the constraint residuals, ``G(q)``
         their gradients
-    budget : :class:`Budget`, optional
+    budget : :class:`WorkBudget`, optional
         The most the run may spend (scipy methods; the symplectic methods' fixed steps
         bound their work already); past it the run ends as *did not finish*.
 

@@ -34,7 +34,7 @@ import numpy as np
 from scipy.integrate import BDF, DOP853, RK45, Radau
 
 from dualmech.model.equations import ModelError
-from dualmech.numeric.integrators import Budget, BudgetExceeded, Run, _Meter
+from dualmech.numeric.integrators import WorkBudget, BudgetExceeded, Run, _Meter
 
 __all__ = ["projected_run", "PROJECTABLE", "CHECKED_SCIPY"]
 
@@ -47,7 +47,7 @@ CHECKED_SCIPY = ("1.17",)
 
 
 class _Counter:
-    def __init__(self, fun, budget: Budget | None = None):
+    def __init__(self, fun, budget: WorkBudget | None = None):
         self.fun, self.calls, self.evaluations = fun, 0, 0
         self.meter = _Meter(budget)
 
@@ -61,7 +61,7 @@ class _Counter:
 
 def projected_run(fun: Callable, t_span: Sequence[float], y0, method: str, t_eval, *,
                   rtol: float, atol, projector: Callable,
-                  max_steps: int = 2_000_000, budget: Budget | None = None) -> Run:
+                  max_steps: int = 2_000_000, budget: WorkBudget | None = None) -> Run:
     """Integrate with ``projector(t, y) -> y`` applied after every accepted step.
 
     Parameters
@@ -71,7 +71,7 @@ def projected_run(fun: Callable, t_span: Sequence[float], y0, method: str, t_eva
     t_eval : increasing sample times in ``t_span``
     rtol, atol : the stepper's tolerances
     projector : the projection onto the manifold
-    budget : the most the run may spend (:class:`~dualmech.numeric.integrators.Budget`);
+    budget : the most the run may spend (:class:`~dualmech.numeric.integrators.WorkBudget`);
         past it the run ends as *did not finish*
 
     Notes

@@ -25,10 +25,10 @@ from pathlib import Path
 from typing import Sequence
 
 from dualmech.web.store import default_data_dir
-from dualmech.web.transport import Limits, protocol, raise_open_files
+from dualmech.web.transport import ConnectionLimits, protocol, raise_open_files
 
 __all__ = ["serve", "is_loopback", "default_data_dir", "prepare_data_dir", "proxy_settings",
-           "Limits"]
+           "ConnectionLimits"]
 
 #: Connections the server accepts at once, from all clients together.
 CONNECTIONS = 2048
@@ -106,19 +106,19 @@ def _check_port(host: str, port: int) -> None:
 def serve(host: str = "127.0.0.1", port: int = 8000, problems: Sequence[str] | None = None,
           *, token: str | None = None, data: str | Path | None = None,
           workers: int | None = None, out=sys.stdout, as_json: bool = False,
-          trusted_proxies: Sequence[str] = (), limits: Limits | None = None) -> None:
+          trusted_proxies: Sequence[str] = (), limits: ConnectionLimits | None = None) -> None:
     """Serve the pages and the API until interrupted (see :func:`.app.create_app`).
 
     ``token`` is the teacher's; a random one is made and printed when none is given.
     ``data`` is the data directory (default :func:`default_data_dir`); ``trusted_proxies``
     the addresses whose ``X-Forwarded-For`` is believed (see :func:`proxy_settings`);
-    ``limits`` the deadlines and per-address connections of :class:`.transport.Limits`.
+    ``limits`` the deadlines and per-address connections of :class:`.transport.ConnectionLimits`.
     """
     import uvicorn
 
     from dualmech.web.app import create_app
     proxies = proxy_settings(trusted_proxies)
-    limits = limits or Limits()
+    limits = limits or ConnectionLimits()
     path = prepare_data_dir(data)
     _check_port(host, port)
     raise_open_files(CONNECTIONS + 256)

@@ -18,11 +18,11 @@ the process's open-file limit so the connection limits, not the operating system
 
 Example
 -------
->>> limits = Limits(header_seconds=5, body_seconds=20, per_client=64)
+>>> limits = ConnectionLimits(header_seconds=5, body_seconds=20, per_client=64)
 >>> cls = protocol(limits)
 >>> cls.limits.per_client, issubclass(cls, GuardedH11)
 (64, True)
->>> Limits(header_seconds=0)
+>>> ConnectionLimits(header_seconds=0)
 Traceback (most recent call last):
 ...
 ValueError: header_seconds must be a positive number of seconds, got 0.
@@ -36,7 +36,7 @@ from dataclasses import dataclass
 
 from uvicorn.protocols.http.h11_impl import H11Protocol
 
-__all__ = ["Limits", "GuardedH11", "protocol", "raise_open_files"]
+__all__ = ["ConnectionLimits", "GuardedH11", "protocol", "raise_open_files"]
 
 
 
@@ -53,7 +53,7 @@ _503 = _response("503 Service Unavailable", "too many open connections from this
 
 
 @dataclass(frozen=True)
-class Limits:
+class ConnectionLimits:
     """Deadlines (seconds) for a request still arriving, and open connections per address."""
 
     header_seconds: float = 10.0
@@ -77,7 +77,7 @@ class GuardedH11(H11Protocol):
     address (``open``) to the class; one server uses one such class.
     """
 
-    limits: Limits = Limits()
+    limits: ConnectionLimits = ConnectionLimits()
     open: Counter = Counter()
 
     _timer: asyncio.TimerHandle | None = None
@@ -152,7 +152,7 @@ class GuardedH11(H11Protocol):
         self.transport.close()
 
 
-def protocol(limits: Limits) -> type[GuardedH11]:
+def protocol(limits: ConnectionLimits) -> type[GuardedH11]:
     """A :class:`GuardedH11` subclass with ``limits`` and its own count of connections."""
     return type("GuardedH11", (GuardedH11,), {"limits": limits, "open": Counter()})
 

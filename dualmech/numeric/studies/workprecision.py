@@ -66,7 +66,7 @@ from dualmech.numeric.dae import BAUMGARTE_GAINS, DAE_SOLVED, STABILISATIONS
 from dualmech.numeric.daesolve import DAE_METHODS
 from dualmech.numeric.formulations import Formulation, formulations
 from dualmech.numeric.symplectic import energy_drift
-from dualmech.numeric.integrators import DID_NOT_FINISH, METHODS, Budget, Run
+from dualmech.numeric.integrators import DID_NOT_FINISH, METHODS, WorkBudget, Run
 from dualmech.numeric.studies.wplesson import lesson_chart, scene_text
 from dualmech.numeric.units import work_conjugate_unit
 
@@ -80,8 +80,8 @@ REFERENCE_RTOL, CHECK_RTOL = 1e-13, 1e-12
 #: The most one point may spend by default (the reference run: ten times as much); a run
 #: past it is a *did not finish* point.  The quick sweep of ``dualmech chart`` uses
 #: :data:`QUICK_BUDGET`.
-BUDGET = Budget(seconds=20.0, evaluations=2_000_000)
-QUICK_BUDGET = Budget(seconds=1.0, evaluations=100_000)
+BUDGET = WorkBudget(seconds=20.0, evaluations=2_000_000)
+QUICK_BUDGET = WorkBudget(seconds=1.0, evaluations=100_000)
 #: ``(field, axis label)`` of the measures, one chart panel each.
 MEASURES = (("final_error", "state error at the end\n[relative to range]"),
             ("path_error", "state error along the path\n[relative to range]"),
@@ -135,7 +135,7 @@ class WorkPrecision:
     skipped: dict = field(default_factory=dict)
     #: the parameter values and initial conditions of the runs, as a line of text
     scene: str = ""
-    #: the most one point could spend (:class:`~dualmech.numeric.integrators.Budget`, as text)
+    #: the most one point could spend (:class:`~dualmech.numeric.integrators.WorkBudget`, as text)
     budget: str = ""
 
     def curves(self) -> dict:
@@ -286,12 +286,12 @@ def _reference_form(forms, coordinates: tuple) -> Formulation | None:
                 None)
 
 
-def _scaled(budget: Budget, factor: float) -> Budget:
-    return Budget(budget.seconds and budget.seconds * factor,
+def _scaled(budget: WorkBudget, factor: float) -> WorkBudget:
+    return WorkBudget(budget.seconds and budget.seconds * factor,
                   budget.evaluations and int(budget.evaluations * factor))
 
 
-def _reference(forms, span, te, budget: Budget | None = None) -> tuple[dict, float]:
+def _reference(forms, span, te, budget: WorkBudget | None = None) -> tuple[dict, float]:
     base = forms[0]
     n = base.n
     run = base.run("DOP853", span, te, rtol=REFERENCE_RTOL, budget=budget)
@@ -338,17 +338,17 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
                    params: Mapping | None = None, y0=None, progress: bool = True,
                    stabilisations: Sequence[str] = STABILISATIONS + DAE_SOLVED,
                    baumgarte_gains: Sequence[float] = BAUMGARTE_GAINS,
-                   repeats: int = 5, budget: Budget | None = BUDGET) -> WorkPrecision:
+                   repeats: int = 5, budget: WorkBudget | None = BUDGET) -> WorkPrecision:
     """The sweep of the module docstring over ``duration`` seconds (cut to fit the scene);
     ``models``, ``stabilisations`` and ``baumgarte_gains`` narrow the formulations;
     ``repeats`` runs per point give its CPU time (their median; fewer once a point's runs
     have spent ``budget.seconds``).  A run past ``budget`` (:class:`~dualmech.numeric.
-    integrators.Budget`) is a *did not finish* point (``did_not_finish``), and so are the
+    integrators.WorkBudget`) is a *did not finish* point (``did_not_finish``), and so are the
     tighter tolerances of its curve, recorded as not run (a tighter tolerance costs more);
     the reference run gets ten times the budget."""
     if repeats < 1:
         raise ValueError(f"`repeats` must be at least 1, got {repeats}.")
-    budget = budget or Budget()
+    budget = budget or WorkBudget()
     from tqdm import tqdm
     asked = None if models is None else tuple(models) + (problem.reference,)
     forms, skipped = formulations(problem, params, y0, models=asked,
@@ -405,7 +405,7 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
 
 
 def _point(f: Formulation, m: str, tol: float, span, te, ref, repeats: int,
-           budget: Budget) -> RunResult:
+           budget: WorkBudget) -> RunResult:
     """One point: the run, its repeats (while they fit in the budget's seconds), measures."""
     try:
         run = f.run(m, span, te, rtol=tol, step=tol, budget=budget)
