@@ -44,10 +44,10 @@ def inline(expr, notation_: str = "dots") -> str:
     return _wrap(notation.mathml(expr, notation_), block=False)
 
 
-def equation(lhs, rhs=0, notation_: str = "dots") -> str:
-    """``<math>`` markup of ``lhs = rhs``."""
+def equation(lhs, rhs=0, notation_: str = "dots", block: bool = True) -> str:
+    """``<math>`` markup of ``lhs = rhs`` (``block=False``: inside a sentence)."""
     return _wrap(f"{notation.mathml(lhs, notation_)}<mo>=</mo>"
-                 f"{notation.mathml(rhs, notation_)}")
+                 f"{notation.mathml(rhs, notation_)}", block=block)
 
 
 def sentence(parts, notation_: str = "dots") -> str:

@@ -221,15 +221,16 @@ def _equations_html(c, notation: str) -> list[str]:
             note = directions.get(str(name), "")
             out.append((f"<p class='note'>{html.escape(note)}</p>" if note else "")
                        + mathml.equation(sp.Symbol(str(name)), expr, notation))
-    out += _values_html(c)
+    out += _values_html(c, notation)
     for note in getattr(c, "display_notes", []) or []:
         out.append(f"<p class='note'>{html.escape(note)}</p>")
     return out
 
 
-def _values_html(c) -> list[str]:
+def _values_html(c, notation: str) -> list[str]:
     """The reactions without a formula (past the display budget), as values at the problem's
-    default state: the direct form's and, beside it, another derivation's."""
+    default state: the direct form's and, beside it, another derivation's; the state
+    typeset in the page's notation."""
     p = c.problem
     formulas = getattr(c, "reactions", None)
     if not getattr(c, "equivalent", False) or formulas is None or \
@@ -252,9 +253,25 @@ def _values_html(c) -> list[str]:
                     f"<td>{other}</td></tr>")
     return ["<h3>Reaction values at a state</h3>",
             f"<p class='note'>Too long to show as formulas; at t = {v.time:g} s, "
-            f"{html.escape(v.where())}.</p>",
+            f"{_state_html(p, v.state, notation)} (the default state of the problem; "
+            "<code>dualmech show NAME --at</code> for another).</p>",
             "<table><tr><th>reaction</th><th>direct form</th><th>another derivation</th>"
             "</tr>" + "".join(rows) + "</table>"]
+
+
+def _state_html(p, state: dict, notation: str) -> str:
+    """``theta = 0.2, theta' = 0`` typeset: each name as the coordinate or its rate."""
+    coords = {q.func.__name__: q for q in p.model(p.reference).coordinates}
+    parts = []
+    for key, value in state.items():
+        base = key[:-4] if key.endswith("_dot") else key
+        q = coords.get(base)
+        if q is None:
+            parts.append(html.escape(f"{key} = {value:.6g}"))
+            continue
+        lhs = q.diff(q.args[0]) if key.endswith("_dot") else q
+        parts.append(mathml.equation(lhs, sp.Float(value, 6), notation, block=False))
+    return ", ".join(parts)
 
 
 def _shortest(expr, limits=None):
