@@ -6,8 +6,8 @@ over its bound, 404 for a problem this server does not serve).
 
 Example
 -------
->>> served = {"simple_pendulum": ["eom", "T"]}
->>> r = read_assignment({"title": "HW 1", "questions": [{"problem": "simple_pendulum"}],
+>>> served = {"my_pendulum": ["eom", "T"]}
+>>> r = read_assignment({"title": "HW 1", "questions": [{"problem": "my_pendulum"}],
 ...                      "students": ["s1", "s2"], "deadline": "2030-01-01T09:00:00Z"},
 ...                     served, served.get)
 >>> r["attempts"], r["feedback"], r["deadline"], r["questions"][0]["quantity"]
