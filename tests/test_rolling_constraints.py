@@ -13,7 +13,7 @@ import pytest
 import sympy as sp
 import sympy.physics.mechanics as me
 
-from dualmech import (Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate,
+from dualmech import (EquationSet, Frame, Lagrangian, NewtonEuler, Particle, Point, coordinate,
                       linearize_about, rate, compare)
 from dualmech.model.equations import ModelError, is_zero_expression
 from dualmech.problems import get
@@ -182,6 +182,34 @@ def test_a_holonomic_declaration_matches_a_multiplier_model():
     wrong.constraint("N", Y + l)
     j = judge({"direct": eqs, "lagrange": lg.equations(), "wrong": wrong.equations()})
     assert j.odd == ["wrong"], j
+
+
+def test_a_constraint_no_coordinate_solves_is_compared_at_acceleration_level():
+    """The pendulum in Cartesian coordinates: Lagrange declares x^2 + y^2 - l^2 = 0 (solved
+    for no coordinate without a root, so the manifold cannot be sampled exactly and points are
+    drawn freely); the direct form writes the rod's condition by hand at acceleration level,
+    x x'' + y y'' + x'^2 + y'^2 = 0, with the rod's tension S along the rod.  By hand the two
+    are the same motion at every state; the declared constraint is not "violated" off its
+    manifold (its acceleration row is what is compared there).  A wrong tension direction is
+    still caught."""
+    X, Y = coordinate("X"), coordinate("Y")
+    m, l, gg = sp.symbols("m l g", positive=True)
+    S = sp.Symbol("S", real=True)
+    xd, yd = rate(X), rate(Y)
+    lg = Lagrangian(coordinates=[X, Y])
+    lg.kinetic("T", m * (xd**2 + yd**2) / 2)
+    lg.potential("V", m * gg * Y)
+    lg.constraint("lam", X**2 + Y**2 - l**2)
+    rows = [m * rate(X, 2) + S * X / l, m * rate(Y, 2) + S * Y / l + m * gg,
+            X * rate(X, 2) + Y * rate(Y, 2) + xd**2 + yd**2]
+    direct = EquationSet("direct", (X, Y), tuple(rows), (S,))
+    from dualmech.verify.verdicts import judge
+    j = judge({"lagrange": lg.equations(), "direct": direct})
+    assert not j.faults and len(j.groups) == 1 and j.points == 8, j
+    bad = EquationSet("bad", (X, Y), (rows[0], m * rate(Y, 2) - S * Y / l + m * gg, rows[2]),
+                      (S,))
+    j = judge({"lagrange": lg.equations(), "bad": bad})
+    assert j.faults, j
 
 
 @pytest.mark.parametrize("value, match", [

@@ -191,6 +191,8 @@ def judge(models: Mapping, *, context: Context | None = None, points: int = 8, s
         open_all: dict = {}
         agreeing = None      # pairs of models that agree at every point used
         for point, _vals, parts, residues in sampler.points(rng, MAX_ATTEMPTS * wanted):
+            if not sampler.dependents:
+                residues = [_undeclared(s, r) for s, r in zip(systems, residues)]
             sols = {nm: solve_model(A, b, n, s.model.unknowns, claims.get(nm))
                     for nm, s, (A, b) in zip(names, systems, parts)}
             if any(s.status == "undecided" for s in sols.values()):
@@ -300,6 +302,14 @@ def _withdrawn(sols: dict, referees: Mapping) -> dict:
                        if s.status == "inconsistent" else
                        "the declarations do not determine the accelerations")
     return out
+
+
+def _undeclared(system, residues: list) -> list:
+    """The residues of ``system``'s static rows alone, without its declared constraints': at
+    points drawn freely (no manifold could be sampled exactly) a declared constraint need not
+    vanish, and its acceleration-level row is compared with the other models' rows instead."""
+    kept = system.constraints[:len(system.constraints) - system.declared]
+    return residues[:sum(len(levels) for levels in kept)]
 
 
 def _faults_at(names, sols: dict, statics: dict, referees: Mapping | None = None):
