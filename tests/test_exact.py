@@ -215,6 +215,11 @@ _SE_CASES = [
     sp.sin(th) ** 2 - sp.cos(th) ** 2 - 1,
     3 * th + sp.sin(th),
     (sp.cos(th) * a + 1) / (a ** 2 + sp.sin(ph) ** 2 + 1) - a,
+    sp.sqrt(a ** 2 + 1) - a,                                            # square roots
+    a / sp.sqrt(a**2 + sp.sin(th)**2 + 1)
+    - a * sp.sqrt(a**2 + sp.sin(th)**2 + 1) / (a**2 + sp.sin(th)**2 + 1),
+    1 / sp.sqrt(2 - sp.cos(th)**2 + a**2) - 1 / sp.sqrt(1 + sp.sin(th)**2 + a**2),   # twins
+    1 / sp.sqrt(2 - sp.cos(th)**2 + a**2) - 1 / sp.sqrt(1 + sp.sin(ph)**2 + a**2),
 ]
 
 
@@ -241,12 +246,13 @@ def test_symengine_world_decides_as_the_sympy_world(expr):
 
 
 @pytest.mark.parametrize("expr", [
-    sp.sqrt(a ** 2 + 1) - a,                   # a square root
+    sp.sqrt(1 + sp.sqrt(a ** 2 + 1)) - a,      # a nested square root
+    sp.sqrt(a**2 * sp.cos(th)**2 + 1 + 2 * a * sp.cos(th)) - a,   # a square radicand: |Y|
     sp.pi * sp.sin(th) - 3 * sp.sin(th),       # pi
     sp.exp(a) - a - 1,                         # an exponential
     sp.Abs(sp.cos(th)) - sp.cos(th),           # a branch function (not an identity)
     sp.sin(th ** 2),                           # not a linear argument
-], ids=["sqrt", "pi", "exp", "abs", "square-argument"])
+], ids=["nested-sqrt", "square-radicand", "pi", "exp", "abs", "square-argument"])
 def test_symengine_input_outside_the_common_case_takes_the_general_route(expr):
     import symengine as se
     from dualmech.exact.sample_space import analyse_se
@@ -292,3 +298,34 @@ def test_exact_values_and_solutions_do_not_depend_on_the_engine(engine):
     else:
         assert solved is None                     # without FLINT the caller reduces
 
+
+
+def test_programs_over_one_square_root_match_sympys_algebraic_numbers():
+    """The register program's fast path for values in one field Q(sqrt d) (pairs of FLINT
+    rationals) against sympy's own algebraic-number arithmetic on the same expressions:
+    sums, products, negative powers and quotients, where ``a + b sqrt(d)`` is exact."""
+    from fractions import Fraction
+
+    from dualmech.exact.register_program import compile_rational
+    from dualmech.exact.surds import Surd
+    x, y, z = sp.symbols("x y z")
+    exprs = [x**2 - 2 * x * y + 3, 1 / (x + y) ** 2 - z / x, (x * y - 1) ** 3 / (z + x),
+             y / 7 + z, x**-3 * y]
+    run = compile_rational([x, y, z], exprs)
+    r = Surd.root(Fraction(5, 3))
+    values = (Fraction(1, 3) + 2 * r, Fraction(-2, 5) * r, Fraction(7, 11))
+    exact = {x: sp.Rational(1, 3) + 2 * sp.sqrt(sp.Rational(5, 3)),
+             y: sp.Rational(-2, 5) * sp.sqrt(sp.Rational(5, 3)), z: sp.Rational(7, 11)}
+    from dualmech.exact import register_program
+    assert register_program._one_root(values) == Fraction(5, 3)    # the fast path runs
+    got = run(*values)
+    assert isinstance(got[0], Surd) and isinstance(got[3], Surd)
+    for value, e in zip(got, exprs):
+        want = sp.radsimp(e.xreplace(exact))
+        a = sp.Rational(str(value.terms.get(frozenset(), 0))) if isinstance(value, Surd) \
+            else sp.Rational(str(value))
+        b = sp.Rational(str(value.terms.get(frozenset([Fraction(5, 3)]), 0))) \
+            if isinstance(value, Surd) else 0
+        assert sp.expand(want - (a + b * sp.sqrt(sp.Rational(5, 3)))) == 0
+    with pytest.raises(ZeroDivisionError):
+        compile_rational([x], [1 / (x**2 - 3)])(Surd.root(3))

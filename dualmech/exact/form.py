@@ -252,8 +252,9 @@ class ExactForm:
         fn = _compile(args, world.exprs)
         radicands = _compile(args, [r for _, r in world.radicals]) if world.radicals else None
         # sqrt(X) written sqrt(r) sqrt(X_j): X - r X_j must vanish at every point used
-        twins = _compile(args, [x - sp.Rational(r.numerator, r.denominator) * xj
-                                for x, r, xj in world.twins]) if world.twins else None
+        twins = _compile(args, [x - (se if isinstance(x, se.Basic) else sp).Rational(
+            r.numerator, r.denominator) * xj for x, r, xj in world.twins]) \
+            if world.twins else None
         choices = [[_compile(args, c) for c in b.choices] for b in world.branches]
         form = cls(method="exact", cases=cases, _world=world, _fn=fn, _radicands=radicands,
                    _twins=twins, _choices=choices, **base)

@@ -42,7 +42,7 @@ from dualmech.exact.trig_values import world_values
 from dualmech.exact.errors import NotExact, Undecidable
 from dualmech.exact.surds import independent, is_square
 
-__all__ = ["u_rule", "factor_signs", "square_sqrt", "factored_sqrt", "radicals_dependent",
+__all__ = ["u_rule", "factor_signs", "square_screen", "square_sqrt", "factored_sqrt", "radicals_dependent",
            "const_root", "proportional"]
 
 _MAX_MULTIPLE = 16   # larger multiples are not expanded into polynomials in u
@@ -151,8 +151,9 @@ def _values(b, exprs, seed: int) -> list:
     for e in exprs:
         hit = cache.get((seed, e))
         if hit is None:
-            v = e.xreplace(point)
-            hit = cache[(seed, e)] = (Fraction(int(v.p), int(v.q)) if v.is_Rational else False)
+            v = e.xreplace(point)    # a sympy or (a held world's) symengine expression
+            hit = cache[(seed, e)] = (Fraction(int(v.p), int(v.q))
+                                      if getattr(v, "is_Rational", False) else False)
         out.append(hit if hit is not False else None)
     return out
 
@@ -207,15 +208,23 @@ def radicals_dependent(b, radicands) -> bool:
     return True
 
 
-def square_sqrt(b, node, radicand):
-    """``sqrt`` of a radicand that is a perfect square up to a square-free rest (screened at two
-    random points): ``|Y| * sqrt(c * rest)``; ``None`` when it is not."""
+def square_screen(b, radicand) -> bool:
+    """Is ``radicand`` a perfect square at two random world points (so, almost surely, a square
+    up to a square-free rest)?"""
     if not radicand.free_symbols:
-        return None
+        return False
     for seed in (1, 2):
         (v,) = _values(b, [radicand], seed)
         if v is None or not is_square(v):
-            return None
+            return False
+    return True
+
+
+def square_sqrt(b, node, radicand):
+    """``sqrt`` of a radicand that is a perfect square up to a square-free rest (screened at two
+    random points): ``|Y| * sqrt(c * rest)``; ``None`` when it is not."""
+    if not square_screen(b, radicand):
+        return None
     parts = _factored(b, radicand)
     if parts is None:
         raise NotExact(node, "a square root too large to factor")

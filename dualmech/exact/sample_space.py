@@ -40,6 +40,7 @@ import sympy as sp
 
 from dualmech.exact.errors import NotExact, Undecidable
 from dualmech.exact.radicals import (const_root, factor_signs, factored_sqrt, proportional,
+                                     square_screen as _square_screen,
                                      radicals_dependent, square_sqrt)
 from dualmech.model import trees
 
@@ -311,7 +312,10 @@ class _Scan:
         if kx is trees.INTEGER:
             return self.visit(b)
         if self.held is not None:
-            raise _Leave
+            if kx is trees.RATIONAL and int(x.q) == 2 and not self.visit(b):
+                self.radicals[e] = (b, int(x.p))   # the root of a rational radicand
+                return self.RAD
+            raise _Leave   # nested roots, other orders: the general route
         if kx is trees.RATIONAL and x.q == 2:
             self.core(b, e, "a square root's radicand")
             self.radicals[e] = (b, int(x.p))
@@ -373,9 +377,12 @@ def analyse_se(exprs: Sequence, symbols: Sequence) -> World | None:
     The common case is what rigid-body models produce: rational functions of the symbols
     and of circle and growth functions of rational combinations of them.  The scan and the
     world are those of :func:`analyse` (the same atoms, arguments and degree bound, so the
-    same verdict and false-equal bound); anything else (square roots, ``pi``, ``E``, branch
-    functions, floats, undeclared symbols, an integer symbol inside a sine) returns ``None``
-    and the caller takes the general sympy route, which decides or refuses it.
+    same verdict and false-equal bound), square roots of such expressions included (those the
+    general route keeps whole: one radical each, or one shared by radicands screened equal);
+    anything else (nested roots, radicands screened as squares or as other multiples of one
+    another, ``pi``, ``E``, branch functions, floats, undeclared symbols, an integer symbol
+    inside a sine) returns ``None`` and the caller takes the general sympy route, which
+    decides or refuses it.
 
     Example
     -------
@@ -489,6 +496,8 @@ class _Builder:
             else [(0, 1)] * len(roots)
         heads = [i for i, (j, _) in enumerate(same) if i == j]
         split = len(heads) > 1 and radicals_dependent(self, [roots[i][1] for i in heads])
+        if self.held and (split or any(j != i and r != 1 for i, (j, r) in enumerate(same))):
+            raise _Leave   # factoring and constant roots are the general route's (sympy)
         made: dict = {}
         for i in heads:
             node, radicand, _ = roots[i]
@@ -499,7 +508,8 @@ class _Builder:
             root = made[j]
             if j != i:
                 self.twins.append((radicand, r, roots[j][1]))
-                root = const_root(self, sp.Rational(r.numerator, r.denominator)) * root
+                if r != 1:
+                    root = const_root(self, sp.Rational(r.numerator, r.denominator)) * root
             self.rule[node] = root ** p
         for node in self.scan.branches:
             self._branch(node)
@@ -509,12 +519,17 @@ class _Builder:
 
     def _radical(self, node, radicand) -> sp.Expr:
         """``sqrt(radicand)``: a radical dummy, or ``|Y| * sqrt(rest)`` for a square factor."""
+        if self.held:
+            if _square_screen(self, radicand):
+                raise _Leave   # |Y| sqrt(rest) is factored in sympy: the general route
+            return self._radical_dummy(radicand)
         return square_sqrt(self, node, radicand) or self._radical_dummy(radicand)
 
     def _radical_dummy(self, radicand):
         hit = self.radical_index.get(radicand)
         if hit is None:
-            hit = self.radical_index[radicand] = sp.Dummy(f"r{len(self.radicals)}")
+            hit = self.radical_index[radicand] = trees.dummy(f"r{len(self.radicals)}",
+                                                             self.held)
             self.radicals.append((hit, radicand))
         return hit
 
