@@ -317,7 +317,7 @@ def test_programs_over_one_square_root_match_sympys_algebraic_numbers():
     exact = {x: sp.Rational(1, 3) + 2 * sp.sqrt(sp.Rational(5, 3)),
              y: sp.Rational(-2, 5) * sp.sqrt(sp.Rational(5, 3)), z: sp.Rational(7, 11)}
     from dualmech.exact import register_program
-    assert register_program._one_root(values) == Fraction(5, 3)    # the fast path runs
+    assert register_program.one_radicand(values) == Fraction(5, 3)    # the fast path runs
     got = run(*values)
     assert isinstance(got[0], Surd) and isinstance(got[3], Surd)
     for value, e in zip(got, exprs):
@@ -329,3 +329,23 @@ def test_programs_over_one_square_root_match_sympys_algebraic_numbers():
         assert sp.expand(want - (a + b * sp.sqrt(sp.Rational(5, 3)))) == 0
     with pytest.raises(ZeroDivisionError):
         compile_rational([x], [1 / (x**2 - 3)])(Surd.root(3))
+
+
+def test_row_reduction_over_one_square_root_matches_the_surd_field(monkeypatch):
+    """The exact row reduction of a matrix over Q(sqrt 5) (FLINT pairs) gives the same pivots
+    and reduced form as the general square-root field (Surd, Fractions), including a
+    dependent row."""
+    from dualmech.exact import linalg, surds
+    r = surds.Surd.root(Fraction(5))
+    rng = random.Random(3)
+    rows = [[Fraction(rng.randint(-5, 5), rng.randint(1, 4)) + rng.randint(-3, 3) * r
+             for _ in range(5)] for _ in range(4)]
+    rows[3] = [a + (2 - r) * b for a, b in zip(rows[0], rows[1])]
+    assert surds.one_radicand(v for row in rows for v in row) == 5
+    fast, pivots, _ = linalg.rref_info(rows)
+    monkeypatch.setattr(surds, "flint", None)
+    assert surds.one_radicand(v for row in rows for v in row) is None
+    slow, pivots_slow, _ = linalg.rref_info(rows)
+    assert pivots == pivots_slow == [0, 1, 2]
+    assert all(x == y for a, b in zip(fast, slow) for x, y in zip(a, b))
+    assert all(v == 0 for v in fast[3])

@@ -34,7 +34,7 @@ except ImportError:  # pragma: no cover - platforms without python-flint wheels
     flint = None
 
 from dualmech.exact.interval import to_interval
-from dualmech.exact.surds import Surd
+from dualmech.exact.surds import Quadratic, Surd, one_radicand
 
 __all__ = ["rref", "rref_info", "rank", "solve_square", "matvec", "residual_after_least_squares",
            "kind_of"]
@@ -71,6 +71,9 @@ def _mpf(v):
 def _size(v) -> int:
     if isinstance(v, Fraction):
         return v.numerator.bit_length() + v.denominator.bit_length()
+    if isinstance(v, Quadratic):
+        size = v.rational_size()
+        return (1 << 30) if size is None else size
     return 1 << 30  # a square-root number: prefer a rational pivot
 
 
@@ -105,7 +108,12 @@ def rref_info(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
     if kind == "exact" and rows and rows[0] and \
             all(type(v) is Fraction or type(v) is int for r in rows for v in r):
         return _rref_integer(rows)
-    A = _prepare(rows, kind)
+    root = one_radicand(v for r in rows for v in r) if kind == "exact" else None
+    if root is not None:   # one square root: the same elimination in FLINT rationals
+        d = Quadratic.of(root, root).a
+        A = [[Quadratic.of(v, root, d) for v in r] for r in rows]
+    else:
+        A = _prepare(rows, kind)
     tol = 0
     if kind == "float":
         scale = max((abs(v) for r in A for v in r), default=0)
@@ -130,6 +138,8 @@ def rref_info(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
                 A[i][c] = A[r][c] * 0  # exactly eliminated (an exact zero of the right kind)
         pivots.append(c)
         r += 1
+    if root is not None:
+        A = [[v.back(root) for v in row] for row in A]
     return A, pivots, ambiguous
 
 

@@ -26,6 +26,8 @@ from typing import Callable, Sequence
 
 import symengine as se
 
+from dualmech.exact.surds import Quadratic, one_radicand
+
 try:   # FLINT's exact rationals, when installed (a dependency; Fraction is the fallback)
     import flint
 except ImportError:  # pragma: no cover - platforms without python-flint wheels
@@ -68,15 +70,15 @@ def compile_rational(args: Sequence, exprs: Sequence) -> Callable:
             raise TypeError(f"expected {nargs} values, got {len(values)}")
         rational = flint is not None and all(type(v) is Fraction or type(v) is int
                                              for v in values)
-        root = None if rational or flint is None else _one_root(values)
+        root = None if rational or flint is None else one_radicand(values)
         if rational:   # FLINT's rationals: the same exact arithmetic, in C
             r = [_fmpq(v) for v in values] + [None] * (nregs - nargs)
             one, cs = flint.fmpq(1), flint_consts
-        elif root is not None:   # one square root: pairs of FLINT rationals (see _Quadratic)
+        elif root is not None:   # one square root: pairs of FLINT rationals (surds.Quadratic)
             d = _fmpq(root)
-            r = [_Quadratic.of(v, root, d) for v in values] + [None] * (nregs - nargs)
-            one = _Quadratic(flint.fmpq(1), flint.fmpq(0), d)
-            cs = [(at, _Quadratic(v, flint.fmpq(0), d)) for at, v in flint_consts]
+            r = [Quadratic.of(v, root, d) for v in values] + [None] * (nregs - nargs)
+            one = Quadratic(flint.fmpq(1), flint.fmpq(0), d)
+            cs = [(at, Quadratic(v, flint.fmpq(0), d)) for at, v in flint_consts]
         else:
             r = list(values) + [None] * (nregs - nargs)
             one, cs = Fraction(1), consts
@@ -104,88 +106,6 @@ def compile_rational(args: Sequence, exprs: Sequence) -> Callable:
         return [r[i] for i in outputs]
 
     return run
-
-
-def _one_root(values):
-    """The radicand ``d`` when every value is rational or a :class:`~dualmech.exact.surds.Surd`
-    over ``sqrt(d)`` alone, else ``None``."""
-    from dualmech.exact.surds import Surd
-    found = None
-    for v in values:
-        if type(v) is Fraction or type(v) is int:
-            continue
-        if type(v) is not Surd or len(v.radicands) != 1:
-            return None
-        d, = v.radicands
-        if found is None:
-            found = d
-        elif d != found:
-            return None
-    return found
-
-
-class _Quadratic:
-    """``a + b sqrt(d)`` with FLINT rationals ``a``, ``b``: the field ``Q(sqrt d)`` of a model
-    with one square root (the common case), computed in C-backed rationals instead of
-    :class:`~dualmech.exact.surds.Surd`'s dictionaries of Fractions.  Same exact arithmetic;
-    ``d`` is not a rational square (a Surd's radicand never is), so ``a + b sqrt(d)`` is zero
-    only when ``a`` and ``b`` are."""
-
-    __slots__ = ("a", "b", "d")
-
-    def __init__(self, a, b, d):
-        self.a, self.b, self.d = a, b, d
-
-    @classmethod
-    def of(cls, v, root, d) -> "_Quadratic":
-        if type(v) is Fraction or type(v) is int:
-            return cls(_fmpq(v), flint.fmpq(0), d)
-        key = frozenset([root])
-        return cls(_fmpq(v.terms.get(frozenset(), 0)), _fmpq(v.terms.get(key, 0)), d)
-
-    def back(self, root):
-        """The value as a Fraction, or a Surd over ``sqrt(root)``."""
-        from dualmech.exact.surds import Surd
-        a = Fraction(int(self.a.p), int(self.a.q))
-        if not self.b:
-            return a
-        return Surd({frozenset(): a, frozenset([root]): Fraction(int(self.b.p), int(self.b.q))})
-
-    def __add__(self, o):
-        return _Quadratic(self.a + o.a, self.b + o.b, self.d)
-
-    def __mul__(self, o):
-        a, b, c, e = self.a, self.b, o.a, o.b
-        if not b:
-            return _Quadratic(a * c, a * e, self.d)
-        if not e:
-            return _Quadratic(a * c, b * c, self.d)
-        return _Quadratic(a * c + self.d * b * e, a * e + b * c, self.d)
-
-    def inverse(self) -> "_Quadratic":
-        a, b = self.a, self.b
-        n = a * a - self.d * b * b
-        if not n:
-            raise ZeroDivisionError("division by an exact zero (square-root field)")
-        return _Quadratic(a / n, -b / n, self.d)
-
-    def __pow__(self, n: int) -> "_Quadratic":
-        base = self if n >= 0 else self.inverse()
-        out = _Quadratic(flint.fmpq(1), flint.fmpq(0), self.d)
-        n = abs(n)
-        while n:
-            if n & 1:
-                out = out * base
-            n >>= 1
-            if n:
-                base = base * base
-        return out
-
-    def __rtruediv__(self, one) -> "_Quadratic":    # ``one / x`` in the program's loop
-        return self.inverse() * one
-
-    def __truediv__(self, o) -> "_Quadratic":
-        return self * o.inverse()
 
 
 def _fmpq(v):

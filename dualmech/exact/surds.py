@@ -22,7 +22,12 @@ from fractions import Fraction
 from itertools import combinations
 from math import isqrt
 
-__all__ = ["Surd", "independent", "is_square"]
+__all__ = ["Surd", "Quadratic", "independent", "is_square", "one_radicand"]
+
+try:   # FLINT's exact rationals (a dependency): the fast field of one square root
+    import flint
+except ImportError:  # pragma: no cover - platforms without python-flint wheels
+    flint = None
 
 _Rational = (int, Fraction)
 
@@ -262,3 +267,132 @@ class Surd:
             roots = "*".join(f"sqrt({d})" for d in sorted(k))
             parts.append(f"{v}" + (f"*{roots}" if roots else ""))
         return "Surd(" + (" + ".join(parts) or "0") + ")"
+
+
+def one_radicand(values):
+    """The radicand ``d`` when ``values`` are rationals and :class:`Surd` s over ``sqrt(d)``
+    alone, at least one of them a Surd, and FLINT is installed; else ``None``.
+
+    >>> one_radicand([Fraction(1, 2), 3 + Surd.root(5)])
+    Fraction(5, 1)
+    >>> one_radicand([Surd.root(2), Surd.root(3)]) is None
+    True
+    """
+    if flint is None:
+        return None
+    found = None
+    for v in values:
+        if type(v) is Fraction or type(v) is int:
+            continue
+        if type(v) is not Surd or len(v.terms) > 2:
+            return None
+        rad = v.radicands
+        if len(rad) != 1:
+            return None
+        d, = rad
+        if found is None:
+            found = d
+        elif d != found:
+            return None
+    return found
+
+
+def _fmpq(v):
+    if type(v) is int:
+        return flint.fmpq(v)
+    return flint.fmpq(v.numerator, v.denominator)
+
+
+class Quadratic:
+    """``a + b sqrt(d)`` with FLINT rationals ``a``, ``b``: the field ``Q(sqrt d)`` of one
+    square root (the common case: a model with one root), in C-backed rationals instead of
+    :class:`Surd`'s dictionaries of Fractions.  The same exact arithmetic: ``d`` is not a
+    rational square (a Surd's radicand never is), so ``a + b sqrt(d)`` is zero exactly when
+    ``a`` and ``b`` are.  Used by the register programs and the exact row reduction on
+    values :func:`one_radicand` accepts; :meth:`back` returns a Fraction or a Surd.
+
+    >>> r = Surd.root(Fraction(5))
+    >>> x = Quadratic.of(1 + r, Fraction(5))
+    >>> (x * x).back(Fraction(5)) == (1 + r) * (1 + r), (x / x).back(Fraction(5))
+    (True, Fraction(1, 1))
+    """
+
+    __slots__ = ("a", "b", "d")
+
+    def __init__(self, a, b, d):
+        self.a, self.b, self.d = a, b, d
+
+    @classmethod
+    def of(cls, v, root, d=None) -> "Quadratic":
+        """``v`` (a rational or a Surd over ``sqrt(root)``) in the field of ``root``."""
+        d = _fmpq(root) if d is None else d
+        if type(v) is Fraction or type(v) is int:
+            return cls(_fmpq(v), flint.fmpq(0), d)
+        return cls(_fmpq(v.terms.get(frozenset(), 0)),
+                   _fmpq(v.terms.get(frozenset([root]), 0)), d)
+
+    def back(self, root):
+        """The value as a Fraction, or a :class:`Surd` over ``sqrt(root)``."""
+        a = Fraction(int(self.a.p), int(self.a.q))
+        if not self.b:
+            return a
+        return Surd({frozenset(): a, frozenset([root]): Fraction(int(self.b.p), int(self.b.q))})
+
+    def rational_size(self) -> int | None:
+        """Bits of the value when it is rational, else ``None``."""
+        if self.b:
+            return None
+        return int(self.a.p).bit_length() + int(self.a.q).bit_length()
+
+    def __add__(self, o):
+        return Quadratic(self.a + o.a, self.b + o.b, self.d)
+
+    def __sub__(self, o):
+        return Quadratic(self.a - o.a, self.b - o.b, self.d)
+
+    def __neg__(self):
+        return Quadratic(-self.a, -self.b, self.d)
+
+    def __mul__(self, o):
+        if type(o) is int:
+            return Quadratic(self.a * o, self.b * o, self.d)
+        a, b, c, e = self.a, self.b, o.a, o.b
+        if not b:
+            return Quadratic(a * c, a * e, self.d)
+        if not e:
+            return Quadratic(a * c, b * c, self.d)
+        return Quadratic(a * c + self.d * b * e, a * e + b * c, self.d)
+
+    def inverse(self) -> "Quadratic":
+        a, b = self.a, self.b
+        n = a * a - self.d * b * b
+        if not n:
+            raise ZeroDivisionError("division by an exact zero (square-root field)")
+        return Quadratic(a / n, -b / n, self.d)
+
+    def __truediv__(self, o) -> "Quadratic":
+        return self * o.inverse()
+
+    def __pow__(self, n: int) -> "Quadratic":
+        base = self if n >= 0 else self.inverse()
+        out = Quadratic(flint.fmpq(1), flint.fmpq(0), self.d)
+        n = abs(n)
+        while n:
+            if n & 1:
+                out = out * base
+            n >>= 1
+            if n:
+                base = base * base
+        return out
+
+    def __bool__(self) -> bool:
+        return bool(self.a) or bool(self.b)
+
+    def __eq__(self, o) -> bool:
+        if type(o) is int:
+            return not self.b and self.a == o
+        if isinstance(o, Quadratic):
+            return self.a == o.a and self.b == o.b
+        return NotImplemented
+
+    __hash__ = None
