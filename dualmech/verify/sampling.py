@@ -114,6 +114,7 @@ class System:
         self.constraints = list(constraints or [])   # per static row: [g, g'] or [g]
         self.declared = 0   # the last ones are declared constraints (row: their acceleration row)
         self._se = se_form                           # (A, b, names) in symengine
+        self._inside: set | None = None
 
     @property
     def A(self) -> list:
@@ -201,6 +202,21 @@ class System:
 
     def constraint_exprs(self) -> list:
         return [g for levels in self.constraints for g in levels]
+
+    def inside_functions(self) -> set:
+        """The symbols some function of this model takes as argument (they cannot be solved
+        for on a manifold: their sines are sampled on the circle); computed once."""
+        if self._inside is None:
+            inside = set()
+            held = self.flat_se()
+            for e in (held if held is not None else self.flat()):
+                for f in e.atoms(se.Function if held is not None else sp.Function):
+                    inside |= {sp.Symbol(x.name, real=True) for x in f.free_symbols}
+            for e in self.constraint_exprs():
+                for f in e.atoms(sp.Function):
+                    inside |= f.free_symbols
+            self._inside = inside
+        return self._inside
 
 
 def reorder(eqs: EquationSet, coords) -> EquationSet:
@@ -379,13 +395,7 @@ def manifold(systems: Sequence[System], ctx: Context) -> list:
         return []
     inside = set()
     for s in systems:
-        held = s.flat_se()
-        for e in (held if held is not None else s.flat()):
-            for f in e.atoms(se.Function if held is not None else sp.Function):
-                inside |= {sp.Symbol(x.name, real=True) for x in f.free_symbols}
-        for e in s.constraint_exprs():
-            for f in e.atoms(sp.Function):
-                inside |= f.free_symbols
+        inside |= s.inside_functions()
     taken: set = set()
     deps = []
     qs = [st.q for st in ctx.states]
