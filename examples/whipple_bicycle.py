@@ -265,6 +265,8 @@ class WhippleBicycle(Problem):
     referee = False
     referee_note = ("the rolling constraints are rows of the models, not declarations the "
                     "referee can read")
+    dimensions_unchecked = ("the geometry is fixed at Table 1's numbers in metres, so the "
+                            "equations hold no dimension for lengths")
     # masses, inertias and gravity are parameters (the exact test samples them); the geometry
     # is the benchmark's, fixed (see the module constants w, c, rR, ..., TAN_HALF_LAM)
     parameters = (

@@ -355,3 +355,53 @@ def test_a_wrong_drawing_or_chart_scene_is_listed_by_validate():
         chart_scenes = (ChartScene({"g": 3.0}, (), "weaker gravity"),)
 
     Right().validate()
+
+
+def test_a_problem_with_lengths_fixed_at_numbers_declares_the_dimension_audit_unchecked():
+    """A pendulum written as a teacher would, its length fixed at 4/5 m (a number, as the
+    benchmark bicycle's geometry is): the audit can no longer read a length in the equations
+    and flags terms; a problem that declares ``dimensions_unchecked`` gets the reason instead
+    of the list, in the text and the JSON, and the verdict is unchanged (by hand: both models
+    are M (4/5)^2 theta'' + M g (4/5) sin(theta) = 0 up to a factor)."""
+    import sympy as sp
+    from dualmech import (ACCELERATION, ANGLE, FORCE, MASS, Coordinate, Frame, Lagrangian,
+                          NewtonEuler, Parameter, Particle, Point, Problem, Reaction,
+                          coordinate, rate)
+    from dualmech.verify.check import compare
+    th = coordinate("theta")
+    M, g = sp.symbols("M g", positive=True)
+    ell = sp.Rational(4, 5)
+
+    class Fixed(Problem):
+        name = "fixed_length_pendulum"
+        title = "A pendulum 4/5 m long"
+        source = "a teacher's own"
+        reactions = (Reaction("T", FORCE, "string on bob, towards the pivot"),)
+        parameters = (Parameter(M, MASS, 1.0, (0.1, 10.0), "bob"),
+                      Parameter(g, ACCELERATION, 9.81, (1.0, 20.0), "gravity"))
+        coordinates = (Coordinate(th, ANGLE, (-2.0, 2.0), (-3.0, 3.0), "angle"),)
+
+        def newton_euler(self):
+            O = Frame.ground("O")
+            arm = O.child("arm", sp.Matrix([[sp.cos(th), -sp.sin(th), 0],
+                                            [sp.sin(th), sp.cos(th), 0], [0, 0, 1]]))
+            bob = Particle("bob", M, Point.origin(O).locate("bob", -ell * arm.y))
+            ne = NewtonEuler("newton_euler", coordinates=[th], ground=O)
+            ne.gravity(-g * O.y)
+            ne.reaction("T", bob, arm.y)
+            ne.linear_momentum(bob, arm.x)
+            ne.linear_momentum(bob, arm.y)
+            return ne.equations()
+
+        def lagrange(self):
+            lg = Lagrangian("lagrange", coordinates=[th])
+            lg.kinetic("T", M * (ell * rate(th))**2 / 2)
+            lg.potential("V", -M * g * ell * sp.cos(th))
+            return lg.equations()
+
+    assert Fixed().dimension_audit()              # the audit flags the fixed length's terms
+    Unchecked = type("Unchecked", (Fixed,), {"dimensions_unchecked": "lengths fixed at numbers"})
+    c = compare(Unchecked())
+    assert c.equivalent and c.dimension_audit == []
+    assert "dimension audit: not run (lengths fixed at numbers)" in c.text()
+    assert c.to_dict()["dimensions_unchecked"] == "lengths fixed at numbers"

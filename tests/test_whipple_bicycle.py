@@ -179,3 +179,25 @@ def test_both_models_give_the_same_motion_and_contact_forces_on_the_constraints(
         assert worst < mpmath.mpf(10) ** -40 * scale, (worst, scale)
         # the rear normal force only the direct form gives: it holds the bicycle up
         assert ne["F_R_z"] > 0 and lag["F_F_z"] > 0
+
+
+@pytest.mark.slow
+def test_the_exact_verdict_calls_the_two_models_equivalent_and_a_slip_different(problem):
+    """The toolkit's own exact verdict on the pair (the front contact's square root kept
+    exact): equivalent, the same answer as the 60-digit solve on the constraints above; and
+    a Lagrange model with a stray term of 1 % of the front wheel's gravity moment in one
+    row is not."""
+    from dualmech.verify.check import compare_models
+    lag, ne = problem.model("lagrange"), problem.model("newton_euler")
+    r = compare_models(lag, ne, explain=False)
+    assert r.equivalent and r.method.startswith("exact"), r
+    import sympy as sp
+    from dualmech import EquationSet
+    syms = {str(k): k for k in problem.defaults()}
+    phi = next(q for q in lag.coordinates if q.func.__name__ == "phi")
+    slip = syms["mF"] * syms["g"] * sp.sin(phi) / 100      # a stray gravity moment, 1 % of one
+    rows = (lag.equations[0] + slip,) + tuple(lag.equations[1:])
+    wrong = EquationSet("wrong", lag.coordinates, rows, lag.unknowns, lag.labels,
+                        constraints=lag.constraints)
+    r = compare_models(wrong, ne, explain=False)
+    assert not r.equivalent and r.method.startswith("exact"), r

@@ -326,6 +326,11 @@ class Problem:
         models are deliberately not the mechanics of their declared bodies (a simplified
         model that neglects a coupling), so no referee (:mod:`dualmech.verify.referee`) is
         derived from them.
+    dimensions_unchecked : str
+        Why the dimension audit cannot judge this problem's equations, when it cannot: a
+        problem whose lengths are fixed at numbers (the benchmark bicycle's geometry) leaves
+        the audit no dimension to read in them, and every term would be listed.  ``check``
+        then says "dimension audit: not run (...)" with this reason instead.
 
     The facts below are physics, or a choice of scene, that the equations do not carry; the
     numeric studies read them from here and nothing else (all default to none declared).
@@ -448,6 +453,7 @@ class Problem:
     chart_scenes: tuple = ()
     referee: bool = True
     referee_note: str = ""
+    dimensions_unchecked: str = ""
 
     # -- to be provided by subclasses --------------------------------------------------
     def coordinate_maps(self) -> dict:

@@ -313,7 +313,10 @@ class Comparison:
                 "would catch a wrong term in it"))
         for note in self.display_notes:
             out.append(f"  ({note})")
-        if self.dimension_audit:
+        unchecked = getattr(self.problem, "dimensions_unchecked", "")
+        if unchecked:
+            out.append(wrap(f"  dimension audit: not run ({unchecked})"))
+        elif self.dimension_audit:
             out.append("  dimension audit:")
             out.extend(f"    {sentence(x, notation)}" for x in self.dimension_audit)
         else:
@@ -373,6 +376,7 @@ class Comparison:
             "points": self.points,
             "false_equal_bound": _json_float(self.bound),
             "dimension_issues": list(self.dimension_issues),
+            "dimensions_unchecked": getattr(self.problem, "dimensions_unchecked", "") or None,
             "machine": self._machine(),
         }
 
@@ -435,7 +439,8 @@ def compare(problem, points: int = 8, seed: int = 0, limits: Budget | None = Non
         published = [PublishedVerdict(p.label, p.where, "unchecked",
                                       "the derivations disagree; fix them before judging "
                                       "printed answers", "none") for p in printed]
-    issues = list(problem.dimension_audit()) + _reaction_dimension_issues(problem)
+    issues = [] if getattr(problem, "dimensions_unchecked", "") else \
+        list(problem.dimension_audit()) + _reaction_dimension_issues(problem)
     out = Comparison(problem, j, pairs, published, issues, time.perf_counter() - t0, points,
                      limits)
     out.referees = refs
