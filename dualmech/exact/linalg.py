@@ -68,11 +68,16 @@ def _mpf(v):
     return v if isinstance(v, mpmath.mpf) else mpmath.mpf(v)
 
 
+def root_field(v) -> bool:
+    """Is ``v`` a value of the one-root fast path (a FLINT rational or a Quadratic)?"""
+    return type(v) is Quadratic or (flint is not None and type(v) is flint.fmpq)
+
+
 def _size(v) -> int:
     if isinstance(v, Fraction):
         return v.numerator.bit_length() + v.denominator.bit_length()
-    if isinstance(v, Quadratic):
-        size = v.rational_size()
+    if root_field(v):
+        size = Quadratic.size(v)
         return (1 << 30) if size is None else size
     return 1 << 30  # a square-root number: prefer a rational pivot
 
@@ -110,8 +115,8 @@ def rref_info(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
         return _rref_integer(rows)
     root = one_radicand(v for r in rows for v in r) if kind == "exact" else None
     if root is not None:   # one square root: the same elimination in FLINT rationals
-        d = Quadratic.of(root, root).a
-        A = [[Quadratic.of(v, root, d) for v in r] for r in rows]
+        d = Quadratic.lift(root, root)
+        A = [[Quadratic.lift(v, root, d) for v in r] for r in rows]
     else:
         A = _prepare(rows, kind)
     tol = 0
@@ -139,7 +144,7 @@ def rref_info(rows: list[list]) -> tuple[list[list], list[int], list[int]]:
         pivots.append(c)
         r += 1
     if root is not None:
-        A = [[v.back(root) for v in row] for row in A]
+        A = [[Quadratic.back(v, root) for v in row] for row in A]
     return A, pivots, ambiguous
 
 

@@ -74,11 +74,10 @@ def compile_rational(args: Sequence, exprs: Sequence) -> Callable:
         if rational:   # FLINT's rationals: the same exact arithmetic, in C
             r = [_fmpq(v) for v in values] + [None] * (nregs - nargs)
             one, cs = flint.fmpq(1), flint_consts
-        elif root is not None:   # one square root: pairs of FLINT rationals (surds.Quadratic)
+        elif root is not None:   # one square root: FLINT rationals and surds.Quadratic
             d = _fmpq(root)
-            r = [Quadratic.of(v, root, d) for v in values] + [None] * (nregs - nargs)
-            one = Quadratic(flint.fmpq(1), flint.fmpq(0), d)
-            cs = [(at, Quadratic(v, flint.fmpq(0), d)) for at, v in flint_consts]
+            r = [Quadratic.lift(v, root, d) for v in values] + [None] * (nregs - nargs)
+            one, cs = flint.fmpq(1), flint_consts
         else:
             r = list(values) + [None] * (nregs - nargs)
             one, cs = Fraction(1), consts
@@ -102,7 +101,7 @@ def compile_rational(args: Sequence, exprs: Sequence) -> Callable:
         if rational:
             return [Fraction(int(r[i].p), int(r[i].q)) for i in outputs]
         if root is not None:
-            return [r[i].back(root) for i in outputs]
+            return [Quadratic.back(r[i], root) for i in outputs]
         return [r[i] for i in outputs]
 
     return run

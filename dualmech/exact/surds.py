@@ -308,13 +308,17 @@ class Quadratic:
     square root (the common case: a model with one root), in C-backed rationals instead of
     :class:`Surd`'s dictionaries of Fractions.  The same exact arithmetic: ``d`` is not a
     rational square (a Surd's radicand never is), so ``a + b sqrt(d)`` is zero exactly when
-    ``a`` and ``b`` are.  Used by the register programs and the exact row reduction on
-    values :func:`one_radicand` accepts; :meth:`back` returns a Fraction or a Surd.
+    ``a`` and ``b`` are.  Rational values stay plain ``fmpq`` beside it (their arithmetic is
+    FLINT's own, in C); a Quadratic combines with them and with ints.  Used by the register
+    programs and the exact row reduction on values :func:`one_radicand` accepts:
+    :meth:`lift` brings a value in, :meth:`back` returns a Fraction or a Surd.
 
     >>> r = Surd.root(Fraction(5))
-    >>> x = Quadratic.of(1 + r, Fraction(5))
-    >>> (x * x).back(Fraction(5)) == (1 + r) * (1 + r), (x / x).back(Fraction(5))
-    (True, Fraction(1, 1))
+    >>> x = Quadratic.lift(1 + r, Fraction(5))
+    >>> Quadratic.back(x * x, Fraction(5)) == (1 + r) * (1 + r)
+    True
+    >>> Quadratic.back(x / x, Fraction(5)), Quadratic.back(2 / x - x * 0, Fraction(5))
+    (Fraction(1, 1), Surd(-1/2 + 1/2*sqrt(5)))
     """
 
     __slots__ = ("a", "b", "d")
@@ -322,46 +326,61 @@ class Quadratic:
     def __init__(self, a, b, d):
         self.a, self.b, self.d = a, b, d
 
-    @classmethod
-    def of(cls, v, root, d=None) -> "Quadratic":
-        """``v`` (a rational or a Surd over ``sqrt(root)``) in the field of ``root``."""
-        d = _fmpq(root) if d is None else d
+    @staticmethod
+    def lift(v, root, d=None):
+        """``v`` (a rational or a Surd over ``sqrt(root)``): an ``fmpq``, or a Quadratic."""
         if type(v) is Fraction or type(v) is int:
-            return cls(_fmpq(v), flint.fmpq(0), d)
-        return cls(_fmpq(v.terms.get(frozenset(), 0)),
-                   _fmpq(v.terms.get(frozenset([root]), 0)), d)
+            return _fmpq(v)
+        d = _fmpq(root) if d is None else d
+        return Quadratic(_fmpq(v.terms.get(frozenset(), 0)),
+                         _fmpq(v.terms.get(frozenset([root]), 0)), d)
 
-    def back(self, root):
-        """The value as a Fraction, or a :class:`Surd` over ``sqrt(root)``."""
-        a = Fraction(int(self.a.p), int(self.a.q))
-        if not self.b:
+    @staticmethod
+    def back(v, root):
+        """A value of the field (an ``fmpq`` or a Quadratic) as a Fraction or a :class:`Surd`
+        over ``sqrt(root)``."""
+        if type(v) is not Quadratic:
+            return Fraction(int(v.p), int(v.q))
+        a = Fraction(int(v.a.p), int(v.a.q))
+        if not v.b:
             return a
-        return Surd({frozenset(): a, frozenset([root]): Fraction(int(self.b.p), int(self.b.q))})
+        return Surd({frozenset(): a, frozenset([root]): Fraction(int(v.b.p), int(v.b.q))})
 
-    def rational_size(self) -> int | None:
-        """Bits of the value when it is rational, else ``None``."""
-        if self.b:
-            return None
-        return int(self.a.p).bit_length() + int(self.a.q).bit_length()
+    @staticmethod
+    def size(v) -> int | None:
+        """Bits of ``v`` when it is rational (an ``fmpq``, or a Quadratic with ``b = 0``), else
+        ``None``."""
+        if type(v) is Quadratic:
+            if v.b:
+                return None
+            v = v.a
+        return int(v.p).bit_length() + int(v.q).bit_length()
 
     def __add__(self, o):
-        return Quadratic(self.a + o.a, self.b + o.b, self.d)
+        if type(o) is Quadratic:
+            return Quadratic(self.a + o.a, self.b + o.b, self.d)
+        return Quadratic(self.a + o, self.b, self.d)
+
+    __radd__ = __add__
 
     def __sub__(self, o):
-        return Quadratic(self.a - o.a, self.b - o.b, self.d)
+        if type(o) is Quadratic:
+            return Quadratic(self.a - o.a, self.b - o.b, self.d)
+        return Quadratic(self.a - o, self.b, self.d)
+
+    def __rsub__(self, o):
+        return Quadratic(o - self.a, -self.b, self.d)
 
     def __neg__(self):
         return Quadratic(-self.a, -self.b, self.d)
 
     def __mul__(self, o):
-        if type(o) is int:
+        if type(o) is not Quadratic:
             return Quadratic(self.a * o, self.b * o, self.d)
         a, b, c, e = self.a, self.b, o.a, o.b
-        if not b:
-            return Quadratic(a * c, a * e, self.d)
-        if not e:
-            return Quadratic(a * c, b * c, self.d)
         return Quadratic(a * c + self.d * b * e, a * e + b * c, self.d)
+
+    __rmul__ = __mul__
 
     def inverse(self) -> "Quadratic":
         a, b = self.a, self.b
@@ -370,29 +389,34 @@ class Quadratic:
             raise ZeroDivisionError("division by an exact zero (square-root field)")
         return Quadratic(a / n, -b / n, self.d)
 
-    def __truediv__(self, o) -> "Quadratic":
-        return self * o.inverse()
+    def __truediv__(self, o):
+        if type(o) is Quadratic:
+            return self * o.inverse()
+        if not o:
+            raise ZeroDivisionError("division by an exact zero (square-root field)")
+        return Quadratic(self.a / o, self.b / o, self.d)
+
+    def __rtruediv__(self, o):
+        return self.inverse() * o
 
     def __pow__(self, n: int) -> "Quadratic":
         base = self if n >= 0 else self.inverse()
-        out = Quadratic(flint.fmpq(1), flint.fmpq(0), self.d)
+        out = None
         n = abs(n)
         while n:
             if n & 1:
-                out = out * base
+                out = base if out is None else out * base
             n >>= 1
             if n:
                 base = base * base
-        return out
+        return Quadratic(flint.fmpq(1), flint.fmpq(0), self.d) if out is None else out
 
     def __bool__(self) -> bool:
         return bool(self.a) or bool(self.b)
 
     def __eq__(self, o) -> bool:
-        if type(o) is int:
-            return not self.b and self.a == o
-        if isinstance(o, Quadratic):
+        if type(o) is Quadratic:
             return self.a == o.a and self.b == o.b
-        return NotImplemented
+        return not self.b and self.a == o
 
     __hash__ = None
