@@ -26,6 +26,7 @@ import sympy as sp
 
 from dualmech.cli.errors import UsageError
 from dualmech.model.kinematics import t
+from dualmech.numeric.inputs import MAX_TABLE_ROWS
 
 __all__ = ["parse_inputs", "expression_history", "read_table", "MAX_INPUT", "MAX_CSV_BYTES"]
 
@@ -77,6 +78,9 @@ def read_table(name: str, path: str) -> tuple[list, list]:
                     continue     # a header row
                 raise UsageError(f"`--input {name}`: {path[:200]}, line {i}: {row[0][:30]!r}, "
                                  f"{row[1][:30]!r} are not two numbers.") from None
+            if len(times) == MAX_TABLE_ROWS:   # stop reading: the table is refused anyway
+                raise UsageError(f"`--input {name}`: {path[:200]} has more than "
+                                 f"{MAX_TABLE_ROWS} rows; a table may have at most that many.")
             times.append(t)
             values.append(v)
     return times, values

@@ -250,8 +250,11 @@ def table_function(name: str, table, t_span=None) -> History:
                          f"{times.size}.")
     if not (np.isfinite(times).all() and np.isfinite(values).all()):
         raise ValueError(f"input {name}: the table holds a value that is not a finite number.")
-    if not (np.diff(times) > 0).all():
-        raise ValueError(f"input {name}: the table's times must increase strictly.")
+    back = np.flatnonzero(np.diff(times) <= 0)
+    if back.size:
+        i = int(back[0])
+        raise ValueError(f"input {name}: the table's times must increase strictly (row "
+                         f"{i + 2}: t = {times[i + 1]:g} after t = {times[i]:g}).")
     lo, hi = float(times[0]), float(times[-1])
     times, values = np.ascontiguousarray(times), np.ascontiguousarray(values)
     if t_span is not None:
