@@ -35,6 +35,7 @@ ValueError: problem `pushed` needs the given input F (push) to be simulated: ...
 """
 from __future__ import annotations
 
+import copy
 import math
 from dataclasses import dataclass
 from typing import Callable, Mapping
@@ -46,7 +47,7 @@ from sympy.core.function import AppliedUndef
 from dualmech.model.kinematics import t as _t
 
 __all__ = ["History", "input_functions", "table_function", "declared_inputs",
-           "default_histories", "describe", "expression_history", "InputError", "MAX_TABLE_ROWS"]
+           "default_histories", "describe", "driven_problem", "expression_history", "InputError", "MAX_TABLE_ROWS"]
 
 #: the most rows a table may have
 MAX_TABLE_ROWS = 1_000_000
@@ -113,7 +114,7 @@ def default_histories(problem, inputs: Mapping | None = None) -> list[str]:
 def describe(problem, inputs: Mapping | None = None) -> dict:
     """``{name: text}``: each input's history in words, for a run's stated conditions
     (``"default: 3*sin(2*t)"``, ``"table of 301 rows"``, ``"Python function"``)."""
-    out = {}
+    out = dict(getattr(problem, "driven_by", None) or {})
     given = {getattr(k, "name", k): v for k, v in (inputs or {}).items()}
     for name, decl in declared_inputs(problem).items():
         value, prefix = given.get(name), ""
@@ -131,6 +132,44 @@ def describe(problem, inputs: Mapping | None = None) -> dict:
         else:
             text = f"table of {len(value[0])} rows"
         out[name] = prefix + text
+    return out
+
+
+def driven_problem(problem):
+    """``problem`` with each given input replaced in its models by its declared default
+    history (a closed form of ``t``): an input-free problem with explicit time dependence,
+    for the studies that build their own models (work-precision charts, DAE forms); a problem
+    without inputs is returned as it is.  Its :func:`describe` still states the inputs.
+
+    Raises
+    ------
+    ValueError
+        An input has no default history, or a table as its default (a study needs a closed
+        form; ``simulate`` takes tables).
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> from dualmech import get
+    >>> get("simple_pendulum") is driven_problem(get("simple_pendulum"))
+    True
+    """
+    declared = declared_inputs(problem)
+    if not declared:
+        return problem
+    mapping = {}
+    for name, decl in declared.items():
+        h = getattr(decl, "history", None)
+        if not isinstance(h, sp.Expr):
+            what = "no default history" if h is None else "a table as its default history"
+            raise ValueError(f"problem `{problem.name}`: input {name} has {what}; a study "
+                             "drives it with a closed form of t: declare Input(..., "
+                             "history=expression of t).")
+        mapping[decl.symbol] = h.xreplace({s: _t for s in h.free_symbols if s.name == "t"})
+    stated = describe(problem)
+    models = {n: eqs.substitute(mapping) for n, eqs in problem.models().items()}
+    out = copy.copy(problem)
+    out.__dict__.update({"_models": models, "inputs": (), "driven_by": stated})
     return out
 
 
