@@ -126,3 +126,16 @@ def test_simulation_follows_the_hand_equations_with_the_declared_histories(probl
     # equations moves theta' at t = 2 by 0.15, dropping tau by 0.22 (measured on the hand
     # equations), so 1e-7 tells a missing input term from the integration error
     assert np.abs(np.array(run["final_state"]) - ref.y[:, -1]).max() < 1e-7
+
+
+def test_show_takes_the_declared_defaults_for_inputs_not_named(capsys):
+    """At t = 0 the defaults are F = 0, tau = 1/2, Fx = 0, Fy = -1/5 (named: F_y only)."""
+    status = main(["show", str(FILE), "--json", "--at", "x=0.1, theta=0.4, theta'=1.3, "
+                   "F_y=0.7"])
+    out, err = capsys.readouterr()
+    assert status == 0, err
+    got = json.loads(out)["values_at_state"]
+    assert got["state"]["tau"] == 0.5 and got["state"]["F_y"] == 0.7
+    thdd = hand_accelerations(0.4, 1.3, 0.0, 0.5, 0.0, 0.7)[1]
+    assert got["values"]["N"]["direct"] == pytest.approx(hand_N(0.4, 1.3, thdd, 0.7),
+                                                         rel=1e-12)

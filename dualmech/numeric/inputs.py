@@ -47,7 +47,7 @@ from sympy.core.function import AppliedUndef
 from dualmech.model.kinematics import t as _t
 
 __all__ = ["History", "input_functions", "table_function", "declared_inputs",
-           "default_histories", "describe", "driven_problem", "expression_history", "InputError", "MAX_TABLE_ROWS"]
+           "default_histories", "default_values", "describe", "driven_problem", "expression_history", "InputError", "MAX_TABLE_ROWS"]
 
 #: the most rows a table may have
 MAX_TABLE_ROWS = 1_000_000
@@ -135,6 +135,26 @@ def describe(problem, inputs: Mapping | None = None) -> dict:
     return out
 
 
+def default_values(problem, time: float = 0.0, params: Mapping | None = None) -> dict:
+    """``{name: value}`` at ``time`` of each input that declares a default history (the
+    parameters' values ``params``, default the problem's defaults).
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> from dualmech import FORCE, Input, Problem, t
+    >>> class Pushed(Problem):
+    ...     name, inputs = "pushed", (Input(sp.Symbol("F"), FORCE, "push", 3 * t),)
+    >>> default_values(Pushed(), 0.5)
+    {'F': 1.5}
+    """
+    values = {**problem.defaults(), **{_as_symbol(problem, k): v
+                                       for k, v in (params or {}).items()}}
+    return {name: _history(name, decl.history, None, values)(float(time))
+            for name, decl in declared_inputs(problem).items()
+            if getattr(decl, "history", None) is not None}
+
+
 def driven_problem(problem):
     """``problem`` with each given input replaced in its models by its declared default
     history (a closed form of ``t``): an input-free problem with explicit time dependence,
@@ -150,9 +170,12 @@ def driven_problem(problem):
     Example
     -------
     >>> import sympy as sp
-    >>> from dualmech import get
-    >>> get("simple_pendulum") is driven_problem(get("simple_pendulum"))
-    True
+    >>> from dualmech import FORCE, Input, Problem, t
+    >>> class Pushed(Problem):
+    ...     name, inputs = "pushed", (Input(sp.Symbol("F"), FORCE, "push", 3 * t),)
+    >>> d = driven_problem(Pushed())
+    >>> d.inputs, d.driven_by
+    ((), {'F': 'default: 3*t'})
     """
     declared = declared_inputs(problem)
     if not declared:
