@@ -124,6 +124,8 @@ def test_the_c_table_is_numpy_interp():
     probe = np.concatenate([rng.uniform(times[0], times[-1], 2000), times])
     got = np.array([model.rhs(s, np.array([0.0, 0.0]))[1] for s in probe])
     assert np.array_equal(got, np.interp(probe, times, values))
+    many = model.rhs(probe, np.zeros((2, probe.size)))[1]   # one call, a time per column
+    assert np.array_equal(many, np.interp(probe, times, values))
 
 
 class _Declared:

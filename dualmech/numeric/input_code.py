@@ -40,7 +40,7 @@ from dualmech.model.kinematics import t
 from dualmech.numeric import cbackend, codegen
 from dualmech.numeric._cache import digest, load_module
 
-__all__ = ["CompiledInputs", "NotCompiled", "compiled_inputs"]
+__all__ = ["CompiledInputs", "NotCompiled", "compiled_inputs", "python_inputs"]
 
 
 class NotCompiled(ValueError):
@@ -71,11 +71,9 @@ def compiled_inputs(eqs, code_params: Sequence, shape: tuple, values: Mapping,
     NotCompiled
         A history is a Python callable.
     """
-    slow = sorted(getattr(h, "name", str(s)) for s, h in histories.items()
-                  if getattr(h, "kind", None) not in ("expression", "table"))
-    if slow:
-        raise NotCompiled(f"input {', '.join(slow)} is a Python function, called at every "
-                          "step: give a closed form of t or a table to run it in C")
+    why = python_inputs(histories)
+    if why:
+        raise NotCompiled(why)
     inputs = [s for s in code_params if s in histories]
     params = [s for s in code_params if s not in histories]
     for s in inputs:   # parameters a closed form names that the equations do not
@@ -107,6 +105,16 @@ def compiled_inputs(eqs, code_params: Sequence, shape: tuple, values: Mapping,
     k = np.array(module.static(tuple(pv)), dtype=float)
     source = lambda: cbackend.c_source(prog(), key, shape, trip, tuple(code))  # noqa: E731
     return CompiledInputs(key, source, p, k, len(inputs))
+
+
+def python_inputs(histories: Mapping) -> str | None:
+    """Why ``histories`` cannot run in C (a Python callable among them), or ``None``."""
+    slow = sorted(getattr(h, "name", str(s)) for s, h in histories.items()
+                  if getattr(h, "kind", None) not in ("expression", "table"))
+    if slow:
+        return (f"input {', '.join(slow)} is a Python function, called at every step: give "
+                "a closed form of t or a table to run it in C")
+    return None
 
 
 def _sorted(symbols) -> list:

@@ -39,7 +39,7 @@ from dualmech.model.equations import EquationSet, ModelError, state_symbols, to_
 from dualmech.model.kinematics import t
 from dualmech.numeric import cbackend, codegen
 from dualmech.numeric._cache import digest, load_module
-from dualmech.numeric.input_code import NotCompiled, compiled_inputs
+from dualmech.numeric.input_code import compiled_inputs, python_inputs
 from dualmech.numeric.inputs import InputError
 
 __all__ = ["NumericModel", "SingularityError", "StateFunction"]
@@ -202,14 +202,12 @@ class NumericModel:
         if backend == "python":
             self.inputs_in_python = "backend='python' was asked for"
             return
-        known = {_key(k, self._code.params): v for k, v in params.items()}
-        try:
-            ci = compiled_inputs(self.eqs, self._code.params, self._code.shape, known, inputs,
-                                 _TRIP)
-        except NotCompiled as exc:
-            self.inputs_in_python = str(exc)
+        self.inputs_in_python = python_inputs(inputs)
+        if self.inputs_in_python:
             return
-        self._c_code, self._c_args = ci, (ci.p, ci.k)
+        known = {_key(k, self._code.params): v for k, v in params.items()}
+        self._c_pending = lambda: compiled_inputs(  # noqa: E731 - generated on first use
+            self.eqs, self._code.params, self._code.shape, known, inputs, _TRIP)
         self.backend = backend
         m, N = self.shape
         usable = m == N and N <= _C_MAX and (backend == "c" or (
@@ -285,6 +283,9 @@ class NumericModel:
         self._mn = code.shape[0] * code.shape[1]
         self.backend = backend
         self._c_args = (np.array(p, dtype=float), np.array(k, dtype=float))
+        #: the parameter values in the order of ``_code.params`` (the C library's ``p`` may
+        #: differ: with given inputs in C it holds their tables instead)
+        self.param_values = self._c_args[0]
         m, N = code.shape
         usable = m == N and N <= _C_MAX and (backend == "c" or (
             backend == "auto" and N >= _C_MIN and cbackend.compiler() is not None))
@@ -292,7 +293,12 @@ class NumericModel:
 
     @property
     def c_code(self):
-        """The C library's ``key`` and ``c_source`` (with the given inputs in C, if any)."""
+        """The C library's ``key`` and ``c_source`` (with the given inputs in C, if any: then
+        generated on first use, and ``_c_args`` with them)."""
+        pending = self.__dict__.pop("_c_pending", None)
+        if pending is not None:
+            ci = pending()
+            self._c_code, self._c_args = ci, (ci.p, ci.k)
         return getattr(self, "_c_code", None) or self._code
 
     @property
