@@ -100,9 +100,10 @@ def expression_history(name: str, text: str, parameters: Mapping[str, object]):
     if eq.rhs is not None:
         raise UsageError(f"`--input {name}`: an expression of t, not an equation; {_EXAMPLE}.")
     expr = _built(name, eq.lhs, dict(parameters))
+    if expr.free_symbols - {t}:   # the parameters' values come later: checked in the run
+        return expr
     try:   # a finite value where the run starts (10^10^10 is refused here, not mid-run)
-        value = complex(expr.subs(t, 0).evalf(17, subs={s: 1.0 for s in expr.free_symbols
-                                                        if s != t}))
+        value = complex(expr.subs(t, 0).evalf(17))
     except (TypeError, ValueError, ZeroDivisionError, OverflowError):
         value = complex("nan")
     if not (math.isfinite(value.real) and value.imag == 0):
