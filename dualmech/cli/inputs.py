@@ -3,14 +3,13 @@
 ``HISTORY`` is either a CSV file (``F=push.csv``: two columns, time then value, an optional
 header row; interpolated linearly, never extrapolated) or an expression of ``t`` (``F=2*sin(3
 t)``) read by the grader's parser (:func:`dualmech.grade.parser.parse`, which never evaluates
-text) and turned into a function of ``t`` node by node: numbers, ``t``, ``pi``, the problem's
+text) and built into a sympy expression node by node: numbers, ``t``, ``pi``, the problem's
 parameters (their values in this run), ``+ - * / ^``, and ``sin cos tan cot sec csc exp log
-sqrt``.  Anything else is refused, saying what to write.
+sqrt``.  Anything else is refused, saying what to write.  Both kinds run in the compiled
+C right-hand side on the CVODE route (:mod:`dualmech.numeric.input_code`).
 
->>> import math
->>> f = expression_history("F", "2 sin(3 t) + t^2", {})
->>> abs(f(1.0) - (2 * math.sin(3.0) + 1.0)) < 1e-15
-True
+>>> expression_history("F", "2 sin(3 t) + t^2", {})
+t**2 + 2*sin(3*t)
 >>> expression_history("F", "open('x')", {})   # doctest: +ELLIPSIS
 Traceback (most recent call last):
 dualmech.cli.errors.UsageError: `--input F`: could not read the answer at column 6: ...
@@ -21,23 +20,27 @@ import csv
 import math
 import re
 from pathlib import Path
-from typing import Callable, Mapping
+from typing import Mapping
+
+import sympy as sp
 
 from dualmech.cli.errors import UsageError
+from dualmech.model.kinematics import t
+from dualmech.numeric.inputs import MAX_TABLE_ROWS
 
 __all__ = ["parse_inputs", "expression_history", "read_table", "MAX_INPUT", "MAX_CSV_BYTES"]
 
 MAX_INPUT = 2000            # characters of one --input
 MAX_CSV_BYTES = 50_000_000  # size of one table file
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
-_FUNCS: dict = {"sin": math.sin, "cos": math.cos, "tan": math.tan, "exp": math.exp,
-                "log": math.log, "sqrt": math.sqrt, "cot": lambda x: 1 / math.tan(x),
-                "sec": lambda x: 1 / math.cos(x), "csc": lambda x: 1 / math.sin(x)}
+_FUNCS: dict = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "exp": sp.exp, "log": sp.log,
+                "sqrt": sp.sqrt, "cot": lambda x: 1 / sp.tan(x), "sec": lambda x: 1 / sp.cos(x),
+                "csc": lambda x: 1 / sp.sin(x)}
 _EXAMPLE = "e.g. --input 'F=2*sin(3*t)' or --input F=push.csv"
 
 
-def parse_inputs(texts, parameters: Mapping[str, float]) -> dict:
-    """``{name: history}`` from the ``--input`` options (``parameters``: name -> value)."""
+def parse_inputs(texts, parameters: Mapping[str, object]) -> dict:
+    """``{name: history}`` from the ``--input`` options (``parameters``: name -> symbol)."""
     out: dict = {}
     for text in texts:
         if len(text) > MAX_INPUT:
@@ -75,13 +78,17 @@ def read_table(name: str, path: str) -> tuple[list, list]:
                     continue     # a header row
                 raise UsageError(f"`--input {name}`: {path[:200]}, line {i}: {row[0][:30]!r}, "
                                  f"{row[1][:30]!r} are not two numbers.") from None
+            if len(times) == MAX_TABLE_ROWS:   # stop reading: the table is refused anyway
+                raise UsageError(f"`--input {name}`: {path[:200]} has more than "
+                                 f"{MAX_TABLE_ROWS} rows; a table may have at most that many.")
             times.append(t)
             values.append(v)
     return times, values
 
 
-def expression_history(name: str, text: str, parameters: Mapping[str, float]) -> Callable:
-    """A function of ``t`` from the expression ``text`` (see the module docstring)."""
+def expression_history(name: str, text: str, parameters: Mapping[str, object]):
+    """A sympy expression of ``t`` (:data:`dualmech.t`) from ``text`` (see the module
+    docstring); ``parameters`` maps the names it may use to their symbols."""
     from dualmech.grade.parser import AnswerError, parse
     try:
         (eq,) = parse(text)
@@ -92,52 +99,58 @@ def expression_history(name: str, text: str, parameters: Mapping[str, float]) ->
                          f"{_EXAMPLE}.") from None
     if eq.rhs is not None:
         raise UsageError(f"`--input {name}`: an expression of t, not an equation; {_EXAMPLE}.")
-    return _compiled(name, eq.lhs, dict(parameters))
+    expr = _built(name, eq.lhs, dict(parameters))
+    if expr.free_symbols - {t}:   # the parameters' values come later: checked in the run
+        return expr
+    try:   # a finite value where the run starts (10^10^10 is refused here, not mid-run)
+        value = complex(expr.subs(t, 0).evalf(17))
+    except (TypeError, ValueError, ZeroDivisionError, OverflowError):
+        value = complex("nan")
+    if not (math.isfinite(value.real) and value.imag == 0):
+        raise UsageError(f"`--input {name}`: {text[:60]!r} did not give a number at t = 0; "
+                         f"{_EXAMPLE}.")
+    return expr
 
 
-def _compiled(name: str, node, parameters: dict) -> Callable:
-    """The parsed tree as nested closures of floats (no text is evaluated)."""
+def _built(name: str, node, parameters: dict):
+    """The parsed tree as a sympy expression, node by node (no text is evaluated)."""
     op, a = node.op, node.args
     if op == "num":
-        c = float(a[0])
-        return lambda t: c
+        return sp.Rational(a[0].numerator, a[0].denominator)
     if op == "name":
         return _leaf(name, a, parameters)
     if op == "group":
-        return _compiled(name, a[0], parameters)
+        return _built(name, a[0], parameters)
     if op == "neg":
-        f = _compiled(name, a[0], parameters)
-        return lambda t: -f(t)
+        return -_built(name, a[0], parameters)
     if op == "inv":
-        f = _compiled(name, a[0], parameters)
-        return lambda t: 1.0 / f(t)
+        return 1 / _built(name, a[0], parameters)
     if op in ("add", "mul"):
-        fs = [_compiled(name, c, parameters) for c in a]
-        if op == "add":
-            return lambda t: math.fsum(f(t) for f in fs)
-        return lambda t: math.prod(f(t) for f in fs)
+        parts = [_built(name, c, parameters) for c in a]
+        return sp.Add(*parts) if op == "add" else sp.Mul(*parts)
     if op == "pow":
-        base, exp = (_compiled(name, c, parameters) for c in a)
-        return lambda t: math.pow(base(t), exp(t))
+        base, exp = (_built(name, c, parameters) for c in a)
+        if exp.is_number and base.is_number and abs(exp) > 1000:
+            raise UsageError(f"`--input {name}`: a power too large to evaluate (the input "
+                             f"did not give a number); {_EXAMPLE}.")
+        return sp.Pow(base, exp)
     if op == "func" and a[0] in _FUNCS:
-        fn, arg = _FUNCS[a[0]], _compiled(name, a[1], parameters)
-        return lambda t: fn(arg(t))
+        return _FUNCS[a[0]](_built(name, a[1], parameters))
     raise UsageError(f"`--input {name}`: {op!r} is not allowed in an input's expression "
                      f"(numbers, t, pi, parameters, + - * / ^, sin cos tan exp log sqrt); "
                      f"{_EXAMPLE}.")
 
 
-def _leaf(name: str, args: tuple, parameters: dict) -> Callable:
+def _leaf(name: str, args: tuple, parameters: dict):
     text, primes = args
     if primes:
         raise UsageError(f"`--input {name}`: {text}{chr(39) * primes} -- an input is a function "
                          f"of t alone; {_EXAMPLE}.")
     if text == "t":
-        return lambda t: t
+        return t
     if text == "pi":
-        return lambda t: math.pi
+        return sp.pi
     if text in parameters:
-        c = float(parameters[text])
-        return lambda t: c
+        return parameters[text]
     known = ", ".join(["t", "pi"] + sorted(parameters))
     raise UsageError(f"`--input {name}`: {text[:40]!r} is not t, pi or a parameter ({known}).")

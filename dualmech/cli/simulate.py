@@ -151,9 +151,7 @@ def _inputs(problem, params: dict, texts) -> dict:
     if not texts:
         return {}
     from dualmech.cli.inputs import parse_inputs
-    from dualmech.numeric.simulation import problem_parameters
-    values = {s.name: float(v) for s, v in problem_parameters(problem, params).items()}
-    return parse_inputs(texts, values)
+    return parse_inputs(texts, {p.symbol.name: p.symbol for p in problem.parameters})
 
 
 def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1e-10,
@@ -175,11 +173,9 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
     from dualmech.numeric.cvode import CVODE_METHODS, integrate
     from dualmech.numeric.simulation import default_initial_state, problem_parameters
 
-    from dualmech.numeric.inputs import input_functions
+    from dualmech.numeric.inputs import describe, input_functions
     values = problem_parameters(problem, params)
-    drive = input_functions(problem, inputs, (0.0, duration))
-    if drive and method == "auto":
-        method = "DOP853"   # the inputs are Python functions: no compiled route calls them
+    drive = input_functions(problem, inputs, (0.0, duration), values)
     ref = problem.model(problem.reference)
     model = NumericModel(ref, values, inputs=drive)
     q0, qd0 = default_initial_state(problem)
@@ -191,7 +187,8 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
            "coordinates": names + [f"{n}'" for n in names],
            "initial_state": y0, "final_state": None, "t_final": None, "duration": duration,
            "method": method, "cpu_seconds": None, "steps": None, "rhs_evaluations": None,
-           "rtol": rtol, "atol": atol, "success": False, "message": "", "fallback": None}
+           "rtol": rtol, "atol": atol, "success": False, "message": "", "fallback": None,
+           "inputs": describe(problem, inputs), "inputs_in_python": model.inputs_in_python}
     try:
         run = integrate(model, (0.0, duration), y0, t_eval=t_eval, rtol=rtol, atol=atol,
                         method=method, singular=problem.singular)

@@ -9,9 +9,15 @@ generalised force ``lg.generalized_force("push", [F])`` in Lagrange's.  What the
   models agree when they agree for every value ``F`` can take at an instant, hence for every
   input history (a force enters the equations at the instant it acts, never through its
   history);
-* in a **simulation** it is the user's function of time -- a Python callable, a table of
-  ``(times, values)`` interpolated linearly, or on the command line an expression of ``t``
-  read by the grader's safe parser (:mod:`dualmech.numeric.inputs`).
+* in a **simulation** it is the user's function of time -- a closed form (a sympy expression
+  of ``t``), a table of ``(times, values)`` interpolated linearly, a Python callable, or on
+  the command line an expression of ``t`` read by the grader's safe parser
+  (:mod:`dualmech.numeric.inputs`) -- else the input's own default ``history``, which is what
+  charts and studies (no caller to ask) drive the problem with.
+
+An input is a scalar; a given force *vector* or *moment* is written with one input per
+component along a frame's axes (``Fx * O.x + Fy * O.y`` in ``ne.force``, the same vector in
+``lg.force_at``), a motor torque as ``tau * B.z`` (``ne.torque``, ``lg.torque_on``).
 
 A given *motion* (a support moved as ``u(t)``) is not an input of this kind: its rates and
 accelerations enter the equations; declare it as a prescribed coordinate instead.  So an
@@ -46,18 +52,26 @@ class Input:
         Its dimension (``FORCE``, ``TORQUE``, ...), for the dimension audit.
     description : str
         What it is, in words (error messages name it).
+    history : sympy expression of ``t``, or a table ``(times, values)``, optional
+        The default history: what a simulation, a chart or a study drives the problem with
+        when its caller gives none (and says so in its stated conditions), e.g.
+        ``2 * sp.sin(3 * t)`` with ``t`` from ``dualmech`` (parameters of the problem may
+        appear: their values in the run are used).
 
     Example
     -------
     >>> import sympy as sp
-    >>> from dualmech import TORQUE
+    >>> from dualmech import TORQUE, t
     >>> Input(sp.Symbol("tau"), TORQUE, "motor torque").description
     'motor torque'
+    >>> Input(sp.Symbol("tau"), TORQUE, "motor torque", sp.sin(t)).history
+    sin(t)
     """
 
     symbol: object
     dimension: object
     description: str = ""
+    history: object = None
 
     def __post_init__(self):
         import sympy as sp
@@ -67,6 +81,11 @@ class Input:
                             f"{self.symbol!r:.60} ({type(self.symbol).__name__}).")
         if not isinstance(self.description, str):
             raise TypeError(f"`Input.description` must be text, got {self.description!r:.60}.")
+        h = self.history
+        if h is not None and not isinstance(h, sp.Expr) and not (
+                isinstance(h, (tuple, list)) and len(h) == 2):
+            raise TypeError(f"`Input.history` of {self.symbol} must be a sympy expression of "
+                            f"t or a table (times, values), got {h!r:.60}.")
 
     @property
     def name(self) -> str:
@@ -91,6 +110,7 @@ def input_errors(problem) -> list[str]:
             errors.append(f"input `{x.name}` is declared twice (as an input, or also as a "
                           "parameter)")
         seen.add(x.name)
+        errors += _history_errors(x, params)
     if not seen:
         return errors
     models = problem.models()
@@ -108,6 +128,19 @@ def input_errors(problem) -> list[str]:
     for s in sorted(seen - used):
         errors.append(f"input `{s}` is declared but no model uses it")
     return errors
+
+
+def _history_errors(x: Input, params: set) -> list[str]:
+    """A declared default history naming something other than ``t`` and the parameters."""
+    from dualmech.model.kinematics import t
+    h = x.history
+    if h is None or not hasattr(h, "free_symbols"):
+        return []
+    extra = sorted(s.name for s in h.free_symbols if s != t and s.name not in params)
+    if extra:
+        return [f"input `{x.name}`: its default history {h} names {', '.join(extra)}, "
+                "which are neither t (from dualmech) nor parameters"]
+    return []
 
 
 def _energies(builder) -> dict:

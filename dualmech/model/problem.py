@@ -371,8 +371,12 @@ class Problem:
         its history from the caller (``simulate(p, inputs={"F": lambda t: 2 * sin(t)})``, a
         table ``(times, values)``, or ``dualmech simulate --input 'F=2*sin(t)'``), e.g.
         ``inputs = (Input(F, FORCE, "push on the block"),)`` with ``ne.force("push", block,
-        F * O.x)`` and ``lg.generalized_force("push", [F])``; a simulation without it is
-        refused, naming the input (:mod:`dualmech.numeric.inputs`).
+        F * O.x)`` and ``lg.generalized_force("push", [F])``; a force vector is one input per
+        component, a motor torque one on an axis (``ne.torque``, ``lg.torque_on``).
+        ``Input(F, FORCE, "push", history=2 * sp.sin(3 * t))`` declares a default history,
+        used by a run given none and by charts, atlases and animations (their stated
+        conditions say so); a simulation with neither is refused, naming the input
+        (:mod:`dualmech.numeric.inputs`).
     phases : dict
         What follows when a one-sided reaction lets go: ``{reaction: Phase(next problem,
         {next coordinate: expression of these coordinates}, why)}``, the reaction declared in

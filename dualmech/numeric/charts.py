@@ -88,8 +88,11 @@ def conditions(problem, params=None, state=None, t0: float = 0.0, start: bool = 
     the defaults, by symbol or name), then the initial state in the reference coordinates
     (``state``: ``[q..., q'...]`` or a mapping as ``initial_state`` takes it; default: the
     problem's initial state) -- ``"m = 0.2 kg, ...; from theta = 1.3 rad, theta' = 0 rad/s"``;
-    ``start=False`` for the parameters alone (a chart over many starts); ``tex=True`` writes
-    each name in mathtext (``$\\theta$``, ``$\\dot{\\theta}$``), as a chart's other texts.
+    a problem driven by given inputs adds each one's history after the parameters (``"F(t)
+    = default: 2*sin(3*t)"``: charts take the declared default, the ``history`` of
+    :class:`~dualmech.model.inputs.Input`).  ``start=False`` for the parameters alone (a
+    chart over many starts); ``tex=True`` writes each name in mathtext (``$\\theta$``,
+    ``$\\dot{\\theta}$``), as a chart's other texts.
     """
     from dualmech.model.notation import mathtext
 
@@ -98,11 +101,13 @@ def conditions(problem, params=None, state=None, t0: float = 0.0, start: bool = 
             return mathtext(name, order)
         return name + "'" * order
     from dualmech.model.facts import state_vector
+    from dualmech.numeric.inputs import describe
     from dualmech.numeric.simulation import default_initial_state, problem_parameters
     from dualmech.numeric.units import rate_unit, unit
     values = problem_parameters(problem, params, check_ranges=False)
     parts = [f"{name_of(p.symbol.name)} = {_number(values[p.symbol])} {unit(p.dimension)}"
              for p in problem.parameters]
+    parts += [f"{name_of(name)}(t) = {text}" for name, text in describe(problem).items()]
     if not start:
         return ", ".join(parts)
     coords = list(problem.model(problem.reference).coordinates)

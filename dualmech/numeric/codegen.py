@@ -60,6 +60,7 @@ class Program:
     static_names: tuple
     body: tuple
     outputs: tuple
+    n_inputs: int = 0
 
 
 class _Statics:
@@ -296,25 +297,29 @@ def _args(e, kind: str) -> tuple:
     return e.args if type(e).__name__ == kind else (e,)
 
 
-def _positional(t, q, qd, params):
+def _positional(t, q, qd, params, inputs=()):
     """Renaming of the inputs to positional symbols."""
     rename = {t: sp.Symbol("t_")}
     rename.update({s: sp.Symbol(f"q_{i}") for i, s in enumerate(q)})
     rename.update({s: sp.Symbol(f"u_{i}") for i, s in enumerate(qd)})
     rename.update({s: sp.Symbol(f"p_{i}") for i, s in enumerate(params)})
+    rename.update({s: sp.Symbol(f"w_{i}") for i, s in enumerate(inputs)})
     return rename
 
 
 def program(outputs: Sequence, *, t, q: Sequence, qd: Sequence, params: Sequence,
-            scale_of: int = 0) -> Program:
+            scale_of: int = 0, inputs: Sequence = ()) -> Program:
     """Compile sympy ``outputs`` in ``t``, ``q``, ``qd`` (plain symbols) and ``params``.
 
     With ``scale_of = k > 0`` one output is appended: the magnitude (see
-    :meth:`_Splitter.magnitude`) of the first ``k`` outputs.
+    :meth:`_Splitter.magnitude`) of the first ``k`` outputs.  ``inputs`` are symbols whose
+    values change with time (given inputs ``F(t)``): named ``w_i`` and dynamic like the state,
+    never part of a static coefficient; the printer that uses such a program defines each
+    ``w_i`` (:func:`dualmech.numeric.cbackend.c_source`'s ``input_code``).
     """
     rename = {se.Symbol(k.name): se.Symbol(v.name)
-              for k, v in _positional(t, q, qd, params).items()}
-    if len(rename) != 1 + len(q) + len(qd) + len(params):
+              for k, v in _positional(t, q, qd, params, inputs).items()}
+    if len(rename) != 1 + len(q) + len(qd) + len(params) + len(inputs):
         raise ValueError("two inputs share a name; give every state symbol and parameter "
                          "its own name.")
     # symengine receives sympy objects (converted node by node, never through text)
@@ -324,7 +329,8 @@ def program(outputs: Sequence, *, t, q: Sequence, qd: Sequence, params: Sequence
         raise ValueError(f"the expressions use {sorted(map(str, extra))}, which are neither "
                          "state symbols nor parameters.")
     dynamic = {se.Symbol("t_")} | {se.Symbol(f"q_{i}") for i in range(len(q))} \
-        | {se.Symbol(f"u_{i}") for i in range(len(qd))}
+        | {se.Symbol(f"u_{i}") for i in range(len(qd))} \
+        | {se.Symbol(f"w_{i}") for i in range(len(inputs))}
     splitter = _Splitter(dynamic)
     split = [splitter.split(e) for e in exprs]
     if scale_of:
@@ -335,7 +341,7 @@ def program(outputs: Sequence, *, t, q: Sequence, qd: Sequence, params: Sequence
     # temporaries are x0, x1, ... in each of two scopes (static, and per state): no clash
     # with the positional inputs t_, q_i, u_i, p_i, k_i
     return Program(len(q), len(params), tuple(static_repl) + tuple(zip(names, static_out)),
-                   names, tuple(body), tuple(outs))
+                   names, tuple(body), tuple(outs), len(inputs))
 
 
 # -- printing ----------------------------------------------------------------------------
@@ -488,6 +494,9 @@ def python_source(prog: Program, key: str, params: Sequence = ()) -> str:
     ``vector(p, k)`` return ``evaluate(t_, y)`` for one state (a list ``[q..., q'...]``) or for
     states in the columns of an array ``(2n, K)``, giving the tuple of outputs.
     """
+    if prog.n_inputs:
+        raise ValueError("a program with time-varying inputs w_i is printed as C only "
+                         "(cbackend.c_source defines them); Python binds inputs as parameters.")
     n = prog.n
     p_names = [f"p_{i}" for i in range(prog.n_params)]
     states = [f"q_{i}" for i in range(n)] + [f"u_{i}" for i in range(n)]

@@ -17,7 +17,9 @@ The CVODE route needs a C compiler and SUNDIALS 7's libraries from scikit-sundae
 (:mod:`~dualmech.numeric.cvode_driver` says why that route, and checks both).  Where either is
 missing, ``method="auto"`` **falls back** to scipy's ``DOP853`` on the generated right-hand side
 and says so in ``Run.message`` (:data:`FALLBACK`); a CVODE method asked for by name raises
-:class:`CvodeUnavailable` instead.  A state where the mass matrix is singular ends the run
+:class:`CvodeUnavailable` instead.  A model driven by given inputs runs on CVODE with their
+closed forms and tables evaluated in the C (:mod:`~dualmech.numeric.input_code`); one with a
+Python function as an input takes the same fallback, the reason in ``Run.message``.  A state where the mass matrix is singular ends the run
 with :class:`~dualmech.numeric.model.SingularityError`, on either route, and so does the motion
 reaching a declared singular set (``singular``: CVODE's root finding on the expressions
 compiled to C, :mod:`~dualmech.numeric.cvode_events`), which the steps may otherwise cross
@@ -125,6 +127,13 @@ def integrate(model: NumericModel, t_span: Sequence[float], y0, *, t_eval=None,
                          "the equations of motion (the reference model), not a direct model "
                          "with its reactions.")
     events = SingularSet(model, singular)
+    slow = getattr(model, "inputs_in_python", None)
+    if slow and method in CVODE_METHODS:
+        raise CvodeUnavailable(f"CVODE runs compiled code only: {slow}.")
+    if slow and method == "auto":   # a Python function per step: scipy's route
+        run = _scipy(model, t0, t1, y0, t_eval, rtol, atol, FALLBACK, events)
+        return replace(run, message=f"fallback: {slow}; used scipy {FALLBACK} instead. "
+                       + run.message)
     if method == "auto":
         try:
             return _cvode(model, t0, t1, y0, t_eval, rtol, atol, CVODE_METHODS[0], events)
@@ -152,7 +161,7 @@ def _samples(t0: float, t1: float, t_eval) -> np.ndarray:
 
 def _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
     fast = model if model.backend != "auto" or cbackend.compiler() is None \
-        else model.with_backend("c")
+        or getattr(model, "_inputs", None) else model.with_backend("c")
     fast.rhs(t0, y0)  # compiled and loaded before the clock starts
     stops = events.scipy_events()
     start = _time.process_time()
@@ -175,7 +184,8 @@ def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
         raise CvodeUnavailable(f"{model.shape[1]} unknowns: the compiled solve takes at most "
                                f"{_C_MAX}.")
     run_c = driver()
-    one = cbackend.load(model._code.key, model._code.c_source)  # the model's C library
+    code = model.c_code   # the model's C library (its given inputs compiled in)
+    one = cbackend.load(code.key, code.c_source)
     if one is None:
         raise CvodeUnavailable("the model's right-hand side is not compiled and no C compiler "
                                "was found (set $CC, or install gcc).")

@@ -56,7 +56,7 @@ class SingularSet:
         self.model = model
         self.expressions = tuple(as_expr(e) for e in expressions)
         self.params = model._code.params
-        self.values = model._c_args[0]
+        self.values = model.param_values
 
     def __len__(self) -> int:
         return len(self.expressions)

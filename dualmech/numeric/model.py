@@ -23,6 +23,7 @@ array([ 0., -2.])
 """
 from __future__ import annotations
 
+import copy
 import os
 import threading
 from dataclasses import dataclass
@@ -38,6 +39,7 @@ from dualmech.model.equations import EquationSet, ModelError, state_symbols, to_
 from dualmech.model.kinematics import t
 from dualmech.numeric import cbackend, codegen
 from dualmech.numeric._cache import digest, load_module
+from dualmech.numeric.input_code import compiled_inputs, python_inputs
 from dualmech.numeric.inputs import InputError
 
 __all__ = ["NumericModel", "SingularityError", "StateFunction"]
@@ -163,7 +165,9 @@ class NumericModel:
     inputs : mapping symbol (or its name) -> callable, optional
         Given inputs (:class:`~dualmech.model.inputs.Input`): each a function of time whose
         value is bound at every evaluation (:mod:`dualmech.numeric.inputs` builds them from
-        callables, tables and expressions, with the checks); the code then runs in Python.
+        closed forms, tables and callables, with the checks).  Closed forms and tables are
+        also compiled into the C code (:mod:`dualmech.numeric.input_code`); a Python callable
+        keeps the Python code (:attr:`inputs_in_python` says why).
 
     Notes
     -----
@@ -183,11 +187,32 @@ class NumericModel:
         inputs = {_key(k, code.params): f for k, f in (inputs or {}).items()}
         inputs = {k: f for k, f in inputs.items() if k in code.params}
         p = _bind(code.params, {**params, **{k: 0.0 for k in inputs}}, f"model `{eqs.name}`")
+        #: why the given inputs cannot run in compiled code (None: they can, or there are none)
+        self.inputs_in_python = None
         self._setup(p, "python" if inputs else backend)
-        if inputs:   # given inputs F(t): their values bound at each time (Python code only)
+        if inputs:   # given inputs F(t): their values bound at each time in Python ...
             self._inputs = [(code.params.index(k), f) for k, f in inputs.items()]
             self._p = list(p)
             self._scalar, self._vector = self._driven_scalar, self._driven_vector
+            self._compile_inputs(params, inputs, backend)   # ... and in C where they can
+
+    def _compile_inputs(self, params: Mapping, inputs: dict, backend: str) -> None:
+        """Closed forms and tables evaluated in the generated C (:mod:`~dualmech.numeric.
+        input_code`); a Python callable keeps the Python code, the reason recorded."""
+        if backend == "python":
+            self.inputs_in_python = "backend='python' was asked for"
+            return
+        self.inputs_in_python = python_inputs(inputs)
+        if self.inputs_in_python:
+            return
+        known = {_key(k, self._code.params): v for k, v in params.items()}
+        self._c_pending = lambda: compiled_inputs(  # noqa: E731 - generated on first use
+            self.eqs, self._code.params, self._code.shape, known, inputs, _TRIP)
+        self.backend = backend
+        m, N = self.shape
+        usable = m == N and N <= _C_MAX and (backend == "c" or (
+            backend == "auto" and N >= _C_MIN and cbackend.compiler() is not None))
+        self._c = False if usable else None
 
     # -- given inputs ----------------------------------------------------------------------
     def _bound_at(self, time):
@@ -213,6 +238,7 @@ class NumericModel:
         if getattr(self, "_inputs", None):
             raise TypeError("a model driven by given inputs (Python functions of time) does "
                             "not pickle; build it where it runs.")
+        # (with_backend copies a driven model instead)
         return {"eqs": self.eqs, "p": tuple(self._c_args[0].tolist()), "backend": self.backend}
 
     def __setstate__(self, state: dict) -> None:
@@ -237,6 +263,13 @@ class NumericModel:
         """
         if backend not in ("auto", "python", "c"):
             raise ValueError(f"`backend` must be 'auto', 'python' or 'c', got {backend!r}.")
+        if getattr(self, "_inputs", None):
+            if backend != "python":
+                raise ValueError("a model driven by given inputs changes backend to "
+                                 "'python' only; build another for C.")
+            other = copy.copy(self)
+            other._c, other.backend = None, "python"
+            return other
         other = object.__new__(NumericModel)
         other.__setstate__({**self.__getstate__(), "backend": backend})
         return other
@@ -250,10 +283,23 @@ class NumericModel:
         self._mn = code.shape[0] * code.shape[1]
         self.backend = backend
         self._c_args = (np.array(p, dtype=float), np.array(k, dtype=float))
+        #: the parameter values in the order of ``_code.params`` (the C library's ``p`` may
+        #: differ: with given inputs in C it holds their tables instead)
+        self.param_values = self._c_args[0]
         m, N = code.shape
         usable = m == N and N <= _C_MAX and (backend == "c" or (
             backend == "auto" and N >= _C_MIN and cbackend.compiler() is not None))
         self._c = False if usable else None  # False: not loaded yet
+
+    @property
+    def c_code(self):
+        """The C library's ``key`` and ``c_source`` (with the given inputs in C, if any: then
+        generated on first use, and ``_c_args`` with them)."""
+        pending = self.__dict__.pop("_c_pending", None)
+        if pending is not None:
+            ci = pending()
+            self._c_code, self._c_args = ci, (ci.p, ci.k)
+        return getattr(self, "_c_code", None) or self._code
 
     @property
     def compiled(self) -> bool:
@@ -263,7 +309,8 @@ class NumericModel:
     def _c_solver(self):
         """The compiled solver (loaded, or compiled, on first use), or ``None``."""
         if self._c is False:
-            fns = cbackend.load(self._code.key, self._code.c_source)
+            code = self.c_code
+            fns = cbackend.load(code.key, code.c_source)
             if fns is None and self.backend == "c":
                 raise RuntimeError("`backend='c'` needs a working C compiler (set $CC); "
                                    "use backend='python' or 'auto' without one.")

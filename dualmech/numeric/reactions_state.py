@@ -32,7 +32,7 @@ from typing import Mapping
 
 import numpy as np
 
-from dualmech.numeric.inputs import declared_inputs, input_functions
+from dualmech.numeric.inputs import declared_inputs, default_values, input_functions
 from dualmech.numeric.model import NumericModel
 from dualmech.numeric.simulation import default_initial_state, problem_parameters, reactions_at
 
@@ -137,7 +137,7 @@ def reactions_at_state(problem, at: Mapping[str, float] | None = None,
     ``comparison`` (a :class:`~dualmech.verify.check.Comparison` of ``problem``) lends its
     referees; without it they are derived here.  ``at`` is read by :func:`state_from_names`.
     """
-    at, drive, named = _split_inputs(problem, at)
+    at, drive, named = _split_inputs(problem, at, time, params)
     q, qd, given = state_from_names(problem, at)
     if not np.isfinite(float(time)):
         raise ValueError(f"`time` must be finite, got {time!r}.")
@@ -185,15 +185,18 @@ def _other_models(problem, values, fns, q, qd, time) -> dict:
     return out
 
 
-def _split_inputs(problem, at: Mapping | None) -> tuple[dict, dict, tuple]:
+def _split_inputs(problem, at: Mapping | None, time: float = 0.0,
+                  params: Mapping | None = None) -> tuple[dict, dict, tuple]:
     """``(state names, {input: value}, inputs named)``: the given inputs' values at the
-    instant are read from ``at`` too (``F=2``), zero for those not named."""
+    instant are read from ``at`` too (``F=2``); one not named takes its declared default
+    history's value at ``time``, else zero."""
     inputs = declared_inputs(problem)
     at = dict(at or {})
     named = tuple(k for k in inputs if k in at)
+    defaults = default_values(problem, time, params) if len(named) < len(inputs) else {}
     drive = {}
     for name in inputs:
-        value = at.pop(name, 0.0)
+        value = at.pop(name, defaults.get(name, 0.0))
         if isinstance(value, (bool, str, bytes)) or not np.isfinite(_float(value)):
             raise ValueError(f"`--at`: {name} = {value!r:.40} is not a finite number.")
         drive[name] = float(value)

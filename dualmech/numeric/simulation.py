@@ -210,7 +210,7 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
     if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 2:
         raise ValueError(f"`samples` must be an integer >= 2, got {samples!r}.")
     values = problem_parameters(problem, params, check_ranges=check_ranges)
-    drive = input_functions(problem, inputs, (t0, t1))
+    drive = input_functions(problem, inputs, (t0, t1), values)
     ref = problem.model(problem.reference)
     model = NumericModel(ref, values, inputs=drive)
     n = ref.n
@@ -257,7 +257,7 @@ def reactions_at(problem, q: Sequence[float], qd: Sequence[float], time: float =
     the state, so that they do not fix its reactions, gives none).
     """
     values = problem_parameters(problem, params, check_ranges=check_ranges)
-    drive = input_functions(problem, inputs)
+    drive = input_functions(problem, inputs, params=values)
     ref = problem.model(problem.reference)
     qdd = NumericModel(ref, values, inputs=drive).accelerations(time, q, qd)
     out: dict = {}

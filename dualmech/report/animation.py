@@ -232,6 +232,7 @@ def animate(problem, duration: float = 5.0, frames: int = 60, params: Mapping | 
     and :class:`~dualmech.numeric.scene.NoScene` when there is nothing to draw."""
     from dualmech.numeric.charts import conditions
     from dualmech.numeric.contacts import scene_span
+    from dualmech.numeric.inputs import driven_problem
     from dualmech.numeric.scene import scene
     from dualmech.numeric.simulation import simulate
     if not 2 <= frames <= MOST_FRAMES:
@@ -240,6 +241,7 @@ def animate(problem, duration: float = 5.0, frames: int = 60, params: Mapping | 
         raise ValueError(f"`inches` must be between 1 and {MOST_INCHES}, got {inches}.")
     if not duration > 0:
         raise ValueError(f"`duration` must be positive, got {duration!r}.")
+    problem = driven_problem(problem)   # given inputs: their declared default histories
     sc = scene(problem, params)
     span = scene_span(problem, duration, y0=y0, params=params)
     traj = simulate(problem, t_span=(span.t0, span.t_end), samples=frames, y0=y0,

@@ -118,8 +118,10 @@ def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400
     coordinates' panels; the caption under the panels states each scene's parameters and
     initial state."""
     from dualmech.numeric.charts import conditions, pyplot, save
+    from dualmech.numeric.inputs import driven_problem
     chart = Chart()
     try:
+        problem = driven_problem(problem)   # given inputs: their declared default histories
         span, traj = _simulate(problem, duration, samples)
     except Exception as exc:  # noqa: BLE001 - the verdicts do not depend on the chart
         chart.error = f"simulation failed -- {type(exc).__name__}: {exc}"

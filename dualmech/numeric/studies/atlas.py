@@ -46,6 +46,7 @@ import numpy as np
 
 from dualmech.model.notation import mathtext
 from dualmech.model.facts import is_declared, state_vector
+from dualmech.numeric.inputs import driven_problem
 from dualmech.numeric.studies.regimes import NO_STIFF_SCENE, chaos, dae_drift, linearisation, \
     stiffness
 from dualmech.numeric.studies.singularities import GARBAGE, KAPPA_LIMIT, NO_PROBE, probe, scan
@@ -126,6 +127,7 @@ def atlas(problem, sections: Sequence[str] = SECTIONS, progress: bool = True) ->
     unknown = [s for s in sections if s not in SECTIONS]
     if unknown:
         raise ValueError(f"unknown atlas sections {unknown}; choose from {SECTIONS}.")
+    problem = driven_problem(problem)   # given inputs: their declared default histories
     out = Atlas(problem.name, problem.title)
     bar = tqdm(list(sections), desc=f"{problem.name}: atlas", unit="section",
                file=sys.stderr, leave=False, disable=not progress)

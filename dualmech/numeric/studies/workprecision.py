@@ -65,6 +65,7 @@ from dualmech.numeric.contacts import scene_span
 from dualmech.numeric.dae import BAUMGARTE_GAINS, DAE_SOLVED, STABILISATIONS
 from dualmech.numeric.daesolve import DAE_METHODS
 from dualmech.numeric.formulations import Formulation, formulations
+from dualmech.numeric.inputs import driven_problem
 from dualmech.numeric.symplectic import energy_drift
 from dualmech.numeric.integrators import DID_NOT_FINISH, METHODS, WorkBudget, Run
 from dualmech.numeric.studies.wplesson import lesson_chart, scene_text
@@ -349,6 +350,7 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
     if repeats < 1:
         raise ValueError(f"`repeats` must be at least 1, got {repeats}.")
     budget = budget or WorkBudget()
+    problem = driven_problem(problem)   # given inputs: their declared default histories
     from tqdm import tqdm
     asked = None if models is None else tuple(models) + (problem.reference,)
     forms, skipped = formulations(problem, params, y0, models=asked,
