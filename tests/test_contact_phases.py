@@ -76,6 +76,36 @@ def test_off_the_wall_momentum_and_energy_carry_on(run):
     assert (free.reactions["N_f"] > 0).all()
 
 
+def hand_floor_time(theta0=THETA0):
+    """Off the wall, x' stays v_s (its value at the switch) and energy holds:
+    m v_s^2/2 + m L^2 (sin^2 theta / 4 + 1/12) theta'^2 / 2 + m g L cos(theta)/2
+    = m g L cos(theta0)/2; the time from the switch to theta = pi/2 (the top on the floor)
+    is the integral of d(theta) / theta' (theta' > 0 all the way: a smooth integrand)."""
+    c0 = np.cos(theta0)
+    cs = 2 * c0 / 3
+    ths = np.arccos(cs)
+    w_s = np.sqrt(3 * G / L * (c0 - cs))
+    v_s = L / 2 * cs * w_s
+    def rate(th):
+        top = G * L / 2 * (c0 - np.cos(th)) - v_s**2 / 2
+        return np.sqrt(top / (L**2 * (np.sin(th) ** 2 / 4 + 1 / 12) / 2))
+    value, _ = quad(lambda th: 1 / rate(th), ths, np.pi / 2, epsabs=1e-13, epsrel=1e-13)
+    return hand_switch_time(theta0) + value
+
+
+def test_the_run_ends_where_the_ladder_leaves_its_declared_domain():
+    """The teacher declares the angle's domain (0, pi/2): past it the top would sink through
+    the floor, which the free ladder's model does not know.  The phased run stops there, at
+    the time the hand quadrature gives, and says why."""
+    ladder = problems.load(f"{FILE}:WallLadder")
+    run = simulate_phases(ladder, (0, 3.0), samples=300)
+    assert [ph.problem for ph in run.phases] == ["wall_ladder", "free_ladder"]
+    free = run.phases[1].trajectory
+    assert free.t[-1] == pytest.approx(hand_floor_time(), rel=1e-7)
+    assert free.q[1, -1] == pytest.approx(np.pi / 2, abs=1e-9)
+    assert "theta leaves its declared domain" in run.ended and "free_ladder" in run.ended
+
+
 def test_the_chart_shows_both_phases_and_the_switch(run, tmp_path):
     series = phase_series(run)
     t, theta = series["theta"]

@@ -103,7 +103,9 @@ class Coordinate:
     """A generalised coordinate ``q(t)`` with its dimension and the ranges of ``q`` and ``q'``.
 
     The ranges bound the sampled states (and the default initial state); ``domain`` is the
-    interval over which identities that leave the rational world are decided.
+    interval where the model holds: identities that leave the rational world are decided over
+    it, and a simulation, chart or phased run stops where the coordinate leaves it (a ladder's
+    angle past the floor), saying so.
 
     Examples
     --------

@@ -172,10 +172,22 @@ class SceneSpan:
 
 
 def _range_events(problem, ref, values) -> list:
-    """Terminal events for the length coordinates leaving their declared ranges."""
+    """Terminal events for the coordinates leaving where the model describes the scene: a
+    declared ``domain`` (any coordinate: the ladder's angle past the floor), else the declared
+    range of a length (an angle's range is only where states are sampled)."""
     events = []
     for i, q in enumerate(ref.coordinates):
         info = problem.coordinate_info(q)
+        domain = getattr(info, "domain", None)
+        if domain is not None:
+            lo, hi = (float(v) for v in domain)
+            for bound, side in ((lo, "below"), (hi, "above")):
+                ev = (lambda t, y, i=i, b=bound: y[i] - b)
+                ev.terminal, ev.direction = True, (-1 if side == "below" else 1)
+                ev.what = (f"{info.name} leaves its declared domain ({lo:.4g}, {hi:.4g})"
+                           + (f" ({info.description})" if info.description else ""))
+                events.append(ev)
+            continue
         if info.dimension == ANGLE or not reduce(info.dimension):
             continue
         lo, hi = (float(v) for v in info.range)

@@ -26,7 +26,7 @@ import sympy as sp
 
 from dualmech.model._expr import as_expr
 from dualmech.model.phases import next_problem
-from dualmech.numeric.contacts import watch
+from dualmech.numeric.contacts import _range_events, watch
 from dualmech.numeric.simulation import (Trajectory, check_t_span, default_initial_state,
                                          problem_parameters, simulate)
 
@@ -103,13 +103,21 @@ def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None 
     for _ in range(MAX_PHASES):
         mine = {p.symbol.name for p in problem.parameters}
         values = problem_parameters(problem, {k: v for k, v in named.items() if k in mine})
-        report = watch(problem, (t0, t1), y0, values, rtol=rtol, atol=atol)
+        ref = problem.model(problem.reference)
+        report = watch(problem, (t0, t1), y0, values, rtol=rtol, atol=atol,
+                       extra_events=_range_events(problem, ref, values))
         brk = report.first
-        end = brk.time if brk is not None else t1
+        stop = report.stopped if brk is None else None
+        end = brk.time if brk is not None else stop[1] if stop is not None else t1
         if end > t0:
             k = max(2, int(round(samples * (end - t0) / (t_span[1] - t_span[0]))))
             traj = simulate(problem, (t0, end), y0, values, samples=k, rtol=rtol, atol=atol)
             run.phases.append(PhaseRun(problem.name, traj))
+        if stop is not None:
+            run.ended = (f"t = {stop[1]:.6g} s: {stop[0]} in `{problem.name}`: the model "
+                         "no longer describes the scene there (a phase follows only a "
+                         "one-sided reaction reaching zero)")
+            return run
         if brk is None:
             return run
         phase = (getattr(problem, "phases", None) or {}).get(brk.reaction)
@@ -170,7 +178,9 @@ def phase_chart(run: PhasedRun, path, title: str = "") -> str:
     bottom.set_xlabel("t (s)")
     top.legend(loc="best", fontsize=8)
     bottom.legend(loc="best", fontsize=8)
-    whys = "; ".join(f"t = {s.time:.3g} s: {s.why}" for s in run.switches)
+    whys = "; ".join([f"t = {s.time:.3g} s: {s.why}" for s in run.switches]
+                     + ([f"ends at t = {run.phases[-1].trajectory.t[-1]:.3g} s: the model "
+                         "leaves its domain"] if run.ended and "domain" in run.ended else []))
     top.set_title(title or " -> ".join(ph.problem for ph in run.phases), fontsize=10)
     if whys:
         bottom.set_title(whys, fontsize=8)

@@ -16,7 +16,9 @@ theta, x = coordinate("theta"), coordinate("x")
 PARAMETERS = (Parameter(m, MASS, 10, (0.1, 100), "mass of the ladder"),
               Parameter(L, LENGTH, 4, (0.5, 10), "length of the ladder"),
               Parameter(g, ACCELERATION, 9.81, (1, 20)))
-ANGLE_ = Coordinate(theta, ANGLE, (0.05, 1.5), (-5, 5), "ladder from the wall")
+# the model holds while the ladder stands: 0 < theta < pi/2 (at pi/2 its top hits the floor)
+ANGLE_ = Coordinate(theta, ANGLE, (0.05, 1.5), (-5, 5), "ladder from the wall",
+                    domain=(0.0, float(sp.pi / 2)))
 
 
 def ladder(centre):
