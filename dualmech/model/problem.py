@@ -104,8 +104,8 @@ class Coordinate:
 
     The ranges bound the sampled states (and the default initial state); ``domain`` is the
     interval where the model holds: identities that leave the rational world are decided over
-    it, and a simulation, chart or phased run stops where the coordinate leaves it (a ladder's
-    angle past the floor), saying so.
+    it, and a chart's scene, an animation or a phased run stops where the coordinate leaves
+    it (a ladder's angle past the floor), saying so.
 
     Examples
     --------
