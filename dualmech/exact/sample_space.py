@@ -405,6 +405,34 @@ def analyse_se(exprs: Sequence, symbols: Sequence) -> World | None:
         return None
 
 
+def function_arguments_se(exprs: Sequence) -> set | None:
+    """The symbols inside the circle and growth functions of symengine ``exprs`` (as real
+    sympy symbols), found by the fast route's scan (each shared subtree visited once), or
+    ``None`` when the expressions leave that route.
+
+    >>> import symengine as se
+    >>> x, y, w = se.symbols("x y w")
+    >>> sorted(map(str, function_arguments_se([se.sin(x + 2 * y) * w + se.cos(w / 3) * x])))
+    ['w', 'x', 'y']
+    >>> function_arguments_se([se.exp(w)]) is None      # symengine's E**w: the general route
+    True
+    """
+    names = set()
+    for e in exprs:
+        names |= {str(v) for v in e.free_symbols}
+    scan = _Scan(held={n: sp.Symbol(n, real=True) for n in names})
+    try:
+        for e in exprs:
+            scan.visit(e)
+    except (_Leave, NotExact, Undecidable):
+        return None
+    out = set()
+    for _, lin in scan.trig.values():
+        for m in lin:
+            out |= m.free_symbols
+    return out
+
+
 #: a circle function of an argument from its ``(sin, cos)`` dummies
 _CIRCLE_RULES = {"sin": lambda s, c: s, "cos": lambda s, c: c, "tan": lambda s, c: s / c,
                  "cot": lambda s, c: c / s, "sec": lambda s, c: 1 / c, "csc": lambda s, c: 1 / s}

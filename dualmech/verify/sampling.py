@@ -21,6 +21,7 @@ from dualmech.model._expr import as_expr
 from dualmech.model.equations import EquationSet, ModelError, state_symbols
 from dualmech.exact.form import ExactForm, is_zero
 from dualmech.exact.errors import Undecidable
+from dualmech.exact.sample_space import function_arguments_se
 from dualmech.model.kinematics import t
 from dualmech.exact import linalg as la
 
@@ -207,11 +208,13 @@ class System:
         """The symbols some function of this model takes as argument (they cannot be solved
         for on a manifold: their sines are sampled on the circle); computed once."""
         if self._inside is None:
-            inside = set()
             held = self.flat_se()
-            for e in (held if held is not None else self.flat()):
-                for f in e.atoms(se.Function if held is not None else sp.Function):
-                    inside |= {sp.Symbol(x.name, real=True) for x in f.free_symbols}
+            inside = function_arguments_se(held) if held is not None else None
+            if inside is None:   # the general route: every function's arguments
+                inside = set()
+                for e in (held if held is not None else self.flat()):
+                    for f in e.atoms(se.Function if held is not None else sp.Function):
+                        inside |= {sp.Symbol(x.name, real=True) for x in f.free_symbols}
             for e in self.constraint_exprs():
                 for f in e.atoms(sp.Function):
                     inside |= f.free_symbols
