@@ -26,6 +26,8 @@ def _resolve(node: Node, voc: Vocabulary, limits: Limits):
     op, a = node.op, node.args
     if op == "num":
         return ("c", a[0])
+    if op == "resolved":
+        return a[0]
     if op == "name":
         refs = voc.resolve(a[0], a[1])
         leaves = [("pi",) if r.kind == "constant" else ("s", r.symbol) for r in refs]
@@ -44,6 +46,12 @@ def _resolve(node: Node, voc: Vocabulary, limits: Limits):
     if op == "mul":
         return ("mul", tuple(_resolve(c, voc, limits) for c in _drop_of_t(a, voc)))
     if op == "pow":
+        if a[0].op == "name" and len(voc.resolve(*a[0].args)) > 1:
+            # an implicit product typed as one word: the power binds to its last letter
+            # (``ka^2`` is ``k*a^2``, as ``k a^2`` is), never to the whole product
+            *first, last = _resolve(a[0], voc, limits)[1]
+            power = Node("pow", (_leaf(last), a[1]), (a[1],))
+            return ("mul", (*first, _resolve(power, voc, limits)))
         base = _resolve(a[0], voc, limits)
         e = _constant(a[1], limits)
         if e.denominator == 1:
@@ -65,6 +73,11 @@ def _resolve(node: Node, voc: Vocabulary, limits: Limits):
     if op == "vec":
         return ("vec", tuple(_resolve(c, voc, limits) for c in a))
     raise AssertionError(op)
+
+
+def _leaf(leaf) -> Node:
+    """A parsed node standing for ``leaf``, one resolved factor of an implicit product."""
+    return Node("resolved", (leaf,))
 
 
 def _zero_division():
