@@ -3,7 +3,8 @@ r"""Judging energies, Lagrangians and generalised forces against a problem's Lag
 * ``T`` is compared with ``q'^T M q' / 2`` at the points (or, where the kinetic pieces are not
   of that form -- moving constraints -- by its Lagrange terms, identically in ``q''``).
 * ``V`` is right up to a constant: its gradient must be the potential pieces (plus, optionally,
-  the drives written as a time-dependent potential).
+  the drives written as a time-dependent potential, and the steady loads the problem declares as
+  generalised forces -- ``M g x`` in ``V`` or ``F`` in ``Q``, either way).
 * ``L`` is right when ``d/dt dL/dq' - dL/dq = c (kinetic + potential pieces [+ drives])`` for
   every ``q, q', q''`` with ``c`` a nonzero constant (it may depend on the parameters), so
   ``c L + dF(q, t)/dt`` is right; ``c`` is found from an acceleration coefficient and checked
@@ -161,7 +162,7 @@ def judge_potential(ctx: ProblemContext, f: Formula, quantity: Quantity,
     parts = LagrangeParts.of(ctx)
     dims = _energy_dims(ctx, f)
     grad = [Formula.from_sympy(sp.diff(f.sympy(), s.q)) for s in ctx.states]
-    pot, drives = parts.keys("potential"), parts.keys("drive")
+    pot, drives = parts.keys("potential"), parts.keys("drive", "load")
     method = _exact(ctx, grad + [x for k in pot + drives for x in parts.formulas[k]])
     envs = [p.env() for p in ctx.points(method)]
     mine = [[g.evaluate(e) for g in grad] for e in envs]
@@ -209,7 +210,8 @@ def judge_lagrangian(ctx: ProblemContext, f: Formula, quantity: Quantity,
     parts = LagrangeParts.of(ctx)
     dims = _energy_dims(ctx, f)
     el = [Formula.from_sympy(e) for e in euler_lagrange(f.sympy(), ctx.states)]
-    kin, pot, drives = parts.keys("kinetic"), parts.keys("potential"), parts.keys("drive")
+    kin, pot, drives = (parts.keys("kinetic"), parts.keys("potential"),
+                        parts.keys("drive", "load"))
     pieces = [x for k in kin + pot + drives for x in parts.formulas[k]]
     method = _exact(ctx, el + pieces)
     points = ctx.points(method)
@@ -287,7 +289,7 @@ def judge_force(ctx: ProblemContext, comps: list, quantity: Quantity,
         expected = tuple(sorted(_sub(expected, ctx.dims[ctx.states[j].q]).items()))
         dims += map(in_their_words(ctx, f.text),
                     dimension_issues(f.tree, ctx.dims, ctx.names, expected))
-    drives, optional = parts.keys("drive"), parts.keys("velocity", "potential")
+    drives, optional = parts.keys("drive"), parts.keys("velocity", "potential", "load")
     method = _exact(ctx, comps + [x for k in drives + optional for x in parts.formulas[k]])
     envs = [p.env() for p in ctx.points(method)]
     mine = [[f.evaluate(e) for f in comps] for e in envs]
