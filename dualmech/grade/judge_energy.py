@@ -30,6 +30,7 @@ from dualmech.grade.audit import dimension_issues, reduced
 from dualmech.grade.notation import in_their_words
 from dualmech.grade.formula import Formula
 from dualmech.grade.judge import Deadline, Verdict, factor_edit, method_for
+from dualmech.grade.kinds import naming_energy
 from dualmech.grade.result import DIMENSIONS_ONLY
 from dualmech.grade.parser import AnswerError
 from dualmech.model.dimensions import ENERGY
@@ -75,7 +76,9 @@ def _edits(ctx, f: Formula, target, deadline):
         tab = term_table(right, ctx, "the right answer", mode)
         return [tab] if tab is not None and tab.terms else []
     expr = _drop_constants(f.sympy(), ctx)
-    return best_edit(expr, tables, ctx, scale=False) or factor_edit(expr, tables("trig"), ctx)
+    with naming_energy():   # the terms of an energy, named as such
+        return best_edit(expr, tables, ctx, scale=False) or factor_edit(expr, tables("trig"),
+                                                                        ctx)
 
 
 def _edits_any(ctx, f: Formula, forms: list, deadline):
