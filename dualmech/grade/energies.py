@@ -137,6 +137,26 @@ class LagrangeParts:
         ok = self._same(euler_lagrange(T2, self.ctx.states), self.total(self.keys("kinetic")))
         return T2 if ok else None
 
+    def declared_kinetic_energy(self):
+        """The kinetic energy the problem's Lagrange model was built from (its ``T`` terms),
+        when its Lagrange terms are the kinetic pieces (checked), else None: for feedback on
+        a ``T`` with terms of a moving constraint, which is judged by its Lagrange terms."""
+        return self.ctx.memo(("declared_kinetic_energy",), self._declared_kinetic_energy)
+
+    def _declared_kinetic_energy(self):
+        from dualmech.model.declared import builder_of
+        b = builder_of(self._model())
+        if b is None or not getattr(b, "_T", None):
+            return None
+        T = sp.Add(*b._T.values())
+        if hasattr(b, "_known"):   # prescribed coordinates as the functions of time they are
+            T = b._known(T)
+        T = sp.expand(self.ctx.plain(T))
+        if T.has(sp.Derivative) or T.atoms(sp.core.function.AppliedUndef):
+            return None
+        ok = self._same(euler_lagrange(T, self.ctx.states), self.total(self.keys("kinetic")))
+        return T if ok else None
+
     def _same(self, left: list, right: list) -> bool:
         """Exactly equal at the context's points, with random accelerations (off the motion)."""
         fl = [Formula.from_sympy(e) for e in left]

@@ -27,7 +27,7 @@ from dualmech.grade.energies import LagrangeParts, euler_lagrange
 from dualmech.grade.feedback import best_edit, concrete_state
 from dualmech.grade.terms import term_table
 from dualmech.grade.audit import dimension_issues, reduced
-from dualmech.grade.notation import in_their_words
+from dualmech.grade.notation import for_student, in_their_words
 from dualmech.grade.formula import Formula
 from dualmech.grade.judge import Deadline, Verdict, factor_edit, method_for
 from dualmech.grade.kinds import naming_energy
@@ -108,7 +108,7 @@ def _wrong(ctx, f, truth, summary, dims, method, deadline, target=None, extra=()
     details = list(extra)
     state = {}
     if d is not None:
-        edits = d.edits
+        edits = for_student(ctx, d.edits, f.text)   # their names, rates and LaTeX
     else:
         edits = []
         if truth is not None:
@@ -139,11 +139,13 @@ def judge_kinetic(ctx: ProblemContext, f: Formula, quantity: Quantity,
         return _wrong(ctx, f, ref, "this is not the kinetic energy", dims, method, deadline, T)
     kin = parts.total(parts.keys("kinetic"))
     ok, method = _same_lagrange_terms(ctx, f, kin)
-    status = "right" if ok and not dims else "wrong"
+    if not ok:   # the edit is named against the problem's own T
+        return _wrong(ctx, f, None, "its Lagrange terms differ from those of the kinetic "
+                      "energy", dims, method, deadline, parts.declared_kinetic_energy())
     summary = ("its Lagrange terms are those of the kinetic energy (the problem's T has "
-               "terms from moving constraints, so T is judged by its equations)") if ok else \
-        "its Lagrange terms differ from those of the kinetic energy"
-    return Verdict(status, summary, dimension_issues=dims, method=method, degree=f.degree)
+               "terms from moving constraints, so T is judged by its equations)")
+    return Verdict("wrong" if dims else "right", summary, dimension_issues=dims, method=method,
+                   degree=f.degree)
 
 
 def _same_lagrange_terms(ctx, f, pieces) -> tuple[bool, str]:
@@ -266,7 +268,7 @@ def _factor(ctx, point, el, kin, parts):
 
 
 def _lagrangian_wrong(ctx, f, parts, dims, method, deadline, summary):
-    T, V = parts.kinetic_energy(), parts.potential_energy()
+    T, V = parts.kinetic_energy() or parts.declared_kinetic_energy(), parts.potential_energy()
     target = (T - V) if T is not None and V is not None else None
     return _wrong(ctx, f, None, summary, dims, method, deadline, target,
                   extra=[] if target is not None else
@@ -319,7 +321,8 @@ def judge_force(ctx: ProblemContext, comps: list, quantity: Quantity,
         d = _edits_any(ctx, f, forms, deadline)
         if d is not None:
             edits += [e.__class__(e.kind, a if len(js) > 1 else None, e.term, e.correct,
-                                  e.category, e.detail, "component") for e in d.edits]
+                                  e.category, e.detail, "component")
+                      for e in for_student(ctx, d.edits, f.text)]
     if not edits:
         details.append("compared with the generalised forces of the drives "
                        f"({', '.join(drives) or 'none'}), with and without the dampers; "
