@@ -76,9 +76,10 @@ def _edits(ctx, f: Formula, target, deadline):
         tab = term_table(right, ctx, "the right answer", mode)
         return [tab] if tab is not None and tab.terms else []
     expr = _drop_constants(f.sympy(), ctx)
-    with naming_energy():   # the terms of an energy, named as such
-        return best_edit(expr, tables, ctx, scale=False) or factor_edit(expr, tables("trig"),
-                                                                        ctx)
+    with naming_energy():   # the terms of an energy, named as such, kept apart as written
+        parts = [p for p in (_drop_constants(w, ctx) for w in f.written_terms()) if p != 0]
+        return best_edit(expr, tables, ctx, scale=False, parts=parts) or \
+            factor_edit(expr, tables("trig"), ctx)
 
 
 def _edits_any(ctx, f: Formula, forms: list, deadline):

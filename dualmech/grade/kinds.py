@@ -120,8 +120,10 @@ def category(term, ctx: ProblemContext) -> str:
     term = sp.sympify(term)
     if term.free_symbols & set(ctx.reactions):
         return "a reaction term"
-    if _ENERGY.get() and term.free_symbols & {s.qd for s in ctx.states}:
-        return "a kinetic-energy term"
+    if _ENERGY.get():
+        if term.free_symbols & {s.qd for s in ctx.states}:
+            return "a kinetic-energy term"
+        return _by_gradient(term, ctx)
     tab = term_table(term, ctx, mode="trig")
     if tab is None or not tab.terms:
         return ""
@@ -137,6 +139,19 @@ def category(term, ctx: ProblemContext) -> str:
     if len(names) == 1:
         return names[0]
     return " and ".join(names[:-1]) + " and " + names[-1] if len(names) <= 3 else ""
+
+
+def _by_gradient(term, ctx: ProblemContext) -> str:
+    """A term of an energy without rates, named by the terms it puts in the equations (its
+    gradient): ``P x2^2/(2a)`` of a string's V by the string's terms, ``m g l cos(theta)``
+    as gravity; "" when its components are named differently."""
+    token = _ENERGY.set(False)
+    try:
+        names = {category(sp.diff(term, s.q), ctx) for s in ctx.states
+                 if sp.diff(term, s.q) != 0}
+    finally:
+        _ENERGY.reset(token)
+    return names.pop() if len(names) == 1 else ""
 
 
 def _signature(key, ctx):
