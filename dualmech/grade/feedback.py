@@ -306,7 +306,32 @@ def _plan(mine: TermTable, tab: TermTable, c, ctx, parts) -> list:
                 out.append((kind, g, set(vals)))
                 covered |= set(vals)
                 break
+        else:
+            swapped = _replaced_group(vals, diff, covered, tab, c)
+            if swapped is not None:   # the group written where one correct term belongs
+                out.append(("replace", (g, tab.terms[swapped][0] * swapped),
+                            set(vals) | {swapped}))
+                covered |= set(vals) | {swapped}
     return out
+
+
+def _replaced_group(vals: dict, diff: dict, covered: set, tab: TermTable, c):
+    """The key of the one correct term that a written group (``vals``) stands in place of:
+    without the group, the answer differs from the target there by exactly that term and
+    nowhere else on the group's keys (``m2 (x2' - x1')^2/2`` where ``m2 x2'^2/2`` belongs),
+    and that one edit explains every difference; else None (a slip inside the group is
+    named as that slip)."""
+    if covered:
+        return None
+    rest = {k: diff.get(k, 0) + v for k, v in vals.items()}
+    left = [k for k, v in rest.items() if not zero(v, [vals[k]])]
+    if len(left) != 1 or left[0] not in tab.terms:
+        return None
+    k = left[0]
+    if set(diff) - set(vals) - {k}:
+        return None
+    right = tab.terms[k][1] * c
+    return k if zero(rest[k] - right, [right]) and not zero(right, [1]) else None
 
 
 def _plan_size(mine, tab, c, plan) -> int:
@@ -405,6 +430,10 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Dia
         elif kind == "extra":
             edits.append(Edit("extra", equation, display(g, names), "",
                               category(sp.expand(g), ctx)))
+        elif kind == "replace":
+            have, right = g[0], c_sym * g[1] if c_sym != 1 else g[1]
+            edits.append(Edit("replace", equation, display(have, names), display(right, names),
+                              category(sp.expand(right), ctx)))
         else:
             edits.append(Edit("sign", equation, display(g, names), display(-g, names),
                               category(sp.expand(g), ctx)))
