@@ -1,5 +1,5 @@
 """The grader on a second corpus of students' answers (``tests/corpus/student_answers_2.toml``),
-written independently of the first: 19 catalogue problems, 11 of them not in the first corpus,
+written independently of the first: 20 catalogue problems, 11 of them not in the first corpus,
 and the quantities the first does not ask -- reactions, kinetic and potential energies,
 Lagrangians, generalised forces, accelerations, linearisations about an equilibrium, a
 constrained system with its multiplier, printed results -- typed as students type them (dots,
