@@ -126,9 +126,11 @@ def _constant(node: Node, limits: Limits) -> Fraction:
         return out
     if op == "pow":
         b, e = _constant(a[0], limits), _constant(a[1], limits)
-        if e.denominator != 1 or abs(e) > limits.exponent:
-            raise AnswerTooLarge(f"the exponent {e} is larger than {limits.exponent} (or not "
-                                 "a whole number).")
+        if e.denominator != 1:
+            raise AnswerError(f"a number to the power {e} inside an exponent is not graded; "
+                              "write exponents as whole numbers or simple fractions.")
+        if abs(e) > limits.exponent:
+            raise AnswerTooLarge(f"the exponent {e} is larger than {limits.exponent}.")
         if b == 0 and e < 0:
             raise AnswerError("the answer divides by zero in an exponent.")
         _check_bits(b, int(e))
