@@ -77,7 +77,7 @@ def _edits(ctx, f: Formula, target, deadline):
         return [tab] if tab is not None and tab.terms else []
     expr = _drop_constants(f.sympy(), ctx)
     with naming_energy():   # the terms of an energy, named as such, kept apart as written
-        parts = [p for p in (_drop_constants(w, ctx) for w in f.written_terms()) if p != 0]
+        parts = [p for p in (_as_written(w, ctx) for w in f.written_terms()) if p != 0]
         return best_edit(expr, tables, ctx, scale=False, parts=parts) or \
             factor_edit(expr, tables("trig"), ctx)
 
@@ -97,6 +97,13 @@ def _edits_any(ctx, f: Formula, forms: list, deadline):
         return out
     expr = f.sympy()
     return best_edit(expr, tables, ctx, scale=False) or factor_edit(expr, tables("trig"), ctx)
+
+
+def _as_written(term, ctx):
+    """A written term of an energy as written, unless it holds a constant (which never
+    matters in ``V`` or ``L``): then without it, expanded."""
+    dropped = _drop_constants(term, ctx)
+    return term if sp.expand(term - dropped) == 0 else dropped
 
 
 def _drop_constants(expr, ctx):
