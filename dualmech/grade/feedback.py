@@ -118,7 +118,7 @@ def _best(expr, targets, ctx, scale, equation, mode, parts=None) -> Diagnosis | 
         return None
     if len(mine.terms) > 1 and set(mine.terms) <= set(_differences(mine, tab, c)):
         return None     # every term the student wrote changes: a rewrite, not an edit
-    d = _describe(mine, tab, c, ctx, equation, plan)
+    d = _describe(mine, tab, c, ctx, equation, plan, parts)
     return d if d.size <= MAX_EDITS else None    # described in more edits than believable
 
 
@@ -406,7 +406,8 @@ def _count_keys(mine: TermTable, tab: TermTable, c, skip=frozenset()) -> int:
     return n
 
 
-def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Diagnosis:
+def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=(),
+              parts=None) -> Diagnosis:
     shared = [k for k in mine.terms if k in tab.terms
               and zero(mine.terms[k][1] - c * tab.terms[k][1], [1])]
     if c == 1 or not shared:
@@ -415,6 +416,8 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Dia
         c_sym = sp.cancel(mine.terms[shared[0]][0] / tab.terms[shared[0]][0])
     names = ctx.names
     swaps = swap_pairs(ctx)
+    if parts is not None:
+        mine.groups(ctx, parts)     # what the student wrote as groups, and as single terms
     edits, missing, extra = [], [], []
     covered = set()
     skip = set().union(*(keys for _, _, keys in plan)) if plan else set()
@@ -462,7 +465,12 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Dia
             edits.append(Edit("sign", equation, display(have, names), display(right, names),
                               category(have, ctx)))
         else:
-            edits += _changed(a, sp.expand(c_sym * b[0]), bv, k, ctx, equation, swaps)
+            part = _part_missing(mine, k, a, sp.expand(c_sym * b[0]))
+            if part is not None:
+                edits.append(Edit("missing", equation, "", display(part, names),
+                                  category(part, ctx)))
+            else:
+                edits += _changed(a, sp.expand(c_sym * b[0]), bv, k, ctx, equation, swaps)
     for have in list(extra):
         for right in list(missing):
             sw = _swap_of(have, right, swaps)
@@ -483,6 +491,20 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Dia
     edits += [Edit("missing", equation, "", display(r, names), category(r, ctx)) for r in missing]
     edits += [Edit("extra", equation, display(h, names), "", category(h, ctx)) for h in extra]
     return Diagnosis(tab.label, c_sym, edits, len(edits))
+
+
+def _part_missing(mine: TermTable, key, a, right_c):
+    """The missing part of a term the student wrote only inside their groups, when the
+    groups give a simple fraction of it: ``P/(2a) (x1^2 + (x2 - x1)^2)`` has ``x2^2`` only
+    inside ``(x2 - x1)^2``, half of the right ``P x2^2/a``; what is missing is the term
+    ``P x2^2/(2a)``, not a coefficient the student never wrote.  None otherwise."""
+    groups = mine._groups
+    if not groups or key in mine.alone or not any(key in vals for _, vals in groups):
+        return None     # written as a term of its own: a wrong coefficient of it
+    ratio = sp.cancel(a[0] / right_c)
+    if not (ratio.is_Rational and 0 < ratio < 1):
+        return None
+    return sp.expand((right_c - a[0]) * key)
 
 
 def _paired_edits(mine: TermTable, tab: TermTable, pairs, c_sym, ctx, equation):

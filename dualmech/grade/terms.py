@@ -39,6 +39,8 @@ class TermTable:
     #: the mode the table was built in
     mode: str = "trig"
     _groups: list | None = None
+    #: state parts the answer writes as a term of their own (filled by :meth:`groups`)
+    alone: dict = field(default_factory=dict)
 
     def groups(self, ctx: ProblemContext, parts: list | None = None) -> list:
         """``[(written term, {key: value})]`` of the written terms (``parts``, default the
@@ -59,6 +61,9 @@ class TermTable:
 
     def _add_group(self, out, p, ctx) -> None:
         if len(sp.Add.make_args(sp.expand(p))) < 2:
+            tab = term_table(p, ctx, mode=self.mode)
+            if tab is not None and len(tab.terms) == 1:
+                self.alone.update(tab.terms)   # a written term on one state part
             return
         tab = term_table(p, ctx, mode=self.mode)
         if tab is not None and len(tab.terms) >= 2 and not tab.hidden:
