@@ -470,7 +470,8 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=(),
                 edits.append(Edit("missing", equation, "", display(part, names),
                                   category(part, ctx)))
             else:
-                edits += _changed(a, sp.expand(c_sym * b[0]), bv, k, ctx, equation, swaps)
+                edits += _changed(a, sp.expand(c_sym * b[0]), bv, k, ctx, equation, swaps,
+                                  extra)
     for have in list(extra):
         for right in list(missing):
             sw = _swap_of(have, right, swaps)
@@ -530,11 +531,15 @@ def _coefficient_value(term, ctx):
         return float("nan")
 
 
-def _changed(a, right_c, bv, key, ctx, equation, swaps) -> list:
-    """Edits for a term whose coefficient is wrong (``a``: the answer's entry)."""
+def _changed(a, right_c, bv, key, ctx, equation, swaps, extra: list | None = None) -> list:
+    """Edits for a term whose coefficient is wrong (``a``: the answer's entry).  A written
+    term that does not belong is put in ``extra`` (sympy) instead, when given, so that it
+    can be paired with a missing one as a wrong term."""
     names = ctx.names
     have, right = a[0] * key, right_c * key
-    sub = _written_term(a, bv, key, ctx, equation, swaps)
+    sub = _written_term(a, bv, key, ctx, equation, swaps, extra)
+    if sub is not None and sub.kind == "extra" and extra:
+        return []
     if sub is not None:
         return [sub]
     sw = _swap_of(have, right, swaps)
@@ -548,7 +553,7 @@ def _changed(a, right_c, bv, key, ctx, equation, swaps) -> list:
                  category(right, ctx))]
 
 
-def _written_term(a, bv, key, ctx, equation, swaps) -> Edit | None:
+def _written_term(a, bv, key, ctx, equation, swaps, extra: list | None = None) -> Edit | None:
     """When the student wrote several like terms, the one whose change explains the
     difference: a simple ratio (``25/6`` where ``25/3`` belongs) or two symbols swapped
     (``m1`` written where ``M`` belongs, beside an ``m1`` that is right) -- else None."""
@@ -568,7 +573,7 @@ def _written_term(a, bv, key, ctx, equation, swaps) -> Edit | None:
                             text)
         if zero(new, [v_i]):
             cand = (0, Edit("extra", equation, display(c_i * key, ctx.names), "",
-                            category(c_i * key, ctx)))
+                            category(c_i * key, ctx)), c_i * key)
         else:
             ratio = new / v_i
             if not isinstance(ratio, Fraction):
@@ -579,9 +584,11 @@ def _written_term(a, bv, key, ctx, equation, swaps) -> Edit | None:
             right = sp.Rational(ratio.numerator, ratio.denominator) * c_i * key
             kind = "sign" if ratio == -1 else "coefficient"
             cand = (height, Edit(kind, equation, display(c_i * key, ctx.names),
-                                 display(right, ctx.names), category(right, ctx)))
+                                 display(right, ctx.names), category(right, ctx)), None)
         if best is None or cand[0] < best[0]:
             best = cand
+    if best is not None and best[2] is not None and extra is not None:
+        extra.append(best[2])
     return best[1] if best else None
 
 
