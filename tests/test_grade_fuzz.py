@@ -93,3 +93,35 @@ def test_a_map_that_multiplies_the_angles_is_graded_within_the_limits(pool):
     # is graded (wrong, diagnosed in theta) inside the pool's time and memory ceilings
     g = pool.grade("simple_pendulum", "s'' + s = 0; where s = theta/150")
     assert g.status == "wrong" and "too costly" not in g.summary, g.summary
+
+
+#: the notation the second corpus of students' answers brought (implicit products under a
+#: power, a dot before an index, subscript digits, vulgar fractions), pushed to its limits
+NEW_NOTATION = CORPUS[CORPUS.index("mR^2 theta'' + mgR sin(theta) = 0"):]
+
+
+def test_new_notation_is_bounded_in_time_and_memory():
+    """Graded in this process (no sandbox), each answer of the new notation costs at most
+    a second of CPU and 64 MB of Python allocations at its peak (tracemalloc), for an
+    equation set and for a Lagrangian."""
+    import time
+    import tracemalloc
+
+    from dualmech.grade import Grader
+    graders = [(Grader("toy_car"), None), (Grader("simple_pendulum"), "L")]
+    for grader, quantity in graders:
+        grader.grade("theta'' = 0", quantity)          # the problem's context, built once
+    worst = (0.0, 0, "")
+    for text in NEW_NOTATION:
+        for grader, quantity in graders:
+            tracemalloc.start()
+            t0 = time.process_time()
+            g = grader.grade(text, quantity)
+            seconds = time.process_time() - t0
+            peak = tracemalloc.get_traced_memory()[1]
+            tracemalloc.stop()
+            _check(text, g)
+            assert seconds < 1.0 and peak < 64 * 2**20, (text, seconds, peak, g.summary)
+            worst = max(worst, (seconds, peak, text))
+    assert len(NEW_NOTATION) >= 20, NEW_NOTATION
+    print(f"worst: {worst[0]:.3f} s CPU, {worst[1] / 2**20:.1f} MB peak: {worst[2]!r}")

@@ -59,6 +59,7 @@ def test_first_derivative_notations(text):
 
 @pytest.mark.parametrize("text", [
     "x1''", "x_1''", "x_{1}''", r"\ddot{x}_1", r"\ddot{x_1}", "x1ddot", "ddx1",
+    "ẍ1", "ẍ₁", "ẍ_1", "x₁''",      # a dot typed on the letter before the index, not x''*1
 ], ids=repr)
 def test_subscripted_coordinate(text):
     assert value(text) == VALUES[X1.qdd]
@@ -87,6 +88,12 @@ def test_subscripted_coordinate(text):
     (r"\left( m + g \right)", 26),
     ("F_r = m*g", 31 - 3 * 23),                              # lhs - rhs
     ("ω t", 29 * 37),
+    # a power on a word read as an implicit product binds to its last letter, as with spaces
+    ("mg^2", 3 * 23 ** 2),
+    (r"\frac{mg^2}{2}", Fraction(3 * 23 ** 2, 2)),
+    ("mg^2 - m g^2", 0),
+    ("½ m x1'^2 + ¼ m + ¾ g", Fraction(3 * 11 ** 2, 2) + Fraction(3, 4) + Fraction(69, 4)),
+    ("m₀ + θ̇²", 17 + 2 ** 2),
 ], ids=lambda v: repr(v) if isinstance(v, str) else "")
 def test_values(text, expected):
     assert value(text) == expected
@@ -180,3 +187,12 @@ def test_dimension_audit_names_the_odd_term():
                               {TH.qdd: "theta''"})
     assert issues == ["the term `g*m*x1` has dimension L^2 M T^-2 where the other terms have "
                       "L M T^-2"]
+
+
+def test_a_dot_before_an_index_is_never_a_product_with_the_index():
+    # with both x and x1 names (pulley_bent_track has them), ``ẍ1`` once read as x''*1
+    x = coordinate("x")
+    voc = Vocabulary.build([x, x1], [m], [])
+    (eq,) = parse("ẍ1 + ẋ₁")
+    got = Formula.from_node(eq.lhs, voc).sympy()
+    assert got == X1.qdd + X1.qd, got

@@ -33,6 +33,16 @@ class _PrimePrinter(StrPrinter):
     def _print_Symbol(self, expr):
         return self._names.get(expr, expr.name)
 
+    def _as_ordered_terms(self, expr, order=None):
+        """A sum led by a positive term, as a person writes it (``x2' - x1'``, not
+        ``-x1' + x2'``)."""
+        terms = super()._as_ordered_terms(expr, order=order)
+        if terms and terms[0].could_extract_minus_sign():
+            i = next((j for j, a in enumerate(terms) if not a.could_extract_minus_sign()), None)
+            if i is not None:
+                terms = [terms[i]] + terms[:i] + terms[i + 1:]
+        return terms
+
 
 def display(expr, names: dict | None = None) -> str:
     """``expr`` as text, with ``names`` (symbol -> text) for the coordinates' derivatives,

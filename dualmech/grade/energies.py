@@ -13,7 +13,9 @@ symbols, which needs no knowledge of how the problem named them:
 * **drive** -- it depends on the coordinates and explicitly on time only (a driving force, a
   moving support): it may be written as a generalised force or as a time-dependent potential,
   and both are accepted;
-* **potential** -- it depends on the coordinates only (springs, gravity, a constant load).
+* **potential** -- it depends on the coordinates only (springs, gravity);
+* **load** -- the same, but the problem declares it as a generalised force (a steady applied
+  force): a student may count it in ``V`` or leave it to ``Q``, and both are accepted.
 
 From these: ``T`` (``q'^T M q' / 2`` when the kinetic pieces are exactly its Lagrange terms --
 checked exactly; otherwise ``T`` is judged by its Lagrange terms), ``V`` up to a constant (by
@@ -54,6 +56,13 @@ def euler_lagrange(L, states) -> list:
     return out
 
 
+def _generalised_forces(model) -> set:
+    """The ingredients ``model``'s builder declares as generalised forces (none if unknown)."""
+    from dualmech.model.declared import builder_of
+    b = builder_of(model)
+    return set(getattr(b, "_Q", {}) or {})
+
+
 class LagrangeParts:
     """Sorted ingredients of the Lagrange model of a problem (see the module docstring)."""
 
@@ -74,6 +83,7 @@ class LagrangeParts:
             vec = [ctx.plain(model.contributions[i].get(key, 0)) for i in order]
             self.pieces[key] = vec
         self.kinds = {}
+        declared = _generalised_forces(model)
         for key, vec in self.pieces.items():
             free = set().union(*(sp.sympify(v, strict=True).free_symbols for v in vec))
             if free & lam:
@@ -85,7 +95,7 @@ class LagrangeParts:
             elif t in free:
                 self.kinds[key] = "drive"
             else:
-                self.kinds[key] = "potential"
+                self.kinds[key] = "load" if key in declared else "potential"
         self.formulas = {k: [Formula.from_sympy(v) for v in vec] for k, vec in self.pieces.items()}
 
     @classmethod
@@ -126,6 +136,26 @@ class LagrangeParts:
         T2 = sp.expand((qd.T * M * qd)[0, 0] / 2)
         ok = self._same(euler_lagrange(T2, self.ctx.states), self.total(self.keys("kinetic")))
         return T2 if ok else None
+
+    def declared_kinetic_energy(self):
+        """The kinetic energy the problem's Lagrange model was built from (its ``T`` terms),
+        when its Lagrange terms are the kinetic pieces (checked), else None: for feedback on
+        a ``T`` with terms of a moving constraint, which is judged by its Lagrange terms."""
+        return self.ctx.memo(("declared_kinetic_energy",), self._declared_kinetic_energy)
+
+    def _declared_kinetic_energy(self):
+        from dualmech.model.declared import builder_of
+        b = builder_of(self._model())
+        if b is None or not getattr(b, "_T", None):
+            return None
+        T = sp.Add(*b._T.values())
+        if hasattr(b, "_known"):   # prescribed coordinates as the functions of time they are
+            T = b._known(T)
+        T = sp.expand(self.ctx.plain(T))
+        if T.has(sp.Derivative) or T.atoms(sp.core.function.AppliedUndef):
+            return None
+        ok = self._same(euler_lagrange(T, self.ctx.states), self.total(self.keys("kinetic")))
+        return T if ok else None
 
     def _same(self, left: list, right: list) -> bool:
         """Exactly equal at the context's points, with random accelerations (off the motion)."""

@@ -118,7 +118,7 @@ def _best(expr, targets, ctx, scale, equation, mode, parts=None) -> Diagnosis | 
         return None
     if len(mine.terms) > 1 and set(mine.terms) <= set(_differences(mine, tab, c)):
         return None     # every term the student wrote changes: a rewrite, not an edit
-    d = _describe(mine, tab, c, ctx, equation, plan)
+    d = _describe(mine, tab, c, ctx, equation, plan, parts)
     return d if d.size <= MAX_EDITS else None    # described in more edits than believable
 
 
@@ -306,7 +306,32 @@ def _plan(mine: TermTable, tab: TermTable, c, ctx, parts) -> list:
                 out.append((kind, g, set(vals)))
                 covered |= set(vals)
                 break
+        else:
+            swapped = _replaced_group(vals, diff, covered, tab, c)
+            if swapped is not None:   # the group written where one correct term belongs
+                out.append(("replace", (g, tab.terms[swapped][0] * swapped),
+                            set(vals) | {swapped}))
+                covered |= set(vals) | {swapped}
     return out
+
+
+def _replaced_group(vals: dict, diff: dict, covered: set, tab: TermTable, c):
+    """The key of the one correct term that a written group (``vals``) stands in place of:
+    without the group, the answer differs from the target there by exactly that term and
+    nowhere else on the group's keys (``m2 (x2' - x1')^2/2`` where ``m2 x2'^2/2`` belongs),
+    and that one edit explains every difference; else None (a slip inside the group is
+    named as that slip)."""
+    if covered:
+        return None
+    rest = {k: diff.get(k, 0) + v for k, v in vals.items()}
+    left = [k for k, v in rest.items() if not zero(v, [vals[k]])]
+    if len(left) != 1 or left[0] not in tab.terms:
+        return None
+    k = left[0]
+    if set(diff) - set(vals) - {k}:
+        return None
+    right = tab.terms[k][1] * c
+    return k if zero(rest[k] - right, [right]) and not zero(right, [1]) else None
 
 
 def _plan_size(mine, tab, c, plan) -> int:
@@ -381,7 +406,8 @@ def _count_keys(mine: TermTable, tab: TermTable, c, skip=frozenset()) -> int:
     return n
 
 
-def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Diagnosis:
+def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=(),
+              parts=None) -> Diagnosis:
     shared = [k for k in mine.terms if k in tab.terms
               and zero(mine.terms[k][1] - c * tab.terms[k][1], [1])]
     if c == 1 or not shared:
@@ -390,6 +416,8 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Dia
         c_sym = sp.cancel(mine.terms[shared[0]][0] / tab.terms[shared[0]][0])
     names = ctx.names
     swaps = swap_pairs(ctx)
+    if parts is not None:
+        mine.groups(ctx, parts)     # what the student wrote as groups, and as single terms
     edits, missing, extra = [], [], []
     covered = set()
     skip = set().union(*(keys for _, _, keys in plan)) if plan else set()
@@ -405,6 +433,10 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Dia
         elif kind == "extra":
             edits.append(Edit("extra", equation, display(g, names), "",
                               category(sp.expand(g), ctx)))
+        elif kind == "replace":
+            have, right = g[0], c_sym * g[1] if c_sym != 1 else g[1]
+            edits.append(Edit("replace", equation, display(have, names), display(right, names),
+                              category(sp.expand(right), ctx)))
         else:
             edits.append(Edit("sign", equation, display(g, names), display(-g, names),
                               category(sp.expand(g), ctx)))
@@ -433,7 +465,13 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Dia
             edits.append(Edit("sign", equation, display(have, names), display(right, names),
                               category(have, ctx)))
         else:
-            edits += _changed(a, sp.expand(c_sym * b[0]), bv, k, ctx, equation, swaps)
+            part = _part_missing(mine, k, a, sp.expand(c_sym * b[0]))
+            if part is not None:
+                edits.append(Edit("missing", equation, "", display(part, names),
+                                  category(part, ctx)))
+            else:
+                edits += _changed(a, sp.expand(c_sym * b[0]), bv, k, ctx, equation, swaps,
+                                  extra)
     for have in list(extra):
         for right in list(missing):
             sw = _swap_of(have, right, swaps)
@@ -454,6 +492,20 @@ def _describe(mine: TermTable, tab: TermTable, c, ctx, equation, plan=()) -> Dia
     edits += [Edit("missing", equation, "", display(r, names), category(r, ctx)) for r in missing]
     edits += [Edit("extra", equation, display(h, names), "", category(h, ctx)) for h in extra]
     return Diagnosis(tab.label, c_sym, edits, len(edits))
+
+
+def _part_missing(mine: TermTable, key, a, right_c):
+    """The missing part of a term the student wrote only inside their groups, when the
+    groups give a simple fraction of it: ``P/(2a) (x1^2 + (x2 - x1)^2)`` has ``x2^2`` only
+    inside ``(x2 - x1)^2``, half of the right ``P x2^2/a``; what is missing is the term
+    ``P x2^2/(2a)``, not a coefficient the student never wrote.  None otherwise."""
+    groups = mine._groups
+    if not groups or key in mine.alone or not any(key in vals for _, vals in groups):
+        return None     # written as a term of its own: a wrong coefficient of it
+    ratio = sp.cancel(a[0] / right_c)
+    if not (ratio.is_Rational and 0 < ratio < 1):
+        return None
+    return sp.expand((right_c - a[0]) * key)
 
 
 def _paired_edits(mine: TermTable, tab: TermTable, pairs, c_sym, ctx, equation):
@@ -479,11 +531,15 @@ def _coefficient_value(term, ctx):
         return float("nan")
 
 
-def _changed(a, right_c, bv, key, ctx, equation, swaps) -> list:
-    """Edits for a term whose coefficient is wrong (``a``: the answer's entry)."""
+def _changed(a, right_c, bv, key, ctx, equation, swaps, extra: list | None = None) -> list:
+    """Edits for a term whose coefficient is wrong (``a``: the answer's entry).  A written
+    term that does not belong is put in ``extra`` (sympy) instead, when given, so that it
+    can be paired with a missing one as a wrong term."""
     names = ctx.names
     have, right = a[0] * key, right_c * key
-    sub = _written_term(a, bv, key, ctx, equation, swaps)
+    sub = _written_term(a, bv, key, ctx, equation, swaps, extra)
+    if sub is not None and sub.kind == "extra" and extra:
+        return []
     if sub is not None:
         return [sub]
     sw = _swap_of(have, right, swaps)
@@ -497,7 +553,7 @@ def _changed(a, right_c, bv, key, ctx, equation, swaps) -> list:
                  category(right, ctx))]
 
 
-def _written_term(a, bv, key, ctx, equation, swaps) -> Edit | None:
+def _written_term(a, bv, key, ctx, equation, swaps, extra: list | None = None) -> Edit | None:
     """When the student wrote several like terms, the one whose change explains the
     difference: a simple ratio (``25/6`` where ``25/3`` belongs) or two symbols swapped
     (``m1`` written where ``M`` belongs, beside an ``m1`` that is right) -- else None."""
@@ -517,7 +573,7 @@ def _written_term(a, bv, key, ctx, equation, swaps) -> Edit | None:
                             text)
         if zero(new, [v_i]):
             cand = (0, Edit("extra", equation, display(c_i * key, ctx.names), "",
-                            category(c_i * key, ctx)))
+                            category(c_i * key, ctx)), c_i * key)
         else:
             ratio = new / v_i
             if not isinstance(ratio, Fraction):
@@ -528,9 +584,11 @@ def _written_term(a, bv, key, ctx, equation, swaps) -> Edit | None:
             right = sp.Rational(ratio.numerator, ratio.denominator) * c_i * key
             kind = "sign" if ratio == -1 else "coefficient"
             cand = (height, Edit(kind, equation, display(c_i * key, ctx.names),
-                                 display(right, ctx.names), category(right, ctx)))
+                                 display(right, ctx.names), category(right, ctx)), None)
         if best is None or cand[0] < best[0]:
             best = cand
+    if best is not None and best[2] is not None and extra is not None:
+        extra.append(best[2])
     return best[1] if best else None
 
 

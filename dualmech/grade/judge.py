@@ -720,20 +720,35 @@ def unit_circle(expr):
 
 def _solved_rows(ctx, unknown) -> list:
     """``unknown`` solved from each row that has it as its only reaction/acceleration of its
-    kind (so the form may keep other accelerations: a reaction ``m (g + l theta'')``)."""
-    out = []
+    kind (so the form may keep other accelerations: a reaction ``m (g + l theta'')``); then
+    from each row with one other such unknown, that one put in from a row of its own (a
+    string's tension through the pulley it passes: ``T2 = T1 + m x''/2``, ``T1`` from the
+    first mass)."""
     kind = set(ctx.reactions) if unknown in ctx.reactions else set(ctx.qdd)
-    for m in ctx.models.values():
-        for e in m.equations:
-            e = sp.expand(ctx.plain(e))    # reactions that cancel in the row are not in it
-            others = (e.free_symbols & kind) - {unknown}
-            if unknown in e.free_symbols and not others:
-                coeff = sp.diff(e, unknown)
-                if not coeff.free_symbols & kind:
-                    # sin^2 + cos^2 of one angle read as 1, as a person writes the form
-                    out.append(sp.expand(unit_circle(-(e - coeff * unknown))
-                                         / unit_circle(coeff)))
+    rows = [sp.expand(ctx.plain(e)) for m in ctx.models.values() for e in m.equations]
+    out = [f for e in rows if unknown in e.free_symbols and
+           not (e.free_symbols & kind) - {unknown} for f in _solve_row(e, unknown, kind)]
+    for e in rows:
+        others = (e.free_symbols & kind) - {unknown}
+        if len(out) >= 6 or unknown not in e.free_symbols or len(others) != 1:
+            continue
+        (other,) = others
+        for r in rows:
+            if other in r.free_symbols and not (r.free_symbols & kind) - {other}:
+                for value in _solve_row(r, other, kind):
+                    out += _solve_row(sp.expand(e.xreplace({other: value})), unknown, kind)
+                    break
+                break
     return out[:6]
+
+
+def _solve_row(e, unknown, kind) -> list:
+    """``[unknown]`` solved from the row ``e`` (linear in it), or ``[]``."""
+    coeff = sp.diff(e, unknown)
+    if coeff == 0 or coeff.free_symbols & kind:
+        return []
+    # sin^2 + cos^2 of one angle read as 1, as a person writes the form
+    return [sp.expand(unit_circle(-(e - coeff * unknown)) / unit_circle(coeff))]
 
 
 def _recovered(ctx, u) -> list:

@@ -3,7 +3,8 @@ r"""Judging energies, Lagrangians and generalised forces against a problem's Lag
 * ``T`` is compared with ``q'^T M q' / 2`` at the points (or, where the kinetic pieces are not
   of that form -- moving constraints -- by its Lagrange terms, identically in ``q''``).
 * ``V`` is right up to a constant: its gradient must be the potential pieces (plus, optionally,
-  the drives written as a time-dependent potential).
+  the drives written as a time-dependent potential, and the steady loads the problem declares as
+  generalised forces -- ``M g x`` in ``V`` or ``F`` in ``Q``, either way).
 * ``L`` is right when ``d/dt dL/dq' - dL/dq = c (kinetic + potential pieces [+ drives])`` for
   every ``q, q', q''`` with ``c`` a nonzero constant (it may depend on the parameters), so
   ``c L + dF(q, t)/dt`` is right; ``c`` is found from an acceleration coefficient and checked
@@ -26,9 +27,10 @@ from dualmech.grade.energies import LagrangeParts, euler_lagrange
 from dualmech.grade.feedback import best_edit, concrete_state
 from dualmech.grade.terms import term_table
 from dualmech.grade.audit import dimension_issues, reduced
-from dualmech.grade.notation import in_their_words
+from dualmech.grade.notation import for_student, in_their_words
 from dualmech.grade.formula import Formula
 from dualmech.grade.judge import Deadline, Verdict, factor_edit, method_for
+from dualmech.grade.kinds import naming_energy
 from dualmech.grade.result import DIMENSIONS_ONLY
 from dualmech.grade.parser import AnswerError
 from dualmech.model.dimensions import ENERGY
@@ -65,16 +67,22 @@ def _energy_dims(ctx, f: Formula) -> list:
 
 
 def _edits(ctx, f: Formula, target, deadline):
-    if target is None or f.expanded_size() > 400:
+    """The smallest edit from ``f`` to ``target`` (one correct form, or a list of them: the
+    conventions an energy may follow, the first preferred on a tie)."""
+    targets = [x for x in (target if isinstance(target, list) else [target]) if x is not None]
+    if not targets or f.expanded_size() > 400:
         return None
     deadline.check()
-    right = _drop_constants(target, ctx)
+    rights = [_drop_constants(x, ctx) for x in targets]
 
     def tables(mode):
-        tab = term_table(right, ctx, "the right answer", mode)
-        return [tab] if tab is not None and tab.terms else []
+        tabs = [term_table(r, ctx, "the right answer", mode) for r in rights]
+        return [tab for tab in tabs if tab is not None and tab.terms]
     expr = _drop_constants(f.sympy(), ctx)
-    return best_edit(expr, tables, ctx, scale=False) or factor_edit(expr, tables("trig"), ctx)
+    with naming_energy():   # the terms of an energy, named as such, kept apart as written
+        parts = [p for p in (_as_written(w, ctx) for w in f.written_terms()) if p != 0]
+        return best_edit(expr, tables, ctx, scale=False, parts=parts) or \
+            factor_edit(expr, tables("trig"), ctx)
 
 
 def _edits_any(ctx, f: Formula, forms: list, deadline):
@@ -94,6 +102,13 @@ def _edits_any(ctx, f: Formula, forms: list, deadline):
     return best_edit(expr, tables, ctx, scale=False) or factor_edit(expr, tables("trig"), ctx)
 
 
+def _as_written(term, ctx):
+    """A written term of an energy as written, unless it holds a constant (which never
+    matters in ``V`` or ``L``): then without it, expanded."""
+    dropped = _drop_constants(term, ctx)
+    return term if sp.expand(term - dropped) == 0 else dropped
+
+
 def _drop_constants(expr, ctx):
     states = {s.q for s in ctx.states} | {s.qd for s in ctx.states} | {sp.Symbol("t", real=True)}
     return sp.Add(*[a for a in sp.Add.make_args(sp.expand(expr)) if a.free_symbols & states])
@@ -104,7 +119,7 @@ def _wrong(ctx, f, truth, summary, dims, method, deadline, target=None, extra=()
     details = list(extra)
     state = {}
     if d is not None:
-        edits = d.edits
+        edits = for_student(ctx, d.edits, f.text)   # their names, rates and LaTeX
     else:
         edits = []
         if truth is not None:
@@ -135,11 +150,13 @@ def judge_kinetic(ctx: ProblemContext, f: Formula, quantity: Quantity,
         return _wrong(ctx, f, ref, "this is not the kinetic energy", dims, method, deadline, T)
     kin = parts.total(parts.keys("kinetic"))
     ok, method = _same_lagrange_terms(ctx, f, kin)
-    status = "right" if ok and not dims else "wrong"
+    if not ok:   # the edit is named against the problem's own T
+        return _wrong(ctx, f, None, "its Lagrange terms differ from those of the kinetic "
+                      "energy", dims, method, deadline, parts.declared_kinetic_energy())
     summary = ("its Lagrange terms are those of the kinetic energy (the problem's T has "
-               "terms from moving constraints, so T is judged by its equations)") if ok else \
-        "its Lagrange terms differ from those of the kinetic energy"
-    return Verdict(status, summary, dimension_issues=dims, method=method, degree=f.degree)
+               "terms from moving constraints, so T is judged by its equations)")
+    return Verdict("wrong" if dims else "right", summary, dimension_issues=dims, method=method,
+                   degree=f.degree)
 
 
 def _same_lagrange_terms(ctx, f, pieces) -> tuple[bool, str]:
@@ -161,7 +178,7 @@ def judge_potential(ctx: ProblemContext, f: Formula, quantity: Quantity,
     parts = LagrangeParts.of(ctx)
     dims = _energy_dims(ctx, f)
     grad = [Formula.from_sympy(sp.diff(f.sympy(), s.q)) for s in ctx.states]
-    pot, drives = parts.keys("potential"), parts.keys("drive")
+    pot, drives = parts.keys("potential"), parts.keys("drive", "load")
     method = _exact(ctx, grad + [x for k in pot + drives for x in parts.formulas[k]])
     envs = [p.env() for p in ctx.points(method)]
     mine = [[g.evaluate(e) for g in grad] for e in envs]
@@ -178,18 +195,19 @@ def judge_potential(ctx: ProblemContext, f: Formula, quantity: Quantity,
                                credit=DIMENSIONS_ONLY)
             return Verdict("right", f"the potential energy, up to a constant{note}",
                            method=method, degree=f.degree)
-    V = parts.potential_energy()
-    truth = Formula.from_sympy(V) if V is not None else None
+    # diagnosed against each convention, the one the answer's symbols show first: a load or
+    # drive counted in V when the student wrote its parameters, left out when not
+    used = {k: bool(_parameters(parts, k, ctx) & f.symbols) for k in drives}
+    chosen = sorted(_subsets(drives), key=lambda c: sum((k in c) != used[k] for k in drives))
+    forms = [parts.potential(pot + list(c)) for c in chosen[:8]]
     return _wrong(ctx, f, None, "this is not the potential energy: its gradient differs",
-                  dims, method, deadline, V,
-                  extra=[] if truth is None else
-                  [f"the right potential is {_show(ctx, V)} (up to a constant)"]
-                  if False else [])
+                  dims, method, deadline, forms)
 
 
-def _show(ctx, expr) -> str:
-    from dualmech.grade.audit import display
-    return display(expr, ctx.names)
+def _parameters(parts, key, ctx) -> set:
+    """The parameters in the pieces of the ingredient ``key``."""
+    free = set().union(*(sp.sympify(v).free_symbols for v in parts.pieces[key]))
+    return free & set(ctx.parameters)
 
 
 def _subsets(keys):
@@ -209,7 +227,8 @@ def judge_lagrangian(ctx: ProblemContext, f: Formula, quantity: Quantity,
     parts = LagrangeParts.of(ctx)
     dims = _energy_dims(ctx, f)
     el = [Formula.from_sympy(e) for e in euler_lagrange(f.sympy(), ctx.states)]
-    kin, pot, drives = parts.keys("kinetic"), parts.keys("potential"), parts.keys("drive")
+    kin, pot, drives = (parts.keys("kinetic"), parts.keys("potential"),
+                        parts.keys("drive", "load"))
     pieces = [x for k in kin + pot + drives for x in parts.formulas[k]]
     method = _exact(ctx, el + pieces)
     points = ctx.points(method)
@@ -261,7 +280,7 @@ def _factor(ctx, point, el, kin, parts):
 
 
 def _lagrangian_wrong(ctx, f, parts, dims, method, deadline, summary):
-    T, V = parts.kinetic_energy(), parts.potential_energy()
+    T, V = parts.kinetic_energy() or parts.declared_kinetic_energy(), parts.potential_energy()
     target = (T - V) if T is not None and V is not None else None
     return _wrong(ctx, f, None, summary, dims, method, deadline, target,
                   extra=[] if target is not None else
@@ -287,7 +306,7 @@ def judge_force(ctx: ProblemContext, comps: list, quantity: Quantity,
         expected = tuple(sorted(_sub(expected, ctx.dims[ctx.states[j].q]).items()))
         dims += map(in_their_words(ctx, f.text),
                     dimension_issues(f.tree, ctx.dims, ctx.names, expected))
-    drives, optional = parts.keys("drive"), parts.keys("velocity", "potential")
+    drives, optional = parts.keys("drive"), parts.keys("velocity", "potential", "load")
     method = _exact(ctx, comps + [x for k in drives + optional for x in parts.formulas[k]])
     envs = [p.env() for p in ctx.points(method)]
     mine = [[f.evaluate(e) for f in comps] for e in envs]
@@ -314,7 +333,8 @@ def judge_force(ctx: ProblemContext, comps: list, quantity: Quantity,
         d = _edits_any(ctx, f, forms, deadline)
         if d is not None:
             edits += [e.__class__(e.kind, a if len(js) > 1 else None, e.term, e.correct,
-                                  e.category, e.detail, "component") for e in d.edits]
+                                  e.category, e.detail, "component")
+                      for e in for_student(ctx, d.edits, f.text)]
     if not edits:
         details.append("compared with the generalised forces of the drives "
                        f"({', '.join(drives) or 'none'}), with and without the dampers; "

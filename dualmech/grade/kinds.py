@@ -34,6 +34,9 @@ Example
 """
 from __future__ import annotations
 
+from contextlib import contextmanager
+from contextvars import ContextVar
+
 import sympy as sp
 
 from dualmech.model.declared import builder_of
@@ -44,7 +47,22 @@ from dualmech.model.dimensions import (ACCELERATION, ANGLE, DAMPING, DIMENSIONLE
 from dualmech.model.kinematics import t
 from dualmech.grade.context import ProblemContext, zero
 
-__all__ = ["category", "sources"]
+__all__ = ["category", "sources", "naming_energy"]
+
+#: set while the terms of an energy or a Lagrangian are named (:func:`naming_energy`)
+_ENERGY: ContextVar[bool] = ContextVar("naming_energy", default=False)
+
+
+@contextmanager
+def naming_energy():
+    """Within it, :func:`category` names the terms of an energy, not of an equation: a term
+    with rates is a kinetic-energy term (``m l^2 theta'^2/2`` is not "centripetal"); terms
+    without rates keep their kind (gravity, spring, centrifugal)."""
+    token = _ENERGY.set(True)
+    try:
+        yield
+    finally:
+        _ENERGY.reset(token)
 
 #: an acceleration (g) or a gravitational parameter (mu = G M, L^3 T^-2)
 _GRAVITY = (ACCELERATION, LENGTH**3 / TIME**2)
@@ -102,6 +120,10 @@ def category(term, ctx: ProblemContext) -> str:
     term = sp.sympify(term)
     if term.free_symbols & set(ctx.reactions):
         return "a reaction term"
+    if _ENERGY.get():
+        if term.free_symbols & {s.qd for s in ctx.states}:
+            return "a kinetic-energy term"
+        return _by_gradient(term, ctx)
     tab = term_table(term, ctx, mode="trig")
     if tab is None or not tab.terms:
         return ""
@@ -117,6 +139,19 @@ def category(term, ctx: ProblemContext) -> str:
     if len(names) == 1:
         return names[0]
     return " and ".join(names[:-1]) + " and " + names[-1] if len(names) <= 3 else ""
+
+
+def _by_gradient(term, ctx: ProblemContext) -> str:
+    """A term of an energy without rates, named by the terms it puts in the equations (its
+    gradient): ``P x2^2/(2a)`` of a string's V by the string's terms, ``m g l cos(theta)``
+    as gravity; "" when its components are named differently."""
+    token = _ENERGY.set(False)
+    try:
+        names = {category(sp.diff(term, s.q), ctx) for s in ctx.states
+                 if sp.diff(term, s.q) != 0}
+    finally:
+        _ENERGY.reset(token)
+    return names.pop() if len(names) == 1 else ""
 
 
 def _signature(key, ctx):
@@ -178,6 +213,11 @@ def _traced(found: list, key, value, coeff, ctx) -> str:
     exact = list(dict.fromkeys(n for n, v in named if n and zero(value - v, [value, v])))
     if len(exact) == 1:
         return exact[0]
+    # the same parameters times another number (a wrong sign, a factor 2): the same kind
+    scaled = list(dict.fromkeys(n for (n, _), (_, c, _) in zip(named, found)
+                                if n and _numeric_ratio(coeff, c)))
+    if len(scaled) == 1:
+        return scaled[0]
     certain = _certain(key * coeff, ctx)
     if certain:
         return certain
@@ -189,6 +229,14 @@ def _traced(found: list, key, value, coeff, ctx) -> str:
     words = [k.split(" ", 1)[1].removesuffix(" term") for k in kinds]
     article = "an" if words[0][0] in "aeiou" else "a"
     return f"{article} {' or '.join(words)} term"
+
+
+def _numeric_ratio(a, b) -> bool:
+    """Whether ``a / b`` is a nonzero number (no parameter in it)."""
+    if b == 0 or a == 0:
+        return False
+    r = sp.cancel(sp.sympify(a) / b)
+    return bool(r.is_number and r != 0)
 
 
 def _name(kind: str, coeff, key, ctx) -> str:

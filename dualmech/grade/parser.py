@@ -10,7 +10,8 @@ meaning.
 Accepted syntax: ``*``, ``/``, ``^`` or ``**``, implicit multiplication (``2 m g``,
 ``m(a + b)``), ``=``, several equations separated by ``;`` or new lines; names with primes
 (``theta'``, ``theta''``), subscripts (``k_t``, ``m_{0}``), Greek letters (``θ``,
-``\theta``), combining dots (``θ̇``); LaTeX ``\frac{a}{b}``, ``\sqrt{x}``, ``\sin``,
+``\theta``), combining dots (``θ̇``, also before an index: ``ẍ1``, ``θ̈₂``), subscript digits
+(``θ₁``), ``½`` and like fractions; LaTeX ``\frac{a}{b}``, ``\sqrt{x}``, ``\sin``,
 ``\dot{x}``, ``\ddot{\theta}``, ``\cdot``, ``\left(``; functions ``sin cos tan cot sec csc
 sqrt exp log ln`` with ``sin^2(x)`` and bare arguments ``sin x``, ``\sin 2\theta``;
 vectors ``[a, b, c]``.
@@ -98,7 +99,10 @@ _ALLOWED = set("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
                " \t\r\n+-*/^=()[]{}.,;_'\\&") | set("αβγδεζηθικλμνξοπρστυφχψωϕϑΓΔΘΛΞΠΣΦΨΩ")
 _DISALLOWED = re.compile("[^" + re.escape("".join(sorted(_ALLOWED))) + "\u0307\u0308]")
 _REPLACE = {"′": "'", "’": "'", "″": "''", "·": "*", "⋅": "*", "×": "*", "−": "-",
-            "²": "^2", "³": "^3", "\u0307": "\u0307", "\u0308": "\u0308", "\u00a0": " "}
+            "²": "^2", "³": "^3", "⁴": "^4", "\u0307": "\u0307", "\u0308": "\u0308",
+            "\u00a0": " ", "½": "(1/2)", "⅓": "(1/3)", "⅔": "(2/3)", "¼": "(1/4)",
+            "¾": "(3/4)", "⅙": "(1/6)", "⅛": "(1/8)"} | {
+    chr(0x2080 + d): str(d) for d in range(10)}   # subscript digits: θ₁ is θ1
 _COMBINING = {"\u0307", "\u0308"}  # combining dot above / diaeresis: theta-dot, theta-ddot
 _LATEX_NOISE = re.compile(r"\\(left|right|big|Big|bigg|Bigg)(?![A-Za-z])|\\[,;:! ]|\\quad|"
                           r"\\qquad|&")
@@ -109,7 +113,9 @@ _BRACKETS = re.compile(r"[()\[\]{}]")
 
 _GREEK_CHARS = "α-ωΑ-Ωϕϑ"
 _NAME_RE = (rf"[A-Za-z{_GREEK_CHARS}][A-Za-z0-9{_GREEK_CHARS}]*"
-            r"(?:_(?:\{[A-Za-z0-9]+\}|[A-Za-z0-9]+))*[\u0307\u0308]?")
+            r"(?:_(?:\{[A-Za-z0-9]+\}|[A-Za-z0-9]+))*"
+            r"(?:[\u0307\u0308](?:[0-9]+|_(?:\{[A-Za-z0-9]+\}|[A-Za-z0-9]+))?)?")
+# (a dot may sit on the letter before a name's index: ẍ1 and θ̈_2 are x1'' and θ_2'')
 _GRAMMAR = r"""
 start: _sep* equation (_sep+ equation)* _sep*
 _sep: ";" | _NL | _DBLBS
@@ -277,9 +283,10 @@ class _Build(Transformer):
         text = str(c[0])
         primes = len(c[1]) if len(c) > 1 else 0
         dots = 0
-        if text[-1] in _COMBINING:
-            dots = 1 if text[-1] == "\u0307" else 2
-            text = text[:-1]
+        mark = next((ch for ch in text if ch in _COMBINING), None)
+        if mark is not None:   # on the last letter, or on the letter before the index
+            dots = 1 if mark == "\u0307" else 2
+            text = text.replace(mark, "")
         if primes and dots:
             raise AnswerSyntaxError(f"`{text}` has both dots and primes; use one notation.")
         return self._node("name", (_clean_name(text), primes + dots))

@@ -26,6 +26,8 @@ def _resolve(node: Node, voc: Vocabulary, limits: Limits):
     op, a = node.op, node.args
     if op == "num":
         return ("c", a[0])
+    if op == "resolved":
+        return a[0]
     if op == "name":
         refs = voc.resolve(a[0], a[1])
         leaves = [("pi",) if r.kind == "constant" else ("s", r.symbol) for r in refs]
@@ -44,6 +46,12 @@ def _resolve(node: Node, voc: Vocabulary, limits: Limits):
     if op == "mul":
         return ("mul", tuple(_resolve(c, voc, limits) for c in _drop_of_t(a, voc)))
     if op == "pow":
+        if a[0].op == "name" and len(voc.resolve(*a[0].args)) > 1:
+            # an implicit product typed as one word: the power binds to its last letter
+            # (``ka^2`` is ``k*a^2``, as ``k a^2`` is), never to the whole product
+            *first, last = _resolve(a[0], voc, limits)[1]
+            power = Node("pow", (_leaf(last), a[1]), (a[1],))
+            return ("mul", (*first, _resolve(power, voc, limits)))
         base = _resolve(a[0], voc, limits)
         e = _constant(a[1], limits)
         if e.denominator == 1:
@@ -65,6 +73,11 @@ def _resolve(node: Node, voc: Vocabulary, limits: Limits):
     if op == "vec":
         return ("vec", tuple(_resolve(c, voc, limits) for c in a))
     raise AssertionError(op)
+
+
+def _leaf(leaf) -> Node:
+    """A parsed node standing for ``leaf``, one resolved factor of an implicit product."""
+    return Node("resolved", (leaf,))
 
 
 def _zero_division():
@@ -113,9 +126,11 @@ def _constant(node: Node, limits: Limits) -> Fraction:
         return out
     if op == "pow":
         b, e = _constant(a[0], limits), _constant(a[1], limits)
-        if e.denominator != 1 or abs(e) > limits.exponent:
-            raise AnswerTooLarge(f"the exponent {e} is larger than {limits.exponent} (or not "
-                                 "a whole number).")
+        if e.denominator != 1:
+            raise AnswerError(f"a number to the power {e} inside an exponent is not graded; "
+                              "write exponents as whole numbers or simple fractions.")
+        if abs(e) > limits.exponent:
+            raise AnswerTooLarge(f"the exponent {e} is larger than {limits.exponent}.")
         if b == 0 and e < 0:
             raise AnswerError("the answer divides by zero in an exponent.")
         _check_bits(b, int(e))

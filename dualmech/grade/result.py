@@ -138,7 +138,8 @@ class Edit:
         if self.kind == "replace":
             return f"{where}wrong term: `{self.term}` where `{self.correct}` belongs{cat}"
         if self.kind == "swap":
-            return f"{where}{self.detail} are swapped in `{self.term}`: it is `{self.correct}`"
+            return (f"{where}{self.detail} are swapped in `{self.term}`: it is "
+                    f"`{self.correct}`{cat}")
         if self.kind == "factor":
             return (f"{where}the whole answer is off by a factor: it is `{self.detail}` times "
                     "the right one")

@@ -39,6 +39,8 @@ class TermTable:
     #: the mode the table was built in
     mode: str = "trig"
     _groups: list | None = None
+    #: state parts the answer writes as a term of their own (filled by :meth:`groups`)
+    alone: dict = field(default_factory=dict)
 
     def groups(self, ctx: ProblemContext, parts: list | None = None) -> list:
         """``[(written term, {key: value})]`` of the written terms (``parts``, default the
@@ -59,6 +61,9 @@ class TermTable:
 
     def _add_group(self, out, p, ctx) -> None:
         if len(sp.Add.make_args(sp.expand(p))) < 2:
+            tab = term_table(p, ctx, mode=self.mode)
+            if tab is not None and len(tab.terms) == 1:
+                self.alone.update(tab.terms)   # a written term on one state part
             return
         tab = term_table(p, ctx, mode=self.mode)
         if tab is not None and len(tab.terms) >= 2 and not tab.hidden:
@@ -220,13 +225,31 @@ def equation_targets(ctx: ProblemContext, mode: str = "trig",
             for name, m in ctx.problem.models().items():
                 if tuple(q.func.__name__ for q in m.coordinates) == coordinates:
                     rows.append((name, m.labels, [m.to_plain(e) for e in m.equations]))
+        vanish = _vanishing_reactions(ctx)
         for name, labels, equations in rows:
             for label, e in zip(labels, equations):
-                tab = term_table(e, ctx, f"{name}: {label}", mode)
-                if tab is not None and tab.terms:
-                    out.append(tab)
+                # a reaction that is zero on the motion is no term of its row
+                forms = [e, e.xreplace(vanish)] if vanish and e.free_symbols & set(vanish) \
+                    else [e]
+                for form in forms:
+                    tab = term_table(form, ctx, f"{name}: {label}", mode)
+                    if tab is not None and tab.terms:
+                        out.append(tab)
         return out + _eliminations(ctx, out, mode)
     return ctx.memo(("equation_targets", mode, coordinates), build)
+
+
+def _vanishing_reactions(ctx: ProblemContext) -> dict:
+    """``{reaction: 0}`` for the reactions that are zero at every exact point of the motion
+    (block_in_pipe's massless pipe cannot push its block: ``N = 0``)."""
+    def build():
+        try:
+            points = ctx.points("exact")
+        except GradingUnavailable:
+            return {}
+        return {r: sp.S.Zero for r in ctx.reactions
+                if points and all(p.values.get(r, 1) == 0 for p in points)}
+    return ctx.memo("vanishing_reactions", build)
 
 
 def answer_coordinates(ctx: ProblemContext, symbols: set) -> tuple | None:

@@ -129,7 +129,7 @@ def _edit(info, e: dict) -> str:
         text = f"{term('term')} where {term('correct')} belongs{cat}"
     elif kind == "swap":
         text = (f"{escape(e.get('detail', ''))} are swapped in {term('term')}: it is "
-                f"{term('correct')}")
+                f"{term('correct')}{cat}")
     else:
         return f"<li>{escape(e.get('sentence', ''))}</li>"
     return f"<li>{escape(where)}{text}</li>"
