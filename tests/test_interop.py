@@ -220,3 +220,33 @@ def test_a_coordinate_in_the_opposite_sign_convention_and_bad_targets():
         from_mechanics(km, TOY_CAR, coordinates={"theta": theta + phi})
     with pytest.raises(ModelError, match="are mapped to `phi`"):
         from_mechanics(km, TOY_CAR, coordinates={"theta": phi})
+
+
+def test_a_kane_pendulum_with_a_dependent_coordinate_agrees_and_keeps_its_constraint():
+    """The pendulum on coordinates theta and r with r dependent (configuration constraint
+    r - a = 0, velocity constraint r' = 0): accepted, the constraint kept at position level on
+    the row of the velocity constraint its rate is, and the motion is the pendulum's."""
+    th, r = me.dynamicsymbols("theta r")
+    u1, u2 = me.dynamicsymbols("u1 u2")
+    M, a, g = sp.symbols("M a g")
+    N = me.ReferenceFrame("N")
+    A = N.orientnew("A", "Axis", (th, N.z))
+    A.set_ang_vel(N, u1 * N.z)
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    P = O.locatenew("P", r * A.x)
+    P.set_vel(N, u2 * A.x + r * u1 * A.y)
+    km = me.KanesMethod(N, q_ind=[th], u_ind=[u1], kd_eqs=[th.diff() - u1, r.diff() - u2],
+                        q_dependent=[r], configuration_constraints=[r - a],
+                        u_dependent=[u2], velocity_constraints=[u2])
+    km.kanes_equations([me.Particle("bob", P, M)], [(P, M * g * N.x)])
+    eqs = from_mechanics(km, PENDULUM, name="kane_r", reactions={})
+    (con,) = eqs.constraints
+    assert (con.name, con.level, con.label) == ("configuration r", "position",
+                                                "constraint u2 (acceleration level)")
+    r_t = eqs.coordinates[1]
+    assert sp.simplify(con.expression - (r_t - PENDULUM.parameter_symbols[1])) == 0
+    problem = with_derivation(PENDULUM, eqs,
+                              coordinate_map=PENDULUM.coordinate_maps()["multiplier"])
+    from dualmech.verify.check import compare
+    assert compare(problem).equivalent

@@ -5,8 +5,10 @@ derivation of a problem; a problem's equations handed back for simulation.
   :class:`~dualmech.model.equations.EquationSet` in the problem's coordinates and symbols (matched by
   name; the kinematic differential equations ``q' = f(u, q)`` are inverted, so a Kane model's
   generalised speeds become the coordinates' rates; dependent speeds with their velocity
-  constraints -- sympy's rolling disk -- and a Lagrange model's constraint equations are kept as declared
-  constraints at their own level, so the verdict samples on their manifold);
+  constraints -- sympy's rolling disk --, dependent coordinates with their configuration
+  constraints -- sympy's Whipple bicycle -- and a Lagrange model's constraint equations are
+  kept as declared constraints at their own level, so the verdict samples on their manifold;
+  a speed of a coordinate the model leaves out is mapped with ``ignorable``);
 * :func:`with_derivation` gives the problem with that set as one more model, and
   :func:`check_mechanics` compares it with the problem's own derivations exactly -- a wrong
   Kane model is named as the odd one out, term by term, like any other derivation;
@@ -150,9 +152,46 @@ def _kane_rows(km, ignorable: dict | None = None) -> tuple[list, list, list, lis
     qdep = list(getattr(km, "_qdep", None) or [])
     f_h = getattr(km, "_f_h", None)
     if qdep and f_h is not None:
-        for qd, g in zip(qdep, f_h):
-            constraints.append((f"configuration {qd.func.__name__}", "position", g))
+        constraints = _with_configuration(km, list(f_h), constraints)
     return rows, labels, constraints, extra
+
+
+def _with_configuration(km, f_h: list, constraints: list) -> list:
+    """The velocity constraints with each configuration constraint ``g(q) = 0`` in place of
+    the one its rate ``g'`` replaces (``g'`` is a combination of sympy's velocity constraints,
+    whose rows are its acceleration level; the one with the largest weight, at a generic point,
+    gives up its row), so the verdict draws its points on ``g = 0`` and on the velocity
+    constraints.  A ``g`` whose rate is not such a combination is kept without a row (declared,
+    not sampled on)."""
+    import random
+    tt = _time()
+    u = list(km.u)
+    kd = km.kindiffdict()
+    rng = random.Random(0)
+    point = {qi: sp.Float(rng.uniform(0.1, 0.5), 30) for qi in km.q}
+    free = set().union(*(e.free_symbols for e in list(km._k_nh) + f_h)) - {tt}
+    point.update({s: sp.Float(rng.uniform(0.5, 1.5), 30) for s in free})
+    B = km._k_nh.xreplace(point).evalf(30)
+    out, taken = list(constraints), set()
+    for i, g in enumerate(f_h):
+        rate = sum((g.diff(qi) * kd[qi.diff(tt)] for qi in km.q), sp.S.Zero)
+        G = sp.Matrix([[rate.diff(uj) for uj in u]]).xreplace(point).evalf(30)
+        alpha = B.T.solve_least_squares(G.T)
+        name = f"configuration {km._qdep[i].func.__name__}"
+        if (alpha.T * B - G).norm() > 1e-20 * max(1, G.norm()):
+            out.append((name, "position", g, None))
+            continue
+        k = max((j for j in range(len(alpha)) if j not in taken), key=lambda j: abs(alpha[j]))
+        taken.add(k)
+        out[k] = (name, "position", g, constraints[k][0])
+    return out
+
+
+def _row_label(c: tuple) -> str:
+    """The label of the acceleration-level row of constraint ``(name, level, expression[,
+    row])``: the row of ``row`` when given (``None``: no row of its own), else its own."""
+    row = c[3] if len(c) > 3 else c[0]
+    return "" if row is None else f"constraint {row} (acceleration level)"
 
 
 def _speed_name(u) -> str:
@@ -231,7 +270,7 @@ def _coordinate_rule(method, mech_q: list, problem, targets: dict) -> tuple[list
 
 
 def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=None,
-                   symbols=None, reactions=None, ignorable=None) -> EquationSet:
+                   symbols=None, reactions=None, ignorable: dict | None = None) -> EquationSet:
     """``model`` (``KanesMethod``, ``LagrangesMethod`` or ``System``) as an :class:`EquationSet`.
 
     Parameters
@@ -286,13 +325,13 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
         target = sp.Symbol(str(lam_names.get(_name(lam), _name(lam))), real=True)
         rule[lam] = target
         unknowns.append(target)
-    stray = {f for r in rows + [c for *_, c in constraints] for f in r.atoms(AppliedUndef)} \
+    stray = {f for r in rows + [c[2] for c in constraints] for f in r.atoms(AppliedUndef)} \
         - set(rule)
     if stray:
         raise ModelError(f"the {type(method).__name__} uses functions of time that are not its "
                          f"coordinates: {', '.join(sorted(map(str, stray)))}; specified inputs "
                          "are not supported (write them as functions of t).")
-    free = set().union(*(r.free_symbols for r in rows + [c for *_, c in constraints])) - {tt}
+    free = set().union(*(r.free_symbols for r in rows + [c[2] for c in constraints])) - {tt}
     params = _by_name(problem.parameter_symbols) if problem is not None else {}
     explicit_s = {_name(k): v for k, v in (symbols or {}).items()}
     missing = []
@@ -310,9 +349,8 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
                          "parameter of the problem.")
     rule[tt] = T_DUALMECH
     equations = tuple(r.xreplace(rule) for r in rows)
-    declared = tuple(Constraint(nm, level, c.xreplace(rule),
-                                f"constraint {nm} (acceleration level)")
-                     for nm, level, c in constraints)
+    declared = tuple(Constraint(c[0], c[1], c[2].xreplace(rule), _row_label(c))
+                     for c in constraints)
     return EquationSet(name, tuple(coords), equations,
                        unknowns=tuple(unknowns),
                        labels=tuple(labels), description=f"{type(method).__name__} of "
