@@ -145,3 +145,108 @@ def test_export_round_trip_and_state_space_form():
 def test_a_lagrangian_given_as_text_is_refused_not_evaluated():
     with pytest.raises(TypeError, match="not text"):
         lagranges_method(TOY_CAR, "__import__('os').getcwd()")
+
+
+# -- what the bridge cannot take, refused with what to do ------------------------------------
+def test_a_kanes_method_without_kinematic_equations_is_refused():
+    q, u = me.dynamicsymbols("x u")
+    N = me.ReferenceFrame("N")
+    km = me.KanesMethod(N, q_ind=[q], u_ind=[u])          # no kd_eqs
+    with pytest.raises(ModelError, match=r"no kinematic differential equations.*kd_eqs"):
+        from_mechanics(km)
+
+
+def test_auxiliary_speeds_are_refused():
+    q, u, ua = me.dynamicsymbols("x u ua")
+    m, F = sp.symbols("m F")
+    N = me.ReferenceFrame("N")
+    O = me.Point("O")
+    P = O.locatenew("P", q * N.x)
+    P.set_vel(N, u * N.x + ua * N.y)
+    km = me.KanesMethod(N, q_ind=[q], u_ind=[u], kd_eqs=[q.diff() - u], u_auxiliary=[ua])
+    km.kanes_equations([me.Particle("p", P, m)], [(P, -m * N.x + F * N.y)])
+    with pytest.raises(ModelError, match=r"auxiliary speeds \(ua\).*without u_auxiliary"):
+        from_mechanics(km)
+
+
+def test_objects_that_are_not_mechanics_models_are_refused():
+    for thing in (sp.Matrix([1, 2]), None, me.ReferenceFrame("N")):
+        with pytest.raises(TypeError, match="KanesMethod, a LagrangesMethod or a System"):
+            from_mechanics(thing)
+
+
+def test_a_speed_without_a_coordinate_is_named_with_the_way_to_map_it():
+    """The toy car with a spinning wheel on it (speed ``w``, its angle left out): ``w`` enters
+    no kinematic equation, so the bridge asks for ``ignorable``; given, the wheel's angle is
+    the coordinate whose rate ``w`` is."""
+    from dualmech import coordinate
+    km, car, P, N = kane_toy_car(formed=False)
+    theta, phi = km.q
+    u1, u2 = km.u
+    w = me.dynamicsymbols("w")
+    m, Iw = sp.symbols("m Iw")
+    wheel_frame = me.ReferenceFrame("Wf")       # a flywheel at the car, spinning about N.y
+    wheel_frame.set_ang_vel(N, w * N.y)
+    wheel = me.RigidBody("wheel", P, wheel_frame, 0, (me.inertia(N, 0, Iw, 0), P))
+    km2 = me.KanesMethod(N, q_ind=[theta, phi], u_ind=[u1, u2, w],
+                         kd_eqs=[theta.diff() - u1, phi.diff() - u2])
+    km2.kanes_equations([car, wheel], [(P, -m * sp.Symbol("g") * N.z)])
+    with pytest.raises(ModelError, match=r"speed\(s\) w enter no kinematic.*ignorable=\{'w'"):
+        from_mechanics(km2)
+    with pytest.raises(ModelError, match=r"ignorable speed `v` is not a generalised speed"):
+        from_mechanics(km2, ignorable={"v": coordinate("beta")})
+    beta = coordinate("beta")
+    eqs = from_mechanics(km2, ignorable={"w": beta})
+    assert [c.func.__name__ for c in eqs.coordinates] == ["theta", "phi", "beta"]
+    # the wheel spins freely: Iw beta'' = 0 is its row (Kane's row of w)
+    row = eqs.equations[eqs.labels.index("Kane, w")]
+    assert sp.expand(row - Iw * beta.diff(beta.args[0], 2)) == 0
+
+
+def test_a_coordinate_in_the_opposite_sign_convention_and_bad_targets():
+    """``coordinates={'theta': -theta}``: the Kane model's pitch read as the problem's pitch
+    measured the other way round (its row of theta changes sign through theta''; the toy car is
+    symmetric in theta, so the motion is still the toy car's, checked exactly); a target in two
+    coordinates, or two targets in one, are refused."""
+    km, *_ = kane_toy_car()
+    theta, phi = TOY_CAR.coordinate_functions
+    eqs = from_mechanics(km, TOY_CAR, name="flipped", coordinates={"theta": -theta})
+    assert eqs.coordinates == (theta, phi)
+    m, R = TOY_CAR.parameter_symbols[:2]
+    # mass matrix row of theta: m R^2 theta'' becomes -m R^2 theta''
+    assert sp.expand(eqs.mass_matrix()[0, 0] + m * R**2) == 0
+    assert check_mechanics(TOY_CAR, km, name="flipped", coordinates={"theta": -theta}).equivalent
+    with pytest.raises(ModelError, match="expression in exactly one"):
+        from_mechanics(km, TOY_CAR, coordinates={"theta": theta + phi})
+    with pytest.raises(ModelError, match="are mapped to `phi`"):
+        from_mechanics(km, TOY_CAR, coordinates={"theta": phi})
+
+
+def test_a_kane_pendulum_with_a_dependent_coordinate_agrees_and_keeps_its_constraint():
+    """The pendulum on coordinates theta and r with r dependent (configuration constraint
+    r - a = 0, velocity constraint r' = 0): accepted, the constraint kept at position level on
+    the row of the velocity constraint its rate is, and the motion is the pendulum's."""
+    th, r = me.dynamicsymbols("theta r")
+    u1, u2 = me.dynamicsymbols("u1 u2")
+    M, a, g = sp.symbols("M a g")
+    N = me.ReferenceFrame("N")
+    A = N.orientnew("A", "Axis", (th, N.z))
+    A.set_ang_vel(N, u1 * N.z)
+    O = me.Point("O")
+    O.set_vel(N, 0)
+    P = O.locatenew("P", r * A.x)
+    P.set_vel(N, u2 * A.x + r * u1 * A.y)
+    km = me.KanesMethod(N, q_ind=[th], u_ind=[u1], kd_eqs=[th.diff() - u1, r.diff() - u2],
+                        q_dependent=[r], configuration_constraints=[r - a],
+                        u_dependent=[u2], velocity_constraints=[u2])
+    km.kanes_equations([me.Particle("bob", P, M)], [(P, M * g * N.x)])
+    eqs = from_mechanics(km, PENDULUM, name="kane_r", reactions={})
+    (con,) = eqs.constraints
+    assert (con.name, con.level, con.label) == ("configuration r", "position",
+                                                "constraint u2 (acceleration level)")
+    r_t = eqs.coordinates[1]
+    assert sp.simplify(con.expression - (r_t - PENDULUM.parameter_symbols[1])) == 0
+    problem = with_derivation(PENDULUM, eqs,
+                              coordinate_map=PENDULUM.coordinate_maps()["multiplier"])
+    from dualmech.verify.check import compare
+    assert compare(problem).equivalent

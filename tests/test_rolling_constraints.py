@@ -299,7 +299,11 @@ def test_sympys_rolling_disk_on_the_geometric_contact_point_is_named():
     assert c.to_dict()["odd"] == ["kane"]
 
 
-def test_a_kane_model_with_dependent_coordinates_is_refused_clearly():
+def test_a_kane_model_with_dependent_coordinates_keeps_its_configuration_constraint():
+    """A particle (unit mass, unit weight along -y) on the line y = x, written with q2 dependent:
+    the configuration constraint is kept at position level on the row of the velocity
+    constraint it replaces, and the motion is the incline's: each acceleration is
+    -sin(45 deg) cos(45 deg) = -1/2 by hand."""
     q1, q2 = me.dynamicsymbols("q1 q2")
     u1, u2 = me.dynamicsymbols("u1 u2")
     N = me.ReferenceFrame("N")
@@ -312,8 +316,15 @@ def test_a_kane_model_with_dependent_coordinates_is_refused_clearly():
                         velocity_constraints=[u2 - u1],
                         kd_eqs=[q1.diff() - u1, q2.diff() - u2])
     km.kanes_equations([me.Particle("p", P, 1)], [(P, -N.y)])
-    with pytest.raises(ModelError, match="dependent coordinates"):
-        from_mechanics(km)
+    eqs = from_mechanics(km)
+    x1, x2 = eqs.coordinates
+    (con,) = eqs.constraints
+    assert (con.name, con.level, con.label) == ("configuration q2", "position",
+                                                "constraint u2 (acceleration level)")
+    assert sp.expand(con.expression - (x2 - x1)) == 0
+    solved = eqs.solve()
+    assert solved[x1.diff(x1.args[0], 2)] == sp.Rational(-1, 2)
+    assert solved[x2.diff(x2.args[0], 2)] == sp.Rational(-1, 2)
 
 
 def test_sympys_lagrange_rolling_disk_with_nonholonomic_constraints():

@@ -5,8 +5,10 @@ derivation of a problem; a problem's equations handed back for simulation.
   :class:`~dualmech.model.equations.EquationSet` in the problem's coordinates and symbols (matched by
   name; the kinematic differential equations ``q' = f(u, q)`` are inverted, so a Kane model's
   generalised speeds become the coordinates' rates; dependent speeds with their velocity
-  constraints -- sympy's rolling disk -- and a Lagrange model's constraint equations are kept as declared
-  constraints at their own level, so the verdict samples on their manifold);
+  constraints -- sympy's rolling disk --, dependent coordinates with their configuration
+  constraints -- sympy's Whipple bicycle -- and a Lagrange model's constraint equations are
+  kept as declared constraints at their own level, so the verdict samples on their manifold;
+  a speed of a coordinate the model leaves out is mapped with ``ignorable``);
 * :func:`with_derivation` gives the problem with that set as one more model, and
   :func:`check_mechanics` compares it with the problem's own derivations exactly -- a wrong
   Kane model is named as the odd one out, term by term, like any other derivation;
@@ -65,53 +67,131 @@ def _method_of(model):
                     f"sympy.physics.mechanics, got {type(model).__name__}.")
 
 
-def _kane_rows(km) -> tuple[list, list, list]:
-    """``M u' - f`` with ``u`` and ``u'`` written through the coordinates' rates, its labels
-    and the velocity constraints ``[(name, "velocity", expression)]`` of the dependent speeds.
+def _refuse_kane(km) -> None:
+    """A clear error for the ``KanesMethod`` features the bridge does not read."""
+    if getattr(km, "_qdot_u_map", None) is None:
+        raise ModelError("the KanesMethod has no kinematic differential equations: build it "
+                         "with kd_eqs=[q' - f(u, q), ...] (one per coordinate), so each "
+                         "generalised speed can be written through the coordinates' rates.")
+    aux = list(getattr(km, "_uaux", None) or [])
+    if aux:
+        raise ModelError(f"the KanesMethod has auxiliary speeds ({', '.join(map(_speed_name, aux))}"
+                         "); they only serve sympy's own constraint-force equations, which the "
+                         "bridge does not read: build the model without u_auxiliary (the "
+                         "toolkit recovers reactions from a direct model).")
+
+
+def _speeds_through_rates(km, ignorable: dict) -> tuple[dict, list]:
+    """``{u: expression in q', u': its time derivative}`` from the kinematic differential
+    equations, with each ``ignorable`` speed the rate of a coordinate the model leaves out (a
+    placeholder ``dynamicsymbol`` returned in the list, after the model's own)."""
+    tt = _time()
+    q, u = list(km.q), list(km.u)
+    kd = km.kindiffdict()   # {q': f(u, q)}
+    rates = [kd[qi.diff(tt)] - qi.diff(tt) for qi in q]
+    by_name = {_speed_name(ui): ui for ui in u}
+    extra = []
+    for key in ignorable:
+        name = key if isinstance(key, str) else _speed_name(key)
+        if name not in by_name:
+            raise ModelError(f"ignorable speed `{name}` is not a generalised speed of the "
+                             f"KanesMethod (it has {', '.join(by_name)}).")
+        placeholder = _mechanics().dynamicsymbols(f"_ignorable_{name}")
+        rates.append(by_name[name] - placeholder.diff(tt))
+        extra.append(placeholder)
+    if len(rates) != len(u):
+        free = [_speed_name(ui) for ui in u
+                if not any(r.has(ui) for r in rates)]
+        hint = (f"; speed(s) {', '.join(free)} enter no kinematic differential equation: if "
+                "each is the rate of a coordinate the model leaves out (an ignorable one, a "
+                f"wheel's angle), pass ignorable={{'{free[0]}': <that coordinate of the "
+                "problem>, ...}}" if free else "")
+        raise ModelError(f"the KanesMethod has {len(q)} coordinates and {len(u)} generalised "
+                         f"speeds{' (with ' + str(len(extra)) + ' ignorable)' if extra else ''}"
+                         f": each speed must be fixed by the coordinates' rates{hint}.")
+    A, b = sp.linear_eq_to_matrix(rates, u)
+    if A.det() == 0:
+        raise ModelError("the kinematic differential equations do not determine the "
+                         "generalised speeds from the coordinates' rates.")
+    rule = {}
+    for ui, expr in zip(u, A.LUsolve(b)):
+        rule[ui.diff(tt)] = sp.diff(expr, tt)
+        rule[ui] = expr
+    return rule, extra
+
+
+def _kane_rows(km, ignorable: dict | None = None) -> tuple[list, list, list, list]:
+    """``M u' - f`` with ``u`` and ``u'`` written through the coordinates' rates, its labels,
+    the declared constraints ``[(name, level, expression)]`` and the placeholder coordinates
+    of the ``ignorable`` speeds.
 
     With dependent speeds (``u_dependent``, ``velocity_constraints``) sympy's ``mass_matrix``
     and ``forcing`` hold the reduced equations of the independent speeds, then the velocity
     constraints differentiated (acceleration level); the constraints themselves are returned
-    at velocity level, so the verdict samples on their manifold."""
-    q, u = list(km.q), list(km.u)
-    if getattr(km, "_qdep", None):
-        raise ModelError("the KanesMethod has dependent coordinates (configuration "
-                         "constraints); they are not supported: give a model whose "
-                         "coordinates are independent (dependent speeds are supported).")
-    if len(u) != len(q):
-        raise ModelError(f"the KanesMethod has {len(q)} coordinates and {len(u)} generalised "
-                         "speeds: the speeds must be as many as the coordinates (each "
-                         "coordinate's rate a function of the speeds; dependent speeds with "
-                         "velocity constraints are supported); give such a model.")
+    at velocity level, and the configuration constraints of dependent coordinates
+    (``q_dependent``) at position level, so the verdict samples on their manifold."""
+    _refuse_kane(km)
+    u = list(km.u)
     try:
         M, f = km.mass_matrix, km.forcing
     except (AttributeError, ValueError, TypeError):
         raise ModelError("the KanesMethod has no equations yet: call "
                          "kanes_equations(bodies, loads) first.") from None
-    tt = _time()
-    kd = km.kindiffdict()   # {q': f(u, q)}
-    rates = [kd[qi.diff(tt)] - qi.diff(tt) for qi in q]
-    A, b = sp.linear_eq_to_matrix(rates, u)
-    if A.det() == 0:
-        raise ModelError("the kinematic differential equations do not determine the "
-                         "generalised speeds from the coordinates' rates.")
-    u_of = A.LUsolve(b)
-    rule = {}
-    for ui, expr in zip(u, u_of):
-        rule[ui.diff(tt)] = sp.diff(expr, tt)
-        rule[ui] = expr
-    rows = [sp.expand(e.xreplace(rule)) for e in (M * sp.Matrix(u).diff(tt) - f)]
+    rule, extra = _speeds_through_rates(km, dict(ignorable or {}))
+    rows = [e.xreplace(rule) for e in (M * sp.Matrix(u).diff(_time()) - f)]
     dep = list(getattr(km, "_udep", None) or [])
     k_nh = getattr(km, "_k_nh", None)
     constraints = []
     if dep and k_nh is not None and k_nh.rows:
         velocity = k_nh * sp.Matrix(u) + km._f_nh   # B u + C = 0, sympy's form
         for ud, c in zip(dep, velocity):
-            constraints.append((_speed_name(ud), "velocity", sp.expand(c.xreplace(rule))))
+            constraints.append((_speed_name(ud), "velocity", c.xreplace(rule)))
     names = [_speed_name(ui) for ui in u[:len(u) - len(constraints)]]
     labels = [f"Kane, {nm}" for nm in names]
     labels += [f"constraint {nm} (acceleration level)" for nm, _, _ in constraints]
-    return rows, labels, constraints
+    qdep = list(getattr(km, "_qdep", None) or [])
+    f_h = getattr(km, "_f_h", None)
+    if qdep and f_h is not None:
+        constraints = _with_configuration(km, list(f_h), constraints)
+    return rows, labels, constraints, extra
+
+
+def _with_configuration(km, f_h: list, constraints: list) -> list:
+    """The velocity constraints with each configuration constraint ``g(q) = 0`` in place of
+    the one its rate ``g'`` replaces (``g'`` is a combination of sympy's velocity constraints,
+    whose rows are its acceleration level; the one with the largest weight, at a generic point,
+    gives up its row), so the verdict draws its points on ``g = 0`` and on the velocity
+    constraints.  A ``g`` whose rate is not such a combination is kept without a row (declared,
+    not sampled on)."""
+    import random
+    tt = _time()
+    u = list(km.u)
+    kd = km.kindiffdict()
+    rng = random.Random(0)
+    point = {qi: sp.Float(rng.uniform(0.1, 0.5), 30) for qi in km.q}
+    free = set().union(*(e.free_symbols for e in list(km._k_nh) + f_h)) - {tt}
+    point.update({s: sp.Float(rng.uniform(0.5, 1.5), 30) for s in free})
+    B = km._k_nh.xreplace(point).evalf(30)
+    out, taken = list(constraints), set()
+    for i, g in enumerate(f_h):
+        rate = sum((g.diff(qi) * kd[qi.diff(tt)] for qi in km.q), sp.S.Zero)
+        G = sp.Matrix([[rate.diff(uj) for uj in u]]).xreplace(point).evalf(30)
+        alpha = B.T.solve_least_squares(G.T)
+        name = f"configuration {km._qdep[i].func.__name__}"
+        if (alpha.T * B - G).norm() > 1e-20 * max(1, G.norm()):
+            out.append((name, "position", g, None))
+            continue
+        k = max((j for j in range(len(alpha)) if j not in taken), key=lambda j: abs(alpha[j]))
+        taken.add(k)
+        out[k] = (name, "position", g, constraints[k][0])
+    return out
+
+
+def _row_label(c: tuple) -> str:
+    """The label of the acceleration-level row of constraint ``(name, level, expression[,
+    row])``: the row of ``row`` when given (``None``: no row of its own), else its own."""
+    row = c[3] if len(c) > 3 else c[0]
+    return "" if row is None else f"constraint {row} (acceleration level)"
 
 
 def _speed_name(u) -> str:
@@ -149,8 +229,48 @@ def _by_name(things) -> dict:
     return {getattr(x, "name", None) or x.func.__name__: x for x in things}
 
 
+def _coordinate_rule(method, mech_q: list, problem, targets: dict) -> tuple[list, dict]:
+    """The set's coordinates and ``{q'': ..., q': ..., q: ...}`` taking each of the model's
+    coordinates ``mech_q`` to its target: ``targets[name]`` (a coordinate of the problem, its
+    name, or an expression in one coordinate such as ``-delta`` for an opposite sign
+    convention), else the problem's coordinate of the same name."""
+    from dualmech.model.kinematics import coordinate
+    tt = _time()
+    known = _by_name(c.function for c in problem.all_coordinates()) if problem else {}
+    coords, rule = [], {}
+    for qi in mech_q:
+        qname = qi.func.__name__
+        shown = qname.removeprefix("_ignorable_")
+        target = targets.get(qname, known.get(qname))
+        if isinstance(target, str):
+            target = known.get(target) if problem is not None else coordinate(target)
+        if target is None:
+            if problem is not None:
+                what = (f"the coordinate whose rate is ignorable speed `{shown}`"
+                        if shown != qname else f"coordinate `{qname}`")
+                raise ModelError(f"{what} of the {type(method).__name__} is not a coordinate "
+                                 f"of `{problem.name}` (it has {', '.join(known)}); pass "
+                                 f"{'ignorable' if shown != qname else 'coordinates'}"
+                                 f"={{'{shown}': ...}}.")
+            target = coordinate(qname)
+        target = sp.sympify(target, strict=True)
+        inner = [f for f in target.atoms(AppliedUndef) if f.args == (T_DUALMECH,)]
+        if len(inner) != 1 or target.free_symbols - {T_DUALMECH}:
+            raise ModelError(f"coordinate `{shown}` is mapped to {target}: give a coordinate "
+                             "of the problem, or an expression in exactly one (e.g. -delta) "
+                             "with numbers only.")
+        if inner[0] in coords:
+            raise ModelError(f"two coordinates of the {type(method).__name__} are mapped to "
+                             f"`{inner[0].func.__name__}`; each needs its own.")
+        coords.append(inner[0])
+        rule[qi.diff(tt, 2)] = target.diff(T_DUALMECH, 2)
+        rule[qi.diff(tt)] = target.diff(T_DUALMECH)
+        rule[qi] = target
+    return coords, rule
+
+
 def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=None,
-                   symbols=None, reactions=None) -> EquationSet:
+                   symbols=None, reactions=None, ignorable: dict | None = None) -> EquationSet:
     """``model`` (``KanesMethod``, ``LagrangesMethod`` or ``System``) as an :class:`EquationSet`.
 
     Parameters
@@ -166,8 +286,14 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
     coordinates, symbols : dict, optional
         Explicit matches ``{model's object or its name: problem's object}`` where the names
         differ (``{"q1": theta}``, ``{"l": R}``).
+        A target may be an expression in one coordinate of the problem, for an opposite
+        sign convention (``{"q5": -delta}``).
     reactions : dict, optional
         ``{multiplier or its name: reaction name}`` for a Lagrange model with constraints.
+    ignorable : dict, optional
+        ``{speed or its name: problem's coordinate}`` for a Kane model's speeds that enter no
+        kinematic differential equation because the model leaves their coordinate out (an
+        ignorable one, a wheel's angle): each such speed is that coordinate's rate.
 
     Raises
     ------
@@ -176,32 +302,20 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
     """
     method = _method_of(model)
     me = _mechanics()
-    rows, labels, constraints = (_kane_rows(method) if isinstance(method, me.KanesMethod)
-                                 else _lagrange_rows(method))
+    if isinstance(method, me.KanesMethod):
+        rows, labels, constraints, extra = _kane_rows(method, ignorable)
+    elif ignorable:
+        raise ModelError("`ignorable` names speeds of a KanesMethod; a LagrangesMethod has "
+                         "none (give every coordinate to it instead).")
+    else:
+        (rows, labels, constraints), extra = _lagrange_rows(method), []
     tt = _time()
-    mech_q = list(method.q)
-    known_q = {}
-    if problem is not None:
-        known_q = _by_name(c.function for c in problem.all_coordinates())
-    explicit_q = {(k if isinstance(k, str) else k.func.__name__): v
-                  for k, v in (coordinates or {}).items()}
-    qmap = {}
-    for qi in mech_q:
-        qname = qi.func.__name__
-        target = explicit_q.get(qname, known_q.get(qname))
-        if target is None:
-            if problem is not None:
-                raise ModelError(f"coordinate `{qname}` of the {type(method).__name__} is not a "
-                                 f"coordinate of `{problem.name}` (it has "
-                                 f"{', '.join(known_q)}); pass coordinates={{'{qname}': ...}}.")
-            from dualmech.model.kinematics import coordinate
-            target = coordinate(qname)
-        qmap[qi] = target
-    rule = {}
-    for qi, target in qmap.items():
-        rule[qi.diff(tt, 2)] = target.diff(T_DUALMECH, 2)
-        rule[qi.diff(tt)] = target.diff(T_DUALMECH)
-        rule[qi] = target
+    mech_q = list(method.q) + extra
+    targets = {**{(k if isinstance(k, str) else k.func.__name__): v
+                  for k, v in (coordinates or {}).items()},
+               **{f"_ignorable_{k if isinstance(k, str) else _speed_name(k)}": v
+                  for k, v in (ignorable or {}).items()}}
+    coords, rule = _coordinate_rule(method, mech_q, problem, targets)
     def _name(x) -> str:
         return x if isinstance(x, str) else (getattr(x, "name", None) or x.func.__name__)
 
@@ -211,13 +325,13 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
         target = sp.Symbol(str(lam_names.get(_name(lam), _name(lam))), real=True)
         rule[lam] = target
         unknowns.append(target)
-    stray = {f for r in rows + [c for *_, c in constraints] for f in r.atoms(AppliedUndef)} \
-        - set(mech_q) - set(rule)
+    stray = {f for r in rows + [c[2] for c in constraints] for f in r.atoms(AppliedUndef)} \
+        - set(rule)
     if stray:
         raise ModelError(f"the {type(method).__name__} uses functions of time that are not its "
                          f"coordinates: {', '.join(sorted(map(str, stray)))}; specified inputs "
                          "are not supported (write them as functions of t).")
-    free = set().union(*(r.free_symbols for r in rows + [c for *_, c in constraints])) - {tt}
+    free = set().union(*(r.free_symbols for r in rows + [c[2] for c in constraints])) - {tt}
     params = _by_name(problem.parameter_symbols) if problem is not None else {}
     explicit_s = {_name(k): v for k, v in (symbols or {}).items()}
     missing = []
@@ -235,10 +349,9 @@ def from_mechanics(model, problem=None, *, name: str = "mechanics", coordinates=
                          "parameter of the problem.")
     rule[tt] = T_DUALMECH
     equations = tuple(r.xreplace(rule) for r in rows)
-    declared = tuple(Constraint(nm, level, c.xreplace(rule),
-                                f"constraint {nm} (acceleration level)")
-                     for nm, level, c in constraints)
-    return EquationSet(name, tuple(qmap.values()), equations,
+    declared = tuple(Constraint(c[0], c[1], c[2].xreplace(rule), _row_label(c))
+                     for c in constraints)
+    return EquationSet(name, tuple(coords), equations,
                        unknowns=tuple(unknowns),
                        labels=tuple(labels), description=f"{type(method).__name__} of "
                        "sympy.physics.mechanics", constraints=declared)
