@@ -36,10 +36,8 @@ def _module(path: Path):
 
 MODULES = [_module(p) for p in sorted(CORPUS.glob("*.py"))]
 CASES = [(cls, subject, term) for mod in MODULES for cls, subject, term in mod.MISTAKES]
-#: a mistake the diagnosis does not name yet (a row whose reactions hide the missing term)
-OPEN = {"MomentsAboutTheMovingFoot": "moments about a sliding point in a row that keeps a "
-        "reaction: the single-row edits that reconcile drop a term instead of naming the "
-        "missing m r_AG x a_A"}
+#: mistakes the diagnosis does not name yet, with the reason
+OPEN: dict = {}
 
 
 @functools.lru_cache(maxsize=None)

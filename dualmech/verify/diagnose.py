@@ -229,8 +229,10 @@ def _balances(check: DeclarationCheck, edits: list[RowEdit]) -> list[Statement]:
                           ["has ", x.have, " where ", x.right, " belongs"])
                 terms.append((x.kind, x.have, x.right))
             parts = tuple(parts)
-            if any(x.kind == "missing" and x.right is not None and _has_acc(x.right)
-                   for x in e.edits):
+            if e.ingredient:                    # an inertia term of the declarations
+                parts += (f" ({e.ingredient})",)
+            elif any(x.kind == "missing" and x.right is not None and _has_acc(x.right)
+                     for x in e.edits):
                 parts += (" (a transport term: a moment about a moving point, or an "
                           "acceleration of the frame, left out)",)
         parts = tuple(parts) + (f"; with this edit {ne} agrees with {lg} (checked)",)

@@ -91,15 +91,46 @@ def row_edits(problem, model: str, against: str, seed: int = 0) -> list[RowEdit]
                 if agrees(i, eqs[i] + (factor - 1) * value):
                     found.append(RowEdit(model, m.labels[i], against, kind, key, value))
                     break
-    if found:
+    if len(found) == 1:
         return found
+    if found:   # several single edits reconcile: a term the declarations give is likelier
+        return _inertia_edits(problem, model, m, other, agrees, against) + found
     for i in range(len(eqs)):
         if tries >= MAX_TRIES:
             break
         edit = _term_edit(m, i, other, agrees)
         if edit is not None:
             found.append(RowEdit(model, m.labels[i], against, "terms", edits=edit))
+    if not found:
+        found = _inertia_edits(problem, model, m, other, agrees, against)
     return found
+
+
+def _inertia_edits(problem, model: str, m, other, agrees, against: str) -> list[RowEdit]:
+    """Rows missing an inertia term of the declarations (a body taken as massless in one
+    balance, a moment about a moving point taken as fixed; :mod:`.rowterms`), each edit
+    confirmed exactly."""
+    from dualmech.model.declared import builder_of
+    from dualmech.model.direct import NewtonEuler
+    from dualmech.verify.rowterms import missing_inertia
+    ne = builder_of(m)
+    if not isinstance(ne, NewtonEuler):
+        return []
+    try:
+        proposals = missing_inertia(problem, m, other, ne)
+    except Exception:  # noqa: BLE001 - a numeric search that fails proposes nothing
+        return []
+    out, done = [], set()
+    for i, what, term in proposals:
+        present = [as_expr(v) for v in (m.contributions or [{}] * (i + 1))[i].values()]
+        if any(sp.expand(v - k * term) == 0 for v in present for k in (1, -1, 2, -2)):
+            continue        # the row has it: a sign or a double, the ingredient edits' business
+        if i in done or not agrees(i, m.equations[i] + term):
+            continue
+        done.add(i)
+        out.append(RowEdit(model, m.labels[i], against, "terms", ingredient=what,
+                           edits=[TermEdit("missing", None, term)]))
+    return out
 
 
 def _term_edit(m, i, other, agrees) -> list | None:

@@ -163,7 +163,7 @@ def _direct_side(ne: NewtonEuler, fr: _Frame) -> tuple[dict, dict, dict, dict]:
         for ld in ne._all_loads(body):
             Q = [sp.Integer(0)] * len(rates)
             if ld.force is not None:
-                v = ld.point.vel(ground)
+                v = _material(body, ld.point, ground)
                 Q = [a + ld.force.dot(v.diff(r, ground)) for a, r in zip(Q, rates)]
             if ld.torque is not None and omega is not None:
                 Q = [a + ld.torque.dot(omega.diff(r, ground)) for a, r in zip(Q, rates)]
@@ -171,6 +171,27 @@ def _direct_side(ne: NewtonEuler, fr: _Frame) -> tuple[dict, dict, dict, dict]:
             target[ld.key] = target.get(ld.key, 0) + fr.work(Q)
             owners.setdefault(ld.key, []).append(body.name)
     return T, W, R, owners
+
+
+def _material(body, point, ground):
+    """Velocity of the material point of ``body`` at ``point`` (where a force on it acts):
+    ``v_C + w x r_CP`` for a rigid body (the balances take its moment about ``C``, so it
+    acts on the body's own point there, as the Kane referee has it), the particle's own
+    velocity otherwise.  Not ``point.vel``: a point fixed in the ground at the rim of a
+    turning pulley does not move, the rim does.
+
+    >>> import sympy as sp
+    >>> from dualmech import Frame, Point, RigidBody, coordinate, rot_z, thin_disk
+    >>> th = coordinate("theta"); O = Frame.ground(); o = Point.origin(O)
+    >>> wheel = RigidBody("wheel", 1, o, O.child("W", rot_z(th)), thin_disk(1, 1))
+    >>> sp.trigsimp(_material(wheel, o.locate("rim", O.x), O).dot(O.y))
+    Derivative(theta(t), t)
+    """
+    from dualmech.model.bodies import RigidBody
+    if isinstance(body, RigidBody) and point is not body.masscenter:
+        from dualmech.model.constraints import material_velocity
+        return material_velocity(body, point, ground)
+    return point.vel(ground)
 
 
 def _lagrange_side(lg: Lagrangian, fr: _Frame) -> tuple[dict, dict, dict]:
@@ -330,8 +351,28 @@ def _undeclared(model, Wd: dict, Rd: dict, Td: dict) -> list:
 
 
 def _shown(expr, fr: _Frame) -> sp.Expr:
-    """A plain expression in the reference coordinates as functions of time (for notation)."""
-    return from_plain(expr, fr.ref)
+    """A plain expression in the reference coordinates as functions of time (for notation),
+    ``sin^2 + cos^2`` of one angle written as 1 (:func:`tidy`)."""
+    return from_plain(tidy(expr), fr.ref)
+
+
+def tidy(expr) -> sp.Expr:
+    """``expr`` with ``sin(u)^2`` written ``1 - cos(u)^2`` where that makes it shorter (a
+    display form: ``F (R - r) sin^2 + F (R - r) cos^2`` is ``F (R - r)``); comparisons never
+    depend on it.
+
+    >>> import sympy as sp
+    >>> F, R, r, th = sp.symbols("F R r theta")
+    >>> tidy(F * (R - r) * sp.sin(th)**2 + F * (R - r) * sp.cos(th)**2)
+    F*(R - r)
+    """
+    expr = as_expr(expr)
+    sines = [s for s in expr.atoms(sp.sin)]
+    if not sines:
+        return expr
+    out = sp.expand(expr.xreplace({s**2: 1 - sp.cos(s.args[0])**2 for s in sines}))
+    out = sp.factor_terms(out)
+    return out if sp.count_ops(out) < sp.count_ops(expr) else expr
 
 
 def _shown_edits(edits, fr) -> list:
