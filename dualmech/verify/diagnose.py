@@ -98,7 +98,10 @@ def diagnose(problem, judgement=None) -> Diagnosis:
             out.checks.append(check)
             for f in check.findings:
                 _merge(out.statements, _finding(f, judgement), f)
-            if not check.findings and not _agree(judgement, d, lname) and \
+            # findings that rest on a reaction's value from the balances leave the balances
+            # open: a row that gives that reaction a wrong value is as likely
+            open_rows = all(f.via for f in check.findings)
+            if open_rows and not _agree(judgement, d, lname) and \
                     not any(e.model == d for e in out.row_edits):
                 edits = row_edits(problem, d, lname)
                 out.row_edits += edits
@@ -188,6 +191,9 @@ def _source(f: Finding) -> str:
         what = ", ".join(f.bodies) or "the bodies"
         return f"the declaration of {what} in `{f.direct}`"
     what = ", ".join(f.loads) or "the loads"
+    if f.via:
+        return (f"the load {what} of `{f.direct}` (with {f.via} as `{f.direct}`'s own "
+                "balances give it)")
     return f"the load {what} of `{f.direct}`"
 
 
@@ -203,7 +209,8 @@ def _balances(check: DeclarationCheck, edits: list[RowEdit]) -> list[Statement]:
         head = (f"{lg} is the Lagrangian of {ne}'s own bodies and loads (T, V and virtual "
                 "work agree term by term), so the error is in a balance of " + ne)
     else:
-        head = (f"the kinetic energies of {ne}'s bodies agree with {lg} ({check.note}); the "
+        why = f" ({check.note})" if check.note else ""
+        head = (f"the kinetic energies of {ne}'s bodies agree with {lg}{why}; the "
                 f"error is probably in a balance of {ne}")
     if not edits:
         return [Statement(check.direct, check.direct,

@@ -148,18 +148,22 @@ def _term_edit(m, i, other, agrees) -> list | None:
         target = other.to_plain(target)
         if target.free_symbols & set(other.unknowns):
             continue
-        theirs = term_table(target, states)
-        if not theirs:
+        if not term_table(target, states):
             continue
-        for key in [k for k in mine if k in theirs and k.free_symbols & {s.qdd for s in m.states}]:
-            scale = sp.cancel(mine[key] / theirs[key])
-            if scale.free_symbols & states:
+        for acc in [s.qdd for s in m.states]:
+            theirs = sp.diff(target, acc)
+            if theirs == 0 or sp.diff(row, acc) == 0:
                 continue
-            edits = term_edits(row, scale * target, states)
+            # the factor may depend on the coordinates (a row divided by a lever arm l sin th)
+            scale = sp.cancel(sp.diff(row, acc) / theirs)
+            if scale.free_symbols & (states - {s.q for s in m.states}):
+                continue
+            scaled = sp.expand(scale * target)
+            edits = term_edits(row, scaled, states)
             if edits is None or not 0 < len(edits) <= 2:
                 continue
             if best is None or len(edits) < len(best[0]):
-                best = (edits, scale * target)
+                best = (edits, scaled)
             break
     if best is None or not agrees(i, from_plain(best[1], m.coordinates)):
         return None

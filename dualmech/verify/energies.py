@@ -69,6 +69,7 @@ class Finding:
     keys: tuple = ()            # the Lagrangian's term keys
     reconciles: bool | None = None
     probably: bool = False      # the body or load is attributed, not matched
+    via: str = ""               # reactions whose values (from the direct balances) are in it
 
     @property
     def terms(self) -> list:
@@ -176,8 +177,8 @@ def _direct_side(ne: NewtonEuler, fr: _Frame) -> tuple[dict, dict, dict, dict]:
 def _material(body, point, ground):
     """Velocity of the material point of ``body`` at ``point`` (where a force on it acts):
     ``v_C + w x r_CP`` for a rigid body (the balances take its moment about ``C``, so it
-    acts on the body's own point there, as the Kane referee has it), the particle's own
-    velocity otherwise.  Not ``point.vel``: a point fixed in the ground at the rim of a
+    acts on the body's own point there, as the Kane referee has it); a particle's own
+    velocity, wherever the force is drawn.  Not ``point.vel``: a point fixed in the ground at the rim of a
     turning pulley does not move, the rim does.
 
     >>> import sympy as sp
@@ -191,7 +192,7 @@ def _material(body, point, ground):
     if isinstance(body, RigidBody) and point is not body.masscenter:
         from dualmech.model.constraints import material_velocity
         return material_velocity(body, point, ground)
-    return point.vel(ground)
+    return body.masscenter.vel(ground)
 
 
 def _lagrange_side(lg: Lagrangian, fr: _Frame) -> tuple[dict, dict, dict]:
@@ -323,10 +324,18 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
         out.compared = ("T",)
         out.note = ("the loads were not compared: `" + direct + "` writes "
                     + ", ".join(by_hand) + " by hand, not as declared loads")
-    elif not vanishes(_sum(Wl, Wl) - _sum(Wd, Wd)):
+    else:
+        Wd, via = _through_values(problem, direct, fd, Wd, set(ne._unknowns))
+        Wd, Wl, apart = _apart(Wd, Wl, set(ne._unknowns))
+        if apart:
+            out.note = (", ".join(apart) + " not compared: its virtual work holds a reaction "
+                        "(a friction mu N), which `" + lagrange + "` writes through its value")
+    if not by_hand and not vanishes(_sum(Wl, Wl) - _sum(Wd, Wd)):
         for keys, loads in _match(Wl, Wd):
             f = _work(ctx, Wl, Wd, Vl, keys, loads, owners)
             if f is not None:
+                f.via = ", ".join(sorted({via[ld] for ld in loads if ld in via}))
+                f.probably = f.probably or bool(f.via)
                 out.findings.append(f)
     for name, w in Rd.items():
         if not vanishes(w):
@@ -335,6 +344,42 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
                 name, "does work", lagrange, direct, sp.Integer(0), _shown(w, fd),
                 _shown_edits(edits, fd), tuple(owners.get(name, ())), (name,), probably=True))
     return out
+
+
+def _through_values(problem, direct: str, fr: _Frame, Wd: dict, reactions: set):
+    """``(Wd, via)``: the virtual work of each load that holds a reaction (a friction
+    ``-mu N ds``) with the reaction's value from the direct model's own balances put in
+    (``via``: ``{load: "N"}``), so that it compares with a Lagrangian that writes
+    ``mu m g cos alpha``; loads left as they were when the model does not solve (then
+    :func:`_apart` sets them apart)."""
+    held = {k: w.free_symbols & reactions for k, w in Wd.items()}
+    if not any(held.values()):
+        return Wd, {}
+    try:
+        m = problem.in_reference_coordinates(problem.model(direct))
+        if not m.is_square or len(m.equations) > 8:
+            return Wd, {}
+        values = {u: fr.plain(v) for u, v in m.reactions_solved().items()}
+    except Exception:  # noqa: BLE001 - a model that does not solve: compared apart
+        return Wd, {}
+    out, via = dict(Wd), {}
+    for k, used in held.items():
+        if used and used <= set(values):
+            out[k] = sp.expand(Wd[k].xreplace(values))
+            via[k] = ", ".join(sorted(u.name for u in used))
+    return out, via
+
+
+def _apart(Wd: dict, Wl: dict, reactions: set) -> tuple[dict, dict, list]:
+    """The loads whose virtual work holds a reaction (``-mu N ds``) set apart, with the
+    Lagrangian's terms named after them: no term-by-term identity can hold between ``N`` and
+    the value a hand Lagrangian writes for it (``m g cos alpha``)."""
+    apart = [k for k, w in Wd.items() if w.free_symbols & reactions]
+    if not apart:
+        return Wd, Wl, []
+    words = set().union(*(_words(k) for k in apart))
+    Wl = {k: w for k, w in Wl.items() if not (_words(k) and _words(k) <= words | {"of", "on"})}
+    return {k: w for k, w in Wd.items() if k not in apart}, Wl, apart
 
 
 def _undeclared(model, Wd: dict, Rd: dict, Td: dict) -> list:
