@@ -326,7 +326,7 @@ class Comparison:
                 if v.verdict != "correct":
                     why = v.text(notation) if hasattr(v, "text") else v.detail
                     out.append("              " + why.replace("\n", "\n              "))
-        return "\n".join(out)
+        return _fit("\n".join(out))
 
     def __repr__(self) -> str:
         return f"<Comparison {self.problem.name}: {self.verdict_line()}>"
@@ -704,6 +704,21 @@ def reaction_pairs(problem, models: dict | None = None, *, points: int = 8, seed
                 out.append(compare_reactions(ref, a, b, shared, points=points, seed=seed,
                                              context=context, explain=explain))
     return out
+
+
+def _fit(text: str, columns: int | None = None) -> str:
+    r"""Every line of a report wrapped to the terminal's width (:func:`width`), its
+    continuation indented under it; the verdict line stays whole (scripts grep it).
+
+    >>> print(_fit("  verdict: " + "x " * 30 + "\n    N = " + "a + " * 12 + "b", 30))
+      verdict: x x x x x x x x x x x x x x x x x x x x x x x x x x x x x x
+        N = a + a + a + a + a + a
+            + a + a + a + a + a + a
+            + b
+    """
+    columns = columns or width()
+    return "\n".join(line if line.startswith("  verdict: ") else wrap(line, columns)
+                     for line in text.split("\n"))
 
 
 def recover_reactions(problem, limits: Budget | None = None) -> dict:
