@@ -472,6 +472,7 @@ def _check_in_worker(i: int, points: int, seed: int, notation: str,
     try:   # the report is written here, where the error's traceback (its user line) is
         with about(problem):
             text, data = with_values(problem, c, _text(c, notation), c.to_dict(), at)
+            text = _fit(text)
             return _Checked(text, data, bool(c.equivalent), getattr(c, "failure", None))
     except Exception as exc:  # noqa: BLE001 - the parent reports it
         failed = _Failed(problem, exc, getattr(c, "seconds", 0.0))
@@ -510,7 +511,7 @@ def _printed(problem, c, notation: str, at: str | None = None):
     :mod:`dualmech.cli.at_state`), or of the failure writing it raised."""
     try:
         with about(problem):
-            return with_values(problem, c, _text(c, notation), None, at)[0], c
+            return _fit(with_values(problem, c, _text(c, notation), None, at)[0]), c
     except Exception as exc:  # noqa: BLE001 - e.g. a model the display cannot solve
         failed = _Failed(problem, exc, getattr(c, "seconds", 0.0))
         return str(failed), failed
@@ -606,11 +607,11 @@ def _show(problem, args) -> int:
             print(notation.pretty(expr, args.notation, coords))
         print()
     for note in c.display_notes:
-        print(f"({note})")
+        print(_fit(f"({note})"))
     if values_wanted(problem, c, args.at):
         print()
         print(_heading("reaction values at a state (direct form; Kane referee beside it)"))
-        print("\n".join(state_values(problem, c, args.at).lines()))
+        print(_fit("\n".join(state_values(problem, c, args.at).lines())))
     return _status(c)
 
 
@@ -737,8 +738,11 @@ def _cmd_report(args) -> int:
                                           for x in getattr(ch, "paths", [])]},
                      "no_chart": dict(w.failed)}))
     else:
-        print(f"\nwrote {w.html} (open it in a browser), {w.markdown}, {len(results)} JSON "
-              f"files and {len(w.charts) - len(w.failed)} charts to {out}/")
+        from dualmech.verify.display import wrap
+        files, charts = len(results), len(w.charts) - len(w.failed)
+        print("\n" + wrap(f"wrote {w.html} (open it in a browser), {w.markdown}, {files} JSON "
+                          f"file{'s' * (files != 1)} and {charts} chart{'s' * (charts != 1)} "
+                          f"to {out}/"))
         for name, why in w.failed.items():
             print(f"no chart for {name}: {why}")
     return worst(_status(c) for _, c in results)
@@ -809,3 +813,12 @@ def _cmd_new(args) -> int:
           f"  dualmech show {problem}\n"
           f"  python -m pytest {test}")
     return OK
+
+
+def _fit(text: str | None) -> str | None:
+    """A report's lines wrapped to the terminal (the verdict line whole):
+    :func:`dualmech.verify.display.fit`."""
+    if text is None:
+        return None
+    from dualmech.verify.display import fit
+    return fit(text)

@@ -19,7 +19,8 @@ import sympy as sp
 
 from dualmech.model.equations import EquationSet, ModelError, Rows
 from dualmech.sources import source_fields, source_name
-from dualmech.verify.display import Budget, OverBudget, budget, dotted, solve_display, width, wrap
+from dualmech.verify.display import (Budget, OverBudget, budget, dotted, fit, solve_display,
+                                     width, wrap)
 from dualmech.verify.explain import Mismatch, explain_model, explain_reaction
 from dualmech.verify.published import PublishedVerdict, check_published
 from dualmech.verify.referee import INDEPENDENCE, Referees, referees
@@ -326,7 +327,7 @@ class Comparison:
                 if v.verdict != "correct":
                     why = v.text(notation) if hasattr(v, "text") else v.detail
                     out.append("              " + why.replace("\n", "\n              "))
-        return _fit("\n".join(out))
+        return fit("\n".join(out))
 
     def __repr__(self) -> str:
         return f"<Comparison {self.problem.name}: {self.verdict_line()}>"
@@ -704,21 +705,6 @@ def reaction_pairs(problem, models: dict | None = None, *, points: int = 8, seed
                 out.append(compare_reactions(ref, a, b, shared, points=points, seed=seed,
                                              context=context, explain=explain))
     return out
-
-
-def _fit(text: str, columns: int | None = None) -> str:
-    r"""Every line of a report wrapped to the terminal's width (:func:`width`), its
-    continuation indented under it; the verdict line stays whole (scripts grep it).
-
-    >>> print(_fit("  verdict: " + "x " * 30 + "\n    N = " + "a + " * 12 + "b", 30))
-      verdict: x x x x x x x x x x x x x x x x x x x x x x x x x x x x x x
-        N = a + a + a + a + a + a
-            + a + a + a + a + a + a
-            + b
-    """
-    columns = columns or width()
-    return "\n".join(line if line.startswith("  verdict: ") else wrap(line, columns)
-                     for line in text.split("\n"))
 
 
 def recover_reactions(problem, limits: Budget | None = None) -> dict:
