@@ -19,6 +19,7 @@ when the edited model then agrees with the other, decided exactly by the caller.
 from __future__ import annotations
 
 import random
+import time
 
 import numpy as np
 import sympy as sp
@@ -27,6 +28,9 @@ from dualmech.model.bodies import RigidBody
 from dualmech.model.kinematics import t
 
 __all__ = ["inertia_terms", "missing_inertia"]
+
+#: seconds the candidates are evaluated for, at most (each is a few float evaluations)
+SECONDS = 10.0
 
 #: factors a hand-written row is allowed to miss a term by (the sign, a half, a double)
 FACTORS = (1, -1, 2, -2, sp.Rational(1, 2), -sp.Rational(1, 2))
@@ -185,7 +189,10 @@ def missing_inertia(problem, model, other, ne, points: int = 3, seed: int = 0) -
     if not short:
         return []
     found = []
+    start = time.monotonic()
     for what, term in inertia_terms(ne):
+        if time.monotonic() - start > SECONDS:
+            break               # a search, not a proof: bounded like the edits' MAX_TRIES
         plain = model.to_plain(term)
         if plain.free_symbols & set(R):
             continue            # a load through a reaction (mu N): no value of its own
