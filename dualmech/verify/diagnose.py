@@ -168,6 +168,9 @@ def _finding(f: Finding, judgement=None) -> Statement:
             parts += ["sign: ", lg, " has ", e.have, f" where {source} gives ", e.right]
         else:
             parts += [lg, " has ", e.have, f" where {source} gives ", e.right]
+            gap = _difference(e.have, e.right)
+            if gap is not None:
+                parts += [f" (`{f.lagrange}`'s minus the declared: ", gap, ")"]
     if not parts:
         parts = [lg, " has ", f.have, f" where {source} gives ", f.right]
     if f.reconciles:
@@ -245,6 +248,19 @@ def _balances(check: DeclarationCheck, edits: list[RowEdit]) -> list[Statement]:
         parts = tuple(parts) + (f"; with this edit {ne} agrees with {lg} (checked)",)
         out.append(Statement(subject, e.model, _flat(parts), certain, e.kind, terms))
     return out
+
+
+def _difference(have, right):
+    """``have - right`` factored, when that is shorter than either side (a coefficient of
+    three terms against another of three: ``m r (2 R - r)/4 θ̇^2``); else ``None``."""
+    import sympy as sp
+    try:
+        gap = sp.factor(sp.expand(have - right))
+    except Exception:  # noqa: BLE001 - display only
+        return None
+    if gap == 0 or sp.count_ops(gap) >= min(sp.count_ops(have), sp.count_ops(right)):
+        return None
+    return gap
 
 
 def _has_acc(expr) -> bool:
