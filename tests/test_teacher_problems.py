@@ -23,7 +23,7 @@ from dualmech.verify.check import compare
 
 CORPUS = Path(__file__).parent / "corpus" / "teacher_problems"
 MINE = ("disk_in_cylinder", "double_atwood", "spherical_pendulum", "rough_incline",
-        "rod_in_rotating_tube", "disk_on_cart")
+        "rod_in_rotating_tube", "disk_on_cart", "rolling_down_incline")
 
 
 def _sym(name, positive=True):
@@ -51,6 +51,7 @@ def _hand() -> dict:
             "tau": rr * (m * g * sp.cos(Om * t) + 2 * m * Om * d(rr, t))
             + M * g * L / 2 * sp.cos(Om * t)},
         "disk_on_cart": {"N": m * g, "F": -k * m * x / (3 * M + m), "N_f": (M + m) * g},
+        "rolling_down_incline": {"N": m * g * sp.cos(al), "F": m * g * sp.sin(al) / 3},
     }
 
 

@@ -108,6 +108,7 @@ def diagnose(problem, judgement=None) -> Diagnosis:
                 for f in check.working_reactions:   # a reaction drawn the wrong way
                     _merge(out.statements, _finding(f, judgement), f)
                 out.statements += _balances(check, edits)
+    out.statements += _opposite_reactions(problem, judgement)
     if not out.row_edits and not any(s.kind not in ("balance",) for s in out.statements):
         for check in out.checks:   # nothing else explains it: a reaction that does work
             for f in check.working_reactions:
@@ -248,6 +249,49 @@ def _balances(check: DeclarationCheck, edits: list[RowEdit]) -> list[Statement]:
         parts = tuple(parts) + (f"; with this edit {ne} agrees with {lg} (checked)",)
         out.append(Statement(subject, e.model, _flat(parts), certain, e.kind, terms))
     return out
+
+
+def _opposite_reactions(problem, judgement) -> list[Statement]:
+    """A reaction two models give with opposite signs at every state (checked exactly): a
+    multiplier whose sign convention is the reverse of the free-body diagram's arrow."""
+    from dualmech.verify.energies import vanishes
+    if judgement is None or not getattr(judgement, "reaction_faults", None):
+        return []
+    solved: dict = {}
+    out = []
+    for fault in judgement.reaction_faults:
+        models = list(fault.suspects) + list(fault.agreeing)
+        values = {}
+        for name in models:
+            if name not in solved:
+                solved[name] = _reactions_of(problem, name)
+            if fault.name in solved[name]:
+                values[name] = solved[name][fault.name]
+        pairs = [(a, b) for i, a in enumerate(values) for b in list(values)[i + 1:]]
+        for a, b in pairs:
+            (pa, va), (pb, vb) = values[a], values[b]
+            if vanishes(pa + pb) and not vanishes(pa - pb):
+                parts = (f"`{a}` gives ", va, f" and `{b}` gives ", vb, ", its negative, at "
+                         "every state (checked): the two take opposite positive directions "
+                         "(a multiplier's force on the coordinates is +λ times the "
+                         "constraint's gradient; the free-body diagram's arrow may point the "
+                         "other way); reverse one of them")
+                out.append(Statement(f"reaction {fault.name}", a, parts, True, "sign",
+                                     [("sign", va, vb)]))
+                break
+    return out
+
+
+def _reactions_of(problem, name: str) -> dict:
+    """``{reaction name: (plain value, value)}`` of model ``name`` solved for its reactions (in
+    the reference coordinates), ``{}`` when it does not solve or is large."""
+    try:
+        m = problem.in_reference_coordinates(problem.model(name))
+        if not m.unknowns or not m.is_square or len(m.equations) > 8:
+            return {}
+        return {u.name: (m.to_plain(v), v) for u, v in m.reactions_solved().items()}
+    except Exception:  # noqa: BLE001 - a hint, never a failure of the diagnosis
+        return {}
 
 
 def _difference(have, right):

@@ -338,7 +338,7 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
                 f.probably = f.probably or bool(f.via)
                 out.findings.append(f)
     for name, w in Rd.items():
-        if not vanishes(w):
+        if not vanishes(w) and not _admissibly_zero(w, problem.model(direct), fd):
             edits = term_edits(sp.Integer(0), w, states) or []
             out.working_reactions.append(Finding(
                 name, "does work", lagrange, direct, sp.Integer(0), _shown(w, fd),
@@ -370,6 +370,37 @@ def _through_values(problem, direct: str, fr: _Frame, Wd: dict, reactions: set):
     return out, via
 
 
+def _admissibly_zero(w, model, fr: _Frame, points: int = 3) -> bool:
+    """Whether the virtual work ``w`` (in ``δq``) vanishes for every virtual displacement the
+    model's declared constraints admit (a rolling friction ``F (r δφ - δx)`` with
+    ``x' = r φ'``): its coefficients lie in the span of the constraints' gradients, tried at
+    random states (a hint is withheld, never a finding made)."""
+    import numpy as np
+    rows = []
+    for c in getattr(model, "constraints", ()) or ():
+        try:
+            g = fr.plain(c.expression)
+        except Exception:  # noqa: BLE001 - a constraint in other coordinates: not used
+            return False
+        wrt = [s.qd for s in fr.states] if c.level == "velocity" else [s.q for s in fr.states]
+        rows.append([sp.diff(g, x) for x in wrt])
+    if not rows:
+        return False
+    coeff = [sp.diff(w, d) for d in fr.deltas]
+    rng = random.Random(3)
+    symbols = sorted(set().union(*(sp.Matrix(rows + [coeff]).free_symbols,)), key=str)
+    for _ in range(points):
+        at = {x: sp.Rational(rng.randint(5, 40), 17) for x in symbols}
+        try:
+            A = np.array(sp.Matrix(rows).xreplace(at).evalf(30), dtype=float)
+            c = np.array(sp.Matrix([coeff]).xreplace(at).evalf(30), dtype=float)
+        except (TypeError, ValueError, ZeroDivisionError):
+            return False
+        if np.linalg.matrix_rank(np.vstack([A, c]), tol=1e-9) != np.linalg.matrix_rank(A, tol=1e-9):
+            return False
+    return True
+
+
 def _apart(Wd: dict, Wl: dict, reactions: set) -> tuple[dict, dict, list]:
     """The loads whose virtual work holds a reaction (``-mu N ds``) set apart, with the
     Lagrangian's terms named after them: no term-by-term identity can hold between ``N`` and
@@ -383,14 +414,15 @@ def _apart(Wd: dict, Wl: dict, reactions: set) -> tuple[dict, dict, list]:
 
 
 def _undeclared(model, Wd: dict, Rd: dict, Td: dict) -> list:
-    """Ingredients of the direct model that are neither a declared load, a reaction nor a
-    body's inertia: terms written by hand, which the declarations do not show."""
+    """Ingredients of the direct model that are neither a declared load, a reaction, a
+    body's inertia nor a declared constraint's row: terms written by hand, which the
+    declarations do not show."""
     known = set(Wd) | set(Rd) | {f"inertia of {b}" for b in Td}
     out = []
     for parts in model.contributions or ():
         for key, value in parts.items():
             if key not in known and key not in out and not key.startswith("gravity on ") \
-                    and as_expr(value) != 0:
+                    and not key.startswith("constraint ") and as_expr(value) != 0:
                 out.append(key)
     return out
 
@@ -398,13 +430,13 @@ def _undeclared(model, Wd: dict, Rd: dict, Td: dict) -> list:
 def _shown(expr, fr: _Frame) -> sp.Expr:
     """A plain expression in the reference coordinates as functions of time (for notation),
     ``sin^2 + cos^2`` of one angle written as 1 (:func:`tidy`)."""
-    return from_plain(tidy(expr), fr.ref)
+    return tidy(from_plain(expr, fr.ref))
 
 
 def tidy(expr) -> sp.Expr:
-    """``expr`` with ``sin(u)^2`` written ``1 - cos(u)^2`` where that makes it shorter (a
-    display form: ``F (R - r) sin^2 + F (R - r) cos^2`` is ``F (R - r)``); comparisons never
-    depend on it.
+    """``expr`` with ``sin^2 + cos^2 = 1`` applied (:func:`~dualmech.verify.termdiff.canonical`)
+    where that makes it shorter (a display form: ``F (R - r) sin^2 + F (R - r) cos^2`` is
+    ``F (R - r)``); comparisons never depend on it.
 
     >>> import sympy as sp
     >>> F, R, r, th = sp.symbols("F R r theta")
@@ -415,8 +447,11 @@ def tidy(expr) -> sp.Expr:
     sines = [s for s in expr.atoms(sp.sin)]
     if not sines:
         return expr
-    out = sp.expand(expr.xreplace({s**2: 1 - sp.cos(s.args[0])**2 for s in sines}))
-    out = sp.factor_terms(out)
+    from dualmech.verify.termdiff import canonical
+    try:
+        out = sp.factor_terms(canonical(expr))      # even powers of cos through sin: one form
+    except Exception:  # noqa: BLE001 - display only
+        return expr
     return out if sp.count_ops(out) < sp.count_ops(expr) else expr
 
 
