@@ -135,3 +135,16 @@ def test_stability_says_the_state_it_refused_and_not_at_a_line_of_the_file(capsy
     err = capsys.readouterr().err
     assert "(every coordinate and rate zero)" in err and "x'' = " in err
     assert "{}" not in err and "Derivative" not in err
+
+
+def test_list_a_file_names_its_problems_as_the_other_commands_take_them(capsys):
+    """A file of several problems (a mistakes corpus file defines the problem and each
+    variant): ``dualmech list FILE`` names each ``FILE:Class``; a missing file is a usage
+    error."""
+    path = str(Path(__file__).parent / "corpus" / "teacher_mistakes" / "disk_on_cart.py")
+    assert main(["list", path]) == 0
+    out = capsys.readouterr().out
+    for cls in ("DiskOnCart", "SpinForgotten", "CartWeightDropped"):
+        assert f"{path}:{cls} " in out
+    assert main(["list", str(CORPUS / "no_such_problem.py")]) == 2
+    assert "no problem file" in capsys.readouterr().err

@@ -105,6 +105,9 @@ def build_parser() -> argparse.ArgumentParser:
                                    "(coordinates of the reference model), reactions and title "
                                    "(--json adds the source and summary), then those of the "
                                    "catalogues course packages register.")
+    p.add_argument("files", nargs="*", metavar="FILE",
+                   help="a problem file of your own: list the problems it defines, by the "
+                        "names the other commands take (FILE:Class)")
     _json_flag(p, "a list of objects: name, title, source (named by course), source_file, "
                   "summary, dof, coordinates, reactions, status, catalogue")
     p.set_defaults(func=_cmd_list)
@@ -419,8 +422,32 @@ def _clip(text: str, width: int) -> str:
     return text if len(text) <= width else text[:max(width - 3, 0)].rstrip() + "..."
 
 
+def _file_rows(files) -> list[dict]:
+    """One dict per problem class each file defines, named ``FILE:Class`` (what ``check``
+    and the other commands take); a file's own error is shown at its line."""
+    from pathlib import Path
+    from dualmech.problems import SpecError
+    from dualmech.problems._loader import _import_file, problem_classes
+    from dualmech.sources import source_fields
+    rows = []
+    for f in files:
+        path = Path(f).expanduser()
+        if not path.is_file() or path.suffix != ".py":
+            raise SpecError(f"no problem file {f} (a file path.py of your own; the catalogue "
+                            "is `dualmech list` without a file)")
+        for c in problem_classes(_import_file(path.resolve())):
+            coords = [getattr(x, "name", str(x)) for x in getattr(c, "coordinates", ())]
+            rows.append({"name": f"{f}:{c.__name__}", "title": c.title,
+                         **source_fields(c.source or ""), "summary": getattr(c, "summary", ""),
+                         "dof": getattr(c, "parametric", "") or len(coords),
+                         "coordinates": coords,
+                         "reactions": [r.name for r in getattr(c, "reactions", ())],
+                         "status": "modelled", "catalogue": str(f)})
+    return rows
+
+
 def _cmd_list(args) -> int:
-    rows = _list_rows()
+    rows = _file_rows(args.files) if getattr(args, "files", None) else _list_rows()
     if args.json:
         print(_json(rows))
         return OK

@@ -50,8 +50,9 @@ def _axes(ne) -> list:
 
 
 def inertia_terms(ne) -> list[tuple[str, sp.Expr]]:
-    """``[(what, expression)]``: the inertia terms a row of direct builder ``ne`` could
-    leave out (expressions in ``q(t)`` and its derivatives; zero ones dropped).
+    """``[(what, expression)]``: the inertia terms and load components a row of direct
+    builder ``ne`` could leave out (expressions in ``q(t)`` and its derivatives; zero ones and
+    repeats dropped; loads through a reaction kept, the caller sets them aside).
 
     >>> import sympy as sp
     >>> from dualmech import Frame, NewtonEuler, Particle, Point, coordinate
