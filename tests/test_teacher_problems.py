@@ -141,7 +141,8 @@ def test_list_a_file_names_its_problems_as_the_other_commands_take_them(capsys):
     """A file of several problems (a mistakes corpus file defines the problem and each
     variant): ``dualmech list FILE`` names each ``FILE:Class``; a missing file is a usage
     error."""
-    path = str(Path(__file__).parent / "corpus" / "teacher_mistakes" / "disk_on_cart.py")
+    path = str(Path(__file__).parent / "corpus" / "teacher_mistakes" /
+               "disk_on_cart_mistakes.py")
     assert main(["list", path]) == 0
     out = capsys.readouterr().out
     for cls in ("DiskOnCart", "SpinForgotten", "CartWeightDropped"):

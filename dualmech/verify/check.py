@@ -19,8 +19,7 @@ import sympy as sp
 
 from dualmech.model.equations import EquationSet, ModelError, Rows
 from dualmech.sources import source_fields, source_name
-from dualmech.verify.display import (Budget, OverBudget, budget, dotted, fit, solve_display,
-                                     width, wrap)
+from dualmech.verify.display import Budget, OverBudget, budget, dotted, solve_display, width, wrap
 from dualmech.verify.explain import Mismatch, explain_model, explain_reaction
 from dualmech.verify.published import PublishedVerdict, check_published
 from dualmech.verify.referee import INDEPENDENCE, Referees, referees
@@ -327,7 +326,7 @@ class Comparison:
                 if v.verdict != "correct":
                     why = v.text(notation) if hasattr(v, "text") else v.detail
                     out.append("              " + why.replace("\n", "\n              "))
-        return fit("\n".join(out))
+        return "\n".join(out)
 
     def __repr__(self) -> str:
         return f"<Comparison {self.problem.name}: {self.verdict_line()}>"
