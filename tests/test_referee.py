@@ -66,7 +66,20 @@ def _teacher(tmp_path: Path, mistake: str) -> str:
 
 def _check(capsys, tmp_path, mistake):
     status = main(["check", _teacher(tmp_path, mistake)])
-    return status, capsys.readouterr().out
+    return status, _unwrapped(capsys.readouterr().out)
+
+
+def _unwrapped(out: str) -> str:
+    """The report with each line's continuation lines (wrapped to 100 columns, indented 4
+    deeper) joined back to it."""
+    lines: list = []
+    for x in out.splitlines():
+        deep = len(x) - len(x.lstrip(" "))
+        if lines and x.strip() and deep >= len(lines[-1]) - len(lines[-1].lstrip(" ")) + 4:
+            lines[-1] += " " + x.strip()
+        else:
+            lines.append(x)
+    return "\n".join(lines)
 
 
 def test_teacher_problem_without_mistake_cross_checks_every_reaction(capsys, tmp_path):

@@ -122,8 +122,9 @@ def describe(exc: BaseException, problem=None) -> Failure:
         where = f"{exc.filename}: " if getattr(exc, "filename", None) else ""
         return Failure(USAGE_OR_MODEL_ERROR, f"{where}{exc.strerror or exc}")
     if _is_model_error(exc):
-        return Failure(USAGE_OR_MODEL_ERROR, _declared_at(problem, exc)
-                       or _in_problem(problem, files) + str(exc), "model")
+        at = None if _in_study(exc) else _declared_at(problem, exc)
+        return Failure(USAGE_OR_MODEL_ERROR, at or _in_problem(problem, files) + str(exc),
+                       "model")
     if _deliberate(exc):   # dualmech refusing an input, with a message that says why
         return Failure(USAGE_OR_MODEL_ERROR, f"{type(exc).__name__}: {exc}", "refused")
     jumps = _jumps(problem)
@@ -164,6 +165,19 @@ def _is_model_error(exc: BaseException) -> bool:
     importing sympy: when the module is not loaded, no such error can exist."""
     module = sys.modules.get("dualmech.model.equations")
     return module is not None and isinstance(exc, module.ModelError)
+
+
+#: engine modules whose refusals are about a study of a sound problem (a state that is no
+#: steady motion, a driven model), not about a line of the problem's file
+_STUDIES = (os.sep + "numeric" + os.sep, os.sep + "model" + os.sep + "stability.py",
+            os.sep + "model" + os.sep + "steady.py")
+
+
+def _in_study(exc: BaseException) -> bool:
+    """Whether ``exc`` was raised by a study (stability, steady motion, numerics) rather than
+    while the problem's declarations or models were built."""
+    return any(any(s in os.path.realpath(f.filename) for s in _STUDIES)
+               for f in traceback.extract_tb(exc.__traceback__))
 
 
 def _deliberate(exc: BaseException) -> bool:

@@ -105,6 +105,9 @@ def build_parser() -> argparse.ArgumentParser:
                                    "(coordinates of the reference model), reactions and title "
                                    "(--json adds the source and summary), then those of the "
                                    "catalogues course packages register.")
+    p.add_argument("files", nargs="*", metavar="FILE",
+                   help="a problem file of your own: list the problems it defines, by the "
+                        "names the other commands take (FILE:Class)")
     _json_flag(p, "a list of objects: name, title, source (named by course), source_file, "
                   "summary, dof, coordinates, reactions, status, catalogue")
     p.set_defaults(func=_cmd_list)
@@ -419,8 +422,32 @@ def _clip(text: str, width: int) -> str:
     return text if len(text) <= width else text[:max(width - 3, 0)].rstrip() + "..."
 
 
+def _file_rows(files) -> list[dict]:
+    """One dict per problem class each file defines, named ``FILE:Class`` (what ``check``
+    and the other commands take); a file's own error is shown at its line."""
+    from pathlib import Path
+    from dualmech.problems import SpecError
+    from dualmech.problems._loader import _import_file, problem_classes
+    from dualmech.sources import source_fields
+    rows = []
+    for f in files:
+        path = Path(f).expanduser()
+        if not path.is_file() or path.suffix != ".py":
+            raise SpecError(f"no problem file {f} (a file path.py of your own; the catalogue "
+                            "is `dualmech list` without a file)")
+        for c in problem_classes(_import_file(path.resolve())):
+            coords = [getattr(x, "name", str(x)) for x in getattr(c, "coordinates", ())]
+            rows.append({"name": f"{f}:{c.__name__}", "title": c.title,
+                         **source_fields(c.source or ""), "summary": getattr(c, "summary", ""),
+                         "dof": getattr(c, "parametric", "") or len(coords),
+                         "coordinates": coords,
+                         "reactions": [r.name for r in getattr(c, "reactions", ())],
+                         "status": "modelled", "catalogue": str(f)})
+    return rows
+
+
 def _cmd_list(args) -> int:
-    rows = _list_rows()
+    rows = _file_rows(args.files) if getattr(args, "files", None) else _list_rows()
     if args.json:
         print(_json(rows))
         return OK
@@ -472,6 +499,7 @@ def _check_in_worker(i: int, points: int, seed: int, notation: str,
     try:   # the report is written here, where the error's traceback (its user line) is
         with about(problem):
             text, data = with_values(problem, c, _text(c, notation), c.to_dict(), at)
+            text = _fit(text)
             return _Checked(text, data, bool(c.equivalent), getattr(c, "failure", None))
     except Exception as exc:  # noqa: BLE001 - the parent reports it
         failed = _Failed(problem, exc, getattr(c, "seconds", 0.0))
@@ -510,7 +538,7 @@ def _printed(problem, c, notation: str, at: str | None = None):
     :mod:`dualmech.cli.at_state`), or of the failure writing it raised."""
     try:
         with about(problem):
-            return with_values(problem, c, _text(c, notation), None, at)[0], c
+            return _fit(with_values(problem, c, _text(c, notation), None, at)[0]), c
     except Exception as exc:  # noqa: BLE001 - e.g. a model the display cannot solve
         failed = _Failed(problem, exc, getattr(c, "seconds", 0.0))
         return str(failed), failed
@@ -606,11 +634,11 @@ def _show(problem, args) -> int:
             print(notation.pretty(expr, args.notation, coords))
         print()
     for note in c.display_notes:
-        print(f"({note})")
+        print(_fit(f"({note})"))
     if values_wanted(problem, c, args.at):
         print()
         print(_heading("reaction values at a state (direct form; Kane referee beside it)"))
-        print("\n".join(state_values(problem, c, args.at).lines()))
+        print(_fit("\n".join(state_values(problem, c, args.at).lines())))
     return _status(c)
 
 
@@ -737,8 +765,11 @@ def _cmd_report(args) -> int:
                                           for x in getattr(ch, "paths", [])]},
                      "no_chart": dict(w.failed)}))
     else:
-        print(f"\nwrote {w.html} (open it in a browser), {w.markdown}, {len(results)} JSON "
-              f"files and {len(w.charts) - len(w.failed)} charts to {out}/")
+        from dualmech.verify.display import wrap
+        files, charts = len(results), len(w.charts) - len(w.failed)
+        print("\n" + wrap(f"wrote {w.html} (open it in a browser), {w.markdown}, {files} JSON "
+                          f"file{'s' * (files != 1)} and {charts} chart{'s' * (charts != 1)} "
+                          f"to {out}/"))
         for name, why in w.failed.items():
             print(f"no chart for {name}: {why}")
     return worst(_status(c) for _, c in results)
@@ -809,3 +840,12 @@ def _cmd_new(args) -> int:
           f"  dualmech show {problem}\n"
           f"  python -m pytest {test}")
     return OK
+
+
+def _fit(text: str | None) -> str | None:
+    """A report's lines wrapped to the terminal (the verdict line whole):
+    :func:`dualmech.verify.display.fit`."""
+    if text is None:
+        return None
+    from dualmech.verify.display import fit
+    return fit(text)

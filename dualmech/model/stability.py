@@ -316,13 +316,13 @@ def _check_steady(parts, x0, eqs, generic) -> None:
               zip(eqs.states, z0[: eqs.n]) if not is_zero_expression(sp.cancel(z))]
     if any(v.has(t) for _, v in moving):
         raise ModelError(f"model `{eqs.name}` is driven: its accelerations depend on time "
-                         "explicitly there (" + ", ".join(f"{a} = {v}" for a, v in moving)
+                         "explicitly there (" + _accelerations(moving)
                          + "), so it has no steady motion to linearise about (a periodic "
                          "drive's stability is Floquet's question: `dualmech atlas NAME "
                          "--section floquet`).")
     if moving:
         raise ModelError(f"the state {_show(x0)} is not a steady motion of `{eqs.name}`: there "
-                         + ", ".join(f"{a} = {v}" for a, v in moving)
+                         + _accelerations(moving)
                          + " (a steady motion keeps every rate constant).")
 
 
@@ -363,4 +363,20 @@ def _timeless(entry, name: str):
 
 
 def _show(x0: dict) -> str:
-    return "{" + ", ".join(f"{k} = {v}" for k, v in x0.items() if v != 0) + "}"
+    """The state as text, its zero entries left out (all zero: said so, not ``{}``)."""
+    shown = ", ".join(f"{k} = {v}" for k, v in x0.items() if v != 0)
+    return "{" + shown + "}" if shown else "(every coordinate and rate zero)"
+
+
+def _accelerations(moving) -> str:
+    """``x'' = 5886/4075 (1.44)``, ... for the accelerations that do not vanish."""
+    from dualmech.model.notation import text
+    out = []
+    for a, v in moving:
+        value = text(v)
+        try:
+            value += f" (= {float(v):.6g})" if not sp.sympify(v).is_Rational else ""
+        except (TypeError, ValueError):
+            pass
+        out.append(f"{text(a)} = {value}")
+    return ", ".join(out)

@@ -98,13 +98,17 @@ def diagnose(problem, judgement=None) -> Diagnosis:
             out.checks.append(check)
             for f in check.findings:
                 _merge(out.statements, _finding(f, judgement), f)
-            if not check.findings and not _agree(judgement, d, lname) and \
+            # findings that rest on a reaction's value from the balances leave the balances
+            # open: a row that gives that reaction a wrong value is as likely
+            open_rows = all(f.via for f in check.findings)
+            if open_rows and not _agree(judgement, d, lname) and \
                     not any(e.model == d for e in out.row_edits):
                 edits = row_edits(problem, d, lname)
                 out.row_edits += edits
                 for f in check.working_reactions:   # a reaction drawn the wrong way
                     _merge(out.statements, _finding(f, judgement), f)
                 out.statements += _balances(check, edits)
+    out.statements += _opposite_reactions(problem, judgement)
     if not out.row_edits and not any(s.kind not in ("balance",) for s in out.statements):
         for check in out.checks:   # nothing else explains it: a reaction that does work
             for f in check.working_reactions:
@@ -165,6 +169,9 @@ def _finding(f: Finding, judgement=None) -> Statement:
             parts += ["sign: ", lg, " has ", e.have, f" where {source} gives ", e.right]
         else:
             parts += [lg, " has ", e.have, f" where {source} gives ", e.right]
+            gap = _difference(e.have, e.right)
+            if gap is not None:
+                parts += [f" (`{f.lagrange}`'s minus the declared: ", gap, ")"]
     if not parts:
         parts = [lg, " has ", f.have, f" where {source} gives ", f.right]
     if f.reconciles:
@@ -188,6 +195,9 @@ def _source(f: Finding) -> str:
         what = ", ".join(f.bodies) or "the bodies"
         return f"the declaration of {what} in `{f.direct}`"
     what = ", ".join(f.loads) or "the loads"
+    if f.via:
+        return (f"the load {what} of `{f.direct}` (with {f.via} as `{f.direct}`'s own "
+                "balances give it)")
     return f"the load {what} of `{f.direct}`"
 
 
@@ -203,7 +213,8 @@ def _balances(check: DeclarationCheck, edits: list[RowEdit]) -> list[Statement]:
         head = (f"{lg} is the Lagrangian of {ne}'s own bodies and loads (T, V and virtual "
                 "work agree term by term), so the error is in a balance of " + ne)
     else:
-        head = (f"the kinetic energies of {ne}'s bodies agree with {lg} ({check.note}); the "
+        why = f" ({check.note})" if check.note else ""
+        head = (f"the kinetic energies of {ne}'s bodies agree with {lg}{why}; the "
                 f"error is probably in a balance of {ne}")
     if not edits:
         return [Statement(check.direct, check.direct,
@@ -229,13 +240,71 @@ def _balances(check: DeclarationCheck, edits: list[RowEdit]) -> list[Statement]:
                           ["has ", x.have, " where ", x.right, " belongs"])
                 terms.append((x.kind, x.have, x.right))
             parts = tuple(parts)
-            if any(x.kind == "missing" and x.right is not None and _has_acc(x.right)
-                   for x in e.edits):
+            if e.ingredient:                    # an inertia term of the declarations
+                parts += (f" ({e.ingredient})",)
+            elif any(x.kind == "missing" and x.right is not None and _has_acc(x.right)
+                     for x in e.edits):
                 parts += (" (a transport term: a moment about a moving point, or an "
                           "acceleration of the frame, left out)",)
         parts = tuple(parts) + (f"; with this edit {ne} agrees with {lg} (checked)",)
         out.append(Statement(subject, e.model, _flat(parts), certain, e.kind, terms))
     return out
+
+
+def _opposite_reactions(problem, judgement) -> list[Statement]:
+    """A reaction two models give with opposite signs at every state (checked exactly): a
+    multiplier whose sign convention is the reverse of the free-body diagram's arrow."""
+    from dualmech.verify.energies import vanishes
+    if judgement is None or not getattr(judgement, "reaction_faults", None):
+        return []
+    solved: dict = {}
+    out = []
+    for fault in judgement.reaction_faults:
+        models = list(fault.suspects) + list(fault.agreeing)
+        values = {}
+        for name in models:
+            if name not in solved:
+                solved[name] = _reactions_of(problem, name)
+            if fault.name in solved[name]:
+                values[name] = solved[name][fault.name]
+        pairs = [(a, b) for i, a in enumerate(values) for b in list(values)[i + 1:]]
+        for a, b in pairs:
+            (pa, va), (pb, vb) = values[a], values[b]
+            if vanishes(pa + pb) and not vanishes(pa - pb):
+                parts = (f"`{a}` gives ", va, f" and `{b}` gives ", vb, ", its negative, at "
+                         "every state (checked): the two take opposite positive directions "
+                         "(a multiplier's force on the coordinates is +λ times the "
+                         "constraint's gradient; the free-body diagram's arrow may point the "
+                         "other way); reverse one of them")
+                out.append(Statement(f"reaction {fault.name}", a, parts, True, "sign",
+                                     [("sign", va, vb)]))
+                break
+    return out
+
+
+def _reactions_of(problem, name: str) -> dict:
+    """``{reaction name: (plain value, value)}`` of model ``name`` solved for its reactions (in
+    the reference coordinates), ``{}`` when it does not solve or is large."""
+    try:
+        m = problem.in_reference_coordinates(problem.model(name))
+        if not m.unknowns or not m.is_square or len(m.equations) > 8:
+            return {}
+        return {u.name: (m.to_plain(v), v) for u, v in m.reactions_solved().items()}
+    except Exception:  # noqa: BLE001 - a hint, never a failure of the diagnosis
+        return {}
+
+
+def _difference(have, right):
+    """``have - right`` factored, when that is shorter than either side (a coefficient of
+    three terms against another of three: ``m r (2 R - r)/4 θ̇^2``); else ``None``."""
+    import sympy as sp
+    try:
+        gap = sp.factor(sp.expand(have - right))
+    except Exception:  # noqa: BLE001 - display only
+        return None
+    if gap == 0 or sp.count_ops(gap) >= min(sp.count_ops(have), sp.count_ops(right)):
+        return None
+    return gap
 
 
 def _has_acc(expr) -> bool:

@@ -352,3 +352,18 @@ def wrap(line: str, columns: int | None = None, indent: str = "    ") -> str:
     return textwrap.fill(line.strip(" "), columns, initial_indent=lead,
                          subsequent_indent=lead + indent, break_long_words=False,
                          break_on_hyphens=False)
+
+
+def fit(text: str, columns: int | None = None) -> str:
+    r"""Every line of a report wrapped to the terminal's width (:func:`width`), its
+    continuation indented under it; the verdict line stays whole (scripts grep it).
+
+    >>> print(fit("  verdict: " + "x " * 30 + "\n    N = " + "a + " * 12 + "b", 30))
+      verdict: x x x x x x x x x x x x x x x x x x x x x x x x x x x x x x
+        N = a + a + a + a + a + a
+            + a + a + a + a + a + a
+            + b
+    """
+    columns = columns or width()
+    return "\n".join(line if line.startswith("  verdict: ") else wrap(line, columns)
+                     for line in text.split("\n"))

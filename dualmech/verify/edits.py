@@ -91,15 +91,46 @@ def row_edits(problem, model: str, against: str, seed: int = 0) -> list[RowEdit]
                 if agrees(i, eqs[i] + (factor - 1) * value):
                     found.append(RowEdit(model, m.labels[i], against, kind, key, value))
                     break
-    if found:
+    if len(found) == 1:
         return found
+    if found:   # several single edits reconcile: a term the declarations give is likelier
+        return _inertia_edits(problem, model, m, other, agrees, against) + found
     for i in range(len(eqs)):
         if tries >= MAX_TRIES:
             break
         edit = _term_edit(m, i, other, agrees)
         if edit is not None:
             found.append(RowEdit(model, m.labels[i], against, "terms", edits=edit))
+    if not found:
+        found = _inertia_edits(problem, model, m, other, agrees, against)
     return found
+
+
+def _inertia_edits(problem, model: str, m, other, agrees, against: str) -> list[RowEdit]:
+    """Rows missing an inertia term of the declarations (a body taken as massless in one
+    balance, a moment about a moving point taken as fixed; :mod:`.rowterms`), each edit
+    confirmed exactly."""
+    from dualmech.model.declared import builder_of
+    from dualmech.model.direct import NewtonEuler
+    from dualmech.verify.rowterms import missing_inertia
+    ne = builder_of(m)
+    if not isinstance(ne, NewtonEuler):
+        return []
+    try:
+        proposals = missing_inertia(problem, m, other, ne)
+    except Exception:  # noqa: BLE001 - a numeric search that fails proposes nothing
+        return []
+    out, done = [], set()
+    for i, what, term in proposals:
+        present = [as_expr(v) for v in (m.contributions or [{}] * (i + 1))[i].values()]
+        if any(sp.expand(v - k * term) == 0 for v in present for k in (1, -1, 2, -2)):
+            continue        # the row has it: a sign or a double, the ingredient edits' business
+        if i in done or not agrees(i, m.equations[i] + term):
+            continue
+        done.add(i)
+        out.append(RowEdit(model, m.labels[i], against, "terms", ingredient=what,
+                           edits=[TermEdit("missing", None, term)]))
+    return out
 
 
 def _term_edit(m, i, other, agrees) -> list | None:
@@ -117,18 +148,22 @@ def _term_edit(m, i, other, agrees) -> list | None:
         target = other.to_plain(target)
         if target.free_symbols & set(other.unknowns):
             continue
-        theirs = term_table(target, states)
-        if not theirs:
+        if not term_table(target, states):
             continue
-        for key in [k for k in mine if k in theirs and k.free_symbols & {s.qdd for s in m.states}]:
-            scale = sp.cancel(mine[key] / theirs[key])
-            if scale.free_symbols & states:
+        for acc in [s.qdd for s in m.states]:
+            theirs = sp.diff(target, acc)
+            if theirs == 0 or sp.diff(row, acc) == 0:
                 continue
-            edits = term_edits(row, scale * target, states)
+            # the factor may depend on the coordinates (a row divided by a lever arm l sin th)
+            scale = sp.cancel(sp.diff(row, acc) / theirs)
+            if scale.free_symbols & (states - {s.q for s in m.states}):
+                continue
+            scaled = sp.expand(scale * target)
+            edits = term_edits(row, scaled, states)
             if edits is None or not 0 < len(edits) <= 2:
                 continue
             if best is None or len(edits) < len(best[0]):
-                best = (edits, scale * target)
+                best = (edits, scaled)
             break
     if best is None or not agrees(i, from_plain(best[1], m.coordinates)):
         return None

@@ -282,9 +282,11 @@ def _why_survived(j, candidate: EquationSet) -> str:
     if not j.faults and j.reaction_faults:
         names = ", ".join(r.name for r in j.reaction_faults)
         return (f"it leaves the motion unchanged and changes only the reaction(s) {names}, "
-                f"which no second model derives; a model that derives {names} independently "
-                "(a Lagrangian with the contact freed and closed by a multiplier named "
-                f"{names}) would catch it")
+                "which no second model derives (the Kane referee derives them from this "
+                "model's own declarations: no second opinion on a declaration); a model "
+                f"that derives {names} independently (a Lagrangian "
+                f"with the contact freed and closed by a multiplier named {names}) would "
+                "catch it")
     return "the comparator did not notice it: a gap in the checks"
 
 
