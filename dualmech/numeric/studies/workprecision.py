@@ -70,8 +70,8 @@ from dualmech.numeric.integrators import DID_NOT_FINISH, METHODS, WorkBudget, Ru
 from dualmech.numeric.studies.wplesson import lesson_chart, scene_text
 from dualmech.numeric.units import work_conjugate_unit
 
-__all__ = ["RunResult", "WorkPrecision", "work_precision", "TOLERANCES", "STEPS", "MEASURES",
-           "BUDGET", "QUICK_BUDGET"]
+__all__ = ["RunResult", "WorkPrecision", "work_precision", "NotApplicable", "TOLERANCES",
+           "STEPS", "MEASURES", "BUDGET", "QUICK_BUDGET"]
 
 TOLERANCES = tuple(10.0 ** -k for k in range(3, 11))
 #: Steps per span of the midpoint rule's sweep.
@@ -88,6 +88,11 @@ MEASURES = (("final_error", "state error at the end\n[relative to range]"),
             ("reaction_error", "reaction error\n[relative to largest]"),
             ("drift", "constraint drift $|g|$ [{drift_unit}]"),
             ("energy_drift", "energy drift $|E - E_0|$ [N m]"))
+
+
+class NotApplicable(ModelError):
+    """The chart does not apply to the problem: the message says why and which declaration
+    would make it apply (a model in the reference coordinates that integrates)."""
 
 
 @dataclass
@@ -381,10 +386,10 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
         forms.insert(0, base) if base is not None else None
     if base is None:
         why = skipped.get(problem.reference, "it has no formulation").rstrip(".")
-        raise ModelError(f"not applicable: no model of `{problem.name}` in its reference "
-                         f"coordinates integrates as an ODE, nor as a DAE projected after "
-                         f"every step, to give the chart's reference motion; the reference "
-                         f"model `{problem.reference}`: {why}.")
+        raise NotApplicable(f"not applicable: no model of `{problem.name}` in its reference "
+                            f"coordinates integrates as an ODE, nor as a DAE projected "
+                            f"after every step, to give the chart's reference motion; the "
+                            f"reference model `{problem.reference}`: {why}.")
     forms.remove(base)
     forms.insert(0, base)
     dae = base.kind == "dae"   # a DAE reference: its consistent start, its index-1 form
