@@ -105,7 +105,7 @@ def test_a_model_with_a_static_coordinate_is_integrated_as_a_dae():
     for model in ("lagrange", "newton_euler", "multiplier"):
         assert f"{model} (DAE, projection)" in names
         for form in ("index 3", "GGL index 2"):
-            assert "static balance(s) of a massless part" in skipped[f"{model} (DAE, {form})"]
+            assert "static balance(s) of a massless part [" in skipped[f"{model} (DAE, {form})"]
     assert "reduced" in names
 
 

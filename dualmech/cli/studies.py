@@ -214,6 +214,8 @@ def _chart_one(i: int) -> tuple:
     line = (f"{p.name}: {len(wp.runs)} runs over t in [0, {wp.span[1]:.3g}] s"
             + (f" ({wp.span_note})" if wp.span_note else "")
             + (f"; {unfinished} did not finish within {budget}" if unfinished else "")
+            + (f"; {len(wp.skipped)} model(s) or form(s) not run, said why on the chart and "
+               "in the JSON's `skipped`" if wp.skipped else "")
             + "; wrote " + ", ".join(str(x) for x in paths))
     return p.name, None, {**wp.to_dict(), "files": [str(x) for x in paths]}, line, False
 

@@ -90,12 +90,16 @@ class Constraints:
     expressions: tuple
     levels: tuple = ()
     static_rows: tuple = ()
+    #: the labels of the static rows (``""`` for a constraint held by a multiplier)
+    labels: tuple = ()
 
     def __post_init__(self):
         if not self.levels:
             object.__setattr__(self, "levels", ("position",) * len(self.expressions))
         if not self.static_rows:
             object.__setattr__(self, "static_rows", (None,) * len(self.expressions))
+        if not self.labels:
+            object.__setattr__(self, "labels", ("",) * len(self.expressions))
         bad = [lv for lv in self.levels if lv not in ("position", "velocity")]
         if bad or len(self.levels) != len(self.expressions):
             raise ModelError(f"constraint levels {self.levels} must be 'position' or "
@@ -114,9 +118,9 @@ class Constraints:
         return "velocity" in self.levels
 
     def names(self) -> list[str]:
-        """A name per constraint: its multiplier's, or ``static row k``."""
-        return [str(u) if u is not None else f"static row {r}"
-                for u, r in zip(self.multipliers, self.static_rows)]
+        """A name per constraint: its multiplier's, or its static row's ``[label]``."""
+        return [str(u) if u is not None else f"[{lab or f'row {r}'}]"
+                for u, r, lab in zip(self.multipliers, self.static_rows, self.labels)]
 
 
 def _constraint_rows(eqs: EquationSet) -> list[int]:

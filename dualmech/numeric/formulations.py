@@ -335,10 +335,10 @@ def dae_refusal(stab: str, constraints) -> str:
     levels, names = constraints.levels, constraints.names()
     static = [nm for nm, r in zip(names, constraints.static_rows) if r is not None]
     if stab in DAE_FORMS and static:
-        return (f"not applicable to IDA's {stab} form: its residual (numeric/daesolve) holds "
-                f"each constraint by a multiplier, and the static balance(s) of a massless "
-                f"part ({', '.join(static)}) hold none; the index-1 forms integrate them "
-                "(projection keeps the state on the static rows' manifold).")
+        return (f"not applicable to IDA's {stab} form: the static balance(s) of a massless "
+                f"part {', '.join(static)} hold no multiplier, and its residual "
+                "(numeric/daesolve) holds each constraint by one; the index-1 forms integrate "
+                "them (projection keeps the state on the static rows' manifold).")
     if stab == "index3" and "position" not in levels:
         return ("not applicable to the index-3 form: every constraint is at velocity level "
                 "(nonholonomic), so the DAE as written is index 2 -- the 'DAE, index 2' form "
@@ -399,8 +399,8 @@ def with_static_rows(eqs: EquationSet, constraints=None):
 
     >>> from dualmech.problems import get
     >>> c = with_static_rows(get("copying_machine").model("lagrange"))
-    >>> c.levels, c.static_rows, c.multipliers
-    (('position',), (1,), (None,))
+    >>> c.levels, c.static_rows, c.multipliers, c.names()
+    (('position',), (1,), (None,), ['[Lagrange, theta]'])
     """
     static = static_coordinates(eqs, constraints)
     if not static:
@@ -423,7 +423,8 @@ def with_static_rows(eqs: EquationSet, constraints=None):
     base = constraints or Constraints(eqs.coordinates, (), ())
     out = Constraints(eqs.coordinates, base.multipliers + (None,) * len(rows),
                       base.expressions + tuple(exprs), base.levels + tuple(levels),
-                      base.static_rows + tuple(rows))
+                      base.static_rows + tuple(rows),
+                      base.labels + tuple(eqs.labels[i] for i in rows))
     left = static_coordinates(eqs, out)
     if left:
         names = ", ".join(str(q).replace("(t)", "") for q in left)

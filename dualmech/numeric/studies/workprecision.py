@@ -219,9 +219,28 @@ class WorkPrecision:
         axes[-2].set_xlabel("CPU time of the integration [s] (median of the repeats)")
         axes[-1].set_xlabel("states evaluated (RHS calls, Jacobian columns, DAE residuals)")
         _legends(fig, self, forms)
+        if self.skipped:
+            fig.text(0.735, 0.05, not_run_note(self.skipped), fontsize="x-small",
+                     va="bottom", ha="left", color="0.25")
         fig.subplots_adjust(left=0.06, right=0.72, top=0.96, bottom=0.05, hspace=0.3,
                             wspace=0.12)
         return save(fig, stem, tight=False)
+
+
+def not_run_note(skipped: Mapping, width: int = 62, each: int = 180) -> str:
+    """The chart's note on the forms it could not run and why (each reason shortened).
+
+    >>> print(not_run_note({"m (DAE, index 3)": "not applicable to the index-3 form: x."}))
+    not run:
+    m (DAE, index 3): not applicable to the index-3
+        form: x.
+    """
+    import textwrap
+    lines = ["not run:"]
+    for form, why in skipped.items():
+        text = textwrap.shorten(f"{form}: {why}", each, placeholder=" ...")
+        lines += textwrap.wrap(text, width, subsequent_indent="    ")
+    return "\n".join(lines)
 
 
 def _tag(r: "RunResult") -> str:
