@@ -83,6 +83,15 @@ def test_baumgarte_row_of_a_velocity_constraint_has_the_first_order_term_only():
         assert sp.expand(row - (g.diff(t) + 2 * ALPHA * g)) == 0
 
 
+def test_a_constrained_model_refuses_a_form_it_cannot_take_with_the_reason():
+    from dualmech.numeric.dae import ConstrainedModel
+    from dualmech.numeric.simulation import problem_parameters
+    p = get("rolling_disk")
+    with pytest.raises(ModelError, match="index-3 form: every constraint is at velocity level"):
+        ConstrainedModel(p.model("lagrange"), problem_parameters(p), anchor=Y0[:5],
+                         stabilisation="index3")
+
+
 def test_the_forms_that_cannot_take_the_constraints_say_why(disk):
     forms, skipped = disk
     assert set(skipped) == {"lagrange (DAE, index 3)", "multiplier (DAE, GGL index 2)"}

@@ -60,7 +60,7 @@ from dualmech.numeric.model import NumericModel, StateFunction
 
 __all__ = ["Constraints", "ConstrainedModel", "constraints_of", "index1_equations",
            "metric_defect", "RANK_RTOL", "ALPHA", "BETA", "STABILISATIONS", "DAE_SOLVED",
-           "BAUMGARTE_GAINS"]
+           "BAUMGARTE_GAINS", "dae_refusal"]
 
 #: Baumgarte's parameters (symbols of the index-1 equations; values given at run time).
 ALPHA = sp.Symbol("baumgarte_alpha", nonnegative=True)
@@ -251,6 +251,37 @@ def index1_equations(eqs: EquationSet, constraints: Constraints, *,
                        tuple(labels), (), eqs.description)
 
 
+def dae_refusal(stab: str, constraints) -> str:
+    """Why the DAE form ``stab`` cannot take ``constraints`` (``""`` if it can).
+
+    >>> import sympy as sp
+    >>> from dualmech.numeric.dae import Constraints
+    >>> from dualmech import coordinate, t
+    >>> x = coordinate("x")
+    >>> c = Constraints((x,), (sp.Symbol("F"),), (x.diff(t) - 1,), ("velocity",))
+    >>> dae_refusal("index3", c).split(":")[0], dae_refusal("projection", c)
+    ('not applicable to the index-3 form', '')
+    """
+    levels, names = constraints.levels, constraints.names()
+    static = [nm for nm, r in zip(names, constraints.static_rows) if r is not None]
+    if stab in DAE_SOLVED and static:
+        return (f"not applicable to IDA's {stab} form: the static balance(s) of a massless "
+                f"part {', '.join(static)} hold no multiplier, and its residual "
+                "(numeric/daesolve) holds each constraint by one; the index-1 forms integrate "
+                "them (projection keeps the state on the static rows' manifold).")
+    if stab == "index3" and "position" not in levels:
+        return ("not applicable to the index-3 form: every constraint is at velocity level "
+                "(nonholonomic), so the DAE as written is index 2 -- the 'DAE, index 2' form "
+                "(run under 'ggl'), not run twice.")
+    if stab == "ggl" and "position" in levels and "velocity" in levels:
+        vel = [nm for nm, lv in zip(names, levels) if lv == "velocity"]
+        return ("not applicable to the GGL form: its residual (numeric/daesolve) holds every "
+                "constraint at position and velocity level with an extra multiplier, and "
+                f"the velocity-level constraint(s) {', '.join(vel)} have no position level; "
+                "the index-3 form holds each constraint at its declared level.")
+    return ""
+
+
 def offset_symbol(k: int) -> sp.Symbol:
     return sp.Symbol(f"constraint_offset_{k}", real=True)
 
@@ -283,6 +314,9 @@ class ConstrainedModel:
             raise ValueError(f"`stabilisation` must be one of {STABILISATIONS + DAE_SOLVED}, "
                              f"got {stabilisation!r}.")
         self.constraints = constraints or constraints_of(eqs)
+        why = dae_refusal(stabilisation, self.constraints)
+        if why:
+            raise ModelError(f"model `{eqs.name}`: {why}")
         self.eqs, self.n, self.k = eqs, eqs.n, len(self.constraints.expressions)
         self.stabilisation = stabilisation
         coords = eqs.coordinates

@@ -39,7 +39,8 @@ import numpy as np
 from dualmech.model._expr import as_expr
 from dualmech.model.equations import EquationSet, ModelError, state_symbols
 from dualmech.model.kinematics import t
-from dualmech.numeric.dae import STABILISATIONS, ConstrainedModel, Constraints, constraints_of
+from dualmech.numeric.dae import (STABILISATIONS, ConstrainedModel, Constraints, constraints_of,
+                                  dae_refusal)
 from dualmech.numeric.daesolve import DAE_FORMS, IDASolver
 from dualmech.numeric.energy import (EnergyFunction, conservative_reason, dynamic_rows,
                                      identically_zero)
@@ -319,37 +320,6 @@ def _ida(cm: ConstrainedModel, stab: str) -> tuple[IDASolver | None, str]:
     if stab == "ggl" and "position" not in cm.constraints.levels:
         return IDASolver(cm, "index3"), "DAE, index 2"
     return IDASolver(cm, stab), _LABEL[stab]
-
-
-def dae_refusal(stab: str, constraints) -> str:
-    """Why the DAE form ``stab`` cannot take ``constraints`` (``""`` if it can).
-
-    >>> import sympy as sp
-    >>> from dualmech.numeric.dae import Constraints
-    >>> from dualmech import coordinate, t
-    >>> x = coordinate("x")
-    >>> c = Constraints((x,), (sp.Symbol("F"),), (x.diff(t) - 1,), ("velocity",))
-    >>> dae_refusal("index3", c).split(":")[0], dae_refusal("projection", c)
-    ('not applicable to the index-3 form', '')
-    """
-    levels, names = constraints.levels, constraints.names()
-    static = [nm for nm, r in zip(names, constraints.static_rows) if r is not None]
-    if stab in DAE_FORMS and static:
-        return (f"not applicable to IDA's {stab} form: the static balance(s) of a massless "
-                f"part {', '.join(static)} hold no multiplier, and its residual "
-                "(numeric/daesolve) holds each constraint by one; the index-1 forms integrate "
-                "them (projection keeps the state on the static rows' manifold).")
-    if stab == "index3" and "position" not in levels:
-        return ("not applicable to the index-3 form: every constraint is at velocity level "
-                "(nonholonomic), so the DAE as written is index 2 -- the 'DAE, index 2' form "
-                "(run under 'ggl'), not run twice.")
-    if stab == "ggl" and "position" in levels and "velocity" in levels:
-        vel = [nm for nm, lv in zip(names, levels) if lv == "velocity"]
-        return ("not applicable to the GGL form: its residual (numeric/daesolve) holds every "
-                "constraint at position and velocity level with an extra multiplier, and "
-                f"the velocity-level constraint(s) {', '.join(vel)} have no position level; "
-                "the index-3 form holds each constraint at its declared level.")
-    return ""
 
 
 def _consistent(cm: ConstrainedModel, y: np.ndarray) -> np.ndarray:
