@@ -174,3 +174,20 @@ def test_projection_moves_rates_onto_the_rolling_rows_and_positions_only_onto_h(
     cm = forms["lagrange (DAE, projection)"].constrained
     y = np.array(Y0) + np.r_[np.zeros(5), rng.uniform(-0.3, 0.3, 5)]
     assert np.array_equal(cm.project(0.0, y)[:5], y[:5])
+
+
+def test_no_symplectic_rule_is_offered_the_rolling_disks_constrained_motion(disk):
+    """The direct model's energy is the Lagrange model's, whose motion keeps the rolling
+    rows: the midpoint rule would integrate the free Hamiltonian flow of that energy -- the
+    disk sliding, not rolling (an O(1) error on main's chart) -- so it is refused, saying why."""
+    forms, _ = disk
+    f = forms["newton_euler"]
+    assert f.energy is not None                   # the energy drift is still measured
+    with pytest.raises(ValueError, match="not that flow: its energy comes from model "
+                                         "`lagrange`, whose motion keeps 2 constraint"):
+        f.run("midpoint", SPAN, TE, step=0.01)
+    from dualmech.numeric.studies.workprecision import work_precision
+    wp = work_precision(get("rolling_disk"), duration=0.2, tolerances=(1e-6,), steps=(32,),
+                        methods=("midpoint", "DOP853"), models=("newton_euler",),
+                        progress=False, repeats=1, y0=Y0)
+    assert [(r.formulation, r.method) for r in wp.runs] == [("newton_euler", "DOP853")]

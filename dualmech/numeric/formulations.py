@@ -44,7 +44,7 @@ from dualmech.numeric.dae import (STABILISATIONS, ConstrainedModel, Constraints,
 from dualmech.numeric.daesolve import DAE_FORMS, IDASolver
 from dualmech.numeric.energy import (EnergyFunction, conservative_reason, dynamic_rows,
                                      identically_zero)
-from dualmech.numeric.integrators import WorkBudget, Run, integrate
+from dualmech.numeric.integrators import SYMPLECTIC, WorkBudget, Run, integrate
 from dualmech.numeric.model import NumericModel, StateFunction
 from dualmech.numeric.simulation import default_initial_state, problem_parameters
 from dualmech.numeric.stepping import projected_run
@@ -79,6 +79,10 @@ class Formulation:
     _outside: Callable | None = field(default=None, repr=False)
     dae_solver: IDASolver | None = field(default=None, repr=False)
     numeric: NumericModel | None = field(default=None, repr=False)
+    #: ``""`` when the motion is the free Hamiltonian flow of ``energy`` (a symplectic rule
+    #: may integrate it), else why not: the energy's model holds constraints, which the
+    #: symplectic rules of :mod:`~dualmech.numeric.symplectic` would not keep
+    not_free_flow: str = ""
 
     @property
     def backend(self) -> str:
@@ -143,6 +147,9 @@ class Formulation:
         step for ``"projection"``; IDA for the index-3 and GGL forms); past ``budget`` the
         run ends as *did not finish* (:class:`~dualmech.numeric.integrators.WorkBudget`)."""
         atol = rtol * self.scales
+        if method in SYMPLECTIC and self.not_free_flow:
+            raise ValueError(f"`{method}` integrates the free Hamiltonian flow of the "
+                             f"energy; `{self.name}` is not that flow: {self.not_free_flow}.")
         if self.dae_solver is not None or method == "IDA":
             if self.dae_solver is None or events:
                 raise ValueError(f"`{self.name}` is not solved by IDA (no events either); "
@@ -179,9 +186,10 @@ def _mapping(problem, ref: EquationSet, eqs: EquationSet, values) -> StateFuncti
     return StateFunction(exprs + [e.diff(t) for e in exprs], ref.coordinates, values)
 
 
-def _energy(problem, eqs: EquationSet, values, q0) -> tuple[EnergyFunction | None, str]:
+def _energy(problem, eqs: EquationSet, values, q0) -> tuple[EnergyFunction | None, str, str]:
     """The energy of ``eqs``' coordinates from the first conservative model that has them
-    (and a positive definite mass matrix at ``q0``: a direct model's rows may be signed)."""
+    (and a positive definite mass matrix at ``q0``: a direct model's rows may be signed),
+    why not, and why the motion is not its free flow (:func:`_held_by`)."""
     candidates = [eqs] + [m for m in problem.models().values()
                           if m is not eqs and tuple(m.coordinates) == tuple(eqs.coordinates)]
     reason = ""
@@ -191,11 +199,20 @@ def _energy(problem, eqs: EquationSet, values, q0) -> tuple[EnergyFunction | Non
             energy = EnergyFunction(m, values)
             try:
                 np.linalg.cholesky(energy.mass_matrix(q0))
-                return energy, ""
+                return energy, "", _held_by(m)
             except np.linalg.LinAlgError:
                 why = "its mass matrix is not positive definite (signed rows)"
         reason = reason or why
-    return None, reason or "no model in these coordinates"
+    return None, reason or "no model in these coordinates", ""
+
+
+def _held_by(m: EquationSet) -> str:
+    """Why ``m``'s motion is not the free flow of its energy (``""``: it is)."""
+    rows = len(m.equations) - len(dynamic_rows(m))
+    if rows or m.constraints:
+        return (f"its energy comes from model `{m.name}`, whose motion keeps "
+                f"{max(rows, len(m.constraints))} constraint(s)")
+    return ""
 
 
 def _outside_reactions(problem, values) -> Callable:
@@ -273,7 +290,7 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations,
     mapping = _mapping(problem, ref, eqs, values)
     y_own = mapping(0.0, y0[:n], y0[n:])
     scales = state_scales(problem, eqs.coordinates)
-    energy, note = _energy(problem, eqs, values, y_own[: eqs.n])
+    energy, note, held = _energy(problem, eqs, values, y_own[: eqs.n])
     constraint_rows = len(eqs.equations) - len(dynamic_rows(eqs))
     square = len(eqs.equations) == eqs.n + len(eqs.unknowns)
     if square and not constraint_rows and not static_coordinates(eqs):
@@ -284,7 +301,7 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations,
                             tuple(u.name for u in eqs.unknowns), None, energy, note,
                             nm.solve if own else None,
                             _outside_reactions(problem, values) if in_ref and not own
-                            else None, None, nm)], {}
+                            else None, None, nm, held)], {}
     if square:
         constraints = constraints_of(eqs) if constraint_rows else None
     elif len(eqs.equations) < eqs.n + len(eqs.unknowns):
@@ -307,7 +324,8 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations,
             label += "" if gain is None else f" {gain:g}/s"
             out.append(Formulation(f"{eqs.name} ({label})", "dae", eqs, cm.rhs, start,
                                    scales, mapping, cm.reaction_names, cm, energy, note,
-                                   cm.numeric.solve, None, solver, cm.numeric))
+                                   cm.numeric.solve, None, solver, cm.numeric,
+                                   f"a DAE form, whose motion keeps {cm.k} constraint(s)"))
     return out, refused
 
 

@@ -431,7 +431,7 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
     for f in forms:
         for m in f.methods(methods):
             if m == "midpoint":
-                if f.kind == "ode" and f.energy is not None:
+                if f.kind == "ode" and f.energy is not None and not f.not_free_flow:
                     jobs += [(f, m, (span[1] - span[0]) / s) for s in steps]
             else:
                 jobs += [(f, m, tol) for tol in tolerances]
