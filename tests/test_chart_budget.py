@@ -94,20 +94,46 @@ def test_an_unheld_massless_coordinate_is_named():
         cm.project(0.0, np.array([0.01, 0.04, 0.0, 0.0, 0.0, 0.0]))
 
 
-def test_a_model_with_a_static_coordinate_is_refused_as_a_dae():
+def test_a_model_with_a_static_coordinate_is_integrated_as_a_dae():
+    """The static rows of copying_machine's massless bar are constraints held by no
+    multiplier: the index-1 forms take them, IDA's forms say why they cannot."""
     p = get("copying_machine")
     assert [str(q) for q in static_coordinates(p.model("lagrange"))] == ["theta(t)"]
     assert static_coordinates(p.model("reduced")) == []
-    forms, skipped = formulations(p)
-    assert [f.name for f in forms] == ["reduced"]
-    for name in ("lagrange", "newton_euler", "multiplier"):
-        assert "differential-algebraic" in skipped[name] and "theta" in skipped[name]
+    forms, skipped = formulations(p, stabilisations=("none", "projection", "index3", "ggl"))
+    names = [f.name for f in forms]
+    for model in ("lagrange", "newton_euler", "multiplier"):
+        assert f"{model} (DAE, projection)" in names
+        for form in ("index 3", "GGL index 2"):
+            assert "static balance(s) of a massless part [" in skipped[f"{model} (DAE, {form})"]
+    assert "reduced" in names
 
 
-def test_the_chart_of_a_dae_reference_says_why_it_does_not_apply():
-    with pytest.raises(ValueError, match="not applicable.*reference model `lagrange`.*differential-algebraic"):
-        work_precision(get("copying_machine"), duration=0.5, tolerances=(1e-6,), steps=(),
-                       methods=("DOP853",), progress=False, repeats=1)
+def test_a_static_coordinate_no_row_holds_is_named():
+    import sympy as sp
+    from dualmech import Lagrangian, coordinate, t
+    from dualmech.numeric.formulations import with_static_rows
+    x, z = coordinate("x"), coordinate("z")
+    m, k = sp.symbols("m k", positive=True)
+    lg = Lagrangian("idle", coordinates=[x, z])
+    lg.kinetic("T", m * x.diff(t)**2 / 2)
+    lg.potential("V", k * x**2 / 2)
+    with pytest.raises(ModelError, match="acceleration of z .*no static row"):
+        with_static_rows(lg.equations())
+
+
+def test_the_chart_of_a_dae_reference_runs_on_the_projected_dae():
+    """copying_machine's reference model is a DAE: the chart's reference is its projected
+    form, and the charted forms are compared against it (the reduced model is an ODE)."""
+    wp = work_precision(get("copying_machine"), duration=0.5, tolerances=(1e-6,), steps=(),
+                        methods=("DOP853",), progress=False, repeats=1,
+                        stabilisations=("none",))
+    by = {r.formulation: r for r in wp.runs}
+    assert set(by) == {"lagrange (DAE, index 1)", "newton_euler (DAE, index 1)",
+                       "multiplier (DAE, index 1)", "reduced"}
+    assert all(r.success for r in wp.runs)
+    assert max(r.final_error for r in wp.runs) <= 1e-5
+    assert wp.reference_error <= 1e-10
 
 
 # -- budgets -------------------------------------------------------------------------------

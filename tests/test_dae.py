@@ -54,17 +54,6 @@ def test_rod_constraint_is_recovered_from_the_acceleration_row():
     assert [u.name for u in c.multipliers] == ["S"]
 
 
-def test_velocity_level_constraint_is_refused_with_what_to_do():
-    # knife edge: sin(th) x' - cos(th) y' = 0 cannot be written as g(x, y, th) = 0
-    X, Y, th = coordinate("X"), coordinate("Y"), coordinate("th")
-    m = sp.Symbol("m", positive=True)
-    lg = Lagrangian("knife", coordinates=[X, Y, th])
-    lg.kinetic("T", m * (X.diff(t)**2 + Y.diff(t)**2 + th.diff(t)**2) / 2)
-    lg.velocity_constraint("F", [sp.sin(th), -sp.cos(th), 0])
-    with pytest.raises(ModelError, match="velocity-level constraint.*constraints="):
-        constraints_of(lg.equations())
-
-
 def test_direct_inertial_form_borrows_the_multiplier_models_constraint(pendulum):
     f = pendulum["newton_euler_inertial (DAE, index 1)"]
     assert f.kind == "dae" and f.reaction_names == ("S",)

@@ -18,7 +18,9 @@ status (:mod:`dualmech.cli.errors`) -- 0 done, 2 a usage error (an unknown probl
 unwritable directory, a section that does not exist, a study that does not apply), an error
 in a problem file (shown at its file and line), a model that cannot be built or a problem
 that could not be charted (the others are) -- and prints errors on stderr, never a
-traceback.  Progress goes to stderr (a bar on a terminal, one line per problem otherwise).
+traceback.  ``chart`` of several problems (``--all``) does not fail for a problem that is not
+applicable (said on stderr with the reason) as long as one problem was charted
+(:data:`CHART_EXIT_STATUS`).  Progress goes to stderr (a bar on a terminal, one line per problem otherwise).
 
 Example
 -------
@@ -37,10 +39,11 @@ import sys
 from pathlib import Path
 
 from dualmech.cli import names as _names
-from dualmech.cli.errors import OK, UsageError, about, describe, guarded, worst
+from dualmech.cli.errors import (OK, USAGE_OR_MODEL_ERROR, UsageError, about, describe,
+                                 guarded, worst)
 from dualmech.cli.options import positive_number, whole_number
 
-__all__ = ["register"]
+__all__ = ["register", "CHART_EXIT_STATUS"]
 
 
 def register(subparsers) -> None:
@@ -69,6 +72,7 @@ def register(subparsers) -> None:
     p.add_argument("--jobs", metavar="J", type=whole_number(1, 64), default=None,
                    help="problems charted at once, one process each (default: the cores "
                         "this process may use)")
+    p.epilog = CHART_EXIT_STATUS
     p.set_defaults(func=guarded(_chart))
 
     p = subparsers.add_parser(
@@ -91,6 +95,17 @@ def register(subparsers) -> None:
     p.add_argument("name", metavar="NAME", help="the problem")
     _out(p)
     p.set_defaults(func=guarded(_fidelity))
+
+
+#: ``chart``'s exit statuses, as its ``--help`` ends
+CHART_EXIT_STATUS = (
+    "Exit status: 0 every problem charted, or not applicable (the reason and the declaration "
+    "that would make it applicable printed on stderr: a problem with no model that "
+    "integrates in its reference coordinates has no chart to draw, which is not an error); "
+    "2 any problem that could not be charted for another reason (a model that cannot be "
+    "built, an error in a problem file, a failed reference run, an internal error), a usage "
+    "error, or nothing charted at all (every problem named not applicable); 130 "
+    "interrupted.")
 
 
 def _out(p) -> None:
@@ -143,13 +158,26 @@ def _chart(args) -> int:
                       flush=True)
             if r[1] is None and not args.json:
                 print(r[3], flush=True)
+    return _chart_status(results, args)
+
+
+def _chart_status(results: list, args) -> int:
+    """Print the JSON and the problems not charted; the exit status of
+    :data:`CHART_EXIT_STATUS` (``results``: :func:`_chart_one`'s tuples)."""
     done = [r[2] for r in results if r[1] is None]
-    failed = [(r[0], r[1]) for r in results if r[1] is not None]
+    failed = [(r[0], r[1]) for r in results if r[1] is not None and not r[4]]
+    inapplicable = [(r[0], r[1]) for r in results if r[1] is not None and r[4]]
     if args.json:
-        _print_json(done[0] if len(done) == 1 and not args.all and not failed else done)
+        _print_json(done[0] if len(done) == 1 and not args.all and not failed
+                    and not inapplicable else done)
+    for name, failure in inapplicable:
+        print(f"dualmech chart: {name}: {failure.message}", file=sys.stderr)
     for name, failure in failed:
         print(f"dualmech chart: no chart for {name}: {failure.message}", file=sys.stderr)
-    return worst([OK] + [failure.status for _, failure in failed])
+    status = worst([OK] + [failure.status for _, failure in failed])
+    if not done and inapplicable:
+        status = worst([status, USAGE_OR_MODEL_ERROR])
+    return status
 
 
 #: What the chart workers read (set before they fork): the problems, the arguments.
@@ -157,10 +185,12 @@ _CHART_JOB: dict = {}
 
 
 def _chart_one(i: int) -> tuple:
-    """Chart problem ``i`` of :data:`_CHART_JOB`: ``(name, failure, json, text line)``."""
+    """Chart problem ``i`` of :data:`_CHART_JOB`: ``(name, failure, json, text line,
+    not applicable)``."""
     from dualmech.numeric.integrators import WorkBudget
     from dualmech.numeric.studies.workprecision import (BUDGET, QUICK_BUDGET, STEPS,
-                                                        TOLERANCES, work_precision)
+                                                        TOLERANCES, NotApplicable,
+                                                        work_precision)
     p, args, out = _CHART_JOB["problems"][i], _CHART_JOB["args"], _CHART_JOB["out"]
     tolerances = (1e-3, 1e-6, 1e-9) if args.quick else TOLERANCES
     steps = (32, 256) if args.quick else STEPS
@@ -176,14 +206,18 @@ def _chart_one(i: int) -> tuple:
         paths = wp.write(out)
     except OSError:
         raise
+    except NotApplicable as exc:   # no chart to draw: said, not a failure of the run
+        return p.name, describe(exc, p), None, "", True
     except Exception as exc:  # noqa: BLE001 - one problem's failure does not stop --all
-        return p.name, describe(exc, p), None, ""
+        return p.name, describe(exc, p), None, "", False
     unfinished = sum(r.did_not_finish for r in wp.runs)
     line = (f"{p.name}: {len(wp.runs)} runs over t in [0, {wp.span[1]:.3g}] s"
             + (f" ({wp.span_note})" if wp.span_note else "")
             + (f"; {unfinished} did not finish within {budget}" if unfinished else "")
+            + (f"; {len(wp.skipped)} model(s) or form(s) not run, said why on the chart and "
+               "in the JSON's `skipped`" if wp.skipped else "")
             + "; wrote " + ", ".join(str(x) for x in paths))
-    return p.name, None, {**wp.to_dict(), "files": [str(x) for x in paths]}, line
+    return p.name, None, {**wp.to_dict(), "files": [str(x) for x in paths]}, line, False
 
 
 def _atlas(args) -> int:

@@ -107,11 +107,13 @@ def _value(force, t, y) -> np.ndarray:
 
 def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = None,
           rtol: float = 1e-9, atol: float = 1e-11, method: str = "DOP853",
-          extra_events: Sequence = ()) -> ContactReport:
+          extra_events: Sequence = (), rhs=None) -> ContactReport:
     """Integrate the reference model until a one-sided reaction changes sign (or the end).
 
     ``extra_events`` are more terminal events (each with a ``what`` attribute); the first to
-    fire is reported in ``ContactReport.stopped`` as ``(what, time)``.
+    fire is reported in ``ContactReport.stopped`` as ``(what, time)``.  ``rhs`` integrates
+    the reference coordinates instead of the reference model's own system (a reference
+    model that is a DAE: its index-1 form).
     """
     values = problem_parameters(problem, params)
     watched = unilateral_of(problem)
@@ -140,8 +142,8 @@ def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = No
         ev = (lambda t, y, f=forces[k]: float(_value(f, t, y)))
         ev.terminal, ev.direction = True, -1
         events.append(ev)
-    model = NumericModel(ref, values)
-    sol = solve_ivp(model.rhs, tuple(t_span), y0, method=method, rtol=rtol, atol=atol,
+    rhs = rhs or NumericModel(ref, values).rhs
+    sol = solve_ivp(rhs, tuple(t_span), y0, method=method, rtol=rtol, atol=atol,
                     events=events + list(extra_events), dense_output=True)
     if sol.status < 0:
         raise SingularityError(f"integration of `{problem.name}` failed: {sol.message}")
@@ -201,17 +203,17 @@ def _range_events(problem, ref, values) -> list:
 
 
 def scene_span(problem, duration: float, y0=None, params: Mapping | None = None,
-               t0: float = 0.0) -> SceneSpan:
+               t0: float = 0.0, rhs=None) -> SceneSpan:
     """The part of ``(t0, t0 + duration)`` in which the problem's model describes its scene.
 
     Ends where a length coordinate leaves its declared range, or where a one-sided contact
-    would have to pull (:func:`watch`), whichever comes first.
+    would have to pull (:func:`watch`), whichever comes first.  ``rhs``: see :func:`watch`.
     """
     values = problem_parameters(problem, params)
     ref = problem.model(problem.reference)
     end = t0 + float(duration)
     report = watch(problem, (t0, end), y0, params,
-                   extra_events=_range_events(problem, ref, values))
+                   extra_events=_range_events(problem, ref, values), rhs=rhs)
     if report.first is not None:
         return SceneSpan(t0, report.first.time,
                          f"{report.first.reaction} would have to change sign at t = "

@@ -18,6 +18,17 @@ make ``g'`` drift linearly and ``g`` quadratically in time.  Two cures:
   are massless and ``M`` alone is singular (:meth:`ConstrainedModel.project`, with a
   rank-revealing test, :func:`metric_defect`).
 
+Velocity-level (nonholonomic) constraints ``c = a(q) . q' + a0(q) = 0`` -- declared on the
+model (``EquationSet.constraints``, level ``"velocity"``) -- have no position level: ``c``
+itself is the invariant.  The index-1 row is ``c' = 0``; Baumgarte's is ``c' + 2 alpha c =
+0`` (the first-order term only); projection puts the rates onto ``c = 0`` and moves the
+configuration only onto the position-level constraints; IDA's forms
+(:mod:`~dualmech.numeric.daesolve`) hold ``c = 0`` as the algebraic row (the DAE is index 2
+in its multiplier).  A massless part's static balances -- rows holding no acceleration and
+no reaction -- are constraints held by no multiplier
+(:func:`~dualmech.numeric.formulations.with_static_rows`): their acceleration-level rows
+replace them, and the same forms keep the state on them.
+
 The position-level constraints ``g`` are not stored in the equations; :func:`constraints_of`
 recovers them from the acceleration rows (the coefficients of ``q''`` are ``G = dg/dq``; the
 rest must be ``q'^T (dG/dq) q'``, checked exactly) by integrating ``G`` coordinate by
@@ -49,7 +60,7 @@ from dualmech.numeric.model import NumericModel, StateFunction
 
 __all__ = ["Constraints", "ConstrainedModel", "constraints_of", "index1_equations",
            "metric_defect", "RANK_RTOL", "ALPHA", "BETA", "STABILISATIONS", "DAE_SOLVED",
-           "BAUMGARTE_GAINS"]
+           "BAUMGARTE_GAINS", "dae_refusal"]
 
 #: Baumgarte's parameters (symbols of the index-1 equations; values given at run time).
 ALPHA = sp.Symbol("baumgarte_alpha", nonnegative=True)
@@ -64,20 +75,52 @@ BAUMGARTE_GAINS = (1.0, 10.0, 100.0)
 
 @dataclass(frozen=True)
 class Constraints:
-    """Holonomic constraints ``g_k(q) = 0`` (up to constants) of a model in maximal coordinates.
+    """Constraints of a model in maximal coordinates, each at its own level.
 
-    ``expressions`` are in the coordinates ``q(t)``; ``multipliers`` are the model's
-    unknowns that hold them (the reactions), in the same order.
+    ``expressions`` are in the coordinates ``q(t)``: a position-level ``g_k(q) = 0`` (up
+    to a constant), or a velocity-level ``c_k = a_k(q) . q' + a0_k(q) = 0`` (``levels[k]``
+    ``"velocity"``: nonholonomic, no position level exists).  ``multipliers`` are the
+    model's unknowns that hold them (the reactions), in the same order; ``None`` for a
+    static balance of a massless part (a row of the model itself, held by no multiplier:
+    its acceleration-level form replaces row ``static_rows[k]``).
     """
 
     coordinates: tuple
     multipliers: tuple
     expressions: tuple
+    levels: tuple = ()
+    static_rows: tuple = ()
+    #: the labels of the static rows (``""`` for a constraint held by a multiplier)
+    labels: tuple = ()
+
+    def __post_init__(self):
+        if not self.levels:
+            object.__setattr__(self, "levels", ("position",) * len(self.expressions))
+        if not self.static_rows:
+            object.__setattr__(self, "static_rows", (None,) * len(self.expressions))
+        if not self.labels:
+            object.__setattr__(self, "labels", ("",) * len(self.expressions))
+        bad = [lv for lv in self.levels if lv not in ("position", "velocity")]
+        if bad or len(self.levels) != len(self.expressions):
+            raise ModelError(f"constraint levels {self.levels} must be 'position' or "
+                             f"'velocity', one per expression ({len(self.expressions)}).")
 
     @property
     def gradients(self) -> tuple:
-        """``dg_k/dq_j`` as a tuple of rows."""
-        return tuple(tuple(g.diff(q) for q in self.coordinates) for g in self.expressions)
+        """The coefficients of ``q''`` in each constraint's acceleration-level row, as a tuple
+        of rows: ``dg_k/dq_j`` (position level) or ``dc_k/dq'_j`` (velocity level)."""
+        return tuple(tuple(e.diff(q.diff(t) if lv == "velocity" else q)
+                           for q in self.coordinates)
+                     for e, lv in zip(self.expressions, self.levels))
+
+    @property
+    def has_velocity_level(self) -> bool:
+        return "velocity" in self.levels
+
+    def names(self) -> list[str]:
+        """A name per constraint: its multiplier's, or its static row's ``[label]``."""
+        return [str(u) if u is not None else f"[{lab or f'row {r}'}]"
+                for u, r, lab in zip(self.multipliers, self.static_rows, self.labels)]
 
 
 def _constraint_rows(eqs: EquationSet) -> list[int]:
@@ -86,45 +129,74 @@ def _constraint_rows(eqs: EquationSet) -> list[int]:
 
 @lru_cache(maxsize=64)
 def constraints_of(eqs: EquationSet) -> Constraints:
-    """The position-level constraints behind a multiplier model's acceleration rows.
+    """The constraints behind a multiplier model's acceleration rows, each at its level.
 
-    Raises :class:`ModelError` when a row is not the second derivative of a function of the
-    coordinates (velocity-level, rheonomic or not integrable): give ``constraints=`` then.
+    A row the model declares at velocity level (``EquationSet.constraints``, e.g.
+    :meth:`Lagrangian.velocity_constraint
+    <dualmech.model.lagrange.Lagrangian.velocity_constraint>`) is kept there: ``c(q, q') =
+    0`` is the invariant, no position level exists.  Any other row is integrated to its
+    position level ``g(q)``; :class:`ModelError` when it is not the second derivative of a
+    function of the coordinates (velocity-level but not declared, rheonomic or not
+    integrable): declare it then.
     """
     rows = _constraint_rows(eqs)
     if not rows or len(rows) != len(eqs.unknowns):
         raise ModelError(f"model `{eqs.name}` is not a multiplier model: it has {len(rows)} "
                          f"constraint rows for {len(eqs.unknowns)} multipliers.")
     A, b = eqs.plain_matrix()
+    declared = {c.label: c for c in eqs.constraints if c.level == "velocity"}
+    by_name = {u.name: u for u in eqs.unknowns}
+    found, levels, multipliers = [], [], []
+    for k, r in enumerate(rows):
+        what = f"model `{eqs.name}`, row [{eqs.labels[r]}]"
+        if any(A[r, j] != 0 for j in range(eqs.n, A.cols)):
+            raise ModelError(f"{what} holds a multiplier; it is not a constraint row.")
+        c = declared.get(eqs.labels[r])
+        if c is not None:
+            found.append(_velocity_level(c, eqs, what))
+            levels.append("velocity")
+            multipliers.append(by_name.get(c.name, eqs.unknowns[k]))
+        else:
+            found.append(_position_level(eqs, A, b, r, what))
+            levels.append("position")
+            multipliers.append(eqs.unknowns[k])
+    return Constraints(eqs.coordinates, tuple(multipliers), tuple(found), tuple(levels))
+
+
+def _velocity_level(c, eqs: EquationSet, what: str) -> sp.Expr:
+    """A declared velocity constraint ``a(q) . q' + a0(q)``, refused if ``a`` holds time."""
+    plain = c.plain(eqs.coordinates)
+    rates = [state_symbols(q).qd for q in eqs.coordinates]
+    if any(t in plain.diff(u).free_symbols for u in rates):
+        raise ModelError(f"{what}: the coefficients of the rates depend on time (a rheonomic "
+                         "velocity constraint); the DAE forms take a(q) . q' + a0(q, t) = 0.")
+    return c.expression
+
+
+def _position_level(eqs: EquationSet, A, b, r: int, what: str) -> sp.Expr:
+    """The ``g(q)`` whose second derivative is row ``r`` (checked exactly)."""
     n = eqs.n
     states = [state_symbols(q) for q in eqs.coordinates]
     qs, us = [s.q for s in states], [s.qd for s in states]
-    found = []
-    for r in rows:
-        what = f"model `{eqs.name}`, row [{eqs.labels[r]}]"
-        if any(A[r, j] != 0 for j in range(n, A.cols)):
-            raise ModelError(f"{what} holds a multiplier; it is not a constraint row.")
-        G = [A[r, j] for j in range(n)]
-        free = set().union(*[e.free_symbols for e in G])
-        if t in free or set(us) & free or t in b[r].free_symbols:
-            raise ModelError(f"{what}: the constraint depends on time or on the rates; give "
-                             "its position-level form with `constraints=`.")
-        H = sum(G[i].diff(qs[j]) * us[i] * us[j] for i in range(n) for j in range(n))
-        symbols = sorted(free | set(qs) | set(us) | b[r].free_symbols, key=lambda s: s.name)
-        curl = [G[i].diff(qs[j]) - G[j].diff(qs[i]) for i in range(n) for j in range(i + 1, n)]
-        if not identically_zero([b[r] + H] + curl, symbols):
-            raise ModelError(f"{what} is not the second derivative of a function of the "
-                             "coordinates: its gradient has no potential (a velocity-level "
-                             "constraint, or one scaled by a function); give its "
-                             "position-level form with `constraints=`.")
-        g = _potential(G, qs)
-        if g is None or not identically_zero([g.diff(q) - Gi for q, Gi in zip(qs, G)],
-                                             symbols):
-            raise ModelError(f"{what}: could not integrate the constraint gradient {G}; give "
-                             "its position-level form with `constraints=`.")
-        found.append(from_plain(g, eqs.coordinates))
-    return Constraints(eqs.coordinates, tuple(eqs.unknowns[k] for k in range(len(rows))),
-                       tuple(found))
+    G = [A[r, j] for j in range(n)]
+    free = set().union(*[e.free_symbols for e in G])
+    if t in free or set(us) & free or t in b[r].free_symbols:
+        raise ModelError(f"{what}: the constraint depends on time or on the rates; declare "
+                         "it (`velocity_constraint`) or give its position-level form.")
+    H = sum(G[i].diff(qs[j]) * us[i] * us[j] for i in range(n) for j in range(n))
+    symbols = sorted(free | set(qs) | set(us) | b[r].free_symbols, key=lambda s: s.name)
+    curl = [G[i].diff(qs[j]) - G[j].diff(qs[i]) for i in range(n) for j in range(i + 1, n)]
+    if not identically_zero([b[r] + H] + curl, symbols):
+        raise ModelError(f"{what} is not the second derivative of a function of the "
+                         "coordinates: its gradient has no potential (a velocity-level "
+                         "constraint, or one scaled by a function); declare it with "
+                         "`velocity_constraint`, or give its position-level form with "
+                         "`constraints=`.")
+    g = _potential(G, qs)
+    if g is None or not identically_zero([g.diff(q) - Gi for q, Gi in zip(qs, G)], symbols):
+        raise ModelError(f"{what}: could not integrate the constraint gradient {G}; give "
+                         "its position-level form with `constraints=`.")
+    return from_plain(g, eqs.coordinates)
 
 
 def _potential(G: Sequence, qs: Sequence):
@@ -144,22 +216,31 @@ def _potential(G: Sequence, qs: Sequence):
 def index1_equations(eqs: EquationSet, constraints: Constraints, *,
                      stabilised: bool = False) -> EquationSet:
     """The square index-1 system: ``eqs``' equations of motion and one acceleration row per
-    constraint, ``g'' = 0`` or (``stabilised``) ``g'' + 2 alpha g' + beta^2 (g - g0) = 0``.
+    constraint -- ``g'' = 0`` or (``stabilised``) ``g'' + 2 alpha g' + beta^2 (g - g0) = 0``
+    at position level, ``c' = 0`` or ``c' + 2 alpha c = 0`` at velocity level (Baumgarte's
+    first-order term only: no position level to pull back to).
 
     The offsets ``g0`` are parameters ``constraint_offset_k``: the value of ``g_k`` on the
-    manifold (the recovered ``g`` is known up to a constant).
+    manifold (the recovered ``g`` is known up to a constant).  A static balance
+    (``constraints.static_rows[k]`` not ``None``) replaces its own row of ``eqs``.
     """
     if tuple(constraints.coordinates) != tuple(eqs.coordinates):
         raise ModelError(f"the constraints are written in {list(constraints.coordinates)}, "
                          f"model `{eqs.name}` in {list(eqs.coordinates)}.")
-    rows = [eqs.equations[i] for i in dynamic_rows(eqs)]
-    labels = [eqs.labels[i] for i in dynamic_rows(eqs)]
-    for k, (lam, g) in enumerate(zip(constraints.multipliers, constraints.expressions)):
-        row = g.diff(t, 2)
-        if stabilised:
-            row += 2 * ALPHA * g.diff(t) + BETA**2 * (g - offset_symbol(k))
+    replaced = {r for r in constraints.static_rows if r is not None}
+    keep = [i for i in dynamic_rows(eqs) if i not in replaced]
+    rows = [eqs.equations[i] for i in keep]
+    labels = [eqs.labels[i] for i in keep]
+    for k, (name, g, level) in enumerate(zip(constraints.names(), constraints.expressions,
+                                              constraints.levels)):
+        if level == "velocity":
+            row = g.diff(t) + (2 * ALPHA * g if stabilised else 0)
+        else:
+            row = g.diff(t, 2)
+            if stabilised:
+                row += 2 * ALPHA * g.diff(t) + BETA**2 * (g - offset_symbol(k))
         rows.append(row)
-        labels.append(f"constraint {lam} (acceleration level"
+        labels.append(f"constraint {name} (acceleration level"
                       + (", Baumgarte)" if stabilised else ")"))
     if len(rows) != eqs.n + len(eqs.unknowns):
         raise ModelError(f"model `{eqs.name}`: {len(rows)} equations with the constraints for "
@@ -168,6 +249,37 @@ def index1_equations(eqs: EquationSet, constraints: Constraints, *,
     suffix = "Baumgarte" if stabilised else "index 1"
     return EquationSet(f"{eqs.name} ({suffix})", eqs.coordinates, tuple(rows), eqs.unknowns,
                        tuple(labels), (), eqs.description)
+
+
+def dae_refusal(stab: str, constraints) -> str:
+    """Why the DAE form ``stab`` cannot take ``constraints`` (``""`` if it can).
+
+    >>> import sympy as sp
+    >>> from dualmech.numeric.dae import Constraints
+    >>> from dualmech import coordinate, t
+    >>> x = coordinate("x")
+    >>> c = Constraints((x,), (sp.Symbol("F"),), (x.diff(t) - 1,), ("velocity",))
+    >>> dae_refusal("index3", c).split(":")[0], dae_refusal("projection", c)
+    ('not applicable to the index-3 form', '')
+    """
+    levels, names = constraints.levels, constraints.names()
+    static = [nm for nm, r in zip(names, constraints.static_rows) if r is not None]
+    if stab in DAE_SOLVED and static:
+        return (f"not applicable to IDA's {stab} form: the static balance(s) of a massless "
+                f"part {', '.join(static)} hold no multiplier, and its residual "
+                "(numeric/daesolve) holds each constraint by one; the index-1 forms integrate "
+                "them (projection keeps the state on the static rows' manifold).")
+    if stab == "index3" and "position" not in levels:
+        return ("not applicable to the index-3 form: every constraint is at velocity level "
+                "(nonholonomic), so the DAE as written is index 2 -- the 'DAE, index 2' form "
+                "(run under 'ggl'), not run twice.")
+    if stab == "ggl" and "position" in levels and "velocity" in levels:
+        vel = [nm for nm, lv in zip(names, levels) if lv == "velocity"]
+        return ("not applicable to the GGL form: its residual (numeric/daesolve) holds every "
+                "constraint at position and velocity level with an extra multiplier, and "
+                f"the velocity-level constraint(s) {', '.join(vel)} have no position level; "
+                "the index-3 form holds each constraint at its declared level.")
+    return ""
 
 
 def offset_symbol(k: int) -> sp.Symbol:
@@ -202,15 +314,25 @@ class ConstrainedModel:
             raise ValueError(f"`stabilisation` must be one of {STABILISATIONS + DAE_SOLVED}, "
                              f"got {stabilisation!r}.")
         self.constraints = constraints or constraints_of(eqs)
+        why = dae_refusal(stabilisation, self.constraints)
+        if why:
+            raise ModelError(f"model `{eqs.name}`: {why}")
         self.eqs, self.n, self.k = eqs, eqs.n, len(self.constraints.expressions)
         self.stabilisation = stabilisation
         coords = eqs.coordinates
         g = list(self.constraints.expressions)
-        self._g = StateFunction(g + [e.diff(t) for e in g], coords, params)
+        self.position = np.array([lv == "position" for lv in self.constraints.levels])
+        rate = [e.diff(t) if p else e for e, p in zip(g, self.position)]
+        self._g = StateFunction(g + rate, coords, params)
         self._G = StateFunction([d for row in self.constraints.gradients for d in row], coords,
                                 params)
         anchor = np.asarray(anchor, dtype=float)
-        self.offsets = self._g(0.0, anchor, np.zeros(self.n))[: self.k]
+        # a recovered g is known up to a constant (fixed by the anchor); a static balance
+        # and a velocity-level constraint are exact as written
+        recovered = self.position & np.array([r is None for r in self.constraints.static_rows],
+                                             dtype=bool)
+        self.offsets = np.where(recovered, self._g(0.0, anchor, np.zeros(self.n))[: self.k],
+                                0.0)
         values = dict(params)
         values.update({offset_symbol(i): v for i, v in enumerate(self.offsets)})
         values.update({ALPHA: float(alpha), BETA: float(beta)})
@@ -222,13 +344,16 @@ class ConstrainedModel:
         self.reaction_names = tuple(u.name for u in eqs.unknowns)
 
     def residuals(self, q, qd) -> tuple[np.ndarray, np.ndarray]:
-        """``(g(q) - g0, g'(q, q'))``: shapes ``(k,)`` or ``(k, K)``."""
+        """``(invariant, velocity level)``: ``(g(q) - g0, g'(q, q'))`` for a position-level
+        constraint, ``(c, c)`` for a velocity-level one (its own invariant); shapes ``(k,)``
+        or ``(k, K)``."""
         vals = self._g(0.0, q, qd)
         off = self.offsets if np.ndim(q) == 1 else self.offsets[:, None]
         return vals[: self.k] - off, vals[self.k:]
 
     def gradient(self, q) -> np.ndarray:
-        """``G = dg/dq`` at one configuration: ``(k, n)``."""
+        """``G`` at one configuration, ``(k, n)``: ``dg/dq`` (position level), ``dc/dq'``
+        (velocity level) -- the coefficients of ``q''`` in the acceleration rows."""
         return self._G(0.0, q, np.zeros(self.n)).reshape(self.k, self.n)
 
     def multipliers(self, time, q, qd) -> np.ndarray:
@@ -245,13 +370,17 @@ class ConstrainedModel:
         space ``G dq = 0``) even where parts are massless and ``M`` itself is singular.  The
         test is rank-revealing (:func:`metric_defect`), never a Cholesky accident; rows that
         are not a metric (a direct model's: not symmetric, or with a negative eigenvalue)
-        give the Euclidean one.
+        give the diagonal of each coordinate's inertia (the norms of the columns of its
+        accelerations in the model's own rows: zero for a massless part, so the projection
+        moves it and not the parts that carry inertia).
         """
         A, _ = self.numeric.system(time, q, qd)
         G = self.gradient(q)
-        M = A[: self.n, : self.n]
-        if not _is_metric(M):
-            M = np.eye(self.n)
+        M = self._mass_rows(A)
+        if not _is_metric(M):   # a direct model's rows: each coordinate's inertia, unsigned
+            M = np.diag(np.linalg.norm(A[: A.shape[0] - self.k, : self.n], axis=0))
+            if not M.any():
+                M = np.eye(self.n)
         _check_rank(G, "the constraint gradients G = dg/dq", self, time, q)
         W = M + np.abs(M).max() / max(np.abs(G).max(), 1e-300) ** 2 * (G.T @ G)
         bad = metric_defect(W)
@@ -266,29 +395,46 @@ class ConstrainedModel:
                 "hold it by a constraint, or give the part a mass.")
         return W, G
 
+    def _mass_rows(self, A: np.ndarray) -> np.ndarray:
+        """The model's own first ``n`` rows' coefficients of ``q''`` (a static row's: zero),
+        read off the index-1 system ``A``, whose rows are the kept rows then the constraints'."""
+        replaced = {r for r in self.constraints.static_rows if r is not None}
+        if not replaced:
+            return A[: self.n, : self.n]
+        keep = [i for i in dynamic_rows(self.eqs) if i not in replaced]
+        M = np.zeros((self.n, self.n))
+        for row, i in enumerate(keep):
+            if i < self.n:
+                M[i] = A[row, : self.n]
+        return M
+
     def project(self, time, y: np.ndarray, tol: float = 1e-13, iterations: int = 8) -> np.ndarray:
-        """``y = [q; q']`` put back on the manifold (configuration, then rates; see the module
-        docstring), in the metric of :meth:`_metric`.  Raises :class:`ModelError` if
-        Gauss--Newton does not converge, the constraints are dependent, or a massless
+        """``y = [q; q']`` put back on the manifold (see the module docstring), in the metric
+        of :meth:`_metric`: the configuration onto the position-level constraints only
+        (Gauss--Newton), then the rates onto every constraint's velocity level (``G q' = 0``
+        and ``c(q, q') = 0``, affine in ``q'``: one exact step).  Raises :class:`ModelError`
+        if Gauss--Newton does not converge, the constraints are dependent, or a massless
         coordinate is not held by them (naming it)."""
-        n = self.n
+        n, P = self.n, self.position
         q, qd = y[:n].copy(), y[n:].copy()
-        for _ in range(iterations):
-            g, _ = self.residuals(q, qd)
+        for _ in range(iterations if P.any() else 0):
+            g = self.residuals(q, qd)[0][P]
             scale = max(1.0, float(np.abs(q).max()))
             if np.abs(g).max() <= tol * scale:
                 break
             W, G = self._metric(time, q, qd)
-            WiGt = np.linalg.solve(W, G.T)
-            q -= WiGt @ np.linalg.solve(G @ WiGt, g)
+            WiGt = np.linalg.solve(W, G[P].T)
+            q -= WiGt @ np.linalg.solve(G[P] @ WiGt, g)
         else:
-            raise ModelError(f"projection onto the constraints of `{self.eqs.name}` did not "
-                             f"converge at t={float(time):.6g} (residual {np.abs(g).max():.3g})"
-                             "; the state has left the manifold's neighbourhood -- use a "
-                             "tighter tolerance or project more often.")
+            if P.any():
+                raise ModelError(
+                    f"projection onto the constraints of `{self.eqs.name}` did not converge "
+                    f"at t={float(time):.6g} (residual {np.abs(g).max():.3g}); the state has "
+                    "left the manifold's neighbourhood -- use a tighter tolerance or project "
+                    "more often.")
         W, G = self._metric(time, q, qd)
         WiGt = np.linalg.solve(W, G.T)
-        qd -= WiGt @ np.linalg.solve(G @ WiGt, G @ qd)
+        qd -= WiGt @ np.linalg.solve(G @ WiGt, self.residuals(q, qd)[1])
         return np.concatenate([q, qd])
 
 

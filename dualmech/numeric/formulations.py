@@ -11,7 +11,11 @@ A **formulation** is one model of a problem made into ``y' = f(t, y)``:
   ``baumgarte_gains``) or with projection after every accepted step
   (:class:`~dualmech.numeric.dae.ConstrainedModel`, :mod:`~dualmech.numeric.stepping`);
   or as the index-3 DAE or Gear-Gupta-Leimkuhler's stabilised index-2 form solved by IDA
-  (:mod:`~dualmech.numeric.daesolve`, method ``"IDA"``).
+  (:mod:`~dualmech.numeric.daesolve`, method ``"IDA"``).  Constraints are taken at the level
+  they are declared: a model whose constraints are all velocity-level (rolling) has an
+  index-2 DAE (``"DAE, index 2"``, under ``"ggl"``) and no index-3 form; a model with static
+  rows of a massless part has its index-1 forms only.  A form a model cannot take is
+  listed with the reason, as ``"model (form)"``, among the skipped.
 
 Each formulation starts from the problem's initial state mapped into its own coordinates
 (:meth:`Problem.coordinate_maps <dualmech.model.problem.Problem.coordinate_maps>`) and can map any
@@ -33,19 +37,20 @@ from typing import Callable, Mapping, Sequence
 import numpy as np
 
 from dualmech.model._expr import as_expr
-from dualmech.model.equations import EquationSet, ModelError
+from dualmech.model.equations import EquationSet, ModelError, state_symbols
 from dualmech.model.kinematics import t
-from dualmech.numeric.dae import STABILISATIONS, ConstrainedModel, constraints_of
+from dualmech.numeric.dae import (STABILISATIONS, ConstrainedModel, Constraints, constraints_of,
+                                  dae_refusal)
 from dualmech.numeric.daesolve import DAE_FORMS, IDASolver
 from dualmech.numeric.energy import (EnergyFunction, conservative_reason, dynamic_rows,
                                      identically_zero)
-from dualmech.numeric.integrators import WorkBudget, Run, integrate
+from dualmech.numeric.integrators import SYMPLECTIC, WorkBudget, Run, integrate
 from dualmech.numeric.model import NumericModel, StateFunction
 from dualmech.numeric.simulation import default_initial_state, problem_parameters
 from dualmech.numeric.stepping import projected_run
 
 __all__ = ["Formulation", "formulations", "state_scales", "outside_parameters",
-           "static_coordinates"]
+           "static_coordinates", "with_static_rows", "dae_refusal"]
 
 _LABEL = {"none": "DAE, index 1", "baumgarte": "DAE, Baumgarte", "projection": "DAE, projection",
           "index3": "DAE, index 3", "ggl": "DAE, GGL index 2"}
@@ -74,6 +79,10 @@ class Formulation:
     _outside: Callable | None = field(default=None, repr=False)
     dae_solver: IDASolver | None = field(default=None, repr=False)
     numeric: NumericModel | None = field(default=None, repr=False)
+    #: ``""`` when the motion is the free Hamiltonian flow of ``energy`` (a symplectic rule
+    #: may integrate it), else why not: the energy's model holds constraints, which the
+    #: symplectic rules of :mod:`~dualmech.numeric.symplectic` would not keep
+    not_free_flow: str = ""
 
     @property
     def backend(self) -> str:
@@ -138,6 +147,9 @@ class Formulation:
         step for ``"projection"``; IDA for the index-3 and GGL forms); past ``budget`` the
         run ends as *did not finish* (:class:`~dualmech.numeric.integrators.WorkBudget`)."""
         atol = rtol * self.scales
+        if method in SYMPLECTIC and self.not_free_flow:
+            raise ValueError(f"`{method}` integrates the free Hamiltonian flow of the "
+                             f"energy; `{self.name}` is not that flow: {self.not_free_flow}.")
         if self.dae_solver is not None or method == "IDA":
             if self.dae_solver is None or events:
                 raise ValueError(f"`{self.name}` is not solved by IDA (no events either); "
@@ -174,9 +186,10 @@ def _mapping(problem, ref: EquationSet, eqs: EquationSet, values) -> StateFuncti
     return StateFunction(exprs + [e.diff(t) for e in exprs], ref.coordinates, values)
 
 
-def _energy(problem, eqs: EquationSet, values, q0) -> tuple[EnergyFunction | None, str]:
+def _energy(problem, eqs: EquationSet, values, q0) -> tuple[EnergyFunction | None, str, str]:
     """The energy of ``eqs``' coordinates from the first conservative model that has them
-    (and a positive definite mass matrix at ``q0``: a direct model's rows may be signed)."""
+    (and a positive definite mass matrix at ``q0``: a direct model's rows may be signed),
+    why not, and why the motion is not its free flow (:func:`_held_by`)."""
     candidates = [eqs] + [m for m in problem.models().values()
                           if m is not eqs and tuple(m.coordinates) == tuple(eqs.coordinates)]
     reason = ""
@@ -186,11 +199,20 @@ def _energy(problem, eqs: EquationSet, values, q0) -> tuple[EnergyFunction | Non
             energy = EnergyFunction(m, values)
             try:
                 np.linalg.cholesky(energy.mass_matrix(q0))
-                return energy, ""
+                return energy, "", _held_by(m)
             except np.linalg.LinAlgError:
                 why = "its mass matrix is not positive definite (signed rows)"
         reason = reason or why
-    return None, reason or "no model in these coordinates"
+    return None, reason or "no model in these coordinates", ""
+
+
+def _held_by(m: EquationSet) -> str:
+    """Why ``m``'s motion is not the free flow of its energy (``""``: it is)."""
+    rows = len(m.equations) - len(dynamic_rows(m))
+    if rows or m.constraints:
+        return (f"its energy comes from model `{m.name}`, whose motion keeps "
+                f"{max(rows, len(m.constraints))} constraint(s)")
+    return ""
 
 
 def _outside_reactions(problem, values) -> Callable:
@@ -252,22 +274,26 @@ def formulations(problem, params: Mapping | None = None, y0=None,
     for name in names:
         eqs = problem.model(name)
         try:
-            out.extend(_forms(problem, ref, eqs, values, y0, n, stabilisations,
-                              baumgarte_gains))
+            forms, refused = _forms(problem, ref, eqs, values, y0, n, stabilisations,
+                                    baumgarte_gains)
         except (ModelError, ValueError, NotImplementedError, ZeroDivisionError) as exc:
             skipped[name] = str(exc)
+            continue
+        out.extend(forms)
+        skipped.update(refused)
     return out, skipped
 
 
-def _forms(problem, ref, eqs, values, y0, n, stabilisations, gains) -> list[Formulation]:
+def _forms(problem, ref, eqs, values, y0, n, stabilisations,
+           gains) -> tuple[list[Formulation], dict]:
+    """The forms of one model and ``{form: why not}`` for the DAE forms it cannot take."""
     mapping = _mapping(problem, ref, eqs, values)
     y_own = mapping(0.0, y0[:n], y0[n:])
     scales = state_scales(problem, eqs.coordinates)
-    energy, note = _energy(problem, eqs, values, y_own[: eqs.n])
+    energy, note, held = _energy(problem, eqs, values, y_own[: eqs.n])
     constraint_rows = len(eqs.equations) - len(dynamic_rows(eqs))
     square = len(eqs.equations) == eqs.n + len(eqs.unknowns)
-    if square and not constraint_rows:
-        _refuse_static(eqs)
+    if square and not constraint_rows and not static_coordinates(eqs):
         nm = NumericModel(eqs, values)
         own = bool(eqs.unknowns)
         in_ref = tuple(eqs.coordinates) == tuple(ref.coordinates)
@@ -275,27 +301,54 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations, gains) -> list[Form
                             tuple(u.name for u in eqs.unknowns), None, energy, note,
                             nm.solve if own else None,
                             _outside_reactions(problem, values) if in_ref and not own
-                            else None, None, nm)]
+                            else None, None, nm, held)], {}
     if square:
-        constraints = constraints_of(eqs)
+        constraints = constraints_of(eqs) if constraint_rows else None
     elif len(eqs.equations) < eqs.n + len(eqs.unknowns):
         constraints = _borrowed_constraints(problem, eqs)
     else:
         raise ModelError(f"model `{eqs.name}` has more equations than unknowns.")
-    _refuse_static(eqs, constraints)
-    out = []
+    constraints = with_static_rows(eqs, constraints)
+    out, refused = [], {}
     for stab in stabilisations:
+        why = dae_refusal(stab, constraints)
+        if why:
+            refused[f"{eqs.name} ({_LABEL[stab]})"] = why
+            continue
         for gain in (gains or (None,)) if stab == "baumgarte" else (None,):
             extra = {} if gain is None else {"alpha": gain, "beta": gain}
             cm = ConstrainedModel(eqs, values, constraints, anchor=y_own[: eqs.n],
                                   stabilisation=stab, **extra)
-            label = _LABEL[stab] + ("" if gain is None else f" {gain:g}/s")
-            out.append(Formulation(f"{eqs.name} ({label})", "dae", eqs, cm.rhs, y_own,
+            start = _consistent(cm, y_own)
+            solver, label = _ida(cm, stab)
+            label += "" if gain is None else f" {gain:g}/s"
+            out.append(Formulation(f"{eqs.name} ({label})", "dae", eqs, cm.rhs, start,
                                    scales, mapping, cm.reaction_names, cm, energy, note,
-                                   cm.numeric.solve, None,
-                                   IDASolver(cm, stab) if stab in DAE_FORMS else None,
-                                   cm.numeric))
-    return out
+                                   cm.numeric.solve, None, solver, cm.numeric,
+                                   f"a DAE form, whose motion keeps {cm.k} constraint(s)"))
+    return out, refused
+
+
+def _ida(cm: ConstrainedModel, stab: str) -> tuple[IDASolver | None, str]:
+    """IDA's solver of a DAE-solved form and its label.  Every constraint at velocity level:
+    the DAE as written is index 2 and GGL adds nothing to it (no position level to hold),
+    so ``"ggl"`` is IDA's ``"index3"`` residual with the velocity rows as the invariant."""
+    if stab not in DAE_FORMS:
+        return None, _LABEL[stab]
+    if stab == "ggl" and "position" not in cm.constraints.levels:
+        return IDASolver(cm, "index3"), "DAE, index 2"
+    return IDASolver(cm, stab), _LABEL[stab]
+
+
+def _consistent(cm: ConstrainedModel, y: np.ndarray) -> np.ndarray:
+    """``y`` itself, or projected onto the manifold when the model has static balances or
+    velocity-level constraints: their initial values are not the problem's to choose (a
+    massless part sits where its balance puts it; the rates must roll), and projection in
+    the kinetic-energy metric moves only what carries no inertia or violates a constraint."""
+    if not cm.constraints.has_velocity_level and \
+            all(r is None for r in cm.constraints.static_rows):
+        return y
+    return cm.project(0.0, np.asarray(y, dtype=float))
 
 
 def static_coordinates(eqs: EquationSet, constraints=None) -> list:
@@ -322,16 +375,55 @@ def static_coordinates(eqs: EquationSet, constraints=None) -> list:
     return out
 
 
-def _refuse_static(eqs: EquationSet, constraints=None) -> None:
+def with_static_rows(eqs: EquationSet, constraints=None):
+    """``constraints`` completed by the static balances of ``eqs``' massless parts.
+
+    A coordinate whose acceleration no equation holds (:func:`static_coordinates`) is fixed
+    by the rows that hold neither an acceleration nor a reaction -- static balances
+    ``s(q) = 0`` (or ``s(q, q') = 0`` with a damper on the part): they become constraints
+    held by no multiplier, at position (velocity) level, whose acceleration-level rows
+    replace them in the index-1 system (:func:`~dualmech.numeric.dae.index1_equations`).
+    Raises :class:`ModelError` when they do not hold every static coordinate.
+
+    >>> from dualmech.problems import get
+    >>> c = with_static_rows(get("copying_machine").model("lagrange"))
+    >>> c.levels, c.static_rows, c.multipliers, c.names()
+    (('position',), (1,), (None,), ['[Lagrange, theta]'])
+    """
     static = static_coordinates(eqs, constraints)
-    if static:
-        names = ", ".join(str(q).replace("(t)", "") for q in static)
+    if not static:
+        return constraints
+    A, _ = eqs.plain_matrix()
+    symbols = sorted(set().union(*[e.free_symbols for e in A]), key=lambda x: x.name)
+    rows = [i for i in dynamic_rows(eqs)
+            if identically_zero([A[i, j] for j in range(A.cols)], symbols)]
+    exprs, levels = [], []
+    for i in rows:
+        e = eqs.equations[i]
+        plain = eqs.to_plain(e)
+        if t in plain.free_symbols:
+            raise ModelError(f"model `{eqs.name}`, static row [{eqs.labels[i]}] depends on "
+                             "time; a static balance held as a constraint must not (the "
+                             "DAE forms take time-independent static rows).")
+        rates = [state_symbols(q).qd for q in eqs.coordinates]
+        exprs.append(e)
+        levels.append("velocity" if plain.has(*rates) else "position")
+    base = constraints or Constraints(eqs.coordinates, (), ())
+    out = Constraints(eqs.coordinates, base.multipliers + (None,) * len(rows),
+                      base.expressions + tuple(exprs), base.levels + tuple(levels),
+                      base.static_rows + tuple(rows),
+                      base.labels + tuple(eqs.labels[i] for i in rows))
+    left = static_coordinates(eqs, out)
+    if left:
+        names = ", ".join(str(q).replace("(t)", "") for q in left)
         raise ModelError(
-            f"model `{eqs.name}` is a differential-algebraic system, not an ODE: no equation "
-            f"holds the acceleration of {names} (a massless part: its rows are static "
-            "balances), so its square system is singular at every state.  Not applicable "
-            "to ODE integrators; eliminate the static coordinate(s) through their static "
-            "rows in a model of its own (fewer coordinates), or give the part a mass.")
+            f"model `{eqs.name}` is a differential-algebraic system: no equation holds the "
+            f"acceleration of {names} (a massless part), and no static row (one holding no "
+            "acceleration and no reaction) fixes it either, so neither an ODE integrator nor "
+            "the DAE forms can integrate it; eliminate the static coordinate(s) through "
+            "their static rows in a model of its own (fewer coordinates), or give the part a "
+            "mass.")
+    return out
 
 
 def _borrowed_constraints(problem, eqs: EquationSet):
@@ -348,6 +440,7 @@ def _borrowed_constraints(problem, eqs: EquationSet):
             order = {u.name: i for i, u in enumerate(c.multipliers)}
             idx = [order[u.name] for u in eqs.unknowns]
             return type(c)(c.coordinates, tuple(eqs.unknowns),
-                           tuple(c.expressions[i] for i in idx))
+                           tuple(c.expressions[i] for i in idx),
+                           tuple(c.levels[i] for i in idx))
     raise ModelError(f"model `{eqs.name}` has fewer equations than unknowns and no multiplier "
                      "model in its coordinates supplies the constraints.")

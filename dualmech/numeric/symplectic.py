@@ -255,8 +255,13 @@ def constraint_functions(constrained, values) -> tuple:
     """``(g, G)`` for :func:`rattle` from a
     :class:`~dualmech.numeric.dae.ConstrainedModel` at parameter ``values``: the residuals
     ``g(q)`` it keeps and their exact gradients ``G(q)`` (generated code)."""
+    from dualmech.model.equations import ModelError
     from dualmech.numeric.model import StateFunction
     c = constrained.constraints
+    if "velocity" in c.levels or any(r is not None for r in c.static_rows):
+        raise ModelError("RATTLE holds position-level constraints, each by a multiplier; "
+                         f"{', '.join(c.names())} include velocity-level constraints or "
+                         "static rows -- use the DAE forms (projection) instead.")
     k, n = len(c.expressions), len(c.coordinates)
     grads = StateFunction([d for row in c.gradients for d in row], c.coordinates, values)
     zeros = np.zeros(n)

@@ -416,8 +416,11 @@ def dae_drift(problem, model: str | None = None, duration: float = 20.0, method:
     forms = [f for f in forms if f.model.name == name]
     te = np.linspace(0.0, duration, samples)
     info = problem.reaction_info()
-    lam = forms[0].constrained.constraints.multipliers[0].name
+    c = forms[0].constrained.constraints
+    held = [(u.name, lv) for u, lv in zip(c.multipliers, c.levels) if u is not None]
+    lam, level = held[0] if held else ("", "position")   # static rows alone: no unit known
     unit = work_conjugate_unit(info[lam].dimension) if lam in info else ""
+    unit += "/s" if unit and level == "velocity" else ""
     out = Drift(problem.name, name, method, rtol, unit)
     for f in forms:
         run = f.run(method, (0.0, duration), te, rtol=rtol)

@@ -71,8 +71,8 @@ from dualmech.numeric.integrators import DID_NOT_FINISH, METHODS, WorkBudget, Ru
 from dualmech.numeric.studies.wplesson import lesson_chart, scene_text
 from dualmech.numeric.units import work_conjugate_unit
 
-__all__ = ["RunResult", "WorkPrecision", "work_precision", "TOLERANCES", "STEPS", "MEASURES",
-           "BUDGET", "QUICK_BUDGET"]
+__all__ = ["RunResult", "WorkPrecision", "work_precision", "NotApplicable", "TOLERANCES",
+           "STEPS", "MEASURES", "BUDGET", "QUICK_BUDGET"]
 
 TOLERANCES = tuple(10.0 ** -k for k in range(3, 11))
 #: Steps per span of the midpoint rule's sweep.
@@ -89,6 +89,11 @@ MEASURES = (("final_error", "state error at the end\n[relative to range]"),
             ("reaction_error", "reaction error\n[relative to largest]"),
             ("drift", "constraint drift $|g|$ [{drift_unit}]"),
             ("energy_drift", "energy drift $|E - E_0|$ [N m]"))
+
+
+class NotApplicable(ModelError):
+    """The chart does not apply to the problem: the message says why and which declaration
+    would make it apply (a model in the reference coordinates that integrates)."""
 
 
 @dataclass
@@ -215,9 +220,28 @@ class WorkPrecision:
         axes[-2].set_xlabel("CPU time of the integration [s] (median of the repeats)")
         axes[-1].set_xlabel("states evaluated (RHS calls, Jacobian columns, DAE residuals)")
         _legends(fig, self, forms)
+        if self.skipped:
+            fig.text(0.735, 0.05, not_run_note(self.skipped), fontsize="x-small",
+                     va="bottom", ha="left", color="0.25")
         fig.subplots_adjust(left=0.06, right=0.72, top=0.96, bottom=0.05, hspace=0.3,
                             wspace=0.12)
         return save(fig, stem, tight=False)
+
+
+def not_run_note(skipped: Mapping, width: int = 62, each: int = 180) -> str:
+    """The chart's note on the forms it could not run and why (each reason shortened).
+
+    >>> print(not_run_note({"m (DAE, index 3)": "not applicable to the index-3 form: x."}))
+    not run:
+    m (DAE, index 3): not applicable to the index-3
+        form: x.
+    """
+    import textwrap
+    lines = ["not run:"]
+    for form, why in skipped.items():
+        text = textwrap.shorten(f"{form}: {why}", each, placeholder=" ...")
+        lines += textwrap.wrap(text, width, subsequent_indent="    ")
+    return "\n".join(lines)
 
 
 def _tag(r: "RunResult") -> str:
@@ -282,9 +306,24 @@ def _measure(f: Formulation, run: Run, ref: dict, te: np.ndarray) -> dict:
 
 def _reference_form(forms, coordinates: tuple) -> Formulation | None:
     """The formulation that gives the reference motion: the first ODE in the reference
-    model's coordinates (the reference model itself unless it is constrained)."""
-    return next((f for f in forms if f.kind == "ode" and tuple(f.coordinates) == coordinates),
-                None)
+    model's coordinates (the reference model itself unless it is constrained); failing
+    that, the first DAE form projected after every step in those coordinates (a model with
+    static rows or constraints and no ODE form: DOP853 with the state put back on the
+    manifold after each step, so the reference itself does not drift off it)."""
+    same = [f for f in forms if tuple(f.coordinates) == coordinates]
+    return next((f for f in same if f.kind == "ode"), None) or \
+        next((f for f in same if f.stabilisation == "projection"), None)
+
+
+def _drift_unit(problem, constraints, k: int) -> str:
+    """The unit of constraint ``k``'s drift: conjugate to its multiplier's (per second at
+    velocity level); a static balance's residual is a force or moment (``"?"`` unknown)."""
+    u = constraints.multipliers[k]
+    info = problem.reaction_info()
+    if u is None or u.name not in info:
+        return "static row residual" if u is None else "?"
+    unit = work_conjugate_unit(info[u.name].dimension)
+    return unit + "/s" if constraints.levels[k] == "velocity" else unit
 
 
 def _scaled(budget: WorkBudget, factor: float) -> WorkBudget:
@@ -361,23 +400,32 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
         forms, skipped = formulations(problem, params, y0, stabilisations=stabilisations,
                                       baumgarte_gains=baumgarte_gains)
     base = _reference_form(forms, coords)
+    only_reference = base is None and "projection" not in stabilisations
+    if only_reference:   # the projected DAE gives the reference; not charted unless asked
+        more, _ = formulations(problem, params, y0, stabilisations=("projection",))
+        base = _reference_form(more, coords)
+        forms.insert(0, base) if base is not None else None
     if base is None:
         why = skipped.get(problem.reference, "it has no formulation").rstrip(".")
-        raise ModelError(f"not applicable: no model of `{problem.name}` in its reference "
-                         f"coordinates integrates as an ODE to give the chart's reference "
-                         f"motion; the reference model `{problem.reference}`: {why}.")
+        raise NotApplicable(f"not applicable: no model of `{problem.name}` in its reference "
+                            f"coordinates integrates as an ODE, nor as a DAE projected "
+                            f"after every step, to give the chart's reference motion; the "
+                            f"reference model `{problem.reference}`: {why}.")
     forms.remove(base)
     forms.insert(0, base)
-    scene = scene_span(problem, duration, y0, params)
+    dae = base.kind == "dae"   # a DAE reference: its consistent start, its index-1 form
+    scene = scene_span(problem, duration, base.y0 if dae else y0, params,
+                       rhs=base.rhs if dae else None)
     span = (scene.t0, scene.t_end)
     te = np.linspace(span[0], span[1], samples)
     ref, ref_error = _reference(forms, span, te, _scaled(budget, 10))
+    if only_reference:
+        forms = forms[1:]
     if models is not None:  # the reference motion comes from forms[0], charted if asked
         forms = [f for f in forms if f.model.name in models]
         skipped = {k: v for k, v in skipped.items() if k in models}
-    units = {work_conjugate_unit(problem.reaction_info()[u.name].dimension)
-             for f in forms if f.constrained for u in f.constrained.constraints.multipliers
-             if u.name in problem.reaction_info()}
+    units = {_drift_unit(problem, f.constrained.constraints, k)
+             for f in forms if f.constrained for k in range(f.constrained.k)}
     wp = WorkPrecision(problem.name, problem.title, span, scene.reason, samples, ref_error,
                        ", ".join(sorted(units)) or "-", skipped=skipped,
                        scene=scene_text(problem, params, y0), budget=str(budget))
@@ -385,7 +433,7 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
     for f in forms:
         for m in f.methods(methods):
             if m == "midpoint":
-                if f.kind == "ode" and f.energy is not None:
+                if f.kind == "ode" and f.energy is not None and not f.not_free_flow:
                     jobs += [(f, m, (span[1] - span[0]) / s) for s in steps]
             else:
                 jobs += [(f, m, tol) for tol in tolerances]
