@@ -179,3 +179,20 @@ def test_a_coordinate_the_declarations_do_not_move_is_refused():
     p = get("copying_machine")
     with pytest.raises(ModelError, match="moves no declared body"):
         kane_equations(declarations_of(p.model("newton_euler")))
+
+
+def test_a_reaction_outvoted_only_by_a_model_and_its_referee_leaves_no_majority():
+    """The teacher's rolling disk with Lagrange's multiplier taken with the opposite sign
+    (tests/corpus/teacher_mistakes/rolling_down_incline_mistakes.py): the motion agrees, the
+    friction F differs, and `newton_euler` is backed only by its own referee -- so no side is
+    a majority, and the verdict never sets a model against itself."""
+    from dualmech import problems
+    from dualmech.verify.check import compare
+    path = (Path(__file__).resolve().parent / "corpus" / "teacher_mistakes"
+            / "rolling_down_incline_mistakes.py")
+    c = compare(problems.load(f"{path}:MultiplierSignReversed"))
+    j = c.judgement
+    assert not j.equivalent and not j.faults and [r.name for r in j.reaction_faults] == ["F"]
+    assert j.majority == () and set(j.odd) >= {"newton_euler", "lagrange"}
+    summary = j.summary()
+    assert "disagree with" not in summary and "share declarations" in summary, summary

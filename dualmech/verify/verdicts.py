@@ -128,7 +128,8 @@ class Judgement:
         lines += [n for n in self.notes if n not in lines]
         for r in self.reaction_faults:
             if r.agreeing:
-                lines.append(f"reaction {r.name}: {_names(r.suspects)} differ from "
+                lines.append(f"reaction {r.name}: {_names(r.suspects)} "
+                             f"{'differs' if len(r.suspects) == 1 else 'differ'} from "
                              f"{_names(r.agreeing)}")
             else:
                 lines.append(f"reaction {r.name}: {_names(r.suspects)} give different values")
@@ -441,6 +442,8 @@ def _weigh(groups, faults, rfaults, odd: list, majority: tuple, referees: Mappin
             r.suspects = tuple(directs) + r.suspects
             r.agreeing = ()
             odd = list(dict.fromkeys(odd + directs))
+    if any(m in odd for m in majority):   # the outvote above did not count: no majority
+        majority = ()
     if majority:
         shared = [d for r, d in referees.items() if r in majority and d in majority]
         independent = len(majority) - len(shared)
