@@ -149,3 +149,25 @@ def test_list_a_file_names_its_problems_as_the_other_commands_take_them(capsys):
         assert f"{path}:{cls} " in out
     assert main(["list", str(CORPUS / "no_such_problem.py")]) == 2
     assert "no problem file" in capsys.readouterr().err
+
+
+def test_simulate_warns_where_the_run_leaves_the_declared_scene(capsys):
+    """The disk rolling down the incline from the default state (x0 = 60 % into its range
+    (-1, 1) = 0.2, at rest) speeds up at x'' = (2/3) g sin(alpha) (by hand, the docstring of
+    the problem file): it passes x = 1, the end of its declared range, at
+    t = sqrt(2 (1 - 0.2) / x'') -- the run says so, at the first sample past that time, in the
+    text and the JSON, and the simple pendulum, which stays in its scene, says nothing."""
+    import json
+    import math
+    path = CORPUS / "rolling_down_incline.py"
+    assert main(["simulate", str(path), "--duration", "5"]) == 0
+    err = capsys.readouterr().err
+    assert "warning: x leaves its declared range [-1, 1]" in err
+    assert main(["simulate", str(path), "--duration", "5", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    (what,) = doc["left_declared"]
+    when = float(what.split("at t = ")[1].split(" s")[0])
+    by_hand = math.sqrt(2 * 0.8 / (2 / 3 * 9.81 * math.sin(0.3)))
+    assert by_hand < when <= by_hand + 5 / 400 + 1e-9
+    assert main(["simulate", "simple_pendulum", "--duration", "5"]) == 0
+    assert "warning" not in capsys.readouterr().err

@@ -20,7 +20,10 @@ reaches the problem's declared singular set (:attr:`Problem.singular
 The text (or ``--json``) gives the parameters, the state order (coordinates, then their
 rates), the initial and final states, the method that ran and ``cpu_seconds``: the CPU time of
 the integration alone (deriving, generating and compiling the code come before the clock
-starts).  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
+starts).  A run that leaves the scene the problem declares -- a coordinate's ``domain``, a
+length's range, a rate's declared direction (a rate range that excludes zero, as a sliding
+phase's friction needs) -- is warned about on stderr, and ``left_declared`` in the JSON says
+where (:func:`~dualmech.numeric.contacts.left_declared`).  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
 (a singular mass matrix, the declared singular set, too much work), 2 a usage error or a
 problem that cannot be built.
 
@@ -173,6 +176,7 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
     from dualmech.numeric.cvode import CVODE_METHODS, integrate
     from dualmech.numeric.simulation import default_initial_state, problem_parameters
 
+    from dualmech.numeric.contacts import left_declared
     from dualmech.numeric.inputs import describe, input_functions
     values = problem_parameters(problem, params)
     drive = input_functions(problem, inputs, (0.0, duration), values)
@@ -180,7 +184,8 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
     model = NumericModel(ref, values, inputs=drive)
     q0, qd0 = default_initial_state(problem)
     y0 = [float(v) for v in q0 + qd0]
-    t_eval = np.linspace(0.0, duration, samples) if samples else None
+    # the samples (401 by default) also show where the run leaves the declared scene
+    t_eval = np.linspace(0.0, duration, samples or 401)
     names = [q.func.__name__ for q in ref.coordinates]
     out = {"name": problem.name,
            "parameters": {s.name: float(v) for s, v in values.items()},
@@ -188,7 +193,8 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
            "initial_state": y0, "final_state": None, "t_final": None, "duration": duration,
            "method": method, "cpu_seconds": None, "steps": None, "rhs_evaluations": None,
            "rtol": rtol, "atol": atol, "success": False, "message": "", "fallback": None,
-           "inputs": describe(problem, inputs), "inputs_in_python": model.inputs_in_python}
+           "inputs": describe(problem, inputs), "inputs_in_python": model.inputs_in_python,
+           "left_declared": []}
     try:
         run = integrate(model, (0.0, duration), y0, t_eval=t_eval, rtol=rtol, atol=atol,
                         method=method, singular=problem.singular)
@@ -203,6 +209,8 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
                 "success": bool(run.success), "message": run.message})
     if run.message.startswith("fallback: "):
         out["fallback"] = run.message[len("fallback: "):].split("; used scipy")[0]
+    if run.t.size:
+        out["left_declared"] = left_declared(problem, ref, run.t, run.y)
     if samples:
         out["samples"] = {"t": run.t.tolist(), "states": run.y.T.tolist()}
     return out
@@ -234,6 +242,9 @@ def _simulate(args) -> int:
     status = OK if result["final_state"] is not None else STOPPED
     if status != OK:
         print(f"dualmech simulate: stopped early: {result['message']}", file=sys.stderr)
+    for what in result["left_declared"]:
+        print(f"dualmech simulate: warning: {what}, where the problem's model stops "
+              "describing its declared scene", file=sys.stderr)
     if args.json:
         print(json.dumps(result, indent=1))
         return status

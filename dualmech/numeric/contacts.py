@@ -36,7 +36,7 @@ from dualmech.numeric.model import NumericModel, SingularityError
 from dualmech.numeric.simulation import default_initial_state, direct_models, problem_parameters
 
 __all__ = ["ContactBreak", "ContactReport", "unilateral_of", "watch",
-           "scene_span", "SceneSpan"]
+           "scene_span", "SceneSpan", "left_declared"]
 
 
 def unilateral_of(problem) -> dict:
@@ -200,6 +200,41 @@ def _range_events(problem, ref, values) -> list:
                        + (f" ({info.description})" if info.description else ""))
             events.append(ev)
     return events
+
+
+def left_declared(problem, ref, t, Y) -> list[str]:
+    """Where a run (sample times ``t``, states in the columns of ``Y``) leaves what the
+    problem declares about its scene, each a sentence with the first time: a coordinate's
+    ``domain``, a length's range, and a rate whose declared range excludes zero (a declared
+    direction: a sliding phase's friction is written for it).  Empty when it never does.
+
+    >>> import numpy as np
+    >>> from dualmech.problems import load
+    >>> p = load("simple_pendulum")
+    >>> left_declared(p, p.model(p.reference), np.array([0.0, 1.0]), np.zeros((2, 2)))
+    []
+    """
+    out = []
+    n = ref.n
+    for i, q in enumerate(ref.coordinates):
+        info = problem.coordinate_info(q)
+        checks = []
+        domain = getattr(info, "domain", None)
+        if domain is not None:
+            checks.append((Y[i], tuple(float(v) for v in domain), "declared domain", info.name))
+        elif info.dimension != ANGLE and reduce(info.dimension):
+            checks.append((Y[i], tuple(float(v) for v in info.range), "declared range",
+                           info.name))
+        lo, hi = (float(v) for v in info.rate_range)
+        if lo > 0 or hi < 0:
+            checks.append((Y[n + i], (lo, hi), "declared rate range (a declared direction)",
+                           info.name + "'"))
+        for values, (lo, hi), what, name in checks:
+            off = np.flatnonzero((values < lo) | (values > hi))
+            if off.size:
+                out.append(f"{name} leaves its {what} [{lo:g}, {hi:g}] at t = "
+                           f"{float(t[off[0]]):.4g} s")
+    return out
 
 
 def scene_span(problem, duration: float, y0=None, params: Mapping | None = None,
