@@ -184,8 +184,7 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
     model = NumericModel(ref, values, inputs=drive)
     q0, qd0 = default_initial_state(problem)
     y0 = [float(v) for v in q0 + qd0]
-    # the samples (401 by default) also show where the run leaves the declared scene
-    t_eval = np.linspace(0.0, duration, samples or 401)
+    t_eval = np.linspace(0.0, duration, samples) if samples else None
     names = [q.func.__name__ for q in ref.coordinates]
     out = {"name": problem.name,
            "parameters": {s.name: float(v) for s, v in values.items()},
@@ -209,8 +208,14 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
                 "success": bool(run.success), "message": run.message})
     if run.message.startswith("fallback: "):
         out["fallback"] = run.message[len("fallback: "):].split("; used scipy")[0]
-    if run.t.size:
-        out["left_declared"] = left_declared(problem, ref, run.t, run.y)
+    seen = run
+    if t_eval is None and run.t.size and run.t[-1] > 0:   # the run again, sampled: where it goes
+        seen = integrate(model, (0.0, float(run.t[-1])), y0,
+                         t_eval=np.linspace(0.0, float(run.t[-1]), 401), rtol=rtol,
+                         atol=atol, method=run.method if run.method in CVODE_METHODS
+                         else method, singular=problem.singular)
+    if seen.t.size:
+        out["left_declared"] = left_declared(problem, ref, seen.t, seen.y)
     if samples:
         out["samples"] = {"t": run.t.tolist(), "states": run.y.T.tolist()}
     return out
