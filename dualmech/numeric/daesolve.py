@@ -70,6 +70,8 @@ DAE_METHODS = ("IDA",)
 ROUTES = ("auto", "C", "Python")
 #: The ``atol`` that takes a component out of IDA's error test (its weight ~ 1e-30).
 _EXCLUDED = 1e30
+#: The square root of the unit round-off: the relative size of a difference quotient's step.
+_SRUR = float(np.sqrt(np.finfo(float).eps))
 
 
 class IDASolver:
@@ -146,6 +148,15 @@ class IDASolver:
         elif self.form == "index1":  # the acceleration-level rows of the index-1 system
             res[2 * n:] = A[n:, :n] @ yp[n:2 * n] + A[n:, n:] @ lam - b[n:]
 
+    def typical(self, y: np.ndarray, tol: np.ndarray, rtol: float) -> np.ndarray:
+        """Each component's typical size, the scale of the Jacobian's difference quotients:
+        ``atol / rtol`` for a component in the error test (its range, as the charts set
+        ``atol``), else the start's magnitude (at least 1: a multiplier may start at 0)."""
+        typ = np.maximum(np.abs(y), 1.0)
+        tested = (tol < _EXCLUDED) & (tol > 0)
+        typ[tested] = tol[tested] / rtol
+        return typ
+
     def initial(self, time: float, y0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """A consistent ``(y, y')`` from ``y0 = [q, v]`` (projected onto the manifold)."""
         n = self.n
@@ -207,8 +218,9 @@ class IDASolver:
         if tout.size:
             differential = np.ones(self.size)
             differential[2 * n:] = 0.0
-            out = ida.run_compiled(self._compiled, t0, y, yp, tol, differential, tout,
-                                   2 * n, rtol, max_steps, budget)
+            out = ida.run_compiled(self._compiled, t0, y, yp, tol, differential,
+                                   self.typical(y, tol, rtol), tout, 2 * n, rtol, max_steps,
+                                   budget)
         ys = np.concatenate([np.tile(y[:2 * n, None], (1, int(first.sum()))), out["y"]],
                             axis=1)
         m = ys.shape[1]
@@ -224,8 +236,20 @@ class IDASolver:
         n = self.n
         self.calls = 0
         self._meter = _Meter(budget)
+        typical = self.typical(y, tol, rtol)
+
+        def jacobian(t, yv, ypv, res, cj, JJ):  # the C route's quotients (ida_driver.dm_J)
+            f, yv, ypv = np.empty(self.size), yv.copy(), ypv.copy()
+            for j in range(self.size):
+                yj, vj = yv[j], ypv[j]
+                inc = (yj + _SRUR * max(abs(yj), typical[j])) - yj
+                yv[j], ypv[j] = yj + inc, vj + cj * inc
+                self.residual(t, yv, ypv, f)
+                yv[j], ypv[j] = yj, vj
+                JJ[:, j] = (f - res) / inc
+
         solver = sun.ida.IDA(self.residual, rtol=rtol, atol=tol, max_num_steps=max_steps,
-                             algebraic_idx=list(range(2 * n, self.size)))
+                             algebraic_idx=list(range(2 * n, self.size)), jacfn=jacobian)
         ys, k, steps, ok, message, njev = [], 0, 0, True, "IDA", 0
         try:
             while k < t_eval.size and t_eval[k] <= t0:

@@ -234,21 +234,26 @@ def _open(path, key: str):
 
 
 def run_compiled(res: CompiledResidual, t0: float, y: np.ndarray, yp: np.ndarray,
-                 atol: np.ndarray, differential: np.ndarray, tout: np.ndarray, nkeep: int,
-                 rtol: float, max_steps: int, budget: WorkBudget | None) -> dict:
+                 atol: np.ndarray, differential: np.ndarray, typical: np.ndarray,
+                 tout: np.ndarray, nkeep: int, rtol: float, max_steps: int,
+                 budget: WorkBudget | None) -> dict:
     """IDA from the consistent ``(y, yp)`` at ``t0`` through the times ``tout`` (beyond
     ``t0``, in order), in C; the first ``nkeep`` components of each state are kept.
 
-    ``atol`` and ``differential`` (1 differential, 0 algebraic) are per component.  Returns
+    ``atol``, ``differential`` (1 differential, 0 algebraic) and ``typical`` (each
+    component's typical size: the Jacobian's difference quotients perturb it by
+    ``sqrt(eps) max(|y_j|, typical_j)``) are per component.  Returns
     ``{"y": (nkeep, reached), "steps", "calls", "jacobians", "setups", "cpu", "ok",
     "message", "t_end"}``; a run past ``budget`` ends with ``ok`` false and a message that
     opens with :data:`~dualmech.numeric.integrators.DID_NOT_FINISH`.
     """
     run_c = driver()
     size = res.size
-    arrays = [np.ascontiguousarray(a, dtype=float) for a in (y, yp, atol, differential)]
-    if any(a.shape != (size,) for a in arrays):
-        raise ValueError(f"`y`, `yp`, `atol` and `differential` must hold {size} numbers.")
+    arrays = [np.ascontiguousarray(a, dtype=float)
+              for a in (y, yp, atol, differential, typical)]
+    if any(a.shape != (size,) for a in arrays) or not arrays[-1].min() > 0:
+        raise ValueError(f"`y`, `yp`, `atol`, `differential` and `typical` (positive) must "
+                         f"hold {size} numbers.")
     tout = np.ascontiguousarray(tout, dtype=float)
     yout = np.zeros((tout.size, nkeep))
     stats = np.zeros(6, dtype=np.int64 if ctypes.sizeof(ctypes.c_long) == 8 else np.int32)

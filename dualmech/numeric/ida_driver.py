@@ -33,7 +33,7 @@ from dualmech.numeric.cvode_driver import (_DECLARATIONS, MAJOR, CvodeUnavailabl
 __all__ = ["IdaUnavailable", "driver", "driver_source", "ida_library"]
 
 #: Bumped whenever the driver's C source changes meaning (part of the library's key).
-DRIVER_VERSION = "1"
+DRIVER_VERSION = "2"
 #: ``stats`` entries the driver writes (see ``dm_ida`` below).
 STATS = ("outputs", "steps", "calls", "jacobians", "setups", "over")
 
@@ -46,6 +46,11 @@ class IdaUnavailable(RuntimeError):
 # vector, matrix and linear-solver functions come from the CVODE driver's declarations).
 _IDA_DECLARATIONS = r"""
 typedef int (*IDAResFn)(sunrealtype tt, N_Vector yy, N_Vector yp, N_Vector rr, void *user_data);
+typedef int (*IDALsJacFn)(sunrealtype tt, sunrealtype c_j, N_Vector yy, N_Vector yp,
+                          N_Vector r, SUNMatrix Jac, void *user_data, N_Vector tmp1,
+                          N_Vector tmp2, N_Vector tmp3);
+sunrealtype *SUNDenseMatrix_Column(SUNMatrix A, sunindextype j);
+int IDASetJacFn(void *ida_mem, IDALsJacFn jac);
 #define IDA_NORMAL 1
 #define IDA_TSTOP_RETURN 1
 void *IDACreate(SUNContext sunctx);
@@ -73,7 +78,7 @@ typedef int (*dm_res_fn)(double t, const double *y, const double *yp, double *re
 
 typedef struct {
     dm_res_fn res; const double *p, *k; long calls, max_calls; double max_cpu;
-    clock_t start; int over; double t_over;
+    clock_t start; int over; double t_over; long n; const double *typical;
 } dm_dae;
 
 static int dm_F(sunrealtype t, N_Vector y, N_Vector yp, N_Vector rr, void *user)
@@ -90,24 +95,49 @@ static int dm_F(sunrealtype t, N_Vector y, N_Vector yp, N_Vector rr, void *user)
                   d->p, d->k) == 0 ? 0 : 1;
 }
 
+/* The Jacobian dF/dy + cj dF/dy' by difference quotients, column j perturbed by
+   sqrt(eps) max(|y_j|, typical_j): IDA's own quotient perturbs by at least 1/ewt_j, which for
+   a component left out of the error test (atol ~ 1e30) is ~1e30 -- a useless column wherever
+   F is not linear in that component (the index-2 velocities in b(q, v)). */
+static int dm_J(sunrealtype t, sunrealtype cj, N_Vector yy, N_Vector yp, N_Vector rr,
+                SUNMatrix JJ, void *user, N_Vector f, N_Vector t2, N_Vector t3)
+{
+    dm_dae *d = (dm_dae *)user;
+    double *y = N_VGetArrayPointer(yy), *v = N_VGetArrayPointer(yp);
+    const double *r = N_VGetArrayPointer(rr), *fv = N_VGetArrayPointer(f);
+    const double srur = 1.4901161193847656e-08;  /* sqrt(DBL_EPSILON) */
+    (void)t2; (void)t3;
+    for (long j = 0; j < d->n; j++) {
+        double yj = y[j], vj = v[j], big = fabs(yj) > d->typical[j] ? fabs(yj) : d->typical[j];
+        double inc = (yj + srur * big) - yj;  /* exactly representable */
+        y[j] = yj + inc; v[j] = vj + cj * inc;
+        int status = dm_F(t, yy, yp, f, user);
+        y[j] = yj; v[j] = vj;
+        if (status != 0) return status;
+        double *col = SUNDenseMatrix_Column(JJ, (sunindextype)j);
+        for (long i = 0; i < d->n; i++) col[i] = (fv[i] - r[i]) / inc;
+    }
+    return 0;
+}
+
 const char dm_key[] = DM_KEY;
 
 /* Integrate the n residuals from the consistent (y0, yp0) at t0 through the nout times tout
    (beyond t0, in order), writing the first nkeep components of each state into yout
    (nout x nkeep).  atol: absolute tolerances (n); id: 1 differential, 0 algebraic
-   component.  max_steps per output interval; max_calls (> 0) and max_cpu (> 0, seconds)
+   component; typical: each component's typical size (> 0, the Jacobian's perturbations).  max_steps per output interval; max_calls (> 0) and max_cpu (> 0, seconds)
    bound the run.  stats: outputs written, steps, residual calls, Jacobians, linear-solver
    setups, over budget (1 calls, 2 CPU; at *t_over).  Returns 0, an IDA flag (< 0; its name in
    msg) or -1000 when SUNDIALS could not allocate. */
 int dm_ida(dm_res_fn res, const double *p, const double *k, long n, double t0,
            const double *y0, const double *yp0, const double *atol, const double *id,
-           long nout, const double *tout, long nkeep, double *yout, double rtol,
+           const double *typical, long nout, const double *tout, long nkeep, double *yout, double rtol,
            long max_steps, long max_calls, double max_cpu, long *stats, double *t_reached,
            double *t_over, char *msg, long msglen)
 {
     SUNContext ctx = NULL; void *mem = NULL; SUNMatrix A = NULL; SUNLinearSolver LS = NULL;
     N_Vector y = NULL, yp = NULL, av = NULL, iv = NULL;
-    dm_dae d = {res, p, k, 0, max_calls, max_cpu, clock(), 0, t0};
+    dm_dae d = {res, p, k, 0, max_calls, max_cpu, clock(), 0, t0, n, typical};
     long i = 0;
     double tret = t0;
     int flag = -1000;
@@ -132,6 +162,7 @@ int dm_ida(dm_res_fn res, const double *p, const double *k, long n, double t0,
     if ((flag = IDASetUserData(mem, &d)) < 0) goto done;
     if ((flag = IDASVtolerances(mem, rtol, av)) < 0) goto done;
     if ((flag = IDASetLinearSolver(mem, LS, A)) < 0) goto done;
+    if ((flag = IDASetJacFn(mem, dm_J)) < 0) goto done;
     if ((flag = IDASetMaxNumSteps(mem, max_steps)) < 0) goto done;
     if ((flag = IDASetStopTime(mem, tout[nout - 1])) < 0) goto done;
     if ((flag = IDASetId(mem, iv)) < 0) goto done;
@@ -175,6 +206,7 @@ def driver_source(index_type: str, key: str = "") -> str:
     head = (f"/* dualmech IDA driver {DRIVER_VERSION}: SUNDIALS {MAJOR} declarations, "
             "then the driver. */\n#include <stdint.h>\n#include <stdio.h>\n"
             "#include <stdlib.h>\n#include <string.h>\n#include <time.h>\n"
+            "#include <math.h>\n"
             f"#define DM_INDEX {index_type}\n#define DM_KEY \"{key}\"\n")
     return head + _DECLARATIONS + _IDA_DECLARATIONS + _DRIVER
 
@@ -232,6 +264,6 @@ def _open(lib: Path, key: str):
     fn = dll.dm_ida
     fn.restype = ctypes.c_int
     P, L, D = ctypes.c_void_p, ctypes.c_long, ctypes.c_double
-    fn.argtypes = [P, P, P, L, D, P, P, P, P, L, P, L, P, D, L, L, D, P, P, P,
+    fn.argtypes = [P, P, P, L, D, P, P, P, P, P, L, P, L, P, D, L, L, D, P, P, P,
                    ctypes.c_char_p, L]
     return fn
