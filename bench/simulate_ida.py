@@ -13,14 +13,17 @@ included, the C code compiled and loaded before the clock starts):
 
 Scenes: the Cartesian pendulum (GGL, rtol 1e-8), the four-bar linkage (GGL, rtol 1e-8), and
 the two chart points issue 27 found slow: ``two_rod_linkage``'s GGL form at rtol 1e-9 and
-``cart_pendulum``'s index-3 form at rtol 1e-3.  Prints each route's CPU seconds, steps and
+``cart_pendulum``'s index-3 form at rtol 1e-3 (both routes perturb the Jacobian's
+difference quotients by each component's size, the cure of that point's stall: the ratio
+is the residual's cost alone).  Prints each route's CPU seconds, steps and
 residual calls, the ratio Python / C, and the largest difference between the routes' samples
 in units of each component's range (the routes must agree to within their tolerance, or the
 timing compares different work; index 3 branches on round-off, see tests/test_ida.py).
-A run past ``--budget`` CPU seconds is a *did not finish* run and says so.
+A run past ``--budget`` CPU seconds (default 20, a chart point's) is a *did not finish*
+run and says so.
 
-A script, not a test: ``python bench/simulate_ida.py`` (``--rounds N``, default 5; the
-chart points run ``min(N, 1)`` round on the Python route when it takes more than 20 s).
+A script, not a test: ``python bench/simulate_ida.py`` (``--rounds N``, default 5; a
+route stops repeating after a run that failed or took more than 20 s).
 """
 from __future__ import annotations
 
@@ -64,8 +67,8 @@ def timed(f, form: str, route: str, te, rtol: float, rounds: int, budget: WorkBu
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--rounds", type=int, default=5)
-    ap.add_argument("--budget", type=float, default=300.0,
-                    help="CPU seconds one run may spend (default 300)")
+    ap.add_argument("--budget", type=float, default=20.0,
+                    help="CPU seconds one run may spend (default 20, as `dualmech chart`)")
     args = ap.parse_args()
     budget = WorkBudget(seconds=args.budget)
     print(f"{'scene':<34} {'route':<7} {'CPU s':>9} {'steps':>7} {'calls':>8}  ok")

@@ -223,3 +223,20 @@ def test_index3_cart_pendulum_at_rtol_1e3_takes_a_hundred_steps_not_fifty_thousa
     assert run.steps < 1000 and run.jacobians < 100, (run.steps, run.jacobians)
     g, _ = f.constrained.residuals(run.y[: f.n], run.y[f.n:])
     assert np.abs(g).max() <= 1e-2   # the position constraints, held at every step
+
+
+def test_a_stall_at_a_singular_configuration_of_the_loop_is_named():
+    """two_rod_linkage's GGL form at rtol 1e-9: the motion passes a configuration where the
+    constraint gradients are dependent (their smallest singular value falls from 0.14 at
+    t = 0.15 s to 2.6e-3 at 0.225 s along the minimal-coordinate reference), where the DAE
+    in maximal coordinates is singular: IDA crawls there; the failure says so.  (The
+    Python route crawls there too, until its budget ends it as did not finish.)"""
+    forms, _ = formulations(get("two_rod_linkage"), stabilisations=("ggl",))
+    (f,) = [f for f in forms if f.dae_solver is not None]
+    te = np.linspace(0.0, 5.0, 101)
+    run = IDASolver(f.constrained, "ggl", route="C").run(
+        (0.0, 5.0), f.y0, te, rtol=1e-9, atol=1e-9 * f.scales, max_steps=2000,
+        budget=WorkBudget(seconds=20))
+    assert not run.success
+    assert "singular configuration of the loop" in run.message, run.message
+    assert 0.2 <= float(run.message.split("t=")[1].split(":")[0]) <= 0.25, run.message

@@ -58,7 +58,8 @@ import numpy as np
 from dualmech.model.equations import ModelError
 from dualmech.numeric import ida
 from dualmech.numeric.ida import IDA_FORMS, IdaUnavailable
-from dualmech.numeric.integrators import WorkBudget, BudgetExceeded, Run, _Meter
+from dualmech.numeric.integrators import (DID_NOT_FINISH, BudgetExceeded, Run, WorkBudget,
+                                          _Meter)
 
 __all__ = ["DAE_FORMS", "DAE_METHODS", "IDA_FORMS", "IDASolver", "ROUTES"]
 
@@ -70,6 +71,10 @@ DAE_METHODS = ("IDA",)
 ROUTES = ("auto", "C", "Python")
 #: The ``atol`` that takes a component out of IDA's error test (its weight ~ 1e-30).
 _EXCLUDED = 1e30
+#: A failed run's end is called nearly singular when the constraint gradients' smallest
+#: singular value is below this fraction of the largest (the two-rod linkage's GGL form
+#: stalls at rtol 1e-9 where it is 1.5e-3, passing a singular configuration of its loop).
+NEAR_SINGULAR = 1e-2
 #: The square root of the unit round-off: the relative size of a difference quotient's step.
 _SRUR = float(np.sqrt(np.finfo(float).eps))
 
@@ -157,6 +162,21 @@ class IDASolver:
         typ[tested] = tol[tested] / rtol
         return typ
 
+    def _near_singular(self, q: np.ndarray) -> str:
+        """A clause naming a nearly singular configuration of the loop at ``q`` (the
+        constraint gradients' smallest singular value below :data:`NEAR_SINGULAR` of the
+        largest), where the maximal-coordinate DAE is singular; else ``""``."""
+        try:
+            s = np.linalg.svd(self.cm.gradient(q), compute_uv=False)
+        except (ValueError, np.linalg.LinAlgError):
+            return ""
+        if not (s.size and np.isfinite(s).all() and s[-1] < NEAR_SINGULAR * s[0]):
+            return ""
+        return (f"; the constraint gradients are nearly dependent there (smallest singular "
+                f"value {s[-1]:.3g}, largest {s[0]:.3g}): a singular configuration of the "
+                "loop, where the DAE in maximal coordinates is singular -- integrate the "
+                "minimal-coordinate model through it, or loosen the tolerance")
+
     def initial(self, time: float, y0: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """A consistent ``(y, y')`` from ``y0 = [q, v]`` (projected onto the manifold)."""
         n = self.n
@@ -224,8 +244,11 @@ class IDASolver:
         ys = np.concatenate([np.tile(y[:2 * n, None], (1, int(first.sum()))), out["y"]],
                             axis=1)
         m = ys.shape[1]
+        message = out["message"]
+        if not out["ok"] and not message.startswith(DID_NOT_FINISH):
+            message += self._near_singular(out["last"][:n])
         return Run(method="IDA", t=t_eval[:m].copy(), y=ys, success=out["ok"],
-                   message=out["message"], cpu=_time.process_time() - start,
+                   message=message, cpu=_time.process_time() - start,
                    calls=out["calls"], evaluations=out["calls"], steps=out["steps"],
                    jacobians=out["jacobians"], factorisations=out["jacobians"],
                    t_end=float(t_eval[m - 1]) if m else t0)
@@ -260,7 +283,8 @@ class IDASolver:
             while k < t_eval.size:
                 out = solver.step(t1, method="onestep", tstop=t1)
                 if not out.success:
-                    ok, message = False, f"IDA stopped at t={now:.6g}: {out.message}"
+                    ok, message = False, f"IDA stopped at t={now:.6g}: {out.message}" \
+                        + self._near_singular(np.asarray(out.y)[:n])
                     break
                 # after an interpolated sample IDA's next one-step call returns the step it
                 # had already taken: count the steps that advanced
@@ -271,7 +295,8 @@ class IDASolver:
                     ys.append(solver.step(t_eval[k]).y[:2 * n].copy())
                     k += 1
                 if steps >= max_steps:
-                    ok, message = False, f"more than {max_steps} steps"
+                    ok, message = False, f"IDA stopped at t={now:.6g}: more than " \
+                        f"{max_steps} steps" + self._near_singular(np.asarray(out.y)[:n])
                     break
         except BudgetExceeded as exc:
             ok, message = False, str(exc)

@@ -243,9 +243,10 @@ def run_compiled(res: CompiledResidual, t0: float, y: np.ndarray, yp: np.ndarray
     ``atol``, ``differential`` (1 differential, 0 algebraic) and ``typical`` (each
     component's typical size: the Jacobian's difference quotients perturb it by
     ``sqrt(eps) max(|y_j|, typical_j)``) are per component.  Returns
-    ``{"y": (nkeep, reached), "steps", "calls", "jacobians", "setups", "cpu", "ok",
-    "message", "t_end"}``; a run past ``budget`` ends with ``ok`` false and a message that
-    opens with :data:`~dualmech.numeric.integrators.DID_NOT_FINISH`.
+    ``{"y": (nkeep, reached), "last" (the state where it ended), "steps", "calls",
+    "jacobians", "setups", "cpu", "ok", "message", "t_end"}``; a run past ``budget`` ends
+    with ``ok`` false and a message that opens with
+    :data:`~dualmech.numeric.integrators.DID_NOT_FINISH`.
     """
     run_c = driver()
     size = res.size
@@ -259,13 +260,14 @@ def run_compiled(res: CompiledResidual, t0: float, y: np.ndarray, yp: np.ndarray
     stats = np.zeros(6, dtype=np.int64 if ctypes.sizeof(ctypes.c_long) == 8 else np.int32)
     reached, over_at = ctypes.c_double(t0), ctypes.c_double(t0)
     msg = ctypes.create_string_buffer(256)
+    last = np.array(arrays[0])
     b = budget or WorkBudget()
     start = _time.process_time()
     flag = run_c(res.address, res.p.ctypes.data, res.k.ctypes.data, size, float(t0),
                  *[a.ctypes.data for a in arrays], tout.size, tout.ctypes.data, nkeep,
                  yout.ctypes.data, float(rtol), int(max_steps), int(b.evaluations or 0),
                  float(b.seconds or 0.0), stats.ctypes.data, ctypes.byref(reached),
-                 ctypes.byref(over_at), msg, len(msg))
+                 ctypes.byref(over_at), msg, len(msg), last.ctypes.data)
     cpu = _time.process_time() - start
     done, calls = int(stats[0]), int(stats[2])
     if stats[5] == 1:
@@ -278,7 +280,7 @@ def run_compiled(res: CompiledResidual, t0: float, y: np.ndarray, yp: np.ndarray
         message = f"IDA stopped at t={reached.value:.6g}: {msg.value.decode()}"
     else:
         message = "IDA (compiled residual)"
-    return {"y": yout[:done].T, "steps": int(stats[1]), "calls": calls,
+    return {"y": yout[:done].T, "last": last, "steps": int(stats[1]), "calls": calls,
             "jacobians": int(stats[3]), "setups": int(stats[4]), "cpu": cpu,
             "ok": flag == 0 and done == tout.size, "message": message,
             "t_end": float(reached.value)}

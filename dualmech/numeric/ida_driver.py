@@ -33,7 +33,7 @@ from dualmech.numeric.cvode_driver import (_DECLARATIONS, MAJOR, CvodeUnavailabl
 __all__ = ["IdaUnavailable", "driver", "driver_source", "ida_library"]
 
 #: Bumped whenever the driver's C source changes meaning (part of the library's key).
-DRIVER_VERSION = "2"
+DRIVER_VERSION = "3"
 #: ``stats`` entries the driver writes (see ``dm_ida`` below).
 STATS = ("outputs", "steps", "calls", "jacobians", "setups", "over")
 
@@ -125,15 +125,18 @@ const char dm_key[] = DM_KEY;
 /* Integrate the n residuals from the consistent (y0, yp0) at t0 through the nout times tout
    (beyond t0, in order), writing the first nkeep components of each state into yout
    (nout x nkeep).  atol: absolute tolerances (n); id: 1 differential, 0 algebraic
-   component; typical: each component's typical size (> 0, the Jacobian's perturbations).  max_steps per output interval; max_calls (> 0) and max_cpu (> 0, seconds)
-   bound the run.  stats: outputs written, steps, residual calls, Jacobians, linear-solver
-   setups, over budget (1 calls, 2 CPU; at *t_over).  Returns 0, an IDA flag (< 0; its name in
+   component; typical: each component's typical size (> 0, the Jacobian's perturbations).
+   max_steps per output interval; max_calls (> 0) and max_cpu (> 0, seconds) bound the run.
+   stats: outputs written, steps, residual calls, Jacobians, linear-solver setups, over
+   budget (1 calls, 2 CPU; at *t_over); the state where the run ended (at *t_reached) into
+   ylast (n).  Returns 0, an IDA flag (< 0; its name in
    msg) or -1000 when SUNDIALS could not allocate. */
 int dm_ida(dm_res_fn res, const double *p, const double *k, long n, double t0,
            const double *y0, const double *yp0, const double *atol, const double *id,
-           const double *typical, long nout, const double *tout, long nkeep, double *yout, double rtol,
+           const double *typical, long nout, const double *tout, long nkeep, double *yout,
+           double rtol,
            long max_steps, long max_calls, double max_cpu, long *stats, double *t_reached,
-           double *t_over, char *msg, long msglen)
+           double *t_over, char *msg, long msglen, double *ylast)
 {
     SUNContext ctx = NULL; void *mem = NULL; SUNMatrix A = NULL; SUNLinearSolver LS = NULL;
     N_Vector y = NULL, yp = NULL, av = NULL, iv = NULL;
@@ -171,6 +174,7 @@ int dm_ida(dm_res_fn res, const double *p, const double *k, long n, double t0,
         if (flag < 0) break;
         memcpy(yout + i * nkeep, N_VGetArrayPointer(y), (size_t)nkeep * sizeof(double));
     }
+    memcpy(ylast, N_VGetArrayPointer(y), (size_t)n * sizeof(double));
     if (flag > 0) flag = 0;  /* IDA_TSTOP_RETURN at the end */
     IDAGetNumSteps(mem, &stats[1]);
     IDAGetNumJacEvals(mem, &stats[3]);
@@ -265,5 +269,5 @@ def _open(lib: Path, key: str):
     fn.restype = ctypes.c_int
     P, L, D = ctypes.c_void_p, ctypes.c_long, ctypes.c_double
     fn.argtypes = [P, P, P, L, D, P, P, P, P, P, L, P, L, P, D, L, L, D, P, P, P,
-                   ctypes.c_char_p, L]
+                   ctypes.c_char_p, L, P]
     return fn
