@@ -240,3 +240,13 @@ def test_a_stall_at_a_singular_configuration_of_the_loop_is_named():
     assert not run.success
     assert "singular configuration of the loop" in run.message, run.message
     assert 0.2 <= float(run.message.split("t=")[1].split(":")[0]) <= 0.25, run.message
+
+
+@pytest.mark.parametrize("route", ["C", "Python"])
+def test_a_non_finite_start_is_a_clear_failure(pendulum, route):
+    f = pendulum["ggl"]
+    solver = IDASolver(f.constrained, "ggl", route=route)
+    with pytest.raises(ValueError, match=r"`y0` must hold 4 finite numbers \(q then v\)"):
+        solver.run((0.0, 1.0), [np.nan, 0.5, 0.0, 0.0], [1.0], rtol=1e-8, atol=1e-10)
+    with pytest.raises(ValueError, match="`y0` must hold 4"):
+        solver.run((0.0, 1.0), [0.5, 0.0, 0.0], [1.0], rtol=1e-8, atol=1e-10)

@@ -75,6 +75,9 @@ _EXCLUDED = 1e30
 #: singular value is below this fraction of the largest (the two-rod linkage's GGL form
 #: stalls at rtol 1e-9 where it is 1.5e-3, passing a singular configuration of its loop).
 NEAR_SINGULAR = 1e-2
+#: What a model's evaluation raises at a state where it is not defined.
+_FAILURES = (ModelError, ValueError, ZeroDivisionError, FloatingPointError,
+             np.linalg.LinAlgError)
 #: The square root of the unit round-off: the relative size of a difference quotient's step.
 _SRUR = float(np.sqrt(np.finfo(float).eps))
 
@@ -196,14 +199,21 @@ class IDASolver:
         residual, and ``message`` begins with ``"fallback: "`` and the reason."""
         n = self.n
         t_eval = np.asarray(t_eval, dtype=float)
+        y0 = np.asarray(y0, dtype=float)
+        if y0.shape != (2 * n,) or not np.isfinite(y0).all():
+            raise ValueError(f"`y0` must hold {2 * n} finite numbers (q then v), got "
+                             f"{y0.tolist()}.")
         if self.route == "C" and self._compiled is None:  # built before the clock starts
             try:
-                self._compiled = ida.compiled_residual(self.cm, self.form,
-                                                       np.asarray(y0, dtype=float)[:n])
+                self._compiled = ida.compiled_residual(self.cm, self.form, y0[:n])
             except IdaUnavailable as exc:
                 if self._asked == "C":
                     raise
                 self.route, self.fallback = "Python", str(exc)
+            except _FAILURES as exc:  # the constraints are not defined at the start
+                return Run(method="IDA", t=t_eval[:0].copy(), y=np.empty((2 * n, 0)),
+                           success=False, message=f"IDA failed: {exc}", cpu=0.0, calls=0,
+                           evaluations=0, steps=0, t_end=float(t_span[0]))
         start = _time.process_time()
         tol = np.full(self.size, _EXCLUDED)
         tol[:2 * n] = np.broadcast_to(np.asarray(atol, dtype=float), (2 * n,))
@@ -212,8 +222,7 @@ class IDASolver:
         t0, t1 = float(t_span[0]), float(t_span[1])
         try:
             y, yp = self.initial(t0, y0)
-        except (ModelError, ValueError, ZeroDivisionError, FloatingPointError,
-                np.linalg.LinAlgError) as exc:
+        except _FAILURES as exc:
             return Run(method="IDA", t=t_eval[:0].copy(), y=np.empty((2 * n, 0)),
                        success=False, message=f"IDA failed: {exc}",
                        cpu=_time.process_time() - start, calls=0, evaluations=0, steps=0,
@@ -300,8 +309,7 @@ class IDASolver:
                     break
         except BudgetExceeded as exc:
             ok, message = False, str(exc)
-        except (ModelError, RuntimeError, ValueError, ZeroDivisionError, FloatingPointError,
-                np.linalg.LinAlgError) as exc:
+        except (RuntimeError,) + _FAILURES as exc:
             ok, message = False, f"IDA failed: {exc}"
         y_out = np.array(ys).T if ys else np.empty((2 * n, 0))
         return Run(method="IDA", t=t_eval[: len(ys)].copy(), y=y_out,
