@@ -86,9 +86,10 @@ class Formulation:
 
     @property
     def backend(self) -> str:
-        """Where its generated code runs: ``"C"`` or ``"NumPy"`` (IDA's residual: Python)."""
+        """Where its generated code runs: ``"C"`` or ``"NumPy"`` (IDA's residual: ``"C"``,
+        or ``"Python"`` on its fallback)."""
         if self.dae_solver is not None:
-            return "Python"
+            return self.dae_solver.route
         if self.numeric is None:
             return ""
         return "C" if self.numeric.compiled else "NumPy"
