@@ -146,16 +146,24 @@ def test_an_evaluation_budget_ends_the_run_as_did_not_finish():
     assert "121 states evaluated" in run.message and 0.0 < run.t_end < 10.0
 
 
-def test_the_index3_cart_pendulum_point_stops_within_its_cpu_budget():
-    """The issue's stall: 236 s of CPU at rtol 1e-3; with half a second it ends there."""
-    forms, _ = formulations(get("cart_pendulum"), stabilisations=("index3",))
+def test_the_index3_cart_pendulum_point_finishes_and_agrees_with_the_index1_form():
+    """The issue's stall (236 s of CPU at rtol 1e-3, then "more than 500000 steps") came from
+    IDA's Jacobian perturbing the components outside its error test by ~1e30; it now finishes
+    in a fraction of the chart's budget, and its position at the end agrees with the same
+    model's index-1 form under DOP853 at rtol 1e-10 to the accuracy rtol 1e-3 gives.  (A budget
+    that cuts a compiled IDA run is tested in tests/test_ida.py.)"""
+    problem = get("cart_pendulum")
+    forms, _ = formulations(problem, stabilisations=("index3",))
     (f,) = [f for f in forms if f.dae_solver is not None]
     te = np.linspace(0.0, 5.0, 51)
-    run = f.run("IDA", (0.0, 5.0), te, rtol=1e-3, budget=WorkBudget(seconds=0.5))
-    if run.success:
-        pytest.skip("IDA finished within half a second here; nothing to cut")
-    assert run.message.startswith(DID_NOT_FINISH), run.message
-    assert run.cpu < 0.5 + 0.5  # the budget plus one step's work and the set-up
+    run = f.run("IDA", (0.0, 5.0), te, rtol=1e-3, budget=WorkBudget(seconds=20.0))
+    assert run.success, run.message
+    assert run.cpu < 2.0
+    (ref_form,) = [g for g in formulations(problem, stabilisations=("none",))[0]
+                   if g.name == "lagrange_multipliers (DAE, index 1)"]
+    ref = ref_form.run("DOP853", (0.0, 5.0), te, rtol=1e-10)
+    n = ref_form.n
+    assert ref.success and np.max(np.abs(run.y[:n, -1] - ref.y[:n, -1])) < 0.05
 
 
 def test_a_budget_must_be_positive():
