@@ -29,7 +29,9 @@ __all__ = ["progress", "GuardedStdout"]
 T = TypeVar("T")
 
 
-def _is_tty(stream) -> bool:
+def is_tty(stream) -> bool:
+    """Is ``stream`` a terminal (where a progress bar redraws in place)?  A pipe or a log file
+    gets no bar: its carriage returns would pile up into one long line."""
     try:
         return bool(stream.isatty())
     except (AttributeError, ValueError):
@@ -50,7 +52,7 @@ def progress(items: Iterable[T], what: str, *, unit: str = "problem",
     if quiet or len(items) < 2:
         yield from items
         return
-    if _is_tty(stream):
+    if is_tty(stream):
         from tqdm import tqdm
         yield from tqdm(items, desc=what, unit=unit, file=stream, leave=False)
         return
@@ -105,7 +107,7 @@ class GuardedStdout(io.TextIOBase):
                 pass
 
     def isatty(self) -> bool:
-        return _is_tty(self._stream)
+        return is_tty(self._stream)
 
     def fileno(self) -> int:
         return self._stream.fileno()

@@ -115,3 +115,12 @@ def test_the_rule_is_in_the_help(capsys):
     assert "0 every problem charted, or not applicable" in text
     assert "nothing charted at all" in text
     assert CHART_EXIT_STATUS.startswith("Exit status: 0")
+
+
+def test_a_pipe_gets_no_progress_bar(capsys, tmp_path):
+    """stderr that is not a terminal (a pipe, a CI log) gets the per-problem lines, not tqdm's
+    carriage-return redraws piling up into one line hundreds of columns wide."""
+    from dualmech.cli.main import main
+    assert main(["chart", "simple_pendulum", "--quick", "--out", str(tmp_path)]) == 0
+    err = capsys.readouterr().err
+    assert "\r" not in err and "run/s" not in err, err[:300]

@@ -124,13 +124,15 @@ def _plain(x):
 def atlas(problem, sections: Sequence[str] = SECTIONS, progress: bool = True) -> Atlas:
     """Run the applicable ``sections`` (see the module docstring) for ``problem``."""
     from tqdm import tqdm
+
+    from dualmech.progress import is_tty
     unknown = [s for s in sections if s not in SECTIONS]
     if unknown:
         raise ValueError(f"unknown atlas sections {unknown}; choose from {SECTIONS}.")
     problem = driven_problem(problem)   # given inputs: their declared default histories
     out = Atlas(problem.name, problem.title)
     bar = tqdm(list(sections), desc=f"{problem.name}: atlas", unit="section",
-               file=sys.stderr, leave=False, disable=not progress)
+               file=sys.stderr, leave=False, disable=not progress or not is_tty(sys.stderr))
     for name in bar:
         bar.set_postfix_str(name)
         try:

@@ -391,6 +391,8 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
     budget = budget or WorkBudget()
     problem = driven_problem(problem)   # given inputs: their declared default histories
     from tqdm import tqdm
+
+    from dualmech.progress import is_tty
     asked = None if models is None else tuple(models) + (problem.reference,)
     forms, skipped = formulations(problem, params, y0, models=asked,
                                   stabilisations=stabilisations,
@@ -438,7 +440,7 @@ def work_precision(problem, *, duration: float = 5.0, tolerances: Sequence[float
             else:
                 jobs += [(f, m, tol) for tol in tolerances]
     bar = tqdm(jobs, desc=f"{problem.name}: work-precision", unit="run", file=sys.stderr,
-               leave=False, disable=not progress)
+               leave=False, disable=not progress or not is_tty(sys.stderr))
     spent: dict = {}   # curves whose looser tolerance already spent the whole budget
     for f, m, tol in bar:
         if (f.name, m) in spent and m != "midpoint" and tol < spent[f.name, m]:
