@@ -142,3 +142,17 @@ def test_check_solves_the_static_row_and_shows_y_theta_and_R_O():
     assert set(d["accelerations"]) == {"y"} and set(d["static"]) == {"theta"}
     assert set(d["reactions"]) == {"R_O"} and d["reactions_not_cross_checked"] == []
     assert "θ = L k₂ y/(L^2 k₂ + a^2 k₁)   (static row: no inertia in θ)" in str(c)
+
+
+def test_simulating_the_dae_as_an_ode_is_refused_saying_what_it_is(capsys):
+    """The reference model holds the massless bar's balance (no acceleration in the theta
+    row): ``simulate`` says it is a DAE and where it is integrated as one, instead of
+    reporting a singular state and telling the user to stay away from it."""
+    from dualmech import get, simulate
+    from dualmech.cli.main import main
+    from dualmech.numeric import SingularityError
+    with pytest.raises(SingularityError, match=r"static rows \(Lagrange, theta.*is a DAE"):
+        simulate(get("copying_machine"), t_span=(0, 1))
+    assert main(["simulate", "copying_machine"]) == 1
+    err = capsys.readouterr().err
+    assert "dualmech chart copying_machine" in err and "stay away" not in err

@@ -174,7 +174,8 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
 
     from dualmech.numeric import NumericModel, SingularityError
     from dualmech.numeric.cvode import CVODE_METHODS, integrate
-    from dualmech.numeric.simulation import default_initial_state, problem_parameters
+    from dualmech.numeric.simulation import (default_initial_state, problem_parameters,
+                                             refuse_static)
 
     from dualmech.numeric.contacts import left_declared
     from dualmech.numeric.inputs import describe, input_functions
@@ -195,6 +196,7 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
            "inputs": describe(problem, inputs), "inputs_in_python": model.inputs_in_python,
            "left_declared": []}
     try:
+        refuse_static(problem, ref)
         run = integrate(model, (0.0, duration), y0, t_eval=t_eval, rtol=rtol, atol=atol,
                         method=method, singular=problem.singular)
     except SingularityError as exc:  # a singular state, or the declared singular set

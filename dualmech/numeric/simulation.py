@@ -212,6 +212,7 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
     values = problem_parameters(problem, params, check_ranges=check_ranges)
     drive = input_functions(problem, inputs, (t0, t1), values)
     ref = problem.model(problem.reference)
+    refuse_static(problem, ref)
     model = NumericModel(ref, values, inputs=drive)
     n = ref.n
     if y0 is None:
@@ -235,6 +236,22 @@ def simulate(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
                       message=sol.message)
     traj.reactions = reactions_along(problem, traj, values, drive)
     return traj
+
+
+def refuse_static(problem, eqs) -> None:
+    """A reference model with static rows (a massless part's balance: no acceleration in the
+    row) is a DAE: its mass matrix is singular at every state, so it is not integrated as an
+    ODE -- say so, and where its motion is computed, instead of a singular state."""
+    fast = eqs.plain_matrix_se()
+    A = fast[0] if fast is not None else eqs.plain_matrix()[0]
+    static = [eqs.labels[i] if i < len(eqs.labels) else f"row {i + 1}" for i in range(A.rows)
+              if all(A[i, j] == 0 for j in range(A.cols))]
+    if static:
+        raise SingularityError(
+            f"the reference model `{eqs.name}` of `{problem.name}` holds static rows "
+            f"({'; '.join(static)}: a massless part's balance, with no acceleration), so it is "
+            "a DAE and is not integrated as an ODE; `dualmech chart "
+            f"{problem.name}` integrates it as the DAE it is (the projected DAE forms).")
 
 
 def direct_models(problem, square: bool = False):
