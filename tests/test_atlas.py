@@ -230,6 +230,7 @@ def test_dae_drift_per_stabilisation():
     assert d.unit == "m" and not d.stopped
 
 
+@pytest.mark.slow
 def test_two_formulations_of_a_chaotic_pendulum_part_later_at_tighter_tolerance():
     c = chaos(get("compound_double_pendulum"), y0=[2.0, 2.5, 0.0, 0.0], duration=9.0,
               tolerances=(1e-4, 1e-6))

@@ -49,6 +49,7 @@ def test_the_regular_toy_car_gets_no_chaos_verdict(toy):
     assert toy.exponents[-1] < toy.exponents[0] / 3
 
 
+@pytest.mark.slow
 def test_the_atlas_shows_one_exponent_with_its_window():
     a = atlas(get("compound_double_pendulum"), sections=("chaos",), progress=False)
     text = str(a)

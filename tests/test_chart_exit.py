@@ -117,6 +117,7 @@ def test_the_rule_is_in_the_help(capsys):
     assert CHART_EXIT_STATUS.startswith("Exit status: 0")
 
 
+@pytest.mark.slow
 def test_a_pipe_gets_no_progress_bar(capsys, tmp_path):
     """stderr that is not a terminal (a pipe, a CI log) gets the per-problem lines, not tqdm's
     carriage-return redraws piling up into one line hundreds of columns wide."""

@@ -194,6 +194,7 @@ def test_report_takes_a_course_catalogue_as_a_whole(capsys, course, tmp_path):
                                                                    "my_inverted"]
 
 
+@pytest.mark.slow
 def test_report_all_includes_the_course_packages_problems(capsys, course, tmp_path,
                                                           monkeypatch):
     monkeypatch.setattr(problems, "all_problems", lambda: [problems.get("simple_pendulum")])

@@ -66,6 +66,7 @@ def test_the_exact_geometry_is_the_tests_own_to_its_digits(ours):
                 float(SYMPY_TEST_VALUES[name]), abs=1e-15), name
 
 
+@pytest.mark.slow
 def test_sympys_bicycle_is_accepted_with_its_constraints_at_their_level(bridged, ours):
     _, W = ours
     assert set(bridged.coordinates) == {W.psi, W.phi, W.theta, W.delta, W.thetaR, W.thetaF}

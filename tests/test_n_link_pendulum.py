@@ -78,6 +78,7 @@ class _JointTwoFlipped(NLinkRigidPendulum):
         return ne.equations()
 
 
+@pytest.mark.slow
 def test_a_flipped_joint_force_in_the_direct_form_is_caught_naming_it():
     broken = compare(_JointTwoFlipped(3))
     assert all(p.equivalent for p in broken.pairs if p.kind == "motion")   # motion untouched

@@ -109,6 +109,7 @@ def test_velocity_level_rows_are_not_blamed_when_another_model_declares_the_mani
     assert c.equivalent, str(c)
 
 
+@pytest.mark.slow
 def test_without_the_manifold_the_velocity_rows_would_be_blamed(monkeypatch):
     """The point of sampling on the manifold: drawn freely, the correct velocity rows fail."""
     monkeypatch.setattr(sampling, "_declared_manifold", lambda systems, ctx: [])
@@ -120,6 +121,7 @@ def test_without_the_manifold_the_velocity_rows_would_be_blamed(monkeypatch):
     assert "[rolling O.x (velocity level)]" in str(c)
 
 
+@pytest.mark.slow
 def test_the_geometric_contact_point_is_caught_and_named():
     c = compare(GeometricDisk())
     assert not c.equivalent

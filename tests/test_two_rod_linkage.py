@@ -162,6 +162,7 @@ class _SpuriousRadial(TwoRodLinkage):
         return ne.equations()
 
 
+@pytest.mark.slow
 def test_spurious_radial_term_in_the_direct_form_is_caught_by_the_second_F_L():
     broken = compare(_SpuriousRadial())
     motion = [p for p in broken.pairs if p.kind == "motion"]
@@ -173,6 +174,7 @@ def test_spurious_radial_term_in_the_direct_form_is_caught_by_the_second_F_L():
     assert "DIFFERENT" in str(broken) and "all derivations agree" not in str(broken)
 
 
+@pytest.mark.slow
 def test_reaction_only_mismatch_is_explained_with_values_and_the_term():
     broken = compare(_SpuriousRadial())
     (pair,) = [p for p in broken.pairs if p.kind == "reactions"]
