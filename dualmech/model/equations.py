@@ -211,6 +211,38 @@ class Rows(Sequence):
         return (tuple, (self.materialise(),))
 
 
+def _linear_parts(e, unknown: list, us: set) -> tuple[list, object, list]:
+    """``(coefficients, rhs, nonlinear unknowns)`` of a row linear in ``unknown``: the
+    coefficient of ``u`` is ``d(row)/du``, ``rhs`` is minus the row with every unknown set to
+    zero.  A coefficient that still holds an unknown is looked at again on the expanded row
+    (``(u + x) (u + y) s - u**2 s`` is linear only once multiplied out); expansion is not the
+    first step, because it multiplies out products of sums (a bicycle's direct rows grow
+    tenfold and take seconds)."""
+    present = e.free_symbols & us
+    if not present:
+        return [se.Integer(0)] * len(unknown), -e, []
+    row = [e.diff(u) if u in present else se.Integer(0) for u in unknown]
+    if not any(a.free_symbols & us for a in row):
+        return row, -e.xreplace({u: se.Integer(0) for u in present}), []
+    e = e.expand()
+    buckets: dict = {}
+    rest = []
+    for term in (e.args if e.is_Add else (e,)):
+        hit = term.free_symbols & us
+        if not hit:
+            rest.append(term)
+        for u in hit:
+            buckets.setdefault(u, []).append(term)
+    row, bad = [], []
+    for u in unknown:
+        terms = buckets.get(u)
+        a = se.Add(*terms).diff(u) if terms else se.Integer(0)
+        if terms and a.free_symbols & us:
+            bad.append(u)
+        row.append(a)
+    return row, -se.Add(*rest), bad
+
+
 @refuse_text_in
 @dataclass(frozen=True, eq=False)
 class EquationSet:
@@ -364,24 +396,10 @@ class EquationSet:
         us = set(unknown)
         A, b, bad = [], [], []
         for e in exprs:
-            # expanded, each term holds at most one unknown (else it is not linear): the
-            # terms of an unknown, differentiated, are its coefficient; the others are -b
-            e = e.expand()
-            buckets: dict = {}
-            rest = []
-            for term in (e.args if e.is_Add else (e,)):
-                hit = term.free_symbols & us
-                if not hit:
-                    rest.append(term)
-                for u in hit:
-                    buckets.setdefault(u, []).append(term)
-            for u in unknown:
-                terms = buckets.get(u)
-                a = se.Add(*terms).diff(u) if terms else se.Integer(0)
-                if terms and a.free_symbols & us:
-                    bad.append(u)
-                A.append(a)
-            b.append(-se.Add(*rest))
+            row, rhs, nonlinear = _linear_parts(e, unknown, us)
+            A += row
+            b.append(rhs)
+            bad += nonlinear
         self._refuse_nonlinear([to_sp(u, names) for u in dict.fromkeys(bad)])
         return (se.DenseMatrix(len(exprs), len(unknown), A), se.DenseMatrix(len(exprs), 1, b),
                 names)

@@ -90,6 +90,7 @@ class Lagrangian:
         self._Q: dict[str, list] = {}
         self._constraints: list[tuple[sp.Symbol, sp.Expr, list]] = []
         self._declared: list[tuple[str, sp.Expr]] = []   # each constraint at its own level
+        self._velocity_level: set = set()   # multipliers of constraints kept at velocity level
         self._prescribed: dict = {}
 
     # -- energies ----------------------------------------------------------------------
@@ -166,15 +167,36 @@ class Lagrangian:
         self._declared.append(("position", as_expr(g)))
         return lam
 
-    def velocity_constraint(self, name: str, coefficients: Sequence, rest=0) -> sp.Symbol:
+    def velocity_constraint(self, name: str, coefficients, rest=0) -> sp.Symbol:
         """Constraint ``sum a_j q'_j + a_0 = 0`` (``coefficients = a``, ``rest = a_0``); kept at
-        velocity level on the equation set (``EquationSet.constraints``)."""
-        a = [as_expr(c) for c in coefficients]
-        if len(a) != len(self.coordinates):
-            raise ModelError(f"`coefficients` needs {len(self.coordinates)} entries.")
+        velocity level on the equation set (``EquationSet.constraints``).
+
+        ``coefficients`` may also be the velocity-level expression itself, linear in the rates
+        (``x' - r cos(psi) phi'``, ``rest`` then 0): its coefficients are read off it.  Either
+        way the acceleration level is differentiated in symengine by :meth:`equations`.
+
+        Example
+        -------
+        >>> from dualmech import coordinate, rate
+        >>> x, phi = coordinate("x"), coordinate("phi"); r = sp.Symbol("r", positive=True)
+        >>> lg = Lagrangian(coordinates=[x, phi])
+        >>> lg.kinetic("T", (rate(x)**2 + rate(phi)**2) / 2)
+        >>> lg.velocity_constraint("F", rate(x) - r * rate(phi))
+        F
+        >>> lg.equations().equations[-1]      # its acceleration level
+        -r*Derivative(phi(t), (t, 2)) + Derivative(x(t), (t, 2))
+        """
         lam = sp.Symbol(name, real=True)
-        level = sum(c * q.diff(t) for c, q in zip(a, self.coordinates)) + as_expr(rest)
-        self._constraints.append((lam, level.diff(t), a))
+        if isinstance(coefficients, (sp.Basic, int, float)) and not isinstance(rest, sp.Basic) \
+                and rest == 0:
+            level, a = as_expr(coefficients), None   # its coefficients: in equations()
+        else:
+            a = [as_expr(c) for c in coefficients]
+            if len(a) != len(self.coordinates):
+                raise ModelError(f"`coefficients` needs {len(self.coordinates)} entries.")
+            level = sum(c * q.diff(t) for c, q in zip(a, self.coordinates)) + as_expr(rest)
+        self._constraints.append((lam, level, a))
+        self._velocity_level.add(lam)
         self._declared.append(("velocity", level))
         return lam
 
@@ -199,6 +221,11 @@ class Lagrangian:
         A holonomic ``g(q, t)`` (gradient ``None``) is differentiated here, by the chain rule
         on plain symbols (twice in time, once per free coordinate), not in sympy."""
         lam, level, grad = constraint
+        if lam in self._velocity_level:   # velocity level: differentiated once more
+            v = br.se(level)
+            gradient = [br.se(x) for x in grad] if grad is not None else \
+                self._rate_gradient(lam, v, free, states, br)
+            return lam, total_derivative(v, states, t, br), gradient
         if grad is not None:
             return lam, br.se(level), [br.se(x) for x in grad]
         g = br.se(level)
@@ -207,6 +234,24 @@ class Lagrangian:
             gradient[self.coordinates.index(q)] = g.diff(br.se(s.q))
         rate = total_derivative(g, states, t, br)
         return lam, total_derivative(rate, states, t, br), gradient
+
+    def _rate_gradient(self, lam, v, free, states, br) -> list:
+        """The coefficients of the rates in the velocity-level expression ``v`` (plain
+        symbols, symengine), by coordinate index; refused unless ``v`` is linear in them."""
+        rates = [br.se(s.qd) for s in states]
+        gradient = [0] * len(self.coordinates)
+        for q, qd in zip(free, rates):
+            a = v.diff(qd)
+            if a.free_symbols & set(rates):
+                raise ModelError(f"velocity constraint `{lam.name}` is not linear in the rates "
+                                 f"(its coefficient of {q.func.__name__}' holds a rate); "
+                                 "write it as a(q, t) . q' + a0(q, t).")
+            gradient[self.coordinates.index(q)] = a
+        if not any(x != 0 for x in gradient):
+            raise ModelError(f"velocity constraint `{lam.name}` holds no rate of a free "
+                             "coordinate; a condition on the positions is a constraint(), "
+                             "not a velocity_constraint().")
+        return gradient
 
     def _declared_constraints(self) -> tuple:
         """The constraints at the level they were declared (prescribed motion put in), for

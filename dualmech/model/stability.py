@@ -43,6 +43,8 @@ from dataclasses import dataclass, field
 from fractions import Fraction
 from collections.abc import Mapping, Sequence
 
+import flint
+import symengine as se
 import sympy as sp
 
 from dualmech.model._expr import as_expr
@@ -328,6 +330,10 @@ def _check_steady(parts, x0, eqs, generic) -> None:
 
 def _reduce(parts, value: dict) -> sp.Matrix:
     """The reduced state matrix at ``value`` (``{}``: symbolic in the parameter)."""
+    if value and all(as_expr(v).is_Rational for v in value.values()):
+        fast = _reduce_rational(parts, value)
+        if fast is not None:
+            return fast
     _, _, R, w, phi, keep, dep, n, name, _ = parts
     A0v, z0 = _solve(parts, value)
     Rv = R.subs(value).subs(dict(zip(w, z0)))
@@ -347,6 +353,81 @@ def _reduce(parts, value: dict) -> sp.Matrix:
             T[pos[i], :] = sol[r, :]
     out = J.extract(indep, keep) * T
     return out.applyfunc(lambda e: _timeless(sp.cancel(e), name) if e.free_symbols else e)
+
+
+_HELD: dict = {}
+
+
+def _held(parts) -> tuple:
+    """``(A0, b0, R, phi, w)`` of ``parts`` in symengine (converted once per linearisation)."""
+    hit = _HELD.get(id(parts))
+    if hit is None or hit[0] is not parts:
+        A0, b0, R, w, phi = parts[:5]
+        conv = lambda m: se.DenseMatrix(m.rows, m.cols, [se.sympify(x) for x in m])  # noqa
+        hit = (parts, (conv(A0), conv(b0), conv(R), conv(sp.Matrix(phi)) if phi else None,
+                       [se.Symbol(x.name) for x in w]))
+        if len(_HELD) > 64:
+            _HELD.clear()
+        _HELD[id(parts)] = hit   # parts kept alive with it: its id is not reused
+    return hit[1]
+
+
+def _fmpq_mat(m, subs: dict):
+    """``m`` (symengine) at ``subs`` as a FLINT rational matrix; ``None`` unless every entry
+    is then a rational number."""
+    out = []
+    for x in m.xreplace(subs) if subs else m:
+        if not x.is_Rational:
+            return None
+        num, den = x.get_num_den()
+        out.append(flint.fmpq(int(num), int(den)))
+    return flint.fmpq_mat(m.rows, m.cols, out)
+
+
+def _reduce_rational(parts, value: dict):
+    """:func:`_reduce` at a rational value of the parameter where every entry is then a
+    rational number: exact linear algebra on FLINT (the same steps, no sympy arithmetic).
+    ``None`` when an entry stays irrational (a square root): the sympy route decides."""
+    _, _, _, _, phi, keep, dep, n, name, _ = parts
+    A0, b0, R, P, w = _held(parts)
+    subs = {se.Symbol(k.name): se.sympify(v) for k, v in value.items()}
+    A0v, b0v = _fmpq_mat(A0, subs), _fmpq_mat(b0, subs)
+    if A0v is None or b0v is None:
+        return None
+    if A0v.det() == 0:
+        raise ModelError(f"model `{name}`: the matrix of [q''; reactions] is singular at the "
+                         "steady motion; it cannot be solved for the accelerations there.")
+    z0 = A0v.solve(b0v)
+    subs.update({wk: se.Rational(int(z0[i, 0].p), int(z0[i, 0].q)) for i, wk in enumerate(w)})
+    Rv = _fmpq_mat(R, subs)
+    if Rv is None:
+        return None
+    dqdd = -A0v.solve(Rv)
+    size = 2 * n
+    J = [[flint.fmpq(0)] * size for _ in range(size)]
+    for i in range(n):
+        J[i][n + i] = flint.fmpq(1)
+        for j in range(size):
+            J[n + i][j] = dqdd[i, j]
+    indep = [i for i in keep if i not in dep]
+    pos = {s_: i for i, s_ in enumerate(keep)}
+    T = [[flint.fmpq(0)] * len(indep) for _ in keep]
+    for j, i in enumerate(indep):
+        T[pos[i]][j] = flint.fmpq(1)
+    if dep:
+        Pv = _fmpq_mat(P, subs)
+        if Pv is None:
+            return None
+        cols = lambda idx: flint.fmpq_mat(Pv.nrows(), len(idx),  # noqa: E731
+                                          [Pv[r, c] for r in range(Pv.nrows()) for c in idx])
+        sol = -cols(dep).solve(cols(indep))
+        for r, i in enumerate(dep):
+            T[pos[i]] = [sol[r, c] for c in range(len(indep))]
+    Jm = flint.fmpq_mat(len(indep), len(keep), [J[i][k] for i in indep for k in keep])
+    Tm = flint.fmpq_mat(len(keep), len(indep), [x for row in T for x in row])
+    out = Jm * Tm
+    return sp.Matrix(out.nrows(), out.ncols(),
+                     [sp.Rational(int(x.p), int(x.q)) for x in out.entries()])
 
 
 def _timeless(entry, name: str):

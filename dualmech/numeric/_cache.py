@@ -41,30 +41,71 @@ def digest(*parts) -> str:
     and assumptions; numbers their exact value.
     """
     memo: dict = {}
+    held: dict = {}
     h = hashlib.sha256()
     for part in parts:
-        h.update(_node(part, memo).encode())
+        h.update(_node(part, memo, held).encode())
         h.update(b"|")
     return h.hexdigest()
 
 
-def _node(e, memo: dict) -> str:
+def _node(e, memo: dict, held: dict) -> str:
     hit = memo.get(id(e))
     if hit is not None:
         return hit[1]
-    if isinstance(e, str):
+    rows = getattr(e, "se", None)
+    if isinstance(rows, tuple) and hasattr(e, "names"):
+        # equations held in symengine (model.equations.Rows): their own trees, and the sympy
+        # symbols their names stand for (assumptions included), never the sympy form
+        names = sorted((k, v) for k, v in e.names.items() if isinstance(v, sp.Symbol))
+        text = "r:" + ",".join([str(e.plain)] + [_node(q, memo, held) for q in e.coordinates]
+                               + [_held(x, held) for x in rows]
+                               + [k + "=" + _node(v, memo, held) for k, v in names])
+    elif _is_held(e):
+        text = "h:" + _held(e, held)
+    elif isinstance(e, str):
         text = "s:" + e
     elif isinstance(e, (list, tuple, Sequence)):   # also equations held in symengine
-        text = "l:" + ",".join(_node(a, memo) for a in e)
+        text = "l:" + ",".join(_node(a, memo, held) for a in e)
     elif isinstance(e, sp.Basic) and not e.args:
         text = "a:" + sp.srepr(e)
     elif isinstance(e, sp.Basic):
         # the class name of an undefined function (q(t)) is part of type(e).__name__
-        text = f"{type(e).__name__}(" + ",".join(_node(a, memo) for a in e.args) + ")"
+        text = f"{type(e).__name__}(" + ",".join(_node(a, memo, held) for a in e.args) + ")"
     else:
         raise TypeError(f"cannot digest {type(e).__name__}")
     value = hashlib.sha256(text.encode()).hexdigest()[:32]
     memo[id(e)] = (e, value)  # keep e alive so its id is not reused
+    return value
+
+
+def _is_held(e) -> bool:
+    return (type(e).__module__ or "").startswith("symengine")
+
+
+def _held(e, memo: dict) -> str:
+    """Digest of a symengine tree; a shared subtree (equal trees) is hashed once.
+
+    (Keyed by the tree itself, in a memo of its own: symengine wrappers are made anew at each
+    ``.args``, so their ``id`` says nothing; equal trees are found by symengine's hash.)"""
+    if isinstance(e, dict):    # a row's {ingredient: term}
+        return "d:" + ",".join(k + "=" + _held(v, memo) for k, v in sorted(e.items()))
+    hit = memo.get(e)
+    if hit is not None:
+        return hit
+    args, kind = e.args, type(e).__name__
+    if args:   # a function's own name (q in q(t)) is not among its args
+        head = kind + (":" + e.get_name() if hasattr(e, "get_name") else "")
+        text = head + "(" + ",".join(_held(a, memo) for a in args) + ")"
+    elif kind == "RealDouble":   # printed digits may round: the exact binary value
+        text = "RealDouble:" + float(e).hex()
+    elif kind == "ComplexDouble":
+        z = complex(e)
+        text = f"ComplexDouble:{z.real.hex()},{z.imag.hex()}"
+    else:
+        text = f"{kind}:{e}"
+    value = hashlib.sha256(text.encode()).hexdigest()[:32]
+    memo[e] = value
     return value
 
 

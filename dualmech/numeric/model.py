@@ -88,13 +88,27 @@ def parameters_of(exprs, exclude=()) -> tuple:
     return params
 
 
+def _held_parameters(eqs: EquationSet, held: tuple) -> tuple:
+    """:func:`parameters_of` for equations held in symengine: the free symbols of ``A`` and
+    ``b`` but the state symbols and ``t``, as the sympy symbols their names stand for."""
+    A, b, names = held
+    states = {x.name for q in eqs.coordinates for s in [state_symbols(q)]
+              for x in (s.q, s.qd, s.qdd)} | {t.name}
+    free = set().union(*[e.free_symbols for e in list(A) + list(b)])
+    params = [names[s.name] for s in free if s.name not in states]
+    return tuple(sorted(params, key=lambda s: (s.name, sp.srepr(s))))
+
+
 def _generated(eqs: EquationSet) -> _Code:
     hit = _BY_ID.get(id(eqs))
     if hit is not None and hit[0] is eqs:
         return hit[1]
     key = digest("equations", codegen.GENERATOR_VERSION, eqs.coordinates, eqs.unknowns,
                  eqs.equations)
-    A, b = eqs.plain_matrix()
+    # equations a derivation holds in symengine go to the generator as they are: the sympy
+    # form, never read here, costs more than the code (seconds on a bicycle)
+    held = eqs.plain_matrix_se()
+    A, b = held[:2] if held is not None else eqs.plain_matrix()
 
     @lru_cache(maxsize=1)
     def prog(params: tuple) -> codegen.Program:
@@ -104,7 +118,8 @@ def _generated(eqs: EquationSet) -> _Code:
                                scale_of=A.rows * A.cols)
 
     def build() -> str:
-        params = parameters_of(eqs.equations, eqs.unknowns)
+        params = parameters_of(eqs.equations, eqs.unknowns) if held is None else \
+            _held_parameters(eqs, held)
         return codegen.python_source(prog(params), key, params)
 
     module = load_module(key, build)

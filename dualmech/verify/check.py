@@ -10,6 +10,7 @@ says so.
 from __future__ import annotations
 
 import math
+import random
 import time
 from dataclasses import dataclass, field
 from typing import Sequence
@@ -772,7 +773,13 @@ def solve_with_static(eqs: EquationSet, limits: Budget | None = None) -> tuple[d
 
 def _drop_zero_rows(m: EquationSet) -> EquationSet:
     rows = m.equations
-    if isinstance(rows, Rows):   # held in symengine: expand there, never build the sympy form
+    held = m.plain_matrix_se()
+    if isinstance(rows, Rows) and held is not None:
+        # held in symengine: a row clearly nonzero at a random point (100 bits) is kept
+        # without expanding it (expanding a bicycle's rows takes seconds); the others are
+        # expanded there, never through the sympy form
+        keep = [i for i, e in enumerate(rows.se) if _nonzero_row(held, i, e)]
+    elif isinstance(rows, Rows):
         keep = [i for i, e in enumerate(rows.se) if se.expand(e) != 0]
     else:
         keep = [i for i, e in enumerate(rows) if sp.expand(e) != 0]
@@ -780,3 +787,23 @@ def _drop_zero_rows(m: EquationSet) -> EquationSet:
         return m
     return EquationSet(m.name, m.coordinates, [m.equations[i] for i in keep], m.unknowns,
                        [m.labels[i] for i in keep])
+
+
+def _nonzero_row(held, i: int, row) -> bool:
+    """Whether row ``i`` (``A[i, :]``, ``b[i]`` of ``held``) is not identically zero: clearly
+    nonzero at a random rational point in 100-bit arithmetic, else by expanding ``row``."""
+    A, b, _ = held
+    entries = [x for x in list(A.row(i)) + [b[i]] if x != 0]
+    if not entries:
+        return False
+    rnd = random.Random(f"zero rows {i}")
+    free = sorted(set().union(*[x.free_symbols for x in entries]), key=str)
+    point = {s: se.Rational(rnd.randint(1, 997), 1009) for s in free}
+    for x in entries:
+        try:
+            v = complex(x.xreplace(point).n(100))
+        except (RuntimeError, TypeError, ValueError, ZeroDivisionError):
+            break
+        if abs(v) > 1e-15 and v == v and abs(v) != float("inf"):
+            return True
+    return se.expand(row) != 0

@@ -173,6 +173,8 @@ def _solve_held(eqs, held, limits: Budget) -> dict:
         if coupled > MAX_COUPLED:
             raise OverBudget(f"{coupled} unknowns are coupled (a symbolic solution would be "
                              "pages long)")
+    # multiplied out, as a teacher reads them (the held matrix keeps products of sums)
+    A, b = A.expand(), b.expand()
     entries = [A[i, j] for i in range(n) for j in range(n)] + [b[i] for i in range(n)]
     ops = sum(se.count_ops(e) for e in entries)
     if ops > 4 * limits.max_ops:
