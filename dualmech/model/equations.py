@@ -30,7 +30,8 @@ import symengine as se
 import sympy as sp
 
 from dualmech.model._expr import as_expr, refuse_text_in
-from dualmech.model._algebra import linear_coefficients, names_of, time_se, to_se, to_sp
+from dualmech.model._algebra import (is_zero_held, linear_coefficients, names_of, time_se,
+                                     to_se, to_sp)
 from dualmech.model.kinematics import t
 
 __all__ = ["Constraint", "EquationSet", "ModelError", "Rows", "StateSymbols",
@@ -211,6 +212,14 @@ class Rows(Sequence):
         return (tuple, (self.materialise(),))
 
 
+def _zero_or(x):
+    """``x``, or ``0`` when it vanishes once multiplied out; expanded only when it is not
+    clearly nonzero at a random point (see :func:`~dualmech.model._algebra.is_zero_held`)."""
+    if x == 0 or x.is_Number or x.is_Symbol:
+        return x
+    return se.Integer(0) if is_zero_held(x, "coefficients") else x
+
+
 def _linear_parts(e, unknown: list, us: set) -> tuple[list, object, list]:
     """``(coefficients, rhs, nonlinear unknowns)`` of a row linear in ``unknown``: the
     coefficient of ``u`` is ``d(row)/du``, ``rhs`` is minus the row with every unknown set to
@@ -223,7 +232,10 @@ def _linear_parts(e, unknown: list, us: set) -> tuple[list, object, list]:
         return [se.Integer(0)] * len(unknown), -e, []
     row = [e.diff(u) if u in present else se.Integer(0) for u in unknown]
     if not any(a.free_symbols & us for a in row):
-        return row, -e.xreplace({u: se.Integer(0) for u in present}), []
+        # an entry that cancels once multiplied out is made 0, as expansion would leave it
+        # (static rows, sparsity and coupling are read from the zeros)
+        rhs = -e.xreplace({u: se.Integer(0) for u in present})
+        return [_zero_or(a) for a in row], _zero_or(rhs), []
     e = e.expand()
     buckets: dict = {}
     rest = []

@@ -10,7 +10,6 @@ says so.
 from __future__ import annotations
 
 import math
-import random
 import time
 from dataclasses import dataclass, field
 from typing import Sequence
@@ -18,6 +17,7 @@ from typing import Sequence
 import symengine as se
 import sympy as sp
 
+from dualmech.model._algebra import is_zero_held
 from dualmech.model.equations import EquationSet, ModelError, Rows
 from dualmech.sources import source_fields, source_name
 from dualmech.verify.display import Budget, OverBudget, budget, dotted, solve_display, width, wrap
@@ -789,21 +789,12 @@ def _drop_zero_rows(m: EquationSet) -> EquationSet:
                        [m.labels[i] for i in keep])
 
 
+
 def _nonzero_row(held, i: int, row) -> bool:
-    """Whether row ``i`` (``A[i, :]``, ``b[i]`` of ``held``) is not identically zero: clearly
-    nonzero at a random rational point in 100-bit arithmetic, else by expanding ``row``."""
+    """Whether row ``i`` (``A[i, :]``, ``b[i]`` of ``held``) is not identically zero: whether
+    some entry is not (see :func:`~dualmech.model._algebra.is_zero_held`)."""
     A, b, _ = held
     entries = [x for x in list(A.row(i)) + [b[i]] if x != 0]
     if not entries:
         return False
-    rnd = random.Random(f"zero rows {i}")
-    free = sorted(set().union(*[x.free_symbols for x in entries]), key=str)
-    point = {s: se.Rational(rnd.randint(1, 997), 1009) for s in free}
-    for x in entries:
-        try:
-            v = complex(x.xreplace(point).n(100))
-        except (RuntimeError, TypeError, ValueError, ZeroDivisionError):
-            break
-        if abs(v) > 1e-15 and v == v and abs(v) != float("inf"):
-            return True
-    return se.expand(row) != 0
+    return any(not is_zero_held(x, f"zero rows {i}") for x in entries)
