@@ -23,7 +23,13 @@ the integration alone (deriving, generating and compiling the code come before t
 starts).  A run that leaves the scene the problem declares -- a coordinate's ``domain``, a
 length's range, a rate's declared direction (a rate range that excludes zero, as a sliding
 phase's friction needs) -- is warned about on stderr, and ``left_declared`` in the JSON says
-where (:func:`~dualmech.numeric.contacts.left_declared`).  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
+where (:func:`~dualmech.numeric.contacts.left_declared`).
+
+``--phases PNG`` chains the contact phases the problem declares
+(:func:`~dualmech.numeric.phases.simulate_phases`): each phase on CVODE with its one-sided
+reactions and declared bounds as event functions compiled to C (scipy where that cannot run,
+said on stderr), at rtol 1e-10; it prints the switches, ``method`` (the integrator that ran)
+and ``cpu_seconds`` (its integrations alone).  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
 (a singular mass matrix, the declared singular set, too much work), 2 a usage error or a
 problem that cannot be built.
 
@@ -80,7 +86,9 @@ def register(subparsers) -> None:
                         "value rows, e.g. F=push.csv (repeatable)")
     p.add_argument("--phases", metavar="PNG", default=None,
                    help="chain the contact phases the problem declares (Problem.phases): "
-                        "print each switch and write a chart of every phase to PNG")
+                        "print each switch, the method that ran and its CPU time, and write "
+                        "a chart of every phase to PNG (JSON: phases, switches, ended, chart, "
+                        "method, cpu_seconds, fallback)")
     p.add_argument("--samples", metavar="K", type=whole_number(2, 100_000), default=None,
                    help="also give the state at K evenly spaced times (2 to 100000)")
     p.add_argument("--n", metavar="N", type=int, default=None,
@@ -129,7 +137,7 @@ def _phases(problem, args) -> int:
     from dualmech.numeric.phases import phase_chart, simulate_phases
     try:
         run = simulate_phases(problem, (0.0, args.duration), params=_params(args.param),
-                              samples=args.samples or 400)
+                              samples=args.samples or 400, method=args.method)
     except ValueError as exc:
         raise UsageError(str(exc).replace("`params`", "`--param`")) from None
     try:
@@ -138,11 +146,18 @@ def _phases(problem, args) -> int:
         raise UsageError(f"`--phases`: cannot write {args.phases!r} ({exc.strerror}).") \
             from None
     doc = {"name": problem.name, "phases": [ph.problem for ph in run.phases],
-           "switches": [vars(s) for s in run.switches], "ended": run.ended, "chart": path}
+           "switches": [vars(s) for s in run.switches], "ended": run.ended, "chart": path,
+           "method": run.method or None, "cpu_seconds": run.cpu if run.method else None,
+           "fallback": run.fallback or None}
+    if run.fallback:
+        print(f"dualmech simulate: CVODE cannot run here ({run.fallback}); fell back to "
+              "scipy on the generated right-hand side.", file=sys.stderr)
     if args.json:
         print(json.dumps(doc, indent=1))
     else:
         print(" -> ".join(doc["phases"]) or "no phase ran")
+        if run.method:
+            print(f"{run.method}, {run.cpu:.4g} s CPU")
         print("\n".join(str(s) for s in run.switches))
         print(run.ended or f"reached t = {args.duration:g} s")
         print(f"chart: {path}")

@@ -106,11 +106,12 @@ def map_state(problem, phase, y, values: Mapping) -> list:
 
 def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
                     samples: int = 200, rtol: float = 1e-10,
-                    atol: float = 1e-12) -> PhasedRun:
+                    atol: float = 1e-12, method: str = "auto") -> PhasedRun:
     """Integrate ``problem`` and the phases it declares after it (see the module docstring).
 
     ``samples`` output times are shared among the phases in proportion to their spans (at
-    least two each); ``params`` are this problem's and pass to the next ones by name.
+    least two each); ``params`` are this problem's and pass to the next ones by name;
+    ``method``: as :func:`~dualmech.numeric.contacts.watch` takes it.
     """
     t0, t1 = check_t_span(t_span)
     if y0 is None:
@@ -122,7 +123,7 @@ def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None 
         mine = {p.symbol.name for p in problem.parameters}
         values = problem_parameters(problem, {k: v for k, v in named.items() if k in mine})
         ref = problem.model(problem.reference)
-        report = watch(problem, (t0, t1), y0, values, rtol=rtol, atol=atol,
+        report = watch(problem, (t0, t1), y0, values, rtol=rtol, atol=atol, method=method,
                        extra_events=_range_events(problem, ref, values))
         run._ran(report.method, report.fallback, report.cpu)
         brk = report.first
