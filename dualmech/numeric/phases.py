@@ -88,14 +88,15 @@ class PhasedRun:
         self.cpu += cpu
 
 
-def map_state(problem, phase, y, values: Mapping) -> list:
+def map_state(problem, phase, y, values: Mapping, target=None) -> list:
     """The next phase's ``[q..., q'...]`` from this problem's state ``y`` (values by symbol
-    in ``values``): the declared expressions and their time derivatives."""
+    in ``values``): the declared expressions and their time derivatives (``target``: the next
+    problem's instance, if already built; else built here)."""
     coords = list(problem.model(problem.reference).coordinates)
     n = len(coords)
     rates = {q.diff(q.args[0]): float(v) for q, v in zip(coords, y[n:])}
     here = {q: float(v) for q, v in zip(coords, y[:n])}
-    nxt = next_problem(phase)
+    nxt = target if target is not None else next_problem(phase)
     out_q, out_qd = [], []
     for q in nxt.model(nxt.reference).coordinates:
         e = as_expr(phase.coordinates[q]).subs(values)
@@ -148,7 +149,7 @@ def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None 
         nxt = next_problem(phase)
         run.switches.append(Switch(brk.time, brk.reaction, problem.name, nxt.name,
                                    phase.why or brk.meaning))
-        y0 = map_state(problem, phase, brk.y, values)
+        y0 = map_state(problem, phase, brk.y, values, nxt)
         named.update({s.name: v for s, v in values.items()})
         problem, t0 = nxt, brk.time
     run.ended = f"stopped after {MAX_PHASES} phases (does the declaration loop?)"
