@@ -191,3 +191,23 @@ def test_cli_phases_reports_the_method_and_its_cpu_time(capsys, tmp_path, monkey
     assert doc["method"] == "DOP853" and doc["fallback"] == "no SUNDIALS here (test)"
     assert "CVODE cannot run here (no SUNDIALS here (test))" in out.err
     assert doc["switches"][0]["time"] == pytest.approx(hand_switch_time(), rel=1e-8)
+
+
+def test_plain_simulate_warns_where_the_ladder_would_have_to_pull_the_wall(capsys):
+    """No phases asked for: the run goes on holding the ladder to the wall, and says where the
+    wall would have to pull (the hand quadrature's time), on the route that ran."""
+    from dualmech.cli.main import main
+    base = ["simulate", f"{FILE}:WallLadder", "--duration", "1.5", "--json"]
+    times = {}
+    for tol in (LOOSE, TIGHT):
+        assert main(base + ["--rtol", str(tol[0]), "--atol", str(tol[1])]) == 0
+        out = capsys.readouterr()
+        contact = json.loads(out.out)["contact"]
+        assert contact["reaction"] == "N_w" and not contact["at_start"]
+        assert contact["method"] == "CVODE-Adams" and 0 < contact["cpu_seconds"] < 1
+        assert f"warning: {contact['message']}" in out.err
+        times[tol] = contact["time"]
+    hand = hand_switch_time()
+    assert abs(times[TIGHT] - hand) <= abs(times[LOOSE] - times[TIGHT]) + 8 * EPS * hand
+    assert main(["simulate", "simple_pendulum", "--duration", "2", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["contact"] is None    # T > 0 all the way

@@ -23,7 +23,10 @@ the integration alone (deriving, generating and compiling the code come before t
 starts).  A run that leaves the scene the problem declares -- a coordinate's ``domain``, a
 length's range, a rate's declared direction (a rate range that excludes zero, as a sliding
 phase's friction needs) -- is warned about on stderr, and ``left_declared`` in the JSON says
-where (:func:`~dualmech.numeric.contacts.left_declared`).
+where (:func:`~dualmech.numeric.contacts.left_declared`).  So is a one-sided reaction the
+problem declares changing sign on the way (:func:`~dualmech.numeric.contacts.watch`, on the
+same route: CVODE with the reactions as event functions in C by default): ``contact`` in the
+JSON gives the reaction, the time, the method that located it and its ``cpu_seconds``.
 
 ``--phases PNG`` chains the contact phases the problem declares
 (:func:`~dualmech.numeric.phases.simulate_phases`): each phase on CVODE with its one-sided
@@ -96,7 +99,8 @@ def register(subparsers) -> None:
     p.add_argument("--json", action="store_true",
                    help="print JSON: name, parameters, coordinates, initial_state, "
                         "final_state, t_final, method, cpu_seconds, steps, rhs_evaluations, "
-                        "rtol, atol, success, message, fallback (and samples)")
+                        "rtol, atol, success, message, fallback, left_declared, contact "
+                        "(and samples)")
     p.set_defaults(func=guarded(_simulate))
 
 
@@ -209,7 +213,7 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
            "method": method, "cpu_seconds": None, "steps": None, "rhs_evaluations": None,
            "rtol": rtol, "atol": atol, "success": False, "message": "", "fallback": None,
            "inputs": describe(problem, inputs), "inputs_in_python": model.inputs_in_python,
-           "left_declared": []}
+           "left_declared": [], "contact": None}
     try:
         refuse_static(problem, ref)
         run = integrate(model, (0.0, duration), y0, t_eval=t_eval, rtol=rtol, atol=atol,
@@ -233,9 +237,27 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
                          else method, singular=problem.singular)
     if seen.t.size:
         out["left_declared"] = left_declared(problem, ref, seen.t, seen.y)
+    if reached and not getattr(problem, "inputs", None):
+        out["contact"] = _contact(problem, duration, y0, params, rtol, atol, method)
     if samples:
         out["samples"] = {"t": run.t.tolist(), "states": run.y.T.tolist()}
     return out
+
+
+def _contact(problem, duration, y0, params, rtol, atol, method) -> dict | None:
+    """Where a one-sided reaction the problem declares would change sign along the run
+    (:func:`~dualmech.numeric.contacts.watch`, by the route ``method`` asks for), or ``None``
+    when none does (or none is declared)."""
+    from dualmech.numeric.contacts import unilateral_of, watch
+    if not unilateral_of(problem):
+        return None
+    report = watch(problem, (0.0, duration), y0, params, rtol=rtol, atol=atol, method=method)
+    if report.first is None:
+        return None
+    first = report.first
+    return {"reaction": first.reaction, "time": first.time, "at_start": first.at_start,
+            "message": str(first), "method": report.method or None,
+            "cpu_seconds": report.cpu if report.method else None}
 
 
 def _simulate(args) -> int:
@@ -267,6 +289,8 @@ def _simulate(args) -> int:
     for what in result["left_declared"]:
         print(f"dualmech simulate: warning: {what}, where the problem's model stops "
               "describing its declared scene", file=sys.stderr)
+    if result["contact"]:
+        print(f"dualmech simulate: warning: {result['contact']['message']}", file=sys.stderr)
     if args.json:
         print(json.dumps(result, indent=1))
         return status
