@@ -211,3 +211,53 @@ def test_plain_simulate_warns_where_the_ladder_would_have_to_pull_the_wall(capsy
     assert abs(times[TIGHT] - hand) <= abs(times[LOOSE] - times[TIGHT]) + 8 * EPS * hand
     assert main(["simulate", "simple_pendulum", "--duration", "2", "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["contact"] is None    # T > 0 all the way
+
+
+@pytest.mark.parametrize("route", ROUTES)
+def test_car_thrown_over_the_pivot_axis_leaves_the_track_where_the_hand_balance_says(route):
+    """Toy car (m = 0.2, R = 0.5, g = 9.81), track at rest (phi = phi' = 0, so phi stays 0),
+    thrown from theta = 1.2 at 5 rad/s: it passes theta = pi/2, where the mass matrix
+    diag(m R^2, m R^2 cos^2 theta) is singular (the declared singular set, which a watch does
+    not stop at: with phi at rest the car's motion is regular there), and goes on.  By hand, the k_B balance
+    F_r = m (g cos(theta) + R theta'^2) and energy theta'^2 = 25 + 2 (g/R)(cos theta - cos 1.2)
+    give F_r = 0 at cos(theta) = (2 g cos(1.2) - 25 R) / (3 g); the time by quadrature."""
+    g, R = 9.81, 0.5
+    angle = np.arccos((2 * g * np.cos(1.2) - 25 * R) / (3 * g))
+    rate = lambda th: np.sqrt(25 + 2 * g / R * (np.cos(th) - np.cos(1.2)))  # noqa: E731
+    hand = quad(lambda th: 1 / rate(th), 1.2, angle, epsabs=1e-14, epsrel=1e-13)[0]
+    car = problems.get("toy_car")
+    runs = [watch(car, (0, 2), y0=[1.2, 0.0, 5.0, 0.0], rtol=tol[0], atol=tol[1],
+                  method=route).first for tol in (LOOSE, TIGHT)]
+    loose, tight = runs
+    assert tight.reaction == "F_r" and tight.state["phi"] == 0.0
+    assert abs(tight.time - hand) <= abs(loose.time - tight.time) + 8 * EPS * hand
+    assert abs(tight.state["theta"] - angle) <= \
+        abs(loose.state["theta"] - tight.state["theta"]) + 8 * EPS * angle
+
+
+def test_a_reaction_through_a_pole_is_decided_exactly_and_stops_with_a_clear_error(
+        monkeypatch):
+    """A made-up direct model whose reaction is lam = c / x (its system [[1, 0], [0, x]] is
+    singular at x = 0), watched along x = 2 - t^2 / 2: near x = 0 the compiled solve flags the
+    states, the driver hands them to Python (decided exactly), and the run stops with
+    SingularityError at t = 2 -- never a sign change located on garbage."""
+    import sympy as sp
+
+    from dualmech import EquationSet, coordinate, t
+    from dualmech.numeric import NumericModel
+    from dualmech.numeric.cvode import integrate_until
+    from dualmech.numeric.cvode_events import Reaction, Stops
+    from dualmech.numeric.model import SingularityError
+    x, g, c, lam = coordinate("x"), *sp.symbols("g c lam", positive=True)
+    ref = NumericModel(EquationSet("fall", (x,), (x.diff(t, 2) + g,)), {g: 1.0})
+    direct = NumericModel(EquationSet("fall_r", (x,), (x.diff(t, 2) + g, x * lam - c),
+                                      unknowns=(lam,)), {g: 1.0, c: 1.0})
+    assert direct.solve(0.0, [2.0], [0.0]).tolist() == [-1.0, 0.5]
+    exact = []
+    values = Stops.values
+    monkeypatch.setattr(Stops, "values",
+                        lambda self, time, y: exact.append(time) or values(self, time, y))
+    with pytest.raises(SingularityError, match=r"the system of `fall_r` is singular at t=2, "):
+        integrate_until(ref, (0, 5), [2.0, 0.0],
+                        Stops(ref, reactions=[Reaction("lam", direct, 1)]))
+    assert exact and all(abs(time - 2.0) < 1e-6 for time in exact)   # flagged near x = 0 only
