@@ -25,6 +25,11 @@ reaching a declared singular set (``singular``: CVODE's root finding on the expr
 compiled to C, :mod:`~dualmech.numeric.cvode_events`), which the steps may otherwise cross
 unseen.
 
+:func:`integrate_until` runs CVODE to the first sign change of any event function of a
+:class:`~dualmech.numeric.cvode_events.Stops` -- one-sided reactions (rows of a direct model's
+compiled solve), coordinate bounds, a singular set -- and says which stopped it (:class:`Hit`):
+the compiled route of :func:`dualmech.numeric.contacts.watch`.
+
 Example
 -------
 >>> import numpy as np, sympy as sp

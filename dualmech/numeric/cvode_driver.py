@@ -9,6 +9,10 @@ singularity estimate (:mod:`dualmech.numeric.cbackend`) is handed to a Python ca
 decides it exactly -- the same rule as :meth:`NumericModel.rhs
 <dualmech.numeric.model.NumericModel.rhs>` -- so a singular mass matrix stops the run with
 :class:`~dualmech.numeric.model.SingularityError`, never a silent wrong number.
+Event functions (``dm_events``: a compiled function of the state, rows of other model
+libraries' solutions -- reactions -- and coordinate bounds, each with a direction) are CVODE's
+root functions; the run stops at the first sign change and says which
+(:class:`~dualmech.numeric.cvode_events.Stops`).
 
 Why this route: ``scikit-sundae``, already a dependency (IDA, :mod:`dualmech.numeric.daesolve`),
 ships SUNDIALS 7's shared libraries in its Linux wheel (``scikit_sundae.libs/``) but not its
