@@ -109,7 +109,7 @@ def test_a_string_that_never_slackens_runs_to_the_end(route):
     report = watch(pendulum, (0, 5), y0=[theta0, 0.0], method=route)
     assert report.first is None and report.stopped is None and report.method == route
     assert report.t_end == 5.0
-    value, when = report.minimum["T"]
+    value, _ = report.minimum["T"]
     floor = 1.0 * 9.81 * np.cos(theta0)         # M g cos(theta0), at the turning points
     assert value >= floor * (1 - 1e-9) and value == pytest.approx(floor, rel=1e-3)
     assert str(report).startswith("every one-sided contact holds up to t = 5 s")
@@ -246,7 +246,7 @@ def test_a_reaction_through_a_pole_is_decided_exactly_and_stops_with_a_clear_err
     from dualmech import EquationSet, coordinate, t
     from dualmech.numeric import NumericModel
     from dualmech.numeric.cvode import integrate_until
-    from dualmech.numeric.cvode_events import Reaction, Stops
+    from dualmech.numeric.cvode_events import ReactionEvent, Stops
     from dualmech.numeric.model import SingularityError
     x, g, c, lam = coordinate("x"), *sp.symbols("g c lam", positive=True)
     ref = NumericModel(EquationSet("fall", (x,), (x.diff(t, 2) + g,)), {g: 1.0})
@@ -259,5 +259,5 @@ def test_a_reaction_through_a_pole_is_decided_exactly_and_stops_with_a_clear_err
                         lambda self, time, y: exact.append(time) or values(self, time, y))
     with pytest.raises(SingularityError, match=r"the system of `fall_r` is singular at t=2, "):
         integrate_until(ref, (0, 5), [2.0, 0.0],
-                        Stops(ref, reactions=[Reaction("lam", direct, 1)]))
+                        Stops(ref, reactions=[ReactionEvent("lam", direct, 1)]))
     assert exact and all(abs(time - 2.0) < 1e-6 for time in exact)   # flagged near x = 0 only

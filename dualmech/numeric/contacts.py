@@ -36,7 +36,7 @@ from dualmech.model.facts import not_declared
 from dualmech.numeric import cvode
 from dualmech.numeric.cvode import (CVODE_METHODS, FALLBACK, METHODS, CvodeUnavailable,
                                     integrate_until)
-from dualmech.numeric.cvode_events import Bound, Reaction, Stops
+from dualmech.numeric.cvode_events import Bound, ReactionEvent, Stops
 from dualmech.numeric.model import NumericModel, SingularityError
 from dualmech.numeric.simulation import default_initial_state, direct_models, problem_parameters
 
@@ -221,7 +221,8 @@ def _watch_cvode(problem, report, forces, coords, t_span, y0, values, bounds, rt
     """:func:`watch` on CVODE: the reactions and bounds as event functions in C."""
     names, n = list(report.watched), len(coords)
     model = NumericModel(problem.model(problem.reference), values)
-    stops = Stops(model, reactions=[Reaction(k, *forces[k]) for k in names], bounds=bounds)
+    stops = Stops(model, reactions=[ReactionEvent(k, *forces[k]) for k in names],
+                  bounds=bounds)
     grid = np.linspace(float(t_span[0]), float(t_span[1]), 400)
     run, hit = integrate_until(model, t_span, y0, stops, t_eval=grid, rtol=rtol, atol=atol,
                                method=method)

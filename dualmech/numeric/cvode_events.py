@@ -12,9 +12,9 @@ as terminal events (:class:`~dualmech.numeric.model.StateFunction`).  :meth:`Sin
 is the :class:`~dualmech.numeric.model.SingularityError` raised there.
 
 :class:`Stops` gathers every event function of one run for the CVODE driver
-(:mod:`~dualmech.numeric.cvode_driver`): the singular set, reactions (:class:`Reaction`: a row
-of a direct model's solution ``[q''; lambda]``, computed by that model's compiled library at
-the state) and coordinate bounds (:class:`Bound`), each with the direction of the sign change
+(:mod:`~dualmech.numeric.cvode_driver`): the singular set, reactions (:class:`ReactionEvent`:
+a row of a direct model's solution ``[q''; lambda]``, computed by that model's compiled library
+at the state) and coordinate bounds (:class:`Bound`), each with the direction of the sign change
 that stops the run; :meth:`Stops.values` evaluates them in Python (the exact route a state the
 compiled solve flags takes).
 
@@ -46,7 +46,7 @@ from dualmech.numeric import cbackend, codegen
 from dualmech.numeric._cache import cache_dir, digest, private_dir
 from dualmech.numeric.model import NumericModel, SingularityError, StateFunction
 
-__all__ = ["Bound", "Reaction", "SingularSet", "Stops"]
+__all__ = ["Bound", "ReactionEvent", "SingularSet", "Stops"]
 
 _LOADED: dict = {}
 _KEPT: list = []
@@ -161,7 +161,7 @@ class Bound:
 
 
 @dataclass(frozen=True)
-class Reaction:
+class ReactionEvent:
     """A reaction as an event: row ``row`` of ``model``'s solution ``[q''; lambda]`` (a square
     direct model in the run's coordinates), stopping the run when it changes sign in
     ``direction`` (-1: reaching zero from above)."""
@@ -200,7 +200,7 @@ class Stops:
     """
 
     def __init__(self, model: NumericModel, singular: Sequence = (),
-                 reactions: Sequence[Reaction] = (), bounds: Sequence[Bound] = ()):
+                 reactions: Sequence[ReactionEvent] = (), bounds: Sequence[Bound] = ()):
         self.model = model
         self.singular = SingularSet(model, singular)
         self.reactions = tuple(reactions)
