@@ -54,7 +54,7 @@ from scipy.integrate import solve_ivp
 
 from dualmech.numeric import cbackend
 from dualmech.numeric.cvode_driver import CvodeUnavailable, driver
-from dualmech.numeric.cvode_events import Stops
+from dualmech.numeric.cvode_events import SingularSet, Stops
 from dualmech.numeric.integrators import SCIPY_METHODS, Run
 from dualmech.numeric.model import _C_MAX, NumericModel
 
@@ -136,7 +136,7 @@ def integrate(model: NumericModel, t_span: Sequence[float], y0, *, t_eval=None,
     if slow and method in CVODE_METHODS:
         raise CvodeUnavailable(f"CVODE runs compiled code only: {slow}.")
     if slow and method == "auto":   # a Python function per step: scipy's route
-        run = _scipy(model, t0, t1, y0, t_eval, rtol, atol, FALLBACK, events)
+        run = _scipy(model, t0, t1, y0, t_eval, rtol, atol, FALLBACK, events.singular)
         return replace(run, message=f"fallback: {slow}; used scipy {FALLBACK} instead. "
                        + run.message)
     if method == "auto":
@@ -217,7 +217,7 @@ def _samples(t0: float, t1: float, t_eval) -> np.ndarray:
     return t_eval
 
 
-def _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
+def _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events: SingularSet) -> Run:
     fast = model if model.backend != "auto" or cbackend.compiler() is None \
         or getattr(model, "_inputs", None) else model.with_backend("c")
     fast.rhs(t0, y0)  # compiled and loaded before the clock starts
