@@ -164,7 +164,23 @@ class Bound:
 class ReactionEvent:
     """A reaction as an event: row ``row`` of ``model``'s solution ``[q''; lambda]`` (a square
     direct model in the run's coordinates), stopping the run when it changes sign in
-    ``direction`` (-1: reaching zero from above)."""
+    ``direction`` (-1: reaching zero from above).
+
+    Example
+    -------
+    The pendulum's string pull at the lowest point, ``M (g + a theta'^2)`` by hand:
+
+    >>> from dualmech.problems import load
+    >>> from dualmech.numeric.simulation import direct_models, problem_parameters
+    >>> p = load("simple_pendulum")
+    >>> values = problem_parameters(p)
+    >>> direct = next(direct_models(p, square=True))
+    >>> row = direct.n + [u.name for u in direct.unknowns].index("T")
+    >>> event = ReactionEvent("T", NumericModel(direct, values), row)
+    >>> ref = NumericModel(p.model(p.reference), values)
+    >>> round(float(Stops(ref, reactions=[event]).values(0.0, [0.0, 1.5])[0]), 9)
+    11.61
+    """
 
     name: str
     model: NumericModel
