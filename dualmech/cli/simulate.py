@@ -23,7 +23,16 @@ the integration alone (deriving, generating and compiling the code come before t
 starts).  A run that leaves the scene the problem declares -- a coordinate's ``domain``, a
 length's range, a rate's declared direction (a rate range that excludes zero, as a sliding
 phase's friction needs) -- is warned about on stderr, and ``left_declared`` in the JSON says
-where (:func:`~dualmech.numeric.contacts.left_declared`).  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
+where (:func:`~dualmech.numeric.contacts.left_declared`).  So is a one-sided reaction the
+problem declares changing sign on the way (:func:`~dualmech.numeric.contacts.watch`, on the
+same route: CVODE with the reactions as event functions in C by default): ``contact`` in the
+JSON gives the reaction, the time, the method that located it and its ``cpu_seconds``.
+
+``--phases PNG`` chains the contact phases the problem declares
+(:func:`~dualmech.numeric.phases.simulate_phases`): each phase on CVODE with its one-sided
+reactions and declared bounds as event functions compiled to C (scipy where that cannot run,
+said on stderr), at rtol 1e-10; it prints the switches, ``method`` (the integrator that ran)
+and ``cpu_seconds`` (its integrations alone).  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
 (a singular mass matrix, the declared singular set, too much work), 2 a usage error or a
 problem that cannot be built.
 
@@ -80,7 +89,9 @@ def register(subparsers) -> None:
                         "value rows, e.g. F=push.csv (repeatable)")
     p.add_argument("--phases", metavar="PNG", default=None,
                    help="chain the contact phases the problem declares (Problem.phases): "
-                        "print each switch and write a chart of every phase to PNG")
+                        "print each switch, the method that ran and its CPU time, and write "
+                        "a chart of every phase to PNG (JSON: phases, switches, ended, chart, "
+                        "method, cpu_seconds, fallback)")
     p.add_argument("--samples", metavar="K", type=whole_number(2, 100_000), default=None,
                    help="also give the state at K evenly spaced times (2 to 100000)")
     p.add_argument("--n", metavar="N", type=int, default=None,
@@ -88,7 +99,8 @@ def register(subparsers) -> None:
     p.add_argument("--json", action="store_true",
                    help="print JSON: name, parameters, coordinates, initial_state, "
                         "final_state, t_final, method, cpu_seconds, steps, rhs_evaluations, "
-                        "rtol, atol, success, message, fallback (and samples)")
+                        "rtol, atol, success, message, fallback, left_declared, contact "
+                        "(and samples)")
     p.set_defaults(func=guarded(_simulate))
 
 
@@ -129,7 +141,7 @@ def _phases(problem, args) -> int:
     from dualmech.numeric.phases import phase_chart, simulate_phases
     try:
         run = simulate_phases(problem, (0.0, args.duration), params=_params(args.param),
-                              samples=args.samples or 400)
+                              samples=args.samples or 400, method=args.method)
     except ValueError as exc:
         raise UsageError(str(exc).replace("`params`", "`--param`")) from None
     try:
@@ -138,11 +150,18 @@ def _phases(problem, args) -> int:
         raise UsageError(f"`--phases`: cannot write {args.phases!r} ({exc.strerror}).") \
             from None
     doc = {"name": problem.name, "phases": [ph.problem for ph in run.phases],
-           "switches": [vars(s) for s in run.switches], "ended": run.ended, "chart": path}
+           "switches": [vars(s) for s in run.switches], "ended": run.ended, "chart": path,
+           "method": run.method or None, "cpu_seconds": run.cpu if run.method else None,
+           "fallback": run.fallback or None}
+    if run.fallback:
+        print(f"dualmech simulate: CVODE cannot run here ({run.fallback}); fell back to "
+              "scipy on the generated right-hand side.", file=sys.stderr)
     if args.json:
         print(json.dumps(doc, indent=1))
     else:
         print(" -> ".join(doc["phases"]) or "no phase ran")
+        if run.method:
+            print(f"{run.method}, {run.cpu:.4g} s CPU")
         print("\n".join(str(s) for s in run.switches))
         print(run.ended or f"reached t = {args.duration:g} s")
         print(f"chart: {path}")
@@ -194,7 +213,7 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
            "method": method, "cpu_seconds": None, "steps": None, "rhs_evaluations": None,
            "rtol": rtol, "atol": atol, "success": False, "message": "", "fallback": None,
            "inputs": describe(problem, inputs), "inputs_in_python": model.inputs_in_python,
-           "left_declared": []}
+           "left_declared": [], "contact": None}
     try:
         refuse_static(problem, ref)
         run = integrate(model, (0.0, duration), y0, t_eval=t_eval, rtol=rtol, atol=atol,
@@ -218,9 +237,27 @@ def summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1
                          else method, singular=problem.singular)
     if seen.t.size:
         out["left_declared"] = left_declared(problem, ref, seen.t, seen.y)
+    if reached and not getattr(problem, "inputs", None):
+        out["contact"] = _contact(problem, duration, y0, params, rtol, atol, method)
     if samples:
         out["samples"] = {"t": run.t.tolist(), "states": run.y.T.tolist()}
     return out
+
+
+def _contact(problem, duration, y0, params, rtol, atol, method) -> dict | None:
+    """Where a one-sided reaction the problem declares would change sign along the run
+    (:func:`~dualmech.numeric.contacts.watch`, by the route ``method`` asks for), or ``None``
+    when none does (or none is declared)."""
+    from dualmech.numeric.contacts import unilateral_of, watch
+    if not unilateral_of(problem):
+        return None
+    report = watch(problem, (0.0, duration), y0, params, rtol=rtol, atol=atol, method=method)
+    if report.first is None:
+        return None
+    first = report.first
+    return {"reaction": first.reaction, "time": first.time, "at_start": first.at_start,
+            "message": str(first), "method": report.method or None,
+            "cpu_seconds": report.cpu if report.method else None}
 
 
 def _simulate(args) -> int:
@@ -252,6 +289,8 @@ def _simulate(args) -> int:
     for what in result["left_declared"]:
         print(f"dualmech simulate: warning: {what}, where the problem's model stops "
               "describing its declared scene", file=sys.stderr)
+    if result["contact"]:
+        print(f"dualmech simulate: warning: {result['contact']['message']}", file=sys.stderr)
     if args.json:
         print(json.dumps(result, indent=1))
         return status

@@ -24,6 +24,7 @@ F_r changes sign (+ to -) from the start (theta = 0.3, phi = 2.4): the car leave
 """
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
 from typing import Mapping, Sequence
 
@@ -32,6 +33,10 @@ from scipy.integrate import solve_ivp
 
 from dualmech.model.dimensions import ANGLE, reduce
 from dualmech.model.facts import not_declared
+from dualmech.numeric import cvode
+from dualmech.numeric.cvode import (CVODE_METHODS, FALLBACK, METHODS, CvodeUnavailable,
+                                    integrate_until)
+from dualmech.numeric.cvode_events import Bound, ReactionEvent, Stops
 from dualmech.numeric.model import NumericModel, SingularityError
 from dualmech.numeric.simulation import default_initial_state, direct_models, problem_parameters
 
@@ -68,13 +73,19 @@ class ContactBreak:
 @dataclass
 class ContactReport:
     """What :func:`watch` found: the first break (or ``None``) and each force's smallest value
-    before it (``minimum = {name: (value, time)}``)."""
+    before it (``minimum = {name: (value, time)}``); the integrator that ran (``method``:
+    ``"CVODE-Adams"``, ``"CVODE-BDF"`` or a scipy method; ``""`` when nothing was integrated),
+    its CPU seconds alone (``cpu``) and why the compiled route could not run
+    (``fallback``, ``""`` when it did or was not asked for)."""
 
     watched: dict
     t_end: float
     first: ContactBreak | None = None
     minimum: dict = field(default_factory=dict)
     stopped: tuple | None = None
+    method: str = ""
+    cpu: float = 0.0
+    fallback: str = ""
 
     def __str__(self) -> str:
         if not self.watched:
@@ -106,15 +117,25 @@ def _value(force, t, y) -> np.ndarray:
 
 
 def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = None,
-          rtol: float = 1e-9, atol: float = 1e-11, method: str = "DOP853",
+          rtol: float = 1e-9, atol: float = 1e-11, method: str = "auto",
           extra_events: Sequence = (), rhs=None) -> ContactReport:
     """Integrate the reference model until a one-sided reaction changes sign (or the end).
 
-    ``extra_events`` are more terminal events (each with a ``what`` attribute); the first to
-    fire is reported in ``ContactReport.stopped`` as ``(what, time)``.  ``rhs`` integrates
-    the reference coordinates instead of the reference model's own system (a reference
-    model that is a DAE: its index-1 form).
+    ``method="auto"`` runs CVODE on the generated C (:func:`~dualmech.numeric.cvode.
+    integrate_until`: each reaction and bound an event function in C, no Python per step)
+    where it can (:func:`dualmech.numeric.cvode.available`), else scipy's ``DOP853`` with
+    Python event functions, the reason in ``ContactReport.fallback``; a CVODE method by name
+    raises :class:`~dualmech.numeric.cvode.CvodeUnavailable` instead, a scipy method by name
+    runs on scipy.  ``extra_events`` are more terminal events (each with a ``what``
+    attribute; :class:`~dualmech.numeric.cvode_events.Bound` s run in C, any other function
+    takes the scipy route); the first to fire is reported in ``ContactReport.stopped`` as
+    ``(what, time)``.  ``rhs`` integrates the reference coordinates instead of the reference
+    model's own system (a reference model that is a DAE: its index-1 form; scipy's route).
+    ``ContactReport.minimum`` is each force's smallest value at 400 times evenly spread over
+    the run (the compiled route: over ``t_span``, up to the break, and at the break).
     """
+    if method not in METHODS:
+        raise ValueError(f"`method` must be one of {', '.join(METHODS)}, got {method!r}.")
     values = problem_parameters(problem, params)
     watched = unilateral_of(problem)
     ref = problem.model(problem.reference)
@@ -137,31 +158,98 @@ def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = No
             return report
     if not names and not extra_events:
         return report
+    compiled, report.fallback = _route(method, rhs, extra_events)
+    if compiled:
+        try:
+            return _watch_cvode(problem, report, forces, coords, t_span, y0, values,
+                                extra_events, rtol, atol, compiled)
+        except CvodeUnavailable as exc:
+            if method != "auto":
+                raise
+            report.fallback = str(exc)
+    return _watch_scipy(problem, report, forces, coords, t_span, y0, values, extra_events,
+                        rtol, atol, FALLBACK if method == "auto" else method, rhs)
+
+
+def _route(method: str, rhs, extra_events) -> tuple[str | None, str]:
+    """The CVODE method :func:`watch` runs (``None``: scipy's route) and, for ``"auto"``
+    taking scipy's, why; a CVODE method asked for by name that cannot run is refused."""
+    python = ("a Python right-hand side (`rhs`) was given" if rhs is not None else
+              "an event function in Python was given" if not all(
+                  isinstance(e, Bound) for e in extra_events) else None)
+    if method in CVODE_METHODS:
+        if python:
+            raise CvodeUnavailable(f"CVODE runs compiled code only: {python}.")
+        return method, ""
+    if method != "auto":
+        return None, ""
+    reason = python or cvode.available()
+    return (None, reason) if reason else (CVODE_METHODS[0], "")
+
+
+def _watch_scipy(problem, report, forces, coords, t_span, y0, values, extra_events, rtol,
+                 atol, method, rhs) -> ContactReport:
+    """:func:`watch` on :func:`scipy.integrate.solve_ivp`, the events in Python."""
+    names, n = list(report.watched), len(coords)
     events = []
     for k in names:
         ev = (lambda t, y, f=forces[k]: float(_value(f, t, y)))
         ev.terminal, ev.direction = True, -1
         events.append(ev)
-    rhs = rhs or NumericModel(ref, values).rhs
+    rhs = rhs or NumericModel(problem.model(problem.reference), values).rhs
+    start = time.process_time()
     sol = solve_ivp(rhs, tuple(t_span), y0, method=method, rtol=rtol, atol=atol,
                     events=events + list(extra_events), dense_output=True)
+    report.cpu, report.method = time.process_time() - start, method
     if sol.status < 0:
         raise SingularityError(f"integration of `{problem.name}` failed: {sol.message}")
     report.t_end = float(sol.t[-1])
     grid = np.linspace(t_span[0], report.t_end, 400)
-    states = sol.sol(grid)
-    for k in names:
-        vals = np.asarray(_value(forces[k], grid, states), dtype=float)
-        j = int(np.argmin(vals))
-        report.minimum[k] = (float(vals[j]), float(grid[j]))
+    _minima(report, forces, grid, sol.sol(grid))
     for k, times, ys in zip(names, sol.t_events, sol.y_events):
         if len(times) and (report.first is None or times[0] < report.first.time):
             report.first = ContactBreak(k, float(times[0]), dict(zip(coords, ys[0][:n])),
-                                        watched[k], y=tuple(map(float, ys[0])))
+                                        report.watched[k], y=tuple(map(float, ys[0])))
     for ev, times in zip(extra_events, sol.t_events[len(names):]):
         if len(times) and (report.stopped is None or times[0] < report.stopped[1]):
             report.stopped = (ev.what, float(times[0]))
     return report
+
+
+def _watch_cvode(problem, report, forces, coords, t_span, y0, values, bounds, rtol, atol,
+                 method) -> ContactReport:
+    """:func:`watch` on CVODE: the reactions and bounds as event functions in C."""
+    names, n = list(report.watched), len(coords)
+    model = NumericModel(problem.model(problem.reference), values)
+    stops = Stops(model, reactions=[ReactionEvent(k, *forces[k]) for k in names],
+                  bounds=bounds)
+    grid = np.linspace(float(t_span[0]), float(t_span[1]), 400)
+    run, hit = integrate_until(model, t_span, y0, stops, t_eval=grid, rtol=rtol, atol=atol,
+                               method=method)
+    report.cpu, report.method = run.cpu, method
+    if not run.success:
+        raise SingularityError(f"integration of `{problem.name}` failed: {run.message}")
+    report.t_end = float(run.t_end)
+    times, states = run.t, run.y
+    if hit is not None:
+        times = np.append(times, hit.time)
+        states = np.column_stack([states, hit.y])
+        if hit.index < len(names):
+            k = names[hit.index]
+            report.first = ContactBreak(k, hit.time, dict(zip(coords, hit.y[:n])),
+                                        report.watched[k], y=hit.y)
+        else:
+            report.stopped = (bounds[hit.index - len(names)].what, hit.time)
+    _minima(report, forces, times, states)
+    return report
+
+
+def _minima(report: ContactReport, forces: dict, times, states) -> None:
+    """Each watched force's smallest value at the sample ``times`` (states in the columns)."""
+    for k in report.watched:
+        vals = np.asarray(_value(forces[k], times, states), dtype=float)
+        j = int(np.argmin(vals))
+        report.minimum[k] = (float(vals[j]), float(times[j]))
 
 
 @dataclass(frozen=True)
@@ -174,31 +262,24 @@ class SceneSpan:
 
 
 def _range_events(problem, ref, values) -> list:
-    """Terminal events for the coordinates leaving where the model describes the scene: a
-    declared ``domain`` (any coordinate: the ladder's angle past the floor), else the declared
-    range of a length (an angle's range is only where states are sampled)."""
+    """Terminal events (:class:`~dualmech.numeric.cvode_events.Bound`) for the coordinates
+    leaving where the model describes the scene: a declared ``domain`` (any coordinate: the
+    ladder's angle past the floor), else the declared range of a length (an angle's range is
+    only where states are sampled)."""
     events = []
     for i, q in enumerate(ref.coordinates):
         info = problem.coordinate_info(q)
         domain = getattr(info, "domain", None)
         if domain is not None:
             lo, hi = (float(v) for v in domain)
-            for bound, side in ((lo, "below"), (hi, "above")):
-                ev = (lambda t, y, i=i, b=bound: y[i] - b)
-                ev.terminal, ev.direction = True, (-1 if side == "below" else 1)
-                ev.what = (f"{info.name} leaves its declared domain ({lo:.4g}, {hi:.4g})"
-                           + (f" ({info.description})" if info.description else ""))
-                events.append(ev)
+            what = f"{info.name} leaves its declared domain ({lo:.4g}, {hi:.4g})"
+        elif info.dimension == ANGLE or not reduce(info.dimension):
             continue
-        if info.dimension == ANGLE or not reduce(info.dimension):
-            continue
-        lo, hi = (float(v) for v in info.range)
-        for bound, side in ((lo, "below"), (hi, "above")):
-            ev = (lambda t, y, i=i, b=bound: y[i] - b)
-            ev.terminal, ev.direction = True, (-1 if side == "below" else 1)
-            ev.what = (f"{info.name} leaves its declared range [{lo:g}, {hi:g}]"
-                       + (f" ({info.description})" if info.description else ""))
-            events.append(ev)
+        else:
+            lo, hi = (float(v) for v in info.range)
+            what = f"{info.name} leaves its declared range [{lo:g}, {hi:g}]"
+        what += f" ({info.description})" if info.description else ""
+        events += [Bound(i, lo, -1, what), Bound(i, hi, 1, what)]
     return events
 
 

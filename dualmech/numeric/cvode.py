@@ -25,6 +25,11 @@ reaching a declared singular set (``singular``: CVODE's root finding on the expr
 compiled to C, :mod:`~dualmech.numeric.cvode_events`), which the steps may otherwise cross
 unseen.
 
+:func:`integrate_until` runs CVODE to the first sign change of any event function of a
+:class:`~dualmech.numeric.cvode_events.Stops` -- one-sided reactions (rows of a direct model's
+compiled solve), coordinate bounds, a singular set -- and says which stopped it (:class:`Hit`):
+the compiled route of :func:`dualmech.numeric.contacts.watch`.
+
 Example
 -------
 >>> import numpy as np, sympy as sp
@@ -41,7 +46,7 @@ from __future__ import annotations
 
 import ctypes
 import time as _time
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Sequence
 
 import numpy as np
@@ -49,12 +54,12 @@ from scipy.integrate import solve_ivp
 
 from dualmech.numeric import cbackend
 from dualmech.numeric.cvode_driver import CvodeUnavailable, driver
-from dualmech.numeric.cvode_events import SingularSet
+from dualmech.numeric.cvode_events import SingularSet, Stops
 from dualmech.numeric.integrators import SCIPY_METHODS, Run
 from dualmech.numeric.model import _C_MAX, NumericModel
 
-__all__ = ["CVODE_METHODS", "FALLBACK", "METHODS", "CvodeUnavailable", "available",
-           "integrate"]
+__all__ = ["CVODE_METHODS", "FALLBACK", "METHODS", "CvodeUnavailable", "Hit", "available",
+           "integrate", "integrate_until"]
 
 CVODE_METHODS = ("CVODE-Adams", "CVODE-BDF")
 #: Every method :func:`integrate` takes (``"auto"`` picks the first that can run).
@@ -126,24 +131,77 @@ def integrate(model: NumericModel, t_span: Sequence[float], y0, *, t_eval=None,
         raise ValueError(f"model `{model.eqs.name}` is not square ({model.shape}): integrate "
                          "the equations of motion (the reference model), not a direct model "
                          "with its reactions.")
-    events = SingularSet(model, singular)
+    events = Stops(model, singular)
     slow = getattr(model, "inputs_in_python", None)
     if slow and method in CVODE_METHODS:
         raise CvodeUnavailable(f"CVODE runs compiled code only: {slow}.")
     if slow and method == "auto":   # a Python function per step: scipy's route
-        run = _scipy(model, t0, t1, y0, t_eval, rtol, atol, FALLBACK, events)
+        run = _scipy(model, t0, t1, y0, t_eval, rtol, atol, FALLBACK, events.singular)
         return replace(run, message=f"fallback: {slow}; used scipy {FALLBACK} instead. "
                        + run.message)
     if method == "auto":
         try:
-            return _cvode(model, t0, t1, y0, t_eval, rtol, atol, CVODE_METHODS[0], events)
+            return _singular(*_cvode(model, t0, t1, y0, t_eval, rtol, atol, CVODE_METHODS[0],
+                                     events), events)
         except CvodeUnavailable as exc:
-            run = _scipy(model, t0, t1, y0, t_eval, rtol, atol, FALLBACK, events)
+            run = _scipy(model, t0, t1, y0, t_eval, rtol, atol, FALLBACK, events.singular)
             return replace(run, message=f"fallback: {exc}; used scipy {FALLBACK} instead. "
                            + run.message)
     if method in CVODE_METHODS:
-        return _cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events)
-    return _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events)
+        return _singular(*_cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events),
+                         events)
+    return _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events.singular)
+
+
+def _singular(run: Run, hit, events: Stops) -> Run:
+    if hit is not None:  # an event function changed sign: the singular set
+        raise events.singular.error(hit.time, hit.y)
+    return run
+
+
+@dataclass(frozen=True)
+class Hit:
+    """Where an event function of :func:`integrate_until` stopped the run: its index in
+    ``stops.labels()``, the time and the state ``y = [q, q']`` there."""
+
+    index: int
+    label: str
+    time: float
+    y: tuple
+
+
+def integrate_until(model: NumericModel, t_span: Sequence[float], y0, stops: Stops, *,
+                    t_eval=None, rtol: float = 1e-9, atol: float = 1e-11,
+                    method: str = "CVODE-Adams") -> tuple[Run, Hit | None]:
+    """Integrate on CVODE until the first event function of ``stops`` changes sign in its
+    direction (CVODE's root finding on the functions compiled to C), or to the end.
+
+    The samples (``t_eval``, as :func:`integrate` takes them) are those before the event;
+    ``Run.t_end`` is where the run stopped.  There is no fallback here: where CVODE cannot run,
+    :class:`CvodeUnavailable` says why (the caller takes its own scipy route).
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> from dualmech import EquationSet, coordinate, t
+    >>> from dualmech.numeric.cvode_events import Bound
+    >>> x = coordinate("x"); g = sp.Symbol("g", positive=True)
+    >>> model = NumericModel(EquationSet("fall", (x,), (x.diff(t, 2) + g,)), {g: 9.81})
+    >>> run, hit = integrate_until(model, (0, 5), [2.0, 0.0],
+    ...                            Stops(model, bounds=[Bound(0, 0.0, -1, "x reaches 0")]))
+    >>> hit.label, bool(abs(hit.time - np.sqrt(2 * 2.0 / 9.81)) < 1e-9)   # x = 2 - g t^2 / 2
+    ('x reaches 0', True)
+    """
+    if method not in CVODE_METHODS:
+        raise ValueError(f"`method` must be one of {', '.join(CVODE_METHODS)}, got {method!r}.")
+    t0, t1 = float(t_span[0]), float(t_span[1])
+    y0 = np.asarray(y0, dtype=float)
+    if y0.shape != (2 * model.n,) or not np.isfinite(y0).all():
+        raise ValueError(f"`y0` must hold {2 * model.n} finite numbers (q then q'), got "
+                         f"{y0.tolist()}.")
+    if getattr(model, "inputs_in_python", None):
+        raise CvodeUnavailable(f"CVODE runs compiled code only: {model.inputs_in_python}.")
+    return _cvode(model, t0, t1, y0, _samples(t0, t1, t_eval), rtol, atol, method, stops)
 
 
 def _samples(t0: float, t1: float, t_eval) -> np.ndarray:
@@ -159,7 +217,7 @@ def _samples(t0: float, t1: float, t_eval) -> np.ndarray:
     return t_eval
 
 
-def _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
+def _scipy(model, t0, t1, y0, t_eval, rtol, atol, method, events: SingularSet) -> Run:
     fast = model if model.backend != "auto" or cbackend.compiler() is None \
         or getattr(model, "_inputs", None) else model.with_backend("c")
     fast.rhs(t0, y0)  # compiled and loaded before the clock starts
@@ -189,11 +247,14 @@ def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
     if one is None:
         raise CvodeUnavailable("the model's right-hand side is not compiled and no C compiler "
                                "was found (set $CC, or install gcc).")
-    roots = events.c_function() if len(events) else None
-    if len(events) and roots is None:
-        raise CvodeUnavailable("the singular set's event functions did not compile to C.")
-    p, k = (np.ascontiguousarray(a, dtype=float) for a in model._c_args)
     n2 = 2 * model.n
+    failure: list = []
+    gslow = _SLOW(lambda t, y, g: _exact_events(events, t, y, g, n2, failure))
+    spec = events.c_spec(gslow) if len(events) else None
+    if len(events) and spec is None:
+        raise CvodeUnavailable("the event functions (singular set, reactions) did not compile "
+                               "to C.")
+    p, k = (np.ascontiguousarray(a, dtype=float) for a in model._c_args)
     work = np.zeros(2 * n2 + model.shape[1])
     first = t_eval == t0  # CVODE starts there; those samples are y0 itself
     tout = np.ascontiguousarray(t_eval[~first])
@@ -201,7 +262,7 @@ def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
     stats = np.zeros(6, dtype=np.int64 if ctypes.sizeof(ctypes.c_long) == 8 else np.int32)
     reached, ylast = ctypes.c_double(t0), np.zeros(n2)
     msg = ctypes.create_string_buffer(256)
-    exact, failure = [], []
+    exact = []
 
     def slow(t, y, ydot):  # a state the compiled solve flagged: decided exactly
         try:
@@ -222,18 +283,34 @@ def _cvode(model, t0, t1, y0, t_eval, rtol, atol, method, events) -> Run:
         flag = run_c(one[0], p.ctypes.data, k.ctypes.data, work.ctypes.data, callback, n2, lmm,
                      t0, y0.ctypes.data, tout.size, tout.ctypes.data, yout.ctypes.data,
                      float(rtol), float(atol), MAX_STEPS, stats.ctypes.data,
-                     ctypes.byref(reached), msg, len(msg), roots, len(events),
-                     ylast.ctypes.data)
+                     ctypes.byref(reached), msg, len(msg),
+                     ctypes.byref(spec) if spec is not None else None, ylast.ctypes.data)
     cpu = _time.process_time() - start
     if failure:
         raise failure[0]
-    if flag == 2:  # an event function changed sign: the singular set
-        raise events.error(reached.value, ylast)
+    hit = None
+    if flag == 2:  # an event function changed sign
+        which = events.found()
+        hit = Hit(which, events.labels()[which], reached.value, tuple(map(float, ylast)))
     done = int(stats[0])
     y = np.concatenate([np.tile(y0, (int(first.sum()), 1)), yout[:done]]).T
     message = "the end of the span was reached" if flag == 0 else \
-        f"CVODE stopped at t={reached.value:.9g}: {msg.value.decode()}"
-    return Run(method=method, t=t_eval[: y.shape[1]].copy(), y=y, success=flag == 0,
-               message=message, cpu=cpu, calls=int(stats[2]), evaluations=int(stats[2]),
-               steps=int(stats[1]), jacobians=int(stats[5]), factorisations=int(stats[4]),
-               t_end=reached.value if tout.size else t0)
+        f"CVODE stopped at t={reached.value:.9g}: {msg.value.decode()}" if hit is None else \
+        f"stopped at t={reached.value:.9g}, where {hit.label} changes sign"
+    run = Run(method=method, t=t_eval[: y.shape[1]].copy(), y=y, success=flag in (0, 2),
+              message=message, cpu=cpu, calls=int(stats[2]), evaluations=int(stats[2]),
+              steps=int(stats[1]), jacobians=int(stats[5]), factorisations=int(stats[4]),
+              t_end=reached.value if tout.size else t0)
+    return run, hit
+
+
+def _exact_events(events: Stops, t, y, gout, n2: int, failure: list) -> int:
+    """The driver's callback for a state where a compiled solve flagged: every event value
+    in Python, exactly decided (a singular system stops the run, its error kept)."""
+    try:
+        values = events.values(t, np.ctypeslib.as_array(y, (n2,)).copy())
+        np.ctypeslib.as_array(gout, (len(events),))[:] = values
+        return 0
+    except Exception as exc:  # noqa: BLE001 - re-raised once CVODE has returned
+        failure.append(exc)
+        return 1

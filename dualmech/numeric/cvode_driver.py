@@ -9,6 +9,10 @@ singularity estimate (:mod:`dualmech.numeric.cbackend`) is handed to a Python ca
 decides it exactly -- the same rule as :meth:`NumericModel.rhs
 <dualmech.numeric.model.NumericModel.rhs>` -- so a singular mass matrix stops the run with
 :class:`~dualmech.numeric.model.SingularityError`, never a silent wrong number.
+Event functions (``dm_events``: a compiled function of the state, rows of other model
+libraries' solutions -- reactions -- and coordinate bounds, each with a direction) are CVODE's
+root functions; the run stops at the first sign change and says which
+(:class:`~dualmech.numeric.cvode_events.Stops`).
 
 Why this route: ``scikit-sundae``, already a dependency (IDA, :mod:`dualmech.numeric.daesolve`),
 ships SUNDIALS 7's shared libraries in its Linux wheel (``scikit_sundae.libs/``) but not its
@@ -43,7 +47,7 @@ __all__ = ["CvodeUnavailable", "driver", "driver_source", "sundials_libraries"]
 #: SUNDIALS major version the declarations below are written for.
 MAJOR = 7
 #: Bumped whenever the driver's C source changes meaning (part of the library's key).
-DRIVER_VERSION = "2"
+DRIVER_VERSION = "3"
 _LIBS = ("core", "nvecserial", "sunmatrixdense", "sunlinsoldense", "cvode")
 
 
@@ -101,23 +105,60 @@ void CVodeFree(void **cvode_mem);
 """
 
 _DRIVER = r"""
+int CVodeSetRootDirection(void *cvode_mem, int *rootdir);
+int CVodeGetRootInfo(void *cvode_mem, int *rootsfound);
+
 /* y' = f(t, y) through a model library's dm_one (state in work[0:n2], f into work[n2:]);
    a state dm_one flags goes to `slow` (Python: decided exactly), which returns 0 or stops
-   the run with a nonzero value.  Optional event functions `roots` (cbackend's dm_out) stop
-   the run where one changes sign. */
+   the run with a nonzero value.  Optional event functions (dm_events) stop the run where
+   one changes sign in its direction. */
 typedef int (*dm_one_fn)(double t, const double *p, const double *k, double *work, int rhs);
 typedef int (*dm_slow_fn)(double t, const double *y, double *ydot);
 typedef int (*dm_out_fn)(double t, const double *y, const double *p, double *out);
 
+/* The event functions, in this order: nfun compiled functions of the state (cbackend's
+   dm_out with the parameters fun_p: a declared singular set); nrow rows of models' solutions
+   [q''; lambda] at the state (row[r] of model[r]: a reaction; each of the nsolve models is
+   its library's dm_one with its p, k and a work buffer); nbound coordinates' distances
+   y[index[b]] - bound[b].  direction[i]: -1, +1 (only a decrease, an increase stops the
+   run) or 0 (either); found: CVODE's root information where the run stopped.  A state a
+   model's solve flags goes to `slow`, which writes every event value (decided exactly). */
+typedef struct {
+    dm_out_fn fun; const double *fun_p; int nfun;
+    int nsolve; void **one; void **p; void **k; void **work;
+    int nrow; const int *model; const int *row;
+    int nbound; const int *index; const double *bound;
+    int *direction; int *found; dm_slow_fn slow; long nslow;
+} dm_events;
+
 typedef struct {
     dm_one_fn one; const double *p, *k; double *work; long n2; dm_slow_fn slow; long nslow;
-    dm_out_fn roots;
+    dm_events *events;
 } dm_ode;
 
 static int dm_g(sunrealtype t, N_Vector y, sunrealtype *gout, void *user)
 {
     dm_ode *o = (dm_ode *)user;
-    return o->roots(t, N_VGetArrayPointer(y), o->p, gout);
+    dm_events *e = o->events;
+    const double *yv = N_VGetArrayPointer(y);
+    int at = 0;
+    if (e->nfun > 0) {
+        if (e->fun(t, yv, e->fun_p, gout) != 0) return 1;
+        at = e->nfun;
+    }
+    for (int m = 0; m < e->nsolve; m++) {
+        double *w = (double *)e->work[m];
+        memcpy(w, yv, (size_t)o->n2 * sizeof(double));
+        if (((dm_one_fn)e->one[m])(t, (const double *)e->p[m], (const double *)e->k[m], w, 0)) {
+            e->nslow++;
+            return (e->slow && e->slow(t, yv, gout) == 0) ? 0 : 1;
+        }
+    }
+    for (int r = 0; r < e->nrow; r++)
+        gout[at + r] = ((const double *)e->work[e->model[r]])[o->n2 + e->row[r]];
+    at += e->nrow;
+    for (int b = 0; b < e->nbound; b++) gout[at + b] = yv[e->index[b]] - e->bound[b];
+    return 0;
 }
 
 static int dm_f(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
@@ -141,17 +182,17 @@ const char dm_key[] = DM_KEY;
    iteration), 2 BDF (Newton, dense difference-quotient Jacobian).  stats: outputs written,
    steps, f evaluations, slow (flagged) states, linear-solver setups, Jacobians; the state
    where the run ended (at *t_reached) into ylast.  Returns 0, 2 when an event function
-   changed sign (the run stops there),
+   changed sign (the run stops there; events->found says which),
    a CVODE flag (< 0; its name in msg), or -1000 when SUNDIALS could not allocate. */
 int dm_cvode(dm_one_fn one, const double *p, const double *k, double *work, dm_slow_fn slow,
              long n2, int lmm, double t0, const double *y0, long nout, const double *tout,
              double *yout, double rtol, double atol, long max_steps, long *stats,
-             double *t_reached, char *msg, long msglen, dm_out_fn roots, int nroots,
-             double *ylast)
+             double *t_reached, char *msg, long msglen, dm_events *events, double *ylast)
 {
     SUNContext ctx = NULL; void *mem = NULL; N_Vector y = NULL; SUNMatrix A = NULL;
     SUNLinearSolver LS = NULL; SUNNonlinearSolver NLS = NULL;
-    dm_ode o = {one, p, k, work, n2, slow, 0, roots};
+    dm_ode o = {one, p, k, work, n2, slow, 0, events};
+    int nroots = events ? events->nfun + events->nrow + events->nbound : 0;
     long i = 0, v = 0;
     double tret = t0;
     int flag = -1000;
@@ -169,6 +210,7 @@ int dm_cvode(dm_one_fn one, const double *p, const double *k, double *work, dm_s
     if ((flag = CVodeSetMaxNumSteps(mem, max_steps)) < 0) goto done;
     if ((flag = CVodeSetStopTime(mem, tout[nout - 1])) < 0) goto done;
     if (nroots > 0 && (flag = CVodeRootInit(mem, nroots, dm_g)) < 0) goto done;
+    if (nroots > 0 && (flag = CVodeSetRootDirection(mem, events->direction)) < 0) goto done;
     flag = -1000;
     if (lmm == CV_BDF) {
         A = SUNDenseMatrix((sunindextype)n2, (sunindextype)n2, ctx);
@@ -182,6 +224,7 @@ int dm_cvode(dm_one_fn one, const double *p, const double *k, double *work, dm_s
     }
     for (i = 0; i < nout; i++) {
         flag = CVode(mem, tout[i], y, &tret, CV_NORMAL);
+        if (flag == CV_ROOT_RETURN) CVodeGetRootInfo(mem, events->found);
         if (flag < 0 || flag == CV_ROOT_RETURN) break;
         memcpy(yout + i * n2, N_VGetArrayPointer(y), (size_t)n2 * sizeof(double));
     }
@@ -334,5 +377,5 @@ def _open(lib: Path, key: str):
     P = ctypes.c_void_p
     fn.argtypes = [P, P, P, P, P, ctypes.c_long, ctypes.c_int, ctypes.c_double, P,
                    ctypes.c_long, P, P, ctypes.c_double, ctypes.c_double, ctypes.c_long, P, P,
-                   ctypes.c_char_p, ctypes.c_long, P, ctypes.c_int, P]
+                   ctypes.c_char_p, ctypes.c_long, P, P]
     return fn

@@ -5,7 +5,10 @@ reactions (:func:`~dualmech.numeric.contacts.watch`).  Where one would change si
 problem declares what follows (``Problem.phases``, :mod:`dualmech.model.phases`), the state is
 mapped across -- each next coordinate from its declared expression, each rate by the chain rule
 -- and the run goes on with the next problem, parameters passed by name; where nothing is
-declared the run ends there and says why.  :func:`phase_series` gives what a chart of the run
+declared the run ends there and says why.  Each phase runs on CVODE with the reactions and
+the declared bounds as event functions in C where it can (:func:`~dualmech.numeric.contacts.
+watch`'s ``method="auto"``), else on scipy; :attr:`PhasedRun.method` says which ran and
+:attr:`PhasedRun.cpu` how long the integrations took.  :func:`phase_series` gives what a chart of the run
 shows (each coordinate and reaction over every phase that has it, and the switches);
 :func:`phase_chart` draws it, the switches marked.
 
@@ -27,8 +30,10 @@ import sympy as sp
 from dualmech.model._expr import as_expr
 from dualmech.model.phases import next_problem
 from dualmech.numeric.contacts import _range_events, watch
+from dualmech.numeric.cvode import integrate
+from dualmech.numeric.model import NumericModel, SingularityError
 from dualmech.numeric.simulation import (Trajectory, check_t_span, default_initial_state,
-                                         problem_parameters, simulate)
+                                         problem_parameters, reactions_along, refuse_static)
 
 __all__ = ["PhaseRun", "PhasedRun", "Switch", "simulate_phases", "map_state", "phase_series",
            "phase_chart", "MAX_PHASES"]
@@ -63,21 +68,35 @@ class PhaseRun:
 @dataclass
 class PhasedRun:
     """What :func:`simulate_phases` returns: the phases in order, the switches between them
-    and why the last one ends (``""``: it reached the end of the span)."""
+    and why the last one ends (``""``: it reached the end of the span); the integrator that
+    ran (``method``, e.g. ``"CVODE-Adams"``, or scipy's ``"DOP853"``; several joined by
+    ``", "`` if the phases differ), why the compiled route could not run (``fallback``) and
+    the CPU seconds of the integrations alone (``cpu``: each phase's watched run and its
+    sampled run; deriving and compiling come before the clocks start)."""
 
     phases: list = field(default_factory=list)
     switches: list = field(default_factory=list)
     ended: str = ""
+    method: str = ""
+    fallback: str = ""
+    cpu: float = 0.0
+
+    def _ran(self, method: str, fallback: str, cpu: float) -> None:
+        if method and method not in self.method.split(", "):
+            self.method = ", ".join(filter(None, [self.method, method]))
+        self.fallback = self.fallback or fallback
+        self.cpu += cpu
 
 
-def map_state(problem, phase, y, values: Mapping) -> list:
+def map_state(problem, phase, y, values: Mapping, target=None) -> list:
     """The next phase's ``[q..., q'...]`` from this problem's state ``y`` (values by symbol
-    in ``values``): the declared expressions and their time derivatives."""
+    in ``values``): the declared expressions and their time derivatives (``target``: the next
+    problem's instance, if already built; else built here)."""
     coords = list(problem.model(problem.reference).coordinates)
     n = len(coords)
     rates = {q.diff(q.args[0]): float(v) for q, v in zip(coords, y[n:])}
     here = {q: float(v) for q, v in zip(coords, y[:n])}
-    nxt = next_problem(phase)
+    nxt = target if target is not None else next_problem(phase)
     out_q, out_qd = [], []
     for q in nxt.model(nxt.reference).coordinates:
         e = as_expr(phase.coordinates[q]).subs(values)
@@ -88,11 +107,12 @@ def map_state(problem, phase, y, values: Mapping) -> list:
 
 def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
                     samples: int = 200, rtol: float = 1e-10,
-                    atol: float = 1e-12) -> PhasedRun:
+                    atol: float = 1e-12, method: str = "auto") -> PhasedRun:
     """Integrate ``problem`` and the phases it declares after it (see the module docstring).
 
     ``samples`` output times are shared among the phases in proportion to their spans (at
-    least two each); ``params`` are this problem's and pass to the next ones by name.
+    least two each); ``params`` are this problem's and pass to the next ones by name;
+    ``method``: as :func:`~dualmech.numeric.contacts.watch` takes it.
     """
     t0, t1 = check_t_span(t_span)
     if y0 is None:
@@ -104,14 +124,16 @@ def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None 
         mine = {p.symbol.name for p in problem.parameters}
         values = problem_parameters(problem, {k: v for k, v in named.items() if k in mine})
         ref = problem.model(problem.reference)
-        report = watch(problem, (t0, t1), y0, values, rtol=rtol, atol=atol,
+        report = watch(problem, (t0, t1), y0, values, rtol=rtol, atol=atol, method=method,
                        extra_events=_range_events(problem, ref, values))
+        run._ran(report.method, report.fallback, report.cpu)
         brk = report.first
         stop = report.stopped if brk is None else None
         end = brk.time if brk is not None else stop[1] if stop is not None else t1
         if end > t0:
             k = max(2, int(round(samples * (end - t0) / (t_span[1] - t_span[0]))))
-            traj = simulate(problem, (t0, end), y0, values, samples=k, rtol=rtol, atol=atol)
+            traj = _sampled(problem, (t0, end), y0, values, k, rtol, atol,
+                            report.method or "auto", run)
             run.phases.append(PhaseRun(problem.name, traj))
         if stop is not None:
             run.ended = (f"t = {stop[1]:.6g} s: {stop[0]} in `{problem.name}`: the model "
@@ -127,11 +149,29 @@ def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None 
         nxt = next_problem(phase)
         run.switches.append(Switch(brk.time, brk.reaction, problem.name, nxt.name,
                                    phase.why or brk.meaning))
-        y0 = map_state(problem, phase, brk.y, values)
+        y0 = map_state(problem, phase, brk.y, values, nxt)
         named.update({s.name: v for s, v in values.items()})
         problem, t0 = nxt, brk.time
     run.ended = f"stopped after {MAX_PHASES} phases (does the declaration loop?)"
     return run
+
+
+def _sampled(problem, span, y0, values, samples: int, rtol: float, atol: float,
+             method: str, run: PhasedRun) -> Trajectory:
+    """The phase's motion at ``samples`` times over ``span``, with its reactions, by the
+    method that watched it (:func:`~dualmech.numeric.cvode.integrate`)."""
+    ref = problem.model(problem.reference)
+    refuse_static(problem, ref)
+    done = integrate(NumericModel(ref, values), span, y0, t_eval=np.linspace(*span, samples),
+                     rtol=rtol, atol=atol, method=method)
+    run._ran(done.method, "", done.cpu)
+    if not done.success:
+        raise SingularityError(f"integration of `{problem.name}` failed: {done.message}")
+    n = ref.n
+    traj = Trajectory(done.t, done.y[:n], done.y[n:], [q.func.__name__ for q in
+                                                        ref.coordinates], message=done.message)
+    traj.reactions = reactions_along(problem, traj, values)
+    return traj
 
 
 def phase_series(run: PhasedRun) -> dict:
