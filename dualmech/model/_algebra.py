@@ -243,11 +243,15 @@ def is_zero_held(x, seed: str = "zero test") -> bool:
         return True
     free = sorted(x.free_symbols, key=str)
     rnd = random.Random(seed)
-    point = {s: se.RealMPFR(str(rnd.randint(1, 997) / 1009), 100) for s in free}
-    try:   # every symbol a 100-bit float: symengine evaluates as it builds
-        v = complex(x.xreplace(point) if free else x.n(100))
-        if v == v and abs(v) != float("inf") and abs(v) > 1e-15:
+    values = [rnd.randint(1, 997) / 1009 for _ in free]
+    # every symbol a float: symengine evaluates as it builds; doubles first (clearly nonzero
+    # there is nonzero), 100 bits where the doubles come close to zero
+    for point, tiny in (({s: se.RealDouble(v) for s, v in zip(free, values)}, 1e-6),
+                        ({s: se.RealMPFR(str(v), 100) for s, v in zip(free, values)}, 1e-15)):
+        try:
+            v = complex(x.xreplace(point) if free else x.n(100))
+        except (RuntimeError, TypeError, ValueError, ZeroDivisionError):
+            break
+        if v == v and abs(v) != float("inf") and abs(v) > tiny:
             return False
-    except (RuntimeError, TypeError, ValueError, ZeroDivisionError):
-        pass
     return se.expand(x) == 0

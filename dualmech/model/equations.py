@@ -215,9 +215,22 @@ class Rows(Sequence):
 def _zero_or(x):
     """``x``, or ``0`` when it vanishes once multiplied out; expanded only when it is not
     clearly nonzero at a random point (see :func:`~dualmech.model._algebra.is_zero_held`)."""
-    if x == 0 or x.is_Number or x.is_Symbol:
+    if x == 0 or x.is_Number or x.is_Symbol or _expanded(x):
         return x
     return se.Integer(0) if is_zero_held(x, "coefficients") else x
+
+
+def _expanded(x) -> bool:
+    """Whether ``x`` is already multiplied out at its top levels (a sum of products none of
+    whose factors is a sum or a power of one), so that expansion leaves it as it is: symengine
+    collects equal terms as it builds a sum, so such a nonzero ``x`` is nonzero expanded."""
+    terms = x.args if x.is_Add else (x,)
+    for term in terms:
+        factors = term.args if term.is_Mul else (term,)
+        for f in factors:
+            if f.is_Add or (f.is_Pow and f.args[0].is_Add):
+                return False
+    return True
 
 
 def _linear_parts(e, unknown: list, us: set) -> tuple[list, object, list]:
