@@ -112,12 +112,32 @@ def test_report_of_a_file_reports_that_problem_alone(capsys, teacher, tmp_path):
     assert status == 2 and "not both" in err
 
 
-def test_mutate_by_file_names_the_survivors_of_a_reaction_derived_once(capsys, teacher):
+def test_mutate_by_file_catches_a_flipped_reaction_with_the_referee(capsys, teacher):
+    # T is derived by the direct form alone; the Kane referee, derived from its unbroken
+    # declarations, derives T again, so flipping T (or doubling m in the direct form only,
+    # which changes T and not the motion) is caught as `check` would catch it
     status, out, _ = run(capsys, "mutate", teacher, "--json")
     d = json.loads(out)
-    assert status == 1                            # a mutant survived: the models cannot tell
-    assert {s["mutant"] for s in d["survived"]} == {
+    assert status == 0 and d["survived"] == [] and d["uncatchable"] == []
+    killed = {k["mutant"]: k["named"] for k in d["killed"]}
+    assert "reaction T" in killed["newton_euler: flip the sign of unknown `T`"]
+    assert "reaction T" in killed["newton_euler: double `m`"]
+
+
+def test_mutate_says_a_reaction_no_second_derivation_gives_is_uncatchable(capsys, teacher):
+    # without a referee (declared away) T is derived once: its flip is no gap in the checks
+    # but a mistake these derivations cannot catch -- said, not counted, exit 0
+    text = teacher.read_text().replace("    reactions = (", "    referee = False\n"
+                                       "    reactions = (")
+    teacher.write_text(text.replace('"my_pendulum"', '"my_unrefereed"'))
+    status, out, _ = run(capsys, "mutate", teacher, "--json")
+    d = json.loads(out)
+    assert status == 0 and d["survived"] == []
+    assert {u["mutant"] for u in d["uncatchable"]} == {
         "newton_euler: flip the sign of unknown `T`", "newton_euler: double `m`"}
+    assert all("no second derivation" in u["why"] for u in d["uncatchable"])
+    status, out, _ = run(capsys, "mutate", teacher)
+    assert status == 0 and "UNCATCHABLE: newton_euler: flip the sign of unknown `T`" in out
 
 
 def test_chart_by_file_with_the_quick_sweep(capsys, teacher, tmp_path):

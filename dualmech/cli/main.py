@@ -179,9 +179,12 @@ def build_parser() -> argparse.ArgumentParser:
                                    "doubled; one unknown reaction's sign flipped; one mass "
                                    "doubled; two parameters swapped -- and check that the "
                                    "comparison, judging the mutant among all the problem's "
-                                   "derivations, names the mutant's derivation (or the "
-                                   "reaction it changes).  A survivor is a mistake your two "
-                                   "derivations would not catch; the report says why.  "
+                                   "derivations and the Kane referee (as `check` does), "
+                                   "names the mutant's derivation (or the reaction it "
+                                   "changes).  A survivor is a mistake the checks would "
+                                   "not catch; the report says why.  A mutant that changes "
+                                   "only reactions no second derivation gives is reported "
+                                   "as uncatchable, with the model that would catch it.  "
                                    "Exit status 1 when a mutant survives.")
     p.add_argument("names", nargs="*", metavar="NAME",
                    help="problems to mutate: catalogue names, path.py[:Class] or module:Class")
