@@ -112,6 +112,27 @@ def test_report_of_a_file_reports_that_problem_alone(capsys, teacher, tmp_path):
     assert status == 2 and "not both" in err
 
 
+def test_every_message_is_wrapped_to_the_terminal(capsys, teacher, monkeypatch):
+    # an unknown command lists every command (a 200-column line unwrapped); a bad --at names
+    # the coordinates; the declaration error of a problem file lists what to fix
+    status, _, err = run(capsys, "chek", teacher)
+    assert status == 2 and "invalid choice: 'chek'" in " ".join(err.split())
+    assert len(err.splitlines()) > 2 and max(map(len, err.splitlines())) <= 100
+    teacher.write_text(teacher.read_text().replace('ne.reaction("T"', 'ne.reaction("Tension"'))
+    status, _, err = run(capsys, "check", teacher)
+    flat = " ".join(err.split())
+    assert status == 2 and "reaction `Tension` is not declared in `reactions`" in flat
+    assert max(map(len, err.splitlines())) <= 100
+    import dualmech.cli.errors as errors
+    monkeypatch.setattr(errors, "columns", lambda stream=None: 60)
+    status, _, err = run(capsys, "check", teacher)
+    assert status == 2 and " ".join(err.split()) == flat
+    # a line longer than 60 is one word (the file's path) or the quoted line of the file
+    assert all(len(line) <= 60 or " " not in line.strip() or line.endswith("# <- error")
+               for line in err.splitlines())
+    assert "    reactions = (" in err and len(err.splitlines()) > len(flat) // 60
+
+
 def test_mutate_by_file_catches_a_flipped_reaction_with_the_referee(capsys, teacher):
     # T is derived by the direct form alone; the Kane referee, derived from its unbroken
     # declarations, derives T again, so flipping T (or doubling m in the direct form only,
@@ -163,6 +184,7 @@ def test_fidelity_by_file_and_its_not_applicable_message(capsys, teacher, tmp_pa
     status, _, err = run(capsys, "fidelity", teacher.parent / "my_inverted.py",
                          "--out", tmp_path / "o")
     assert status == 2
+    err = " ".join(err.split())   # the message as words: it is wrapped to the terminal
     assert "not applicable" in err and "declare" in err and "stable equilibrium" in err
 
 

@@ -50,7 +50,7 @@ from dualmech.cli.at_state import (add_at_option, check_at, report_data, state_v
                                    values_wanted, with_values)
 from dualmech.cli.options import positive_number
 from dualmech.cli.errors import (DISAGREE, EXIT_STATUS, OK, USAGE_OR_MODEL_ERROR, Failure,
-                                 UsageError, about, describe, guarded, worst)
+                                 UsageError, about, describe, guarded, say, worst)
 
 __all__ = ["main", "command", "build_parser"]
 
@@ -85,9 +85,20 @@ def _duration(text: str) -> float:
     return value
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse's parser, its usage errors wrapped to the terminal as every message is
+    (:func:`dualmech.cli.errors.fit`); sub-parsers are of this class too."""
+
+    def error(self, message: str):
+        from dualmech.cli.errors import columns, fit
+        self.print_usage(sys.stderr)
+        self.exit(USAGE_OR_MODEL_ERROR,
+                  fit(f"{self.prog}: error: {message}", columns(sys.stderr)) + "\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``dualmech`` (one sub-parser per command)."""
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="dualmech",
         description="Every mechanics problem written twice -- Newton-Euler and Lagrange -- "
                     "proved equivalent exactly, with the reaction forces recovered.",
@@ -378,7 +389,7 @@ def _say_failed(command: str, c) -> None:
     """A comparison that could not be made, as the command's error on stderr."""
     failure = getattr(c, "failure", None)
     if failure is not None:
-        print(f"dualmech {command}: error: {failure.message}", file=sys.stderr, flush=True)
+        say(command, failure.message)
 
 
 def _progress(items, what: str):
@@ -407,7 +418,7 @@ def _list_rows() -> list[dict]:
         try:
             classes = cat.catalogue_classes(ep)
         except KeyError as exc:   # a broken course package is named, the rest still listed
-            print(f"dualmech list: {exc.args[0] if exc.args else exc}", file=sys.stderr)
+            say("list", exc.args[0] if exc.args else str(exc), "")
             continue
         for c in classes:
             coords = [getattr(x, "name", str(x)) for x in getattr(c, "coordinates", ())]
@@ -796,13 +807,14 @@ def _cmd_mutate(args) -> int:
             statuses.append(DISAGREE if failure.kind == "refused" else failure.status)
             failed.append({"problem": getattr(problem, "name", "?"), "error": failure.message})
             if statuses[-1] == DISAGREE and not args.json:
-                print(f"{getattr(problem, 'name', '?')}: not mutated: {failure.message}\n")
+                print(_fit(f"{getattr(problem, 'name', '?')}: not mutated: {failure.message}")
+                      + "\n")
             elif statuses[-1] != DISAGREE:
-                print(f"dualmech mutate: error: {failure.message}", file=sys.stderr)
+                say("mutate", failure.message)
             continue
         reports.append(report)
         if not args.json:
-            print(report)
+            print(_fit(str(report)))
             print()
     if args.json:
         data = [r.to_dict() for r in reports] + failed

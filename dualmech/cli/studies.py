@@ -39,7 +39,7 @@ import sys
 from pathlib import Path
 
 from dualmech.cli import names as _names
-from dualmech.cli.errors import (OK, USAGE_OR_MODEL_ERROR, UsageError, about, describe,
+from dualmech.cli.errors import (OK, USAGE_OR_MODEL_ERROR, UsageError, about, describe, say,
                                  guarded, worst)
 from dualmech.cli.options import positive_number, whole_number
 
@@ -171,9 +171,9 @@ def _chart_status(results: list, args) -> int:
         _print_json(done[0] if len(done) == 1 and not args.all and not failed
                     and not inapplicable else done)
     for name, failure in inapplicable:
-        print(f"dualmech chart: {name}: {failure.message}", file=sys.stderr)
+        say("chart", f"{name}: {failure.message}", "")
     for name, failure in failed:
-        print(f"dualmech chart: no chart for {name}: {failure.message}", file=sys.stderr)
+        say("chart", f"no chart for {name}: {failure.message}", "")
     status = worst([OK] + [failure.status for _, failure in failed])
     if not done and inapplicable:
         status = worst([status, USAGE_OR_MODEL_ERROR])
