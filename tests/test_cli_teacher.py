@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 import sys
 import textwrap
+from pathlib import Path
 
 import pytest
 import sympy as sp
@@ -265,3 +266,27 @@ def test_every_command_takes_a_course_problem_by_entry_point(capsys, course, tmp
     status, _, err = run(capsys, "show", course)                  # one problem is needed
     assert status == 2
     assert "mech101:my_pendulum, mech101:my_inverted" in err and "name one" in err
+
+
+# -- a teacher's problem with given inputs F(t), graded --------------------------------------
+CART = str(Path(__file__).resolve().parent / "corpus" / "teacher_problems"
+           / "driven_cart_pendulum.py")
+#: the cart's x equation, by hand from the file's free-body diagram (cart + rod along O.x):
+#: (M + m) x'' + m L/2 (cos(theta) theta'' - sin(theta) theta'^2) = F + F_x
+CART_X = "(M+m)*x'' + m*L/2*cos(theta)*theta'' - m*L/2*sin(theta)*theta'^2 = F + F_x"
+
+
+def test_grade_takes_a_problem_with_given_inputs_and_their_dimensions(capsys):
+    # the inputs F and F_x are forces: drawn at each point as the verdict draws them, with
+    # their declared dimension (they were an internal KeyError, then "dimensionless")
+    status, out, err = run(capsys, "grade", CART, "--answer", CART_X)
+    assert status == 0 and out.startswith("RIGHT"), out + err
+    status, out, _ = run(capsys, "grade", CART, "--answer", CART_X.replace("+ F_x", "- F_x"))
+    assert status == 1 and out.startswith("WRONG") and "dimension" not in out
+    assert "`F_x` has the wrong sign" in " ".join(out.split())
+
+
+def test_grade_output_is_wrapped_to_the_terminal(capsys):
+    status, out, _ = run(capsys, "grade", CART, "--answer", "0 = 0")
+    assert status == 1 and "holds for any motion" in " ".join(out.split())
+    assert max(map(len, out.splitlines())) <= 100 and len(out.splitlines()) >= 4
