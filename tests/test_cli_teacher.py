@@ -290,3 +290,16 @@ def test_grade_output_is_wrapped_to_the_terminal(capsys):
     status, out, _ = run(capsys, "grade", CART, "--answer", "0 = 0")
     assert status == 1 and "holds for any motion" in " ".join(out.split())
     assert max(map(len, out.splitlines())) <= 100 and len(out.splitlines()) >= 4
+
+
+def test_fidelity_names_an_equilibrium_on_the_declared_singular_set(capsys, tmp_path):
+    # the spherical pendulum hangs at rest at theta = 0, where sin(theta) = 0 (declared
+    # singular): an equilibrium these coordinates cannot linearise about -- said, with the
+    # declaration that makes the ladder applicable (it said "no stable equilibrium")
+    path = CART.replace("driven_cart_pendulum", "spherical_pendulum")
+    status, _, err = run(capsys, "fidelity", path, "--out", tmp_path)
+    flat = " ".join(err.split())
+    assert status == 2 and "not applicable" in flat
+    assert "equilibrium at rest, theta = 0, phi = 0, lies on the declared singular set " \
+           "(sin(theta) = 0)" in flat
+    assert "`fidelity_ladder = (FidelityRung(" in flat and "no stable equilibrium" not in flat

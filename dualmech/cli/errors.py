@@ -159,7 +159,7 @@ def columns(stream=None) -> int:
 
 
 def fit(text: str, width: int | None = None) -> str:
-    """Every line of ``text`` wrapped to ``width`` (default :func:`columns`), continuation
+    r"""Every line of ``text`` wrapped to ``width`` (default :func:`columns`), continuation
     lines indented four spaces under it; words (and paths) are not broken, and a quoted line
     of the user's file stays whole.
 

@@ -239,13 +239,12 @@ def _atlas(args) -> int:
 
 
 def _fidelity(args) -> int:
-    from dualmech.numeric.studies.fidelity import NO_LADDER, has_ladder, ladder
+    from dualmech.numeric.studies.fidelity import ladder, not_applicable
     p = _problem(args.name)
     with about(p):
-        applies = has_ladder(p)
-    if not applies:
-        raise UsageError(f"`{p.name}` has no fidelity ladder (not applicable): no stable "
-                         f"equilibrium to linearise about, and {NO_LADDER}.")
+        why = not_applicable(p)
+    if why is not None:
+        raise UsageError(f"`{p.name}` has no fidelity ladder (not applicable): {why}")
     out = _writable(args.out)
     with about(p):
         result = ladder(p)
