@@ -303,3 +303,32 @@ def test_fidelity_names_an_equilibrium_on_the_declared_singular_set(capsys, tmp_
     assert "equilibrium at rest, theta = 0, phi = 0, lies on the declared singular set " \
            "(sin(theta) = 0)" in flat
     assert "`fidelity_ladder = (FidelityRung(" in flat and "no stable equilibrium" not in flat
+
+
+def test_a_prescribed_coordinate_declared_is_no_mistake(capsys, tmp_path):
+    # the tube's angle phi is turned by a motor (lg.prescribe(phi, Omega t)): declaring it
+    # among the coordinates (with its range) is no "coordinate declared but no model uses
+    # it"; it is no degree of freedom either
+    text = Path(CART.replace("driven_cart_pendulum", "rod_in_rotating_tube")).read_text()
+    old = '"rod centre from the pivot"),)'
+    assert old in text
+    path = tmp_path / "tube.py"
+    path.write_text(text.replace(old, '"rod centre from the pivot"),\n                   '
+                                 'Coordinate(phi, ANGLE, (-3.2, 3.2), (-10.0, 10.0), '
+                                 '"tube angle, turned by the motor"))'))
+    status, out, err = run(capsys, "check", path)
+    assert status == 0 and "no model uses it" not in out + err, err
+    assert "verdict: all derivations agree" in out
+    status, out, _ = run(capsys, "list", path, "--json")
+    assert status == 0 and json.loads(out)[0]["dof"] == 1
+    # a declared coordinate that no model uses nor prescribes is still a mistake
+    path = path.with_name("tube_psi.py")   # another file: a loaded file is not re-read
+    path.write_text(path.with_name("tube.py").read_text().replace(
+                                             '"tube angle, turned by the motor"))',
+                                             '"tube angle, turned by the motor"),\n'
+                                             '                   Coordinate(coordinate("psi"),'
+                                             ' ANGLE, (-1, 1)))'))
+    status, _, err = run(capsys, "check", path)
+    assert status == 2 and "coordinate `psi` is declared but no model uses it" in \
+        " ".join(err.split())
+    assert "`phi`" not in err

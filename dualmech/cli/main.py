@@ -453,11 +453,22 @@ def _file_rows(files) -> list[dict]:
             coords = [getattr(x, "name", str(x)) for x in getattr(c, "coordinates", ())]
             rows.append({"name": f"{f}:{c.__name__}", "title": c.title,
                          **source_fields(c.source or ""), "summary": getattr(c, "summary", ""),
-                         "dof": getattr(c, "parametric", "") or len(coords),
+                         "dof": getattr(c, "parametric", "") or _file_dof(c, len(coords)),
                          "coordinates": coords,
                          "reactions": [r.name for r in getattr(c, "reactions", ())],
                          "status": "modelled", "catalogue": str(f)})
     return rows
+
+
+def _file_dof(cls, declared: int) -> int | str:
+    """Degrees of freedom of a file's problem class: its reference model's coordinates (a
+    coordinate given a known motion, ``lg.prescribe``, is declared but no degree of
+    freedom); the declared count when the class or its model cannot be built (``check``
+    reports why)."""
+    try:
+        return len(cls().model(cls.reference).coordinates)
+    except Exception:  # noqa: BLE001 - listed all the same; the other commands say what is wrong
+        return declared
 
 
 def _cmd_list(args) -> int:
