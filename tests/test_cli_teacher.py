@@ -332,3 +332,26 @@ def test_a_prescribed_coordinate_declared_is_no_mistake(capsys, tmp_path):
     assert status == 2 and "coordinate `psi` is declared but no model uses it" in \
         " ".join(err.split())
     assert "`phi`" not in err
+
+
+def test_show_groups_each_row_by_acceleration_in_one_sign_convention(capsys):
+    # the cart's x row, by hand: (M + m) x'' + m L/2 (cos(theta) theta'' - sin(theta)
+    # theta'^2) = F + F_x; the direct form's cart row F - R_x - M x'' = 0 reads M x'' = F - R_x
+    status, out, _ = run(capsys, "show", CART)
+    assert status == 0
+    lagrange = out[out.index("== lagrange"):out.index("== reactions")]
+    x_dd_text = "x\u0308"                                 # x with a combining diaeresis
+    assert f"(M + m)\u22c5{x_dd_text} +" in lagrange and "= F + F\u2093" in lagrange
+    assert f"M\u22c5{x_dd_text} = F - R\u2093" in \
+        out[out.index("== newton_euler"):out.index("== lagrange")]
+    status, out, _ = run(capsys, "show", CART, "--json")
+    doc = json.loads(out)
+    M, m, L, F, Fx = sp.symbols("M m L F F_x")
+    x_dd, th, th_d, th_dd = sp.symbols("x_dd theta theta_d theta_dd")
+    row = doc["models"]["lagrange"]["equations"][0]["grouped"]
+    left, right = sp.sympify(row["left"]), sp.sympify(row["right"])   # our own output
+    hand = (M + m) * x_dd + m * L / 2 * (sp.cos(th) * th_dd - sp.sin(th) * th_d**2)
+    assert sp.expand(left - hand) == 0 and sp.expand(right - (F + Fx)) == 0
+    assert "(M + m)*x_dd" in row["left"]                     # grouped by acceleration
+    cart = doc["models"]["newton_euler"]["equations"][0]["grouped"]
+    assert sp.sympify(cart["left"]) == M * x_dd        # m a = sum F, as Lagrange's rows

@@ -629,13 +629,15 @@ def _show(problem, args) -> int:
     if args.json:
         return _show_json(problem, models, args)
     from dualmech.sources import source_name
-    print(f"{problem.name}: {problem.title}  ({source_name(problem.source)})")
+    from dualmech.verify.display import CONVENTION, rows_text
+    print(_fit(f"{problem.name}: {problem.title}  ({source_name(problem.source)})"))
+    print(_fit(f"({CONVENTION})"))
     for name, eqs in models.items():
         coords = ", ".join(q.func.__name__ for q in eqs.coordinates)
         unknowns = ", ".join(str(u) for u in eqs.unknowns) or "none"
         print()
         print(_heading(f"{name}  (coordinates: {coords}; unknowns: {unknowns})"))
-        print(eqs.pretty(latex=args.latex, notation=args.notation))
+        print(rows_text(eqs, latex=args.latex, notation=args.notation))
     if not problem.reactions:
         return OK
     c = _compare(problem, 8, 0)
@@ -682,16 +684,17 @@ def _show_json(problem, models: dict, args) -> int:
     """``show --json``: each model's labelled equations, then the recovered reactions (the
     expressions as ``check --json`` writes them)."""
     from dualmech.model.notation import machine
-    from dualmech.verify.display import dotted
+    from dualmech.verify.display import CONVENTION, dotted
     from dualmech.sources import source_fields
     doc = {"name": problem.name, "title": problem.title, **source_fields(problem.source),
            "models": {name: {"coordinates": [q.func.__name__ for q in eqs.coordinates],
                              "unknowns": [str(u) for u in eqs.unknowns],
                              "equations": [{"label": label, "expression": dotted(e),
-                                            "machine": machine(e, eqs.coordinates)}
+                                            "machine": machine(e, eqs.coordinates),
+                                            **_grouped_json(eqs, e)}
                                            for label, e in zip(eqs.labels, eqs.equations)]}
                       for name, eqs in models.items()},
-           "reactions": {}}
+           "grouped_as": CONVENTION, "reactions": {}}
     status = OK
     if problem.reactions:
         c = _compare(problem, 8, 0)
@@ -713,6 +716,18 @@ def _show_json(problem, models: dict, args) -> int:
         status = _status(c)
     print(_json(doc))
     return status
+
+
+def _grouped_json(eqs, row) -> dict:
+    """``{"grouped": {"left", "right"}}``: the row as :func:`~dualmech.verify.display.grouped`
+    writes it (machine text), or nothing past the display budget."""
+    from dualmech.model.notation import machine
+    from dualmech.verify.display import grouped, row_sign
+    sides = grouped(row, eqs.coordinates, row_sign(eqs))
+    if sides is None:
+        return {}
+    return {"grouped": {"left": machine(sides[0], eqs.coordinates),
+                        "right": machine(sides[1], eqs.coordinates)}}
 
 
 def _heading(text: str) -> str:
