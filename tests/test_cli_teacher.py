@@ -355,3 +355,32 @@ def test_show_groups_each_row_by_acceleration_in_one_sign_convention(capsys):
     assert "(M + m)*x_dd" in row["left"]                     # grouped by acceleration
     cart = doc["models"]["newton_euler"]["equations"][0]["grouped"]
     assert sp.sympify(cart["left"]) == M * x_dd        # m a = sum F, as Lagrange's rows
+
+
+WEDGE = CART.replace("driven_cart_pendulum", "wedge_block")
+
+
+def test_fidelity_and_atlas_say_why_not_and_what_to_declare(capsys, tmp_path):
+    # the wedge is driven by F(t): no ladder for a driven scene, said as such (it was "no
+    # stable equilibrium to linearise about (list index out of range)"); its atlas has no
+    # DAE formulation, with the declaration that would give one
+    status, _, err = run(capsys, "fidelity", WEDGE, "--out", tmp_path)
+    flat = " ".join(err.split())
+    assert status == 2 and "it is driven by given inputs (F)" in flat
+    assert "index out of range" not in flat
+    status, out, _ = run(capsys, "atlas", WEDGE, "--section", "dae_drift", "--out", tmp_path)
+    flat = " ".join(out.split())
+    assert status == 0 and "[dae_drift] not applicable: `wedge_block` has no DAE formulation: " \
+        "declare a model whose coordinates are held by constraints closed with multipliers" \
+        in flat and "`lg.constraint(name, g)`" in flat
+    assert max(map(len, out.splitlines())) <= 100     # the atlas's lines wrapped too
+
+
+def test_the_line_of_the_file_is_marked_and_kept_whole(capsys, teacher):
+    long_call = ("ne.gravity(-SIGN * g * O.y + 0 * g * O.x + 0 * g * O.z + 0 * g * O.x + 0 * g "
+                 "* O.z + 0 * g * Oy)")
+    teacher.write_text(teacher.read_text().replace("ne.gravity(-SIGN * g * O.y)", long_call)
+                       .replace('"my_pendulum"', '"my_long_line"'))
+    status, _, err = run(capsys, "check", teacher)
+    assert status == 2 and "NameError: name 'Oy' is not defined" in " ".join(err.split())
+    assert f"    {long_call}  # <- error" in err.splitlines()     # whole, though > 100

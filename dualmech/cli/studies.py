@@ -39,8 +39,8 @@ import sys
 from pathlib import Path
 
 from dualmech.cli import names as _names
-from dualmech.cli.errors import (OK, USAGE_OR_MODEL_ERROR, UsageError, about, describe, say,
-                                 guarded, worst)
+from dualmech.cli.errors import (OK, USAGE_OR_MODEL_ERROR, UsageError, about, columns,
+                                 describe, fit, guarded, say, worst)
 from dualmech.cli.options import positive_number, whole_number
 
 __all__ = ["register", "CHART_EXIT_STATUS"]
@@ -157,7 +157,7 @@ def _chart(args) -> int:
                 print(f"charting: {len(results)}/{len(chosen)} ({r[0]})", file=sys.stderr,
                       flush=True)
             if r[1] is None and not args.json:
-                print(r[3], flush=True)
+                print(fit(r[3], columns(sys.stdout)), flush=True)
     return _chart_status(results, args)
 
 
@@ -233,8 +233,8 @@ def _atlas(args) -> int:
     if args.json:
         _print_json({**result.to_dict(), "files": [str(x) for x in paths]})
         return OK
-    print(result)
-    print(f"\nwrote {', '.join(str(x) for x in paths)}")
+    print(fit(str(result), columns(sys.stdout)))
+    print(fit(f"\nwrote {', '.join(str(x) for x in paths)}", columns(sys.stdout)))
     return OK
 
 
@@ -252,6 +252,6 @@ def _fidelity(args) -> int:
     if args.json:
         _print_json({**result.to_dict(), "files": [str(x) for x in paths]})
         return OK
-    print(result)
-    print(f"\nwrote {', '.join(str(x) for x in paths)}")
+    print(fit(str(result), columns(sys.stdout)))
+    print(fit(f"\nwrote {', '.join(str(x) for x in paths)}", columns(sys.stdout)))
     return OK

@@ -159,13 +159,23 @@ def not_applicable(problem) -> str | None:
     """
     if problem.fidelity_ladder:
         return None
+    driven = [str(x) for x in problem.input_symbols]
+    if driven:
+        return (f"it is driven by given inputs ({', '.join(driven)}): a fidelity ladder "
+                "compares models of a free scene (its linearised rung is a small oscillation "
+                "about an equilibrium without inputs) and is not made for a driven one; "
+                "`dualmech simulate NAME --input ...` runs the driven scene.")
+    made, skipped = formulations(problem, models=[problem.reference], stabilisations=())
+    if not made:
+        return (f"its reference model `{problem.reference}` cannot be integrated "
+                f"({'; '.join(skipped.values())}), and {NO_LADDER}.")
+    f = made[0]
     try:
-        f = formulations(problem, models=[problem.reference], stabilisations=())[0][0]
         stable_equilibrium(problem, f)
         return None
-    except (ValueError, IndexError) as exc:
+    except ValueError as exc:
         why = str(exc)
-    at = _singular_equilibrium(problem, f) if "f" in locals() else None
+    at = _singular_equilibrium(problem, f)
     if at is None:
         return f"no stable equilibrium to linearise about ({why}), and {NO_LADDER}."
     state = ", ".join(f"{q.func.__name__} = {v:.6g}" for q, v in zip(f.coordinates, at))
