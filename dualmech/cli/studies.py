@@ -252,6 +252,6 @@ def _fidelity(args) -> int:
     if args.json:
         _print_json({**result.to_dict(), "files": [str(x) for x in paths]})
         return OK
-    print(fit(str(result), columns(sys.stdout)))
+    print(result)   # a table: its rows are not wrapped
     print(fit(f"\nwrote {', '.join(str(x) for x in paths)}", columns(sys.stdout)))
     return OK
