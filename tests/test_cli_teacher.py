@@ -384,3 +384,26 @@ def test_the_line_of_the_file_is_marked_and_kept_whole(capsys, teacher):
     status, _, err = run(capsys, "check", teacher)
     assert status == 2 and "NameError: name 'Oy' is not defined" in " ".join(err.split())
     assert f"    {long_call}  # <- error" in err.splitlines()     # whole, though > 100
+
+
+def test_a_reversed_one_sided_reaction_is_said_though_the_models_agree(capsys, tmp_path):
+    # the face's push declared along -n instead of n: the direct form and its referee share
+    # the declaration, so they agree (N comes out negative); N is one-sided (unilateral), and
+    # at the default state, by hand, N = -m M g cos(alpha)/(M + m sin(alpha)^2) < 0
+    path = tmp_path / "wedge_reversed.py"
+    text = Path(WEDGE).read_text()
+    old = 'ne.reaction("N", block, I.y,'
+    assert old in text
+    path.write_text(text.replace(old, 'ne.reaction("N", block, -I.y,'))
+    status, out, _ = run(capsys, "check", path)
+    flat = " ".join(out.split())
+    assert status == 0 and "verdict: all derivations agree" in flat
+    m, M, g, alpha = 1.0, 3.0, 9.81, 0.5           # the file's defaults
+    import math
+    N = -m * M * g * math.cos(alpha) / (M + m * math.sin(alpha)**2)
+    assert f"warning: one-sided reaction N = {N:.6g} < 0 at t = 0 s" in flat
+    assert "the direction is probably reversed" in flat
+    status, out, _ = run(capsys, "check", path, "--json")
+    assert json.loads(out)["one_sided_warnings"][0].startswith(f"one-sided reaction N = {N:.6g}")
+    status, out, _ = run(capsys, "check", WEDGE)       # the right declaration: no warning
+    assert status == 0 and "warning: one-sided" not in out

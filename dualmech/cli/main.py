@@ -524,6 +524,7 @@ def _check_in_worker(i: int, points: int, seed: int, notation: str,
     try:   # the report is written here, where the error's traceback (its user line) is
         with about(problem):
             text, data = with_values(problem, c, _text(c, notation), c.to_dict(), at)
+            text, data = _one_sided(problem, c, text, data)
             text = _fit(text)
             return _Checked(text, data, bool(c.equivalent), getattr(c, "failure", None))
     except Exception as exc:  # noqa: BLE001 - the parent reports it
@@ -563,10 +564,43 @@ def _printed(problem, c, notation: str, at: str | None = None):
     :mod:`dualmech.cli.at_state`), or of the failure writing it raised."""
     try:
         with about(problem):
-            return _fit(with_values(problem, c, _text(c, notation), None, at)[0]), c
+            text = with_values(problem, c, _text(c, notation), None, at)[0]
+            return _fit(_one_sided(problem, c, text, None)[0]), c
     except Exception as exc:  # noqa: BLE001 - e.g. a model the display cannot solve
         failed = _Failed(problem, exc, getattr(c, "seconds", 0.0))
         return str(failed), failed
+
+
+def _one_sided(problem, c, text: str | None, data: dict | None):
+    """``(text, data)`` with a warning for each one-sided reaction (``Problem.unilateral``)
+    that is negative at the problem's default state: it must be >= 0 along its declared
+    direction, so the direction is probably reversed (the models agree all the same: the
+    direct form and its referee share that declaration), or the scene starts where the
+    contact has already let go.  Nothing is added when the models disagree."""
+    one_sided = getattr(problem, "unilateral", None) or {}
+    if not one_sided or not getattr(c, "equivalent", False) or \
+            getattr(c, "failure", None) is not None:
+        return text, data
+    from dualmech.numeric.reactions_state import reactions_at_state
+    try:
+        values = reactions_at_state(problem, None, comparison=c)
+    except (ValueError, ArithmeticError):   # no state to judge at: nothing to say
+        return text, data
+    info = problem.reaction_info()
+    warnings = [f"one-sided reaction {name} = {values.direct[name]:.6g} < 0 at t = "
+                f"{values.time:g} s, {values.where()}: it must be >= 0 along its declared "
+                f"direction ({info[name].direction or 'see reactions'}) -- the direction "
+                "is probably reversed (both the direct form and its referee take it from "
+                "the declaration, so they agree), or the scene starts where the contact has "
+                "let go"
+                for name in one_sided if values.direct.get(name, 0.0) < 0]
+    if not warnings:
+        return text, data
+    if text is not None:
+        text += "\n" + "\n".join(f"  warning: {w}" for w in warnings)
+    if data is not None:
+        data = {**data, "one_sided_warnings": warnings}
+    return text, data
 
 
 class _JsonValues:
@@ -579,7 +613,8 @@ class _JsonValues:
         return getattr(self._c, name)
 
     def to_dict(self) -> dict:
-        return with_values(self._problem, self._c, None, self._c.to_dict(), self._at)[1]
+        data = with_values(self._problem, self._c, None, self._c.to_dict(), self._at)[1]
+        return _one_sided(self._problem, self._c, None, data)[1]
 
 
 def _cmd_check(args) -> int:
