@@ -578,8 +578,8 @@ def _one_sided(problem, c, text: str | None, data: dict | None):
     direct form and its referee share that declaration), or the scene starts where the
     contact has already let go.  Nothing is added when the models disagree."""
     one_sided = getattr(problem, "unilateral", None) or {}
-    if not one_sided or not getattr(c, "equivalent", False) or \
-            getattr(c, "failure", None) is not None:
+    if not one_sided or not getattr(c, "equivalent", False) or isinstance(c, _Checked) or \
+            getattr(c, "failure", None) is not None:   # a worker's report has it already
         return text, data
     from dualmech.numeric.reactions_state import reactions_at_state
     try:

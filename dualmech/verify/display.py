@@ -396,7 +396,7 @@ def grouped(expr, coordinates, sign: int = 1, limits: Budget | None = None):
     (M + m)⋅x′′ + l⋅m⋅cos(θ)⋅θ′′ - l⋅m⋅sin(θ)⋅θ′⋅x′ = F
     """
     limits = limits or Budget()
-    expr = sp.expand(as_expr(expr) * sign)
+    expr = sp.S(sp.expand(sp.S(as_expr(expr)) * sign))
     if not ops_within(expr, 4 * limits.max_ops):
         return None
     acc = [q.diff(t, 2) for q in coordinates]
@@ -404,13 +404,13 @@ def grouped(expr, coordinates, sign: int = 1, limits: Budget | None = None):
     a_sym = [sp.Dummy(f"a{i}") for i in range(len(acc))]
     v_sym = [sp.Dummy(f"v{i}") for i in range(len(vel))]
     back = dict(zip(a_sym + v_sym, acc + vel))
-    plain = expr.xreplace(dict(zip(acc, a_sym))).xreplace(dict(zip(vel, v_sym)))
+    plain = sp.S(expr.xreplace(dict(zip(acc, a_sym))).xreplace(dict(zip(vel, v_sym))))
     try:
         with budget(limits.remaining()):
             left = [(_coefficient(plain.diff(a), limits).xreplace(back), q)
                     for a, q in zip(a_sym, acc)]
-            rest = plain.xreplace({a: 0 for a in a_sym})
-            loads = rest.xreplace({v: 0 for v in v_sym})
+            rest = sp.S(plain.xreplace({a: 0 for a in a_sym}))
+            loads = sp.S(rest.xreplace({v: 0 for v in v_sym}))
             rates = sp.Poly(sp.expand(rest - loads), *v_sym, domain="EX") \
                 if v_sym and rest != loads else None
             for monomial, c in (rates.terms() if rates is not None else ()):
@@ -428,9 +428,9 @@ def grouped(expr, coordinates, sign: int = 1, limits: Budget | None = None):
 def _coefficient(c, limits: Budget):
     """A coefficient as a teacher writes it: tidied (:func:`tidy`), common factors out."""
     try:
-        return sp.factor_terms(tidy(c, limits))
+        return sp.factor_terms(sp.S(tidy(c, limits)))
     except OverBudget:
-        return c
+        return sp.S(c)
 
 
 def _term(c, what):
