@@ -407,3 +407,24 @@ def test_a_reversed_one_sided_reaction_is_said_though_the_models_agree(capsys, t
     assert json.loads(out)["one_sided_warnings"][0].startswith(f"one-sided reaction N = {N:.6g}")
     status, out, _ = run(capsys, "check", WEDGE)       # the right declaration: no warning
     assert status == 0 and "warning: one-sided" not in out
+
+
+def test_the_class_page_lists_a_teachers_file_by_its_title(tmp_path):
+    # the served file's own title, source and summary, as a catalogue problem's (it was
+    # listed with its name as title and no source)
+    pytest.importorskip("starlette")
+    from starlette.testclient import TestClient
+    from dualmech.web.app import create_app
+
+    class NoGrading:
+        workers = 1
+
+        def submit(self, *args, **kwargs):
+            raise AssertionError("this test does not grade")
+
+    app = create_app([WEDGE, "toy_car"], data=tmp_path, token="Teacher-token-8-x1Y9q2Z", pool=NoGrading())
+    with TestClient(app) as client:
+        listed = {p["name"]: p for p in client.get("/api/problems").json()}
+    assert listed["wedge_block"]["title"] == "Block sliding on a free wedge pushed by F(t)"
+    assert listed["wedge_block"]["source"] == "my notes: ex. 9"
+    assert listed["toy_car"]["title"] == "Toy car on rotating track"
