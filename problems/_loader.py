@@ -247,6 +247,10 @@ def user_line(exc: BaseException, files=()):
     return None
 
 
+#: what marks the quoted line of the user's file in :func:`user_error`
+_MARK = "# <- error"
+
+
 def user_error(exc: BaseException, files=()) -> str | None:
     """``exc`` as the user's error at the innermost line of their own file (see
     :func:`user_line`): the file and line, the error, the source line, the function it is in
@@ -273,7 +277,8 @@ def user_error(exc: BaseException, files=()) -> str | None:
     lines = [f"{path}, line {lineno}: {type(exc).__name__}: {message}"]
     if source.strip():
         indent = len(source) - len(source.lstrip())
-        lines.append("    " + source.strip())
+        marked = source.strip()   # marked: the command line keeps it whole when it wraps
+        lines.append("    " + (marked if marked.endswith(_MARK) else f"{marked}  {_MARK}"))
         offset = getattr(exc, "offset", None) if frame is None else None
         if offset and offset - 1 >= indent:
             lines.append("    " + " " * (offset - 1 - indent) + "^")

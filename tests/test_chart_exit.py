@@ -70,8 +70,11 @@ def tiny(tmp_path):
 
 
 def _chart(capsys, tmp_path, *names):
+    """The status and the captured output; stderr as one line of words (its messages are
+    wrapped to the terminal, a line breaking between any two words)."""
     status = main(["chart", *names, "--out", str(tmp_path / "out"), *FAST])
-    return status, capsys.readouterr()
+    out = capsys.readouterr()
+    return status, out._replace(err=" ".join(out.err.split()))
 
 
 def test_a_not_applicable_problem_beside_a_charted_one_exits_0(capsys, tmp_path, tiny):

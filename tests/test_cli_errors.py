@@ -74,7 +74,7 @@ def test_an_error_in_the_users_file_is_shown_at_its_line(tmp_path):
     assert failure.status == 2 and failure.kind == "user"
     first, source, where, fix = failure.message.splitlines()
     assert first == f"{path}, line 2: ZeroDivisionError: division by zero"
-    assert source == "    stiffness = 1 / k"
+    assert source == "    stiffness = 1 / k  # <- error"   # marked: kept whole when wrapped
     assert where == "  in build()" and fix.startswith("  to fix: a division by zero")
 
 

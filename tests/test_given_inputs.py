@@ -124,9 +124,11 @@ def test_bad_histories_are_refused_naming_the_input(block, inputs, kind, message
 
 
 def run_cli(capsys, *argv):
+    """The status, stdout and stderr of ``dualmech ARGV``; stderr as one line of words (its
+    messages are wrapped to the terminal, a line breaking between any two words)."""
     status = main([str(a) for a in argv])
     out, err = capsys.readouterr()
-    return status, out, err
+    return status, out, " ".join(err.split())
 
 
 def test_cli_expression_and_csv_histories(capsys, tmp_path):

@@ -140,9 +140,11 @@ class _Declared:
 
 
 def run_cli(capsys, *argv):
+    """The status, stdout and stderr of ``dualmech ARGV``; stderr as one line of words (its
+    messages are wrapped to the terminal, a line breaking between any two words)."""
     status = main([str(a) for a in argv])
     out, err = capsys.readouterr()
-    return status, out, err
+    return status, out, " ".join(err.split())
 
 
 @needs_cvode

@@ -50,9 +50,11 @@ USER_FILE = textwrap.dedent('''
 
 
 def run(capsys, *argv):
+    """Status, stdout and stderr of ``dualmech ARGV``; stderr as one line of words (messages
+    are wrapped to the terminal, a line breaking between any two words)."""
     status = main(list(argv))
     out, err = capsys.readouterr()
-    return status, out, err
+    return status, out, " ".join(err.split())
 
 
 @pytest.fixture

@@ -112,7 +112,7 @@ def test_doubled_mass_in_shared_declaration_is_not_blamed_on_lagrange_alone(caps
 
 def test_non_unit_reaction_direction_is_refused(capsys, tmp_path):
     status = main(["check", _teacher(tmp_path, "non-unit direction")])
-    err = capsys.readouterr().err
+    err = " ".join(capsys.readouterr().err.split())   # wrapped to 100 columns: as words
     assert status == 2      # a model that cannot be built (dualmech.cli.errors), on stderr
     assert "the direction of reaction `T1` is not a unit vector (its squared length is 4)" in err
 

@@ -44,7 +44,7 @@ def test_a_token_on_the_command_line_or_in_a_readable_file_is_refused(served, tm
     f.write_text("a-long-teacher-token-42")
     os.chmod(f, 0o644)
     assert main(["serve", "--token-file", str(f)]) == 2
-    assert f"chmod 600 {f}" in capsys.readouterr().err
+    assert f"chmod 600 {f}" in " ".join(capsys.readouterr().err.split())   # wrapped
     assert main(["serve", "--token-file", str(tmp_path / "missing")]) == 2
     assert "cannot read the token file" in capsys.readouterr().err
     empty = tmp_path / "empty"

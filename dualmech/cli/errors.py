@@ -15,6 +15,10 @@ Exit status (every command)::
 
 Several problems at once: the worst status of them (2 before 1 before 0).
 
+Every message is wrapped to the terminal's width (100 columns when stderr is no terminal),
+its continuation lines indented under it; a quoted line of the user's file (marked
+``# <- error``) stays whole, as it is in the file (:func:`fit`, :func:`say`).
+
 No Python traceback reaches the terminal.  An error raised in the user's own code -- a
 problem file, or a module of a course package -- is shown at the innermost line of it that
 the error passed through, with the source line and what to fix
@@ -36,12 +40,15 @@ from __future__ import annotations
 import contextlib
 import functools
 import os
+import shutil
 import sys
+import textwrap
 import traceback
 from dataclasses import dataclass
 
 __all__ = ["OK", "DISAGREE", "USAGE_OR_MODEL_ERROR", "INTERRUPTED", "EXIT_STATUS",
-           "UsageError", "Failure", "about", "describe", "report", "guarded", "worst"]
+           "UsageError", "Failure", "about", "describe", "report", "guarded", "worst",
+           "columns", "fit", "say"]
 
 OK = 0
 DISAGREE = 1
@@ -133,13 +140,64 @@ def describe(exc: BaseException, problem=None) -> Failure:
     return Failure(USAGE_OR_MODEL_ERROR, _internal(exc, problem), "internal")
 
 
+#: width of a message that goes to a file or a pipe, not a terminal
+PIPE_COLUMNS = 100
+#: what marks a quoted line of the user's file (:func:`dualmech.problems.user_error`)
+_QUOTED = "# <- error"
+
+
+def columns(stream=None) -> int:
+    """The width of the terminal ``stream`` (default stderr) writes to, at least 40; 100
+    when it is no terminal."""
+    stream = sys.stderr if stream is None else stream
+    try:
+        tty = stream.isatty()
+    except (AttributeError, ValueError):   # a closed or a fake stream
+        tty = False
+    return max(40, shutil.get_terminal_size((PIPE_COLUMNS, 24)).columns) if tty \
+        else PIPE_COLUMNS
+
+
+def fit(text: str, width: int | None = None) -> str:
+    r"""Every line of ``text`` wrapped to ``width`` (default :func:`columns`), continuation
+    lines indented four spaces under it; words (and paths) are not broken, and a quoted line
+    of the user's file stays whole.
+
+    >>> print(fit("dualmech check: error: reaction `N` is declared but no model uses it "
+    ...           "(a typo in a name?)\n    ne.reaction('NN', ...)  # <- error", 40))
+    dualmech check: error: reaction `N` is
+        declared but no model uses it (a
+        typo in a name?)
+        ne.reaction('NN', ...)  # <- error
+    """
+    width = width or columns()
+    out = []
+    for line in text.split("\n"):
+        lead = line[:len(line) - len(line.lstrip(" "))]
+        if len(line) <= width or line.rstrip().endswith(_QUOTED):
+            out.append(line)
+            continue
+        out.append(textwrap.fill(line.strip(" "), width, initial_indent=lead,
+                                 subsequent_indent=lead + "    ", break_long_words=False,
+                                 break_on_hyphens=False))
+    return "\n".join(out)
+
+
+def say(command: str, message: str, what: str = "error", stream=None) -> None:
+    """``dualmech COMMAND: WHAT: MESSAGE`` on ``stream`` (default stderr), wrapped to its
+    width (:func:`fit`); ``what=""`` leaves the word out."""
+    stream = sys.stderr if stream is None else stream
+    head = f"dualmech {command}: " + (f"{what}: " if what else "")
+    print(fit(head + message, columns(stream)), file=stream, flush=True)
+
+
 def report(command: str, exc: BaseException, problem=None) -> int:
     """Print what :func:`describe` says about ``exc`` on stderr; return the exit status."""
     failure = describe(exc, problem)
     if failure.status == INTERRUPTED:
         print(f"dualmech {command}: interrupted", file=sys.stderr)
         return INTERRUPTED
-    print(f"dualmech {command}: error: {failure.message}", file=sys.stderr)
+    say(command, failure.message)
     if failure.internal and os.environ.get(TRACEBACK_VARIABLE, "0") not in ("", "0"):
         traceback.print_exception(exc, file=sys.stderr)
     return failure.status
@@ -227,7 +285,13 @@ def _declared_at(problem, exc: BaseException) -> str | None:
             break
     head, _, rest = message.partition("\n")
     return (f"{path}, line {line}: {type(exc).__name__}: {head}\n"
-            f"    {lines[line - first].strip()}" + (f"\n{rest}" if rest else ""))
+            f"    {_quoted(lines[line - first])}" + (f"\n{rest}" if rest else ""))
+
+
+def _quoted(source_line: str) -> str:
+    """A line of the user's file as a message quotes it: stripped, marked ``# <- error``."""
+    text = source_line.strip()
+    return text if text.endswith(_QUOTED) else f"{text}  {_QUOTED}"
 
 
 def _jumps(problem) -> str | None:

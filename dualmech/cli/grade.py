@@ -45,7 +45,7 @@ from pathlib import Path
 
 from dualmech.cli import names as _names
 from dualmech.cli.errors import DISAGREE as EXIT_WRONG
-from dualmech.cli.errors import UsageError, about, guarded
+from dualmech.cli.errors import UsageError, about, columns, fit, guarded, say
 from dualmech.cli.errors import OK as EXIT_RIGHT
 from dualmech.cli.errors import USAGE_OR_MODEL_ERROR as EXIT_USAGE
 
@@ -126,10 +126,10 @@ def handle(args: argparse.Namespace) -> int:
     from dualmech.grade.sandbox import grade_bounded
     result = grade_bounded(args.name, answer, args.quantity, about=args.about)
     result = result.at_level(args.feedback)
-    print(json.dumps(result.to_dict(), indent=2) if args.json else str(result))
+    print(json.dumps(result.to_dict(), indent=2) if args.json
+          else fit(str(result), columns(sys.stdout)))   # wrapped, as every report is
     if result.status == "invalid":   # the grade above says why; scripts read stderr
-        print("dualmech grade: error: the answer could not be graded as typed (see above).",
-              file=sys.stderr)
+        say("grade", "the answer could not be graded as typed (see above).")
     return {"right": EXIT_RIGHT, "wrong": EXIT_WRONG}.get(result.status, EXIT_USAGE)
 
 

@@ -50,7 +50,7 @@ from dualmech.cli.at_state import (add_at_option, check_at, report_data, state_v
                                    values_wanted, with_values)
 from dualmech.cli.options import positive_number
 from dualmech.cli.errors import (DISAGREE, EXIT_STATUS, OK, USAGE_OR_MODEL_ERROR, Failure,
-                                 UsageError, about, describe, guarded, worst)
+                                 UsageError, about, describe, guarded, say, worst)
 
 __all__ = ["main", "command", "build_parser"]
 
@@ -85,9 +85,20 @@ def _duration(text: str) -> float:
     return value
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse's parser, its usage errors wrapped to the terminal as every message is
+    (:func:`dualmech.cli.errors.fit`); sub-parsers are of this class too."""
+
+    def error(self, message: str):
+        from dualmech.cli.errors import columns, fit
+        self.print_usage(sys.stderr)
+        self.exit(USAGE_OR_MODEL_ERROR,
+                  fit(f"{self.prog}: error: {message}", columns(sys.stderr)) + "\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``dualmech`` (one sub-parser per command)."""
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="dualmech",
         description="Every mechanics problem written twice -- Newton-Euler and Lagrange -- "
                     "proved equivalent exactly, with the reaction forces recovered.",
@@ -179,9 +190,12 @@ def build_parser() -> argparse.ArgumentParser:
                                    "doubled; one unknown reaction's sign flipped; one mass "
                                    "doubled; two parameters swapped -- and check that the "
                                    "comparison, judging the mutant among all the problem's "
-                                   "derivations, names the mutant's derivation (or the "
-                                   "reaction it changes).  A survivor is a mistake your two "
-                                   "derivations would not catch; the report says why.  "
+                                   "derivations and the Kane referee (as `check` does), "
+                                   "names the mutant's derivation (or the reaction it "
+                                   "changes).  A survivor is a mistake the checks would "
+                                   "not catch; the report says why.  A mutant that changes "
+                                   "only reactions no second derivation gives is reported "
+                                   "as uncatchable, with the model that would catch it.  "
                                    "Exit status 1 when a mutant survives.")
     p.add_argument("names", nargs="*", metavar="NAME",
                    help="problems to mutate: catalogue names, path.py[:Class] or module:Class")
@@ -375,7 +389,7 @@ def _say_failed(command: str, c) -> None:
     """A comparison that could not be made, as the command's error on stderr."""
     failure = getattr(c, "failure", None)
     if failure is not None:
-        print(f"dualmech {command}: error: {failure.message}", file=sys.stderr, flush=True)
+        say(command, failure.message)
 
 
 def _progress(items, what: str):
@@ -404,7 +418,7 @@ def _list_rows() -> list[dict]:
         try:
             classes = cat.catalogue_classes(ep)
         except KeyError as exc:   # a broken course package is named, the rest still listed
-            print(f"dualmech list: {exc.args[0] if exc.args else exc}", file=sys.stderr)
+            say("list", exc.args[0] if exc.args else str(exc), "")
             continue
         for c in classes:
             coords = [getattr(x, "name", str(x)) for x in getattr(c, "coordinates", ())]
@@ -439,11 +453,22 @@ def _file_rows(files) -> list[dict]:
             coords = [getattr(x, "name", str(x)) for x in getattr(c, "coordinates", ())]
             rows.append({"name": f"{f}:{c.__name__}", "title": c.title,
                          **source_fields(c.source or ""), "summary": getattr(c, "summary", ""),
-                         "dof": getattr(c, "parametric", "") or len(coords),
+                         "dof": getattr(c, "parametric", "") or _file_dof(c, len(coords)),
                          "coordinates": coords,
                          "reactions": [r.name for r in getattr(c, "reactions", ())],
                          "status": "modelled", "catalogue": str(f)})
     return rows
+
+
+def _file_dof(cls, declared: int) -> int | str:
+    """Degrees of freedom of a file's problem class: its reference model's coordinates (a
+    coordinate given a known motion, ``lg.prescribe``, is declared but no degree of
+    freedom); the declared count when the class or its model cannot be built (``check``
+    reports why)."""
+    try:
+        return len(cls().model(cls.reference).coordinates)
+    except Exception:  # noqa: BLE001 - listed all the same; the other commands say what is wrong
+        return declared
 
 
 def _cmd_list(args) -> int:
@@ -499,6 +524,7 @@ def _check_in_worker(i: int, points: int, seed: int, notation: str,
     try:   # the report is written here, where the error's traceback (its user line) is
         with about(problem):
             text, data = with_values(problem, c, _text(c, notation), c.to_dict(), at)
+            text, data = _one_sided(problem, c, text, data)
             text = _fit(text)
             return _Checked(text, data, bool(c.equivalent), getattr(c, "failure", None))
     except Exception as exc:  # noqa: BLE001 - the parent reports it
@@ -538,10 +564,43 @@ def _printed(problem, c, notation: str, at: str | None = None):
     :mod:`dualmech.cli.at_state`), or of the failure writing it raised."""
     try:
         with about(problem):
-            return _fit(with_values(problem, c, _text(c, notation), None, at)[0]), c
+            text = with_values(problem, c, _text(c, notation), None, at)[0]
+            return _fit(_one_sided(problem, c, text, None)[0]), c
     except Exception as exc:  # noqa: BLE001 - e.g. a model the display cannot solve
         failed = _Failed(problem, exc, getattr(c, "seconds", 0.0))
         return str(failed), failed
+
+
+def _one_sided(problem, c, text: str | None, data: dict | None):
+    """``(text, data)`` with a warning for each one-sided reaction (``Problem.unilateral``)
+    that is negative at the problem's default state: it must be >= 0 along its declared
+    direction, so the direction is probably reversed (the models agree all the same: the
+    direct form and its referee share that declaration), or the scene starts where the
+    contact has already let go.  Nothing is added when the models disagree."""
+    one_sided = getattr(problem, "unilateral", None) or {}
+    if not one_sided or not getattr(c, "equivalent", False) or isinstance(c, _Checked) or \
+            getattr(c, "failure", None) is not None:   # a worker's report has it already
+        return text, data
+    from dualmech.numeric.reactions_state import reactions_at_state
+    try:
+        values = reactions_at_state(problem, None, comparison=c)
+    except (ValueError, ArithmeticError):   # no state to judge at: nothing to say
+        return text, data
+    info = problem.reaction_info()
+    warnings = [f"one-sided reaction {name} = {values.direct[name]:.6g} < 0 at t = "
+                f"{values.time:g} s, {values.where()}: it must be >= 0 along its declared "
+                f"direction ({info[name].direction or 'see reactions'}) -- the direction "
+                "is probably reversed (both the direct form and its referee take it from "
+                "the declaration, so they agree), or the scene starts where the contact has "
+                "let go"
+                for name in one_sided if values.direct.get(name, 0.0) < 0]
+    if not warnings:
+        return text, data
+    if text is not None:
+        text += "\n" + "\n".join(f"  warning: {w}" for w in warnings)
+    if data is not None:
+        data = {**data, "one_sided_warnings": warnings}
+    return text, data
 
 
 class _JsonValues:
@@ -554,7 +613,8 @@ class _JsonValues:
         return getattr(self._c, name)
 
     def to_dict(self) -> dict:
-        return with_values(self._problem, self._c, None, self._c.to_dict(), self._at)[1]
+        data = with_values(self._problem, self._c, None, self._c.to_dict(), self._at)[1]
+        return _one_sided(self._problem, self._c, None, data)[1]
 
 
 def _cmd_check(args) -> int:
@@ -604,13 +664,15 @@ def _show(problem, args) -> int:
     if args.json:
         return _show_json(problem, models, args)
     from dualmech.sources import source_name
-    print(f"{problem.name}: {problem.title}  ({source_name(problem.source)})")
+    from dualmech.verify.display import CONVENTION, rows_text
+    print(_fit(f"{problem.name}: {problem.title}  ({source_name(problem.source)})"))
+    print(_fit(f"({CONVENTION})"))
     for name, eqs in models.items():
         coords = ", ".join(q.func.__name__ for q in eqs.coordinates)
         unknowns = ", ".join(str(u) for u in eqs.unknowns) or "none"
         print()
         print(_heading(f"{name}  (coordinates: {coords}; unknowns: {unknowns})"))
-        print(eqs.pretty(latex=args.latex, notation=args.notation))
+        print(rows_text(eqs, latex=args.latex, notation=args.notation))
     if not problem.reactions:
         return OK
     c = _compare(problem, 8, 0)
@@ -657,16 +719,17 @@ def _show_json(problem, models: dict, args) -> int:
     """``show --json``: each model's labelled equations, then the recovered reactions (the
     expressions as ``check --json`` writes them)."""
     from dualmech.model.notation import machine
-    from dualmech.verify.display import dotted
+    from dualmech.verify.display import CONVENTION, dotted
     from dualmech.sources import source_fields
     doc = {"name": problem.name, "title": problem.title, **source_fields(problem.source),
            "models": {name: {"coordinates": [q.func.__name__ for q in eqs.coordinates],
                              "unknowns": [str(u) for u in eqs.unknowns],
                              "equations": [{"label": label, "expression": dotted(e),
-                                            "machine": machine(e, eqs.coordinates)}
+                                            "machine": machine(e, eqs.coordinates),
+                                            **_grouped_json(eqs, e)}
                                            for label, e in zip(eqs.labels, eqs.equations)]}
                       for name, eqs in models.items()},
-           "reactions": {}}
+           "grouped_as": CONVENTION, "reactions": {}}
     status = OK
     if problem.reactions:
         c = _compare(problem, 8, 0)
@@ -688,6 +751,18 @@ def _show_json(problem, models: dict, args) -> int:
         status = _status(c)
     print(_json(doc))
     return status
+
+
+def _grouped_json(eqs, row) -> dict:
+    """``{"grouped": {"left", "right"}}``: the row as :func:`~dualmech.verify.display.grouped`
+    writes it (machine text), or nothing past the display budget."""
+    from dualmech.model.notation import machine
+    from dualmech.verify.display import grouped, row_sign
+    sides = grouped(row, eqs.coordinates, row_sign(eqs))
+    if sides is None:
+        return {}
+    return {"grouped": {"left": machine(sides[0], eqs.coordinates),
+                        "right": machine(sides[1], eqs.coordinates)}}
 
 
 def _heading(text: str) -> str:
@@ -793,13 +868,14 @@ def _cmd_mutate(args) -> int:
             statuses.append(DISAGREE if failure.kind == "refused" else failure.status)
             failed.append({"problem": getattr(problem, "name", "?"), "error": failure.message})
             if statuses[-1] == DISAGREE and not args.json:
-                print(f"{getattr(problem, 'name', '?')}: not mutated: {failure.message}\n")
+                print(_fit(f"{getattr(problem, 'name', '?')}: not mutated: {failure.message}")
+                      + "\n")
             elif statuses[-1] != DISAGREE:
-                print(f"dualmech mutate: error: {failure.message}", file=sys.stderr)
+                say("mutate", failure.message)
             continue
         reports.append(report)
         if not args.json:
-            print(report)
+            print(_fit(str(report)))
             print()
     if args.json:
         data = [r.to_dict() for r in reports] + failed

@@ -39,8 +39,8 @@ import sys
 from pathlib import Path
 
 from dualmech.cli import names as _names
-from dualmech.cli.errors import (OK, USAGE_OR_MODEL_ERROR, UsageError, about, describe,
-                                 guarded, worst)
+from dualmech.cli.errors import (OK, USAGE_OR_MODEL_ERROR, UsageError, about, columns,
+                                 describe, fit, guarded, say, worst)
 from dualmech.cli.options import positive_number, whole_number
 
 __all__ = ["register", "CHART_EXIT_STATUS"]
@@ -157,7 +157,7 @@ def _chart(args) -> int:
                 print(f"charting: {len(results)}/{len(chosen)} ({r[0]})", file=sys.stderr,
                       flush=True)
             if r[1] is None and not args.json:
-                print(r[3], flush=True)
+                print(fit(r[3], columns(sys.stdout)), flush=True)
     return _chart_status(results, args)
 
 
@@ -171,9 +171,9 @@ def _chart_status(results: list, args) -> int:
         _print_json(done[0] if len(done) == 1 and not args.all and not failed
                     and not inapplicable else done)
     for name, failure in inapplicable:
-        print(f"dualmech chart: {name}: {failure.message}", file=sys.stderr)
+        say("chart", f"{name}: {failure.message}", "")
     for name, failure in failed:
-        print(f"dualmech chart: no chart for {name}: {failure.message}", file=sys.stderr)
+        say("chart", f"no chart for {name}: {failure.message}", "")
     status = worst([OK] + [failure.status for _, failure in failed])
     if not done and inapplicable:
         status = worst([status, USAGE_OR_MODEL_ERROR])
@@ -233,19 +233,18 @@ def _atlas(args) -> int:
     if args.json:
         _print_json({**result.to_dict(), "files": [str(x) for x in paths]})
         return OK
-    print(result)
-    print(f"\nwrote {', '.join(str(x) for x in paths)}")
+    print(fit(str(result), columns(sys.stdout)))
+    print(fit(f"\nwrote {', '.join(str(x) for x in paths)}", columns(sys.stdout)))
     return OK
 
 
 def _fidelity(args) -> int:
-    from dualmech.numeric.studies.fidelity import NO_LADDER, has_ladder, ladder
+    from dualmech.numeric.studies.fidelity import ladder, not_applicable
     p = _problem(args.name)
     with about(p):
-        applies = has_ladder(p)
-    if not applies:
-        raise UsageError(f"`{p.name}` has no fidelity ladder (not applicable): no stable "
-                         f"equilibrium to linearise about, and {NO_LADDER}.")
+        why = not_applicable(p)
+    if why is not None:
+        raise UsageError(f"`{p.name}` has no fidelity ladder (not applicable): {why}")
     out = _writable(args.out)
     with about(p):
         result = ladder(p)
@@ -253,6 +252,6 @@ def _fidelity(args) -> int:
     if args.json:
         _print_json({**result.to_dict(), "files": [str(x) for x in paths]})
         return OK
-    print(result)
-    print(f"\nwrote {', '.join(str(x) for x in paths)}")
+    print(result)   # a table: its rows are not wrapped
+    print(fit(f"\nwrote {', '.join(str(x) for x in paths)}", columns(sys.stdout)))
     return OK

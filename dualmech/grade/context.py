@@ -197,6 +197,9 @@ class ProblemContext:
             dims[s.qdd] = _dsub(d, T, 2)
         for p in self.problem.parameters:
             dims[p.symbol] = reduced(p.dimension)
+        for x in getattr(self.problem, "inputs", None) or ():   # a given input F(t)
+            if getattr(x, "symbol", None) is not None and x.dimension is not None:
+                dims[x.symbol] = reduced(x.dimension)
         info = self.problem.reaction_info()
         for u in self.reactions:
             if u.name in info:
@@ -356,6 +359,8 @@ class ProblemContext:
             c = self.problem.coordinate_info(q)
             floats[s.q] = tuple(float(v) for v in c.range)
             floats[s.qd] = tuple(float(v) for v in c.rate_range)
+        for s in self.parameters:   # a given input F(t): a free value, drawn as the verdict
+            floats.setdefault(s, (0.5, 2.0))   # draws it (dualmech.verify.sampling.Context)
         return floats
 
     def false_right_bound(self, degree: int, method: str) -> float:

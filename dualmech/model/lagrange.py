@@ -204,6 +204,11 @@ class Lagrangian:
         """Coordinate ``q`` follows the known function of time ``motion`` (rheonomic)."""
         self._prescribed[q] = as_expr(motion)
 
+    @property
+    def prescribed(self) -> dict:
+        """The coordinates given a known motion (:meth:`prescribe`): ``{q: motion}``."""
+        return dict(self._prescribed)
+
     # -- equations ---------------------------------------------------------------------
     def _known(self, expr):
         if not self._prescribed:

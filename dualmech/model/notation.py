@@ -231,21 +231,26 @@ def _settings(coordinates: Iterable | None) -> dict:
     return {"coordinates": None if coordinates is None else frozenset(coordinates)}
 
 
-def pretty(expr, notation: str = "dots", coordinates: Iterable | None = None) -> str:
+def pretty(expr, notation: str = "dots", coordinates: Iterable | None = None,
+           order: str | None = None) -> str:
     """Two-dimensional unicode text of ``expr`` (``θ̈`` for ``theta''``), no line wrapping.
 
     ``coordinates`` (the ``q(t)`` of the model) keeps other functions of time as ``f(t)``;
-    without it every function of ``t`` is written as its bare name.
+    without it every function of ``t`` is written as its bare name.  ``order="none"``
+    prints the terms of an unevaluated sum in the order they were given.
     """
     check_notation(notation)
     return _Pretty(dict(_settings(coordinates), notation=notation, use_unicode=True,
-                        wrap_line=False)).doprint(as_expr(expr))
+                        wrap_line=False, order=order)).doprint(as_expr(expr))
 
 
-def latex(expr, notation: str = "dots", coordinates: Iterable | None = None) -> str:
-    """LaTeX of ``expr``: ``\\ddot{\\theta}`` (dots) or ``\\theta''`` (primes) for ``theta''``."""
+def latex(expr, notation: str = "dots", coordinates: Iterable | None = None,
+          order: str | None = None) -> str:
+    """LaTeX of ``expr``: ``\\ddot{\\theta}`` (dots) or ``\\theta''`` (primes) for ``theta''``;
+    ``order`` as :func:`pretty`."""
     check_notation(notation)
-    return _Latex(dict(_settings(coordinates), notation=notation)).doprint(as_expr(expr))
+    return _Latex(dict(_settings(coordinates), notation=notation, order=order)).doprint(
+        as_expr(expr))
 
 
 def text(expr, coordinates: Iterable | None = None) -> str:

@@ -291,6 +291,13 @@ def _check_range(what: str, rng, finite: bool = True) -> None:
         raise ValueError(f"{what}: range {rng!r} must be numbers, not NaN.")
 
 
+def prescribed_coordinates(models) -> set:
+    """The coordinates some model of ``models`` gives a known motion (``lg.prescribe(phi,
+    Omega * t)``): declared, and used, though no model has them among its unknowns."""
+    from dualmech.model.declared import builder_of
+    return {q for m in models for q in getattr(builder_of(m), "prescribed", {})}
+
+
 def _tuple(x) -> tuple:
     if isinstance(x, (list, tuple)):
         return tuple(x)
@@ -600,6 +607,7 @@ class Problem:
                 errors.append(f"reaction `{r.name}` is declared but no model uses it (a typo "
                               "in the model's reaction name, or a stale declaration)")
         used_coords = {q for eqs in models.values() for q in eqs.coordinates}
+        used_coords |= prescribed_coordinates(models.values())   # a declared motion: used
         for c in self.all_coordinates():
             if c.function not in used_coords:
                 errors.append(f"coordinate `{c.name}` is declared but no model uses it")

@@ -14,13 +14,14 @@ import threading
 
 import sympy as sp
 
+from dualmech.model.kinematics import t
 from dualmech.model._expr import as_expr
 from dualmech.model.equations import is_zero_expression
 from dualmech.exact.rational_functions import (NotRational, solve_rational, solve_rational_held,
                                               tidy_rational)
 
 __all__ = ["Budget", "OverBudget", "budget", "tidy", "solve_display", "largest_coupled_block",
-           "dotted", "ops_within", "wrap", "width"]
+           "dotted", "ops_within", "wrap", "width", "grouped", "CONVENTION"]
 
 #: Default budget for one displayed expression: operations in, seconds spent.
 MAX_OPS = 600
@@ -369,3 +370,101 @@ def fit(text: str, columns: int | None = None) -> str:
     columns = columns or width()
     return "\n".join(line if line.startswith("  verdict: ") else wrap(line, columns)
                      for line in text.split("\n"))
+
+
+#: how :func:`grouped` writes every row, whichever model it comes from
+CONVENTION = ("rows as a teacher writes them: acceleration terms, then rate terms = the "
+              "loads; the direct form's sum F - m a = 0 written m a = sum F, as Lagrange's "
+              "rows read")
+
+
+def grouped(expr, coordinates, sign: int = 1, limits: Budget | None = None):
+    """One equation row ``expr = 0`` as ``(left, right)``, ``left = right``: ``left`` the
+    terms in the accelerations ``q''`` (one coefficient each, in coordinate order), then
+    the terms in the rates grouped by their product of rates; ``right`` the rest.  The
+    row is taken times ``sign`` first (``-1`` turns a balance ``sum F - m a`` into
+    ``m a = sum F``).  Display only; ``None`` past the budget (the caller shows the row as
+    it stands).
+
+    >>> import sympy as sp
+    >>> from dualmech import coordinate, rate
+    >>> x, th = coordinate("x"), coordinate("theta")
+    >>> m, M, l, F = sp.symbols("m M l F", positive=True)
+    >>> row = (M + m) * rate(x, 2) + m * l * sp.cos(th) * rate(th, 2) \\
+    ...     - m * l * sp.sin(th) * rate(th) * rate(x) - F
+    >>> left, right = grouped(sp.expand(row), [x, th])
+    >>> from dualmech.model.notation import pretty
+    >>> print(pretty(sp.Eq(left, right, evaluate=False), "primes", [x, th], order="none"))
+    (M + m)⋅x′′ + l⋅m⋅cos(θ)⋅θ′′ - l⋅m⋅sin(θ)⋅θ′⋅x′ = F
+    """
+    limits = limits or Budget()
+    expr = sp.S(sp.expand(sp.S(as_expr(expr)) * sign))
+    if not ops_within(expr, 4 * limits.max_ops):
+        return None
+    acc = [q.diff(t, 2) for q in coordinates]
+    vel = [q.diff(t) for q in coordinates]
+    a_sym = [sp.Dummy(f"a{i}") for i in range(len(acc))]
+    v_sym = [sp.Dummy(f"v{i}") for i in range(len(vel))]
+    back = dict(zip(a_sym + v_sym, acc + vel))
+    plain = sp.S(expr.xreplace(dict(zip(acc, a_sym))).xreplace(dict(zip(vel, v_sym))))
+    try:
+        with budget(limits.remaining()):
+            left = [(_coefficient(plain.diff(a), limits).xreplace(back), q)
+                    for a, q in zip(a_sym, acc)]
+            rest = sp.S(plain.xreplace({a: 0 for a in a_sym}))
+            loads = sp.S(rest.xreplace({v: 0 for v in v_sym}))
+            rates = sp.Poly(sp.expand(rest - loads), *v_sym, domain="EX") \
+                if v_sym and rest != loads else None
+            for monomial, c in (rates.terms() if rates is not None else ()):
+                product = sp.Mul(*[v**k for v, k in zip(vel, monomial) if k])
+                left.append((_coefficient(c, limits).xreplace(back), product))
+            right = _coefficient(-loads, limits).xreplace(back)
+    except (OverBudget, sp.PolynomialError, TypeError, ValueError):
+        return None
+    terms = [_term(c, what) for c, what in left if c != 0]
+    lhs = sp.Add(*terms, evaluate=False) if len(terms) > 1 else \
+        (terms[0] if terms else sp.Integer(0))
+    return lhs, right
+
+
+def _coefficient(c, limits: Budget):
+    """A coefficient as a teacher writes it: tidied (:func:`tidy`), common factors out."""
+    try:
+        return sp.factor_terms(sp.S(tidy(c, limits)))
+    except OverBudget:
+        return sp.S(c)
+
+
+def _term(c, what):
+    """``c * what`` kept as written: the coefficient first, its sign outside."""
+    if c.could_extract_minus_sign():
+        inner = sp.Mul(-c, what, evaluate=False) if (-c) != 1 else what
+        return sp.Mul(-1, inner, evaluate=False)
+    return sp.Mul(c, what, evaluate=False) if c != 1 else what
+
+
+def row_sign(eqs) -> int:
+    """``-1`` for a model the direct-form builder made (its rows are ``sum F - m a``), so
+    that :func:`grouped` writes them ``m a = sum F`` as Lagrange's rows read; else ``1``."""
+    from dualmech.model.declared import builder_of
+    from dualmech.model.direct import NewtonEuler
+    return -1 if isinstance(builder_of(eqs), NewtonEuler) else 1
+
+
+def rows_text(eqs, latex: bool = False, notation: str = "dots") -> str:
+    """Every row of ``eqs`` under its ``[label]``, grouped by :func:`grouped` in the one
+    sign convention :data:`CONVENTION` (a row past the display budget as ``row = 0``):
+    two-dimensional unicode text, or LaTeX with ``latex=True``."""
+    from dualmech.model import notation as _notation
+    sign, coords, out = row_sign(eqs), eqs.coordinates, []
+    for label, e in zip(eqs.labels, eqs.equations):
+        sides = grouped(e, coords, sign)
+        left, right = sides if sides is not None else (as_expr(e), sp.Integer(0))
+        if latex:
+            body = (f"{_notation.latex(left, notation, coords, order='none')} = "
+                    f"{_notation.latex(right, notation, coords)}")
+        else:
+            body = _notation.pretty(sp.Eq(left, right, evaluate=False), notation, coords,
+                                    order="none")
+        out.append(f"[{label}]\n{body}")
+    return "\n\n".join(out)

@@ -22,9 +22,20 @@ no caught mutant is ever reclassified.
 The sign of each *unknown* reaction is flipped too, one unknown at a time (``R -> -R`` in the
 direct form's free-body diagram, ``lambda -> -lambda`` in a multiplier model).  Such a model
 is the original with the unknown renamed, so its motion cannot change: only the recovered
-reaction changes sign.  It is caught by the reactions comparison -- every reaction is derived
-by a second, independent model (a direct form beside a multiplier form) -- and never by the
-equations of motion.  Where the reaction vanishes identically on the motion (``-N`` is ``N``
+reaction changes sign.  It is caught by the reactions comparison -- a reaction derived by a
+second model (a direct form beside a multiplier form), or by the Kane referee dualmech derives
+from the direct model's declarations (:mod:`dualmech.verify.referee`) -- and never by the
+equations of motion.
+
+The derivations are judged as :func:`~dualmech.verify.check.compare` judges them, referees
+included.  A mutant edits a model's *equations* (its balances and projections); the referee
+is derived from the model's unbroken *declarations*, so it catches the mutant as it catches a
+balance or projection written wrong by hand.  The same mistake made in a declaration (a load
+declared with the wrong sign) is shared with the referee, and only a second model written
+independently catches it.  A survivor that changes only reactions which no second derivation
+gives (a direct model without a referee, the problem's only model deriving them) is
+*uncatchable* with the problem's derivations: reported apart, with the model that would catch
+it, and not counted.  Where the reaction vanishes identically on the motion (``-N`` is ``N``
 when ``N = 0``) the flipped model claims nothing false and is reported as *equivalent*.
 
 Mutants that raise (``errored``) or on which the comparator gives no verdict
@@ -46,6 +57,7 @@ from dataclasses import dataclass, field
 from typing import Iterator
 
 from dualmech.verify.check import claims_of
+from dualmech.verify.referee import referees
 from dualmech.verify.sampling import Context
 from dualmech.verify.verdicts import judge
 from dualmech.model.dimensions import INERTIA, MASS, reduce
@@ -72,6 +84,7 @@ class MutationReport:
     killed: list = field(default_factory=list)      # (mutant description, equations named)
     survived: list = field(default_factory=list)    # mutant descriptions
     why: dict = field(default_factory=dict)         # survivor -> why it survived
+    uncatchable: list = field(default_factory=list)  # no second derivation could catch it
     identical: list = field(default_factory=list)   # mutants equal to their original
     equivalent: list = field(default_factory=list)  # same motion and reactions as the original
     errored: list = field(default_factory=list)     # (mutant description, the error raised)
@@ -79,8 +92,8 @@ class MutationReport:
 
     @property
     def total(self) -> int:
-        """Mutants with a verdict: caught or survived (errored, undetermined, identical and
-        equivalent ones are reported apart and not counted)."""
+        """Mutants with a verdict: caught or survived (errored, undetermined, identical,
+        equivalent and uncatchable ones are reported apart and not counted)."""
         return len(self.killed) + len(self.survived)
 
     @property
@@ -95,6 +108,8 @@ class MutationReport:
                 "killed": [{"mutant": d, "named": list(n)} for d, n in self.killed],
                 "survived": [{"mutant": d, "why": self.why.get(d, "")}
                              for d in self.survived],
+                "uncatchable": [{"mutant": d, "why": self.why.get(d, "")}
+                                for d in self.uncatchable],
                 "identical": list(self.identical), "equivalent": list(self.equivalent),
                 "errored": [{"mutant": d, "error": e} for d, e in self.errored],
                 "undetermined": [{"mutant": d, "why": w} for d, w in self.undetermined]}
@@ -104,12 +119,17 @@ class MutationReport:
         lines = [f"{self.problem}: {len(self.killed)}/{self.total} mutants caught "
                  f"({rate}), {len(self.identical)} identical to the original, "
                  f"{len(self.equivalent)} equivalent (same motion and reactions), "
-                 f"{len(self.errored)} errored, {len(self.undetermined)} undetermined "
+                 + (f"{len(self.uncatchable)} uncatchable by these derivations, "
+                    if self.uncatchable else "")
+                 + f"{len(self.errored)} errored, {len(self.undetermined)} undetermined "
                  "(none of those counted)"]
         for d in self.survived:
             lines.append(f"  SURVIVED: {d}")
             if d in self.why:
                 lines.append(f"    {self.why[d]}")
+        for d in self.uncatchable:
+            lines.append(f"  UNCATCHABLE: {d}")
+            lines.append(f"    {self.why[d]}")
         for d, why in self.errored:
             lines.append(f"  ERRORED: {d}: {why}")
         for d, why in self.undetermined:
@@ -203,8 +223,11 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
     ref_model = problem.model(problem.reference)
     ctx = Context(ref_model.coordinates, problem.parameter_symbols, problem)
     claims = claims_of(problem)
+    refs = referees(problem)   # judged as `check` judges: the referee votes, with reactions
+    models.update(refs.models)
+    claims.update({r: claims[d] for r, d in refs.of.items() if d in claims})
     unbroken = judge(models, context=ctx, points=points, seed=seed,
-                     reference=problem.reference, claims=claims)
+                     reference=problem.reference, claims=claims, referees=refs.of)
     if not unbroken.equivalent:
         # a mutant that happens to repair the disagreement would pass for a gap in the checks
         raise ValueError(f"`{problem.name}`'s derivations disagree before any mutant is made "
@@ -220,7 +243,7 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
             trial = dict(models)
             trial[mut.model] = candidate
             j = judge(trial, context=ctx, points=points, seed=seed,
-                      reference=problem.reference, claims=claims)
+                      reference=problem.reference, claims=claims, referees=refs.of)
         except (ModelError, ValueError, TypeError, ArithmeticError) as exc:
             # raising is not catching: the comparator gave no verdict on this mutant
             report.errored.append((mut.description, f"{type(exc).__name__}: {exc}"))
@@ -242,9 +265,10 @@ def mutation_report(problem, points: int = 3, seed: int = 0) -> MutationReport:
                                   claims.get(mut.model))
         if _equivalent(alone, models[mut.model], candidate):
             report.equivalent.append(mut.description)
-        else:
-            report.survived.append(mut.description)
-            report.why[mut.description] = _why_survived(alone, candidate)
+            continue
+        why, gap = _why_survived(alone, candidate, mut.model in refs.of.values())
+        (report.survived if gap else report.uncatchable).append(mut.description)
+        report.why[mut.description] = why
     return report
 
 
@@ -275,19 +299,25 @@ def _equivalent(j, original: EquationSet, candidate: EquationSet) -> bool:
     return j.equivalent
 
 
-def _why_survived(j, candidate: EquationSet) -> str:
-    """Why a mutant got through: it changes only reactions that no second model derives."""
+#: a survivor the problem's derivations cannot catch, whatever the comparator does
+_UNCATCHABLE = ("it leaves the motion unchanged and changes only the reaction(s) {names}, "
+                "which no second derivation gives ({referee}); a model that derives {names} "
+                "independently (a Lagrangian with the contact freed and closed by a "
+                "multiplier named {names}) would catch it")
+
+
+def _why_survived(j, candidate: EquationSet, refereed: bool) -> tuple[str, bool]:
+    """Why a mutant got through, and whether that is a gap in the checks (``True``) or a
+    mistake no comparator could catch with the problem's derivations (``False``): it changes
+    only reactions that no second derivation gives (no referee derives them)."""
+    gap = "the comparator did not notice it: a gap in the checks"
     if not candidate.unknowns or j is None:
-        return "the comparator did not notice it: a gap in the checks"
-    if not j.faults and j.reaction_faults:
+        return gap, True
+    if not j.faults and j.reaction_faults and not refereed:
         names = ", ".join(r.name for r in j.reaction_faults)
-        return (f"it leaves the motion unchanged and changes only the reaction(s) {names}, "
-                "which no second model derives (the Kane referee derives them from this "
-                "model's own declarations: no second opinion on a declaration); a model "
-                f"that derives {names} independently (a Lagrangian "
-                f"with the contact freed and closed by a multiplier named {names}) would "
-                "catch it")
-    return "the comparator did not notice it: a gap in the checks"
+        return _UNCATCHABLE.format(names=names, referee="this model has no Kane referee: "
+                                   "`dualmech check` says why"), False
+    return gap, True
 
 
 def _in_ref(problem, mutant: EquationSet, original: EquationSet) -> EquationSet:

@@ -180,12 +180,22 @@ def _titles(served: dict) -> list[dict]:
     from dualmech.sources import source_fields
     decl = {d.name: d for d in declarations()}
     out = []
-    for name in served:
-        d = decl.get(name)
-        out.append({"name": name, "title": d.title if d else name,
-                    **source_fields(d.source if d else ""),
-                    "summary": d.summary if d else ""})
+    for name, spec in served.items():
+        d = decl.get(name) or _declared_by(spec)   # a teacher's file: its own declarations
+        out.append({"name": name, "title": getattr(d, "title", "") or name,
+                    **source_fields(getattr(d, "source", "") or ""),
+                    "summary": getattr(d, "summary", "") or ""})
     return out
+
+
+def _declared_by(spec: str):
+    """The problem ``spec`` names outside the catalogue (a file, ``module:Class``; loaded
+    once already by :func:`served_problems`), or None when it cannot be loaded."""
+    from dualmech.problems import get
+    try:
+        return get(spec)
+    except Exception:  # noqa: BLE001 - the title falls back to the name
+        return None
 
 
 def _client(request: Request) -> str:

@@ -35,17 +35,18 @@ from typing import Callable
 
 import numpy as np
 
+from dualmech.model._expr import dotted
 from dualmech.model.facts import not_declared
 from dualmech.model.notation import mathtext
 from dualmech.numeric.charts import conditions
 from dualmech.numeric.contacts import scene_span
 from dualmech.numeric.formulations import formulations
 from dualmech.numeric.integrators import integrate
-from dualmech.numeric.model import NumericModel
+from dualmech.numeric.model import NumericModel, SingularityError
 from dualmech.numeric.studies.regimes import stable_equilibrium, jacobian
 from dualmech.numeric.simulation import default_initial_state, direct_models, problem_parameters
 
-__all__ = ["Rung", "Ladder", "ladder", "has_ladder", "NO_LADDER"]
+__all__ = ["Rung", "Ladder", "ladder", "has_ladder", "not_applicable", "NO_LADDER"]
 
 #: What ``dualmech fidelity`` says of a problem with no declared ladder and no equilibrium.
 NO_LADDER = not_declared("fidelity ladder", "fidelity_ladder = (FidelityRung(label, simpler "
@@ -141,6 +142,91 @@ def has_ladder(problem) -> bool:
         stable_equilibrium(problem, f)
         return True
     except (ValueError, IndexError):
+        return False
+
+
+def not_applicable(problem) -> str | None:
+    """Why :func:`ladder` has nothing to compare for ``problem``, with the declaration that
+    would make it applicable; ``None`` when it applies.
+
+    An equilibrium that lies on the singular set of the reference model's coordinates (the
+    spherical pendulum hanging down, at ``sin(theta) = 0``) is named as such: it exists, but
+    these coordinates cannot linearise the motion about it.
+
+    >>> from dualmech.problems import get
+    >>> not_applicable(get("simple_pendulum")) is None
+    True
+    """
+    if problem.fidelity_ladder:
+        return None
+    driven = [str(x) for x in problem.input_symbols]
+    if driven:
+        return (f"it is driven by given inputs ({', '.join(driven)}): a fidelity ladder "
+                "compares models of a free scene (its linearised rung is a small oscillation "
+                "about an equilibrium without inputs) and is not made for a driven one; "
+                "`dualmech simulate NAME --input ...` runs the driven scene.")
+    made, skipped = formulations(problem, models=[problem.reference], stabilisations=())
+    if not made:
+        return (f"its reference model `{problem.reference}` cannot be integrated "
+                f"({'; '.join(skipped.values())}), and {NO_LADDER}.")
+    f = made[0]
+    try:
+        stable_equilibrium(problem, f)
+        return None
+    except ValueError as exc:
+        why = str(exc)
+    at = _singular_equilibrium(problem, f)
+    if at is None:
+        return f"no stable equilibrium to linearise about ({why}), and {NO_LADDER}."
+    state = ", ".join(f"{q.func.__name__} = {v:.6g}" for q, v in zip(f.coordinates, at))
+    declared = [dotted(e) for e in problem.singular
+                if _vanishes(problem, e, f.coordinates, at)]
+    where = (f"on the declared singular set ({', '.join(d + ' = 0' for d in declared)})"
+             if declared else "where the reference model is singular (declare that set: "
+             "`singular = (...)`)")
+    return (f"its equilibrium at rest, {state}, lies {where}: the coordinates of "
+            f"`{problem.reference}` cannot describe the motion there, so no linearised model "
+            "about it can be made in them.  To make the ladder applicable, declare it: "
+            "`fidelity_ladder = (FidelityRung(label, the scene in coordinates regular at "
+            "that equilibrium, what it neglects), FidelityRung(label, this problem))`, or "
+            "give the scene an equilibrium off that set (its parameters, ranges or "
+            "`initial_state`).")
+
+
+def _singular_equilibrium(problem, f, steps=(1e-2, 1e-5)) -> np.ndarray | None:
+    """A state at rest on the singular set of ``f``'s coordinates that is an equilibrium --
+    the accelerations shrink to zero as it is approached from every side -- tried at
+    ``q = 0``, the initial state and the middle of the declared ranges; else None."""
+    n = f.n
+    mids = [np.mean(problem.coordinate_info(q).range) for q in f.coordinates]
+    directions = np.random.default_rng(0).normal(size=(4, n))
+    directions /= np.linalg.norm(directions, axis=1)[:, None]
+
+    def acc(q):
+        return f.rhs(0.0, np.concatenate([q, np.zeros(n)]))[n:]
+    for guess in (np.zeros(n), f.y0[:n], np.array(mids)):
+        try:
+            acc(guess)
+            continue                        # regular here: not on the singular set
+        except SingularityError:
+            pass
+        try:
+            far, near = ([np.abs(acc(guess + h * d)).max() for d in directions]
+                         for h in steps)
+        except (SingularityError, ValueError, ArithmeticError):
+            continue
+        if max(near) <= 1e-2 * max(max(far), 1e-300) or max(near) < 1e-9:
+            return guess
+    return None
+
+
+def _vanishes(problem, expr, coordinates, at) -> bool:
+    """Whether the singular-set expression ``expr`` is zero at the state ``at``."""
+    values = dict(problem_parameters(problem))
+    values.update({q: float(v) for q, v in zip(coordinates, at)})
+    try:
+        return abs(complex(expr.subs(values).evalf())) < 1e-9
+    except (TypeError, ValueError):
         return False
 
 

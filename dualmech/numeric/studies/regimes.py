@@ -411,7 +411,11 @@ def dae_drift(problem, model: str | None = None, duration: float = 20.0, method:
              and (model is None or f.model.name == model)]
     if not forms:
         raise ValueError(f"`{problem.name}` has no DAE formulation" +
-                         (f" named {model!r}." if model else "."))
+                         (f" named {model!r}." if model else ": declare a model whose "
+                          "coordinates are held by constraints closed with multipliers (a "
+                          "method named in `extra_models` building a Lagrangian in more "
+                          "coordinates, with `lg.constraint(name, g)` and the multiplier "
+                          "declared in `reactions`) to make it applicable."))
     name = forms[0].model.name
     forms = [f for f in forms if f.model.name == name]
     te = np.linspace(0.0, duration, samples)
