@@ -124,6 +124,20 @@ def test_a_formula_within_budget_gets_values_only_when_asked(capsys):
                                                          rel=1e-12)
 
 
+
+def test_at_sets_the_time_of_a_driven_problem(capsys):
+    """The Kapitza pendulum's rod pull depends on the pivot's drive a cos(Omega t); by hand
+    (the bob's radial balance in the pivot's accelerating frame, at rest):
+    T = -m (Omega^2 a cos(Omega t) cos(theta) - g cos(theta))."""
+    d = {str(k): float(v) for k, v in problems.get("kapitza_pendulum").defaults().items()}
+    for when in (0.0, 0.001, 0.0037):
+        at = f"theta=0.3, t={when}" if when else "theta=0.3"
+        got = _show_at(capsys, "kapitza_pendulum", at)
+        hand = -d["m"] * (d["Omega"] ** 2 * d["a"] * np.cos(d["Omega"] * when) * np.cos(0.3)
+                          - d["g"] * np.cos(0.3))
+        assert got["values"]["T"]["direct"] == pytest.approx(hand, rel=1e-12)
+        assert got["time"] == when
+
 HOSTILE = {
     "theta=": "is not a number",
     "theta": "has no '='",

@@ -8,6 +8,8 @@ reaction's formula is past the display budget, at the problem's default state (a
 
 >>> parse_at("theta=0.3, theta_dot=-1")
 {'theta': 0.3, 'theta_dot': -1.0}
+>>> split_time({"theta": 0.3, "t": 2.0})
+({'theta': 0.3}, 2.0)
 >>> parse_at("theta=nan")
 Traceback (most recent call last):
 dualmech.cli.errors.UsageError: `--at`: "nan" is not a number (theta=...); write name=number \
@@ -19,17 +21,18 @@ import argparse
 
 from dualmech.cli.errors import UsageError
 
-__all__ = ["add_at_option", "parse_at", "check_at", "values_wanted", "state_values",
-           "with_values", "report_data"]
+__all__ = ["add_at_option", "parse_at", "split_time", "check_at", "values_wanted",
+           "state_values", "with_values", "report_data"]
 
 
 def add_at_option(p: argparse.ArgumentParser) -> None:
     """Add ``--at`` to the sub-command ``p``."""
     p.add_argument("--at", metavar="'q=V, q_dot=W'", default=None,
                    help="also give every reaction's value at this state (coordinates of the "
-                        "reference model, rates as name_dot; unnamed ones keep the default "
-                        "state), by the direct form and by the Kane referee; without it, "
-                        "values are shown only for reactions past the display budget")
+                        "reference model, rates as name_dot, t for the time of a driven "
+                        "problem, default 0; unnamed ones keep the default state), by the "
+                        "direct form and by the Kane referee; without it, values are shown "
+                        "only for reactions past the display budget")
 
 
 def parse_at(text: str) -> dict:
@@ -41,13 +44,20 @@ def parse_at(text: str) -> dict:
         raise UsageError(str(exc).replace("`--about`", "`--at`")) from None
 
 
+def split_time(at: dict) -> tuple[dict, float]:
+    """``(state names, time)``: ``t`` in ``--at`` is the time (a driven problem's inputs and
+    prescribed motions are taken then), 0 when not given."""
+    at = dict(at)
+    return at, float(at.pop("t", 0.0))
+
+
 def check_at(problem, text: str) -> dict:
     """``--at`` parsed and its names checked against ``problem``'s coordinates, before any
     derivation is compared (a :class:`UsageError` naming the coordinates)."""
     at = parse_at(text)
     from dualmech.numeric.reactions_state import state_from_names
     try:
-        state_from_names(problem, at)
+        state_from_names(problem, split_time(at)[0])
     except ValueError as exc:
         raise UsageError(str(exc)) from None
     return at
@@ -65,10 +75,10 @@ def values_wanted(problem, c, at_text: str | None) -> bool:
 def state_values(problem, c, at_text: str | None):
     """The :class:`~dualmech.numeric.reactions_state.StateReactions` for ``show``/``check``;
     a bad ``--at`` (an unknown name) is a :class:`UsageError`."""
-    at = parse_at(at_text) if at_text is not None else None
+    at, time = split_time(parse_at(at_text)) if at_text is not None else (None, 0.0)
     from dualmech.numeric.reactions_state import reactions_at_state
     try:
-        return reactions_at_state(problem, at, comparison=c)
+        return reactions_at_state(problem, at, time=time, comparison=c)
     except ValueError as exc:
         if at is not None and str(exc).startswith("`--at`"):
             raise UsageError(str(exc)) from None
