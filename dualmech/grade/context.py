@@ -197,6 +197,8 @@ class ProblemContext:
             dims[s.qdd] = _dsub(d, T, 2)
         for p in self.problem.parameters:
             dims[p.symbol] = reduced(p.dimension)
+        for x in getattr(self.problem, "input_symbols", ()):
+            dims[x] = reduced(declared[x])
         info = self.problem.reaction_info()
         for u in self.reactions:
             if u.name in info:
@@ -352,6 +354,8 @@ class ProblemContext:
         floats = {t: (0.0, 10.0)}
         for p in self.problem.parameters:
             floats[p.symbol] = tuple(float(v) for v in p.range)
+        for x in getattr(self.problem, "input_symbols", ()):
+            floats[x] = (0.5, 2.0)   # a given input (F(t)): any value at a point, as the checker draws it
         for q, s in zip(self.coordinates, self.states):
             c = self.problem.coordinate_info(q)
             floats[s.q] = tuple(float(v) for v in c.range)
