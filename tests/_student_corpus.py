@@ -81,6 +81,10 @@ def judge(entry) -> dict:
     if first["kind"] == ["value"]:   # one wrong number (a printed result): nothing to name
         out["mistakes"] = 0
         return out
+    if first["kind"] == ["words"]:   # a slip no term edit shows, said in words
+        text = " ".join([g.summary] + list(g.details))
+        out["named"] = int(all(w in text for w in first["words"]))
+        return out
     if first["kind"] == ["none"]:
         text = " ".join(g.details)
         if not g.edits and first["equation"] in text and all(k in text for k in first["kinds"]):

@@ -112,6 +112,7 @@ _LATEX_TIMES = re.compile(r"\\(cdot|times)(?![A-Za-z])")
 _LATEX_OPERATORNAME = re.compile(r"\\operatorname\{([A-Za-z]+)\}")
 _LATEX_DECOR = re.compile(r"\\(hat|vec|mathbf|boldsymbol|bm|mathrm)\{([A-Za-z]+)\}")
 _BRACKETS = re.compile(r"[()\[\]{}]")
+_LATEX_COMMAND = re.compile(r"\\[A-Za-z]{0,20}")
 # a square-root sign before a number or a name (√3, √g) or a bracket (√(k/m))
 _ROOT_SIGN = re.compile(r"√\s*(\d+(?:\.\d+)?|[A-Za-zα-ωΑ-Ωϕϑ][A-Za-z0-9α-ωΑ-Ωϕϑ]*)")
 # Leibniz's notation for rates: d2x/dt2, d^2x/dt^2, dx/dt, \frac{d^2\theta}{dt^2}, \frac{dx}{dt}
@@ -449,6 +450,11 @@ def parse(text: str, limits: Limits = LIMITS) -> list[Equation]:
         raise
     except UnexpectedCharacters as exc:
         ch = text[exc.pos_in_stream] if exc.pos_in_stream < len(text) else "?"
+        if ch == "\\":   # name the LaTeX command, not just its backslash
+            command = _LATEX_COMMAND.match(text, exc.pos_in_stream).group()
+            raise AnswerSyntaxError(f"could not read the answer at column {exc.column}: the "
+                                    f"LaTeX command {command} is not supported"
+                                    + _context(text, exc)) from None
         raise AnswerSyntaxError(f"could not read the answer at column {exc.column}: "
                                 f"unexpected character {ch!r}{_hint(ch)}"
                                 .replace("'" + ch + "'", f'"{ch}"') + _context(text, exc)) \
