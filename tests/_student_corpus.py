@@ -31,8 +31,11 @@ def load(name: str) -> list[dict]:
 
 
 def grader(problem: str) -> Grader:
+    """The grader of ``problem``: a catalogue name, or a teacher's file given by its path
+    under ``tests/corpus/`` (graded as the ``dualmech grade path/to/file.py`` command does)."""
     if problem not in _graders:
-        _graders[problem] = Grader(problem)
+        spec = str(CORPUS_DIR / problem) if problem.endswith(".py") else problem
+        _graders[problem] = Grader(spec)
     return _graders[problem]
 
 
@@ -75,6 +78,13 @@ def judge(entry) -> dict:
     if not mistakes or g.right:
         return out
     first = mistakes[0]
+    if first["kind"] == ["value"]:   # one wrong number (a printed result): nothing to name
+        out["mistakes"] = 0
+        return out
+    if first["kind"] == ["words"]:   # a slip no term edit shows, said in words
+        text = " ".join([g.summary] + list(g.details))
+        out["named"] = int(all(w in text for w in first["words"]))
+        return out
     if first["kind"] == ["none"]:
         text = " ".join(g.details)
         if not g.edits and first["equation"] in text and all(k in text for k in first["kinds"]):
@@ -112,10 +122,11 @@ def _pair(g, edits, m):
 def _kind(out, e, m) -> None:
     """A named mistake counts when its kind of term is right; a wrong kind named with
     certainty (no "or") is recorded."""
-    if e.category == m["category"]:
+    wanted = m["category"] if isinstance(m["category"], list) else [m["category"]]
+    if e.category in wanted:
         out["named"] += 1
     elif " or " not in e.category:
-        out["wrong_kinds"].append(f"{e.sentence()} (expected {m['category']})")
+        out["wrong_kinds"].append(f"{e.sentence()} (expected {' or '.join(wanted)})")
 
 
 def figures(results) -> dict:

@@ -270,7 +270,9 @@ def _linearise(ctx: ProblemContext, point: dict) -> ProblemContext:
     eqs = M * qs.diff(t, 2) + C * qs.diff(t) + K * (qs - q0)
     lin = EquationSet("linearised", tuple(ref.coordinates), tuple(eqs),
                       labels=tuple(f"linearised, {q.func.__name__}" for q in ref.coordinates))
-    lctx = ProblemContext(_Linearised(ctx.problem, lin, _show(point)), ctx.seed)
+    problem = _Linearised(ctx.problem, lin, _show(point))
+    problem.about_point, problem.about_text = point, _show(point)
+    lctx = ProblemContext(problem, ctx.seed)
     lctx.subject = f"the equations of motion linearised about {_show(point)}"
     return lctx
 

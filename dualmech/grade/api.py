@@ -26,6 +26,7 @@ from dualmech.grade.judge_energy import judge_force, judge_kinetic, judge_lagran
 from dualmech.grade.maps import student_map
 from dualmech.grade.parser import LIMITS, AnswerError, Limits, parse, split_where
 from dualmech.grade.result import Grade, check_feedback, score_of
+from dualmech.grade.small_angles import other_form
 from dualmech.grade.vocabulary import UnknownName, Vocabulary
 
 __all__ = ["grade", "Grader"]
@@ -177,6 +178,10 @@ class Grader:
             if own is not None:
                 formulas = [own.rewrite(f, ctx) for f in formulas]
             v = judge_equations(ctx, formulas, q, deadline, single=q.kind == "equation")
+            if v.status == "wrong" and own is None:
+                said = other_form(self.context, formulas, q.kind, asked, about, deadline)
+                if said:
+                    v.details.insert(0, said)
             return v, asked, q.kind, ctx
         f = _expression(eqs, q, voc, self.limits)
         if own is not None:

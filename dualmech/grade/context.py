@@ -197,9 +197,9 @@ class ProblemContext:
             dims[s.qdd] = _dsub(d, T, 2)
         for p in self.problem.parameters:
             dims[p.symbol] = reduced(p.dimension)
-        for x in getattr(self.problem, "inputs", None) or ():   # a given input F(t)
-            if getattr(x, "symbol", None) is not None and x.dimension is not None:
-                dims[x.symbol] = reduced(x.dimension)
+        for x in getattr(self.problem, "input_symbols", ()):   # a given input F(t)
+            if x in declared:
+                dims[x] = reduced(declared[x])
         info = self.problem.reaction_info()
         for u in self.reactions:
             if u.name in info:
@@ -355,6 +355,8 @@ class ProblemContext:
         floats = {t: (0.0, 10.0)}
         for p in self.problem.parameters:
             floats[p.symbol] = tuple(float(v) for v in p.range)
+        for x in getattr(self.problem, "input_symbols", ()):
+            floats[x] = (0.5, 2.0)   # a given input (F(t)): any value at a point, as the checker draws it
         for q, s in zip(self.coordinates, self.states):
             c = self.problem.coordinate_info(q)
             floats[s.q] = tuple(float(v) for v in c.range)

@@ -605,9 +605,7 @@ def _expression_feedback(ctx, comps, refs, quantity, bad_j, deadline, need):
                 key = (quantity.name, j, stage)
                 tables = lambda mode, key=key, forms=forms: \
                     expression_tables(ctx, key, forms, mode)  # noqa: E731
-                d = (several and factor_edit(expr, tables("trig"), ctx, equation=where)) or \
-                    best_edit(expr, tables, ctx, scale=False, equation=where, parts=parts) \
-                    or factor_edit(expr, tables("trig"), ctx, equation=where)
+                d = _fewest_edits(expr, tables, ctx, where, parts, several)
                 if d is not None:
                     break
         if d is not None:
@@ -649,11 +647,33 @@ def _off_at_real_points(ctx, formulas, refs) -> list[int]:
     return out
 
 
-def factor_edit(expr, targets, ctx, equation=None):
-    """A diagnosis when the answer is a constant multiple of a target, possibly after two
-    symbols of one dimension are swapped (``R`` missing and the angles swapped)."""
+def _fewest_edits(expr, tables, ctx, where, parts, several: bool):
+    """The diagnosis of a wrong expression with the fewest edits: the whole answer times a
+    factor (tried first when it has several terms), term edits, or two symbols swapped --
+    on a tie in that order (``m g cos - m (R - r) th'^2`` has one wrong sign, not ``R`` and
+    ``r`` swapped)."""
+    found = []
+    if several:
+        found.append(factor_edit(expr, tables("trig"), ctx, equation=where, swaps=False))
+    found.append(best_edit(expr, tables, ctx, scale=False, equation=where, parts=parts))
+    found.append(factor_edit(expr, tables("trig"), ctx, equation=where))
+    found = [d for d in found if d is not None]
+    return min(found, key=lambda d: len(d.edits)) if found else None
+
+
+def _monomial(c) -> bool:
+    """Whether ``c`` is a number times powers of symbols (a factor a person can name)."""
+    num, den = sp.fraction(sp.factor_terms(c))
+    return not any(isinstance(f, sp.Add) or (isinstance(f, sp.Pow) and isinstance(f.base, sp.Add))
+                   for part in (num, den) for f in sp.Mul.make_args(part))
+
+
+def factor_edit(expr, targets, ctx, equation=None, swaps: bool = True):
+    """A diagnosis when the answer is a constant multiple of a target (a number times
+    parameters: ``(2 g m - F)/(F + 2 g m)`` is no factor), possibly after two symbols of one
+    dimension are swapped (``R`` missing and the angles swapped; not with ``swaps=False``)."""
     from dualmech.grade.feedback import swap_pairs
-    for rule, text in [({}, "")] + swap_pairs(ctx):
+    for rule, text in [({}, "")] + (swap_pairs(ctx) if swaps else []):
         mine = term_table(expr.xreplace(rule) if rule else expr, ctx)
         if mine is None:
             continue
@@ -665,6 +685,8 @@ def factor_edit(expr, targets, ctx, equation=None):
                 continue
             k0 = next(iter(mine.terms))
             c = sp.cancel(mine.terms[k0][0] / tab.terms[k0][0])
+            if not _monomial(c):
+                continue
             edits = []
             if text:
                 edits.append(Edit("swap", equation, display(expr, ctx.names),

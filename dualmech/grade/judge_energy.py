@@ -81,8 +81,28 @@ def _edits(ctx, f: Formula, target, deadline):
     expr = _drop_constants(f.sympy(), ctx)
     with naming_energy():   # the terms of an energy, named as such, kept apart as written
         parts = [p for p in (_as_written(w, ctx) for w in f.written_terms()) if p != 0]
-        return best_edit(expr, tables, ctx, scale=False, parts=parts) or \
-            factor_edit(expr, tables("trig"), ctx)
+        best = best_edit(expr, tables, ctx, scale=False, parts=parts)
+        if best is not None and len(best.edits) <= 1:
+            return best
+        factor = factor_edit(expr, tables("trig"), ctx)
+        if factor is not None and len(parts) == 1 and factor.edits[0].kind == "factor":
+            return _one_coefficient(expr, factor, ctx)
+        found = [d for d in (best, factor) if d is not None]
+        return min(found, key=lambda d: len(d.edits)) if found else None
+
+
+def _one_coefficient(expr, factor, ctx):
+    """An energy written as one term, a constant times the right one: that term's
+    coefficient is wrong (``m (R - r)^2 th'^2/2`` where ``3 m (R - r)^2 th'^2/4`` belongs),
+    one edit -- not one per term of its expansion."""
+    from dualmech.grade.feedback import Diagnosis
+    from dualmech.grade.kinds import category
+    from dualmech.grade.result import Edit
+    from dualmech.grade.audit import display
+    right = expr / factor.scale
+    edit = Edit("coefficient", None, display(expr, ctx.names), display(right, ctx.names),
+                category(expr, ctx))
+    return Diagnosis(factor.label, 1, [edit], 1)
 
 
 def _edits_any(ctx, f: Formula, forms: list, deadline):
@@ -197,7 +217,7 @@ def judge_potential(ctx: ProblemContext, f: Formula, quantity: Quantity,
                            method=method, degree=f.degree)
     # diagnosed against each convention, the one the answer's symbols show first: a load or
     # drive counted in V when the student wrote its parameters, left out when not
-    used = {k: bool(_parameters(parts, k, ctx) & f.symbols) for k in drives}
+    used = {k: bool(_own_parameters(parts, k, pot, ctx) & f.symbols) for k in drives}
     chosen = sorted(_subsets(drives), key=lambda c: sum((k in c) != used[k] for k in drives))
     forms = [parts.potential(pot + list(c)) for c in chosen[:8]]
     return _wrong(ctx, f, None, "this is not the potential energy: its gradient differs",
@@ -208,6 +228,15 @@ def _parameters(parts, key, ctx) -> set:
     """The parameters in the pieces of the ingredient ``key``."""
     free = set().union(*(sp.sympify(v).free_symbols for v in parts.pieces[key]))
     return free & set(ctx.parameters)
+
+
+def _own_parameters(parts, key, others, ctx) -> set:
+    """The parameters of ``key`` that the ingredients ``others`` do not have (``mu`` of a
+    friction ``-mu m g cos(alpha)`` beside gravity's ``m g sin(alpha)``): what shows that an
+    answer counts ``key``; all of its parameters when it has none of its own."""
+    mine = _parameters(parts, key, ctx)
+    shared = set().union(*(_parameters(parts, k, ctx) for k in others)) if others else set()
+    return (mine - shared) or mine
 
 
 def _subsets(keys):

@@ -71,10 +71,13 @@ _DAMPER = (DAMPING, TORSIONAL_DAMPING)
 
 
 def _declared(ctx: ProblemContext) -> dict:
-    """``{parameter symbol: declared Dimension}`` (angles kept: a torque is not a stiffness)."""
+    """``{parameter or given input symbol: declared Dimension}`` (angles kept: a torque is
+    not a stiffness)."""
     def build():
         out = {}
-        for p in ctx.problem.parameters:
+        declared = list(ctx.problem.parameters) + [
+            x for x in (getattr(ctx.problem, "inputs", None) or ()) if hasattr(x, "dimension")]
+        for p in declared:
             try:
                 out[p.symbol] = as_dimension(p.dimension)
             except (TypeError, ValueError):
@@ -303,11 +306,14 @@ def _certain(term, ctx) -> str:
             if not others & set(_SPRING + _GRAVITY + (TORQUE, FORCE) + _DAMPER):
                 return name
     inertial = {MASS, LENGTH, INERTIA, ANGLE, DIMENSIONLESS}
-    if rates and not dims - inertial:   # rates times masses and lengths only: kinematics
+    spin = {d for d in dims if d is not None and reduce(d) == reduce(1 / TIME)}
+    if rates and not dims - inertial - spin:   # rates times masses and lengths: kinematics
         moving = [s.qd for s in ctx.states if s.qd in syms]
         powers = term.as_powers_dict()
         if len(moving) >= 2:
             return "a Coriolis term"
-        if powers.get(moving[0], 0) >= 2:
+        if spin and t not in syms and powers.get(moving[0], 0) == 1:
+            return "a Coriolis term"   # a rate times a prescribed angular rate (2 m Omega r')
+        if not spin and powers.get(moving[0], 0) >= 2:
             return "a centripetal term"
     return ""

@@ -13,8 +13,10 @@ Accepted syntax: ``*``, ``/``, ``^`` or ``**``, implicit multiplication (``2 m g
 ``\theta``), combining dots (``θ̇``, also before an index: ``ẍ1``, ``θ̈₂``), subscript digits
 (``θ₁``), ``½`` and like fractions; LaTeX ``\frac{a}{b}``, ``\sqrt{x}``, ``\sin``,
 ``\dot{x}``, ``\ddot{\theta}``, ``\cdot``, ``\left(``; functions ``sin cos tan cot sec csc
-sqrt exp log ln`` with ``sin^2(x)`` and bare arguments ``sin x``, ``\sin 2\theta``;
-vectors ``[a, b, c]``.
+sqrt exp log ln`` with ``sin^2(x)`` and bare arguments ``sin x``, ``\sin 2\theta``; the root
+sign (``√3``, ``√(k/m)``); Leibniz's rates (``dx/dt``, ``d2x/dt2``, ``d^2x/dt^2``,
+``\frac{d^2\theta}{dt^2}``); equations separated by commas (``a = b, c = d``, every part an
+equation); vectors ``[a, b, c]``.
 
 Example
 -------
@@ -110,6 +112,19 @@ _LATEX_TIMES = re.compile(r"\\(cdot|times)(?![A-Za-z])")
 _LATEX_OPERATORNAME = re.compile(r"\\operatorname\{([A-Za-z]+)\}")
 _LATEX_DECOR = re.compile(r"\\(hat|vec|mathbf|boldsymbol|bm|mathrm)\{([A-Za-z]+)\}")
 _BRACKETS = re.compile(r"[()\[\]{}]")
+_LATEX_COMMAND = re.compile(r"\\[A-Za-z]{0,20}")
+# a square-root sign before a number or a name (√3, √g) or a bracket (√(k/m))
+_ROOT_SIGN = re.compile(r"√\s*(\d+(?:\.\d+)?|[A-Za-zα-ωΑ-Ωϕϑ][A-Za-z0-9α-ωΑ-Ωϕϑ]*)")
+# Leibniz's notation for rates: d2x/dt2, d^2x/dt^2, dx/dt, \frac{d^2\theta}{dt^2}, \frac{dx}{dt}
+_LEIBNIZ_NAME = r"(\\?[A-Za-zα-ωΑ-Ωϕϑ][A-Za-z0-9α-ωΑ-Ωϕϑ]*(?:_\{[A-Za-z0-9]+\}|_[A-Za-z0-9]+)?)"
+_LEIBNIZ = (
+    (re.compile(r"\\[dt]?frac\{\s*d\s*\^\s*\{?\s*2\s*\}?\s*" + _LEIBNIZ_NAME
+                + r"\s*\}\{\s*dt\s*\^\s*\{?\s*2\s*\}?\s*\}"), r" \1'' "),
+    (re.compile(r"\\[dt]?frac\{\s*d\s*" + _LEIBNIZ_NAME + r"\s*\}\{\s*dt\s*\}"), r" \1' "),
+    (re.compile(r"(?<![A-Za-z0-9_'])d\^?2" + _LEIBNIZ_NAME + r"\s*/\s*dt\^?2(?![A-Za-z0-9_])"),
+     r"\1''"),
+    (re.compile(r"(?<![A-Za-z0-9_'])d" + _LEIBNIZ_NAME + r"\s*/\s*dt(?![A-Za-z0-9_^])"),
+     r"\1'"))
 
 _GREEK_CHARS = "α-ωΑ-Ωϕϑ"
 _NAME_RE = (rf"[A-Za-z{_GREEK_CHARS}][A-Za-z0-9{_GREEK_CHARS}]*"
@@ -435,6 +450,11 @@ def parse(text: str, limits: Limits = LIMITS) -> list[Equation]:
         raise
     except UnexpectedCharacters as exc:
         ch = text[exc.pos_in_stream] if exc.pos_in_stream < len(text) else "?"
+        if ch == "\\":   # name the LaTeX command, not just its backslash
+            command = _LATEX_COMMAND.match(text, exc.pos_in_stream).group()
+            raise AnswerSyntaxError(f"could not read the answer at column {exc.column}: the "
+                                    f"LaTeX command {command} is not supported"
+                                    + _context(text, exc)) from None
         raise AnswerSyntaxError(f"could not read the answer at column {exc.column}: "
                                 f"unexpected character {ch!r}{_hint(ch)}"
                                 .replace("'" + ch + "'", f'"{ch}"') + _context(text, exc)) \
@@ -476,11 +496,16 @@ def _prepare(text, limits: Limits) -> str:
             m in unicodedata.normalize("NFD", ch) for m in _COMBINING) else ch for ch in text)
         for a, b in _REPLACE.items():
             text = text.replace(a, b)
+        text = _ROOT_SIGN.sub(r"sqrt(\1)", text).replace("√", "sqrt")
     if "\\" in text or "&" in text:
         text = _LATEX_OPERATORNAME.sub(r"\1", text)
         text = _LATEX_DECOR.sub(r"\2", text)
         text = _LATEX_NOISE.sub(" ", text)
         text = _LATEX_TIMES.sub("*", text)
+    if "dt" in text:
+        for pattern, rate in _LEIBNIZ:
+            text = pattern.sub(rate, text)
+    text = _commas_between_equations(text)
     bad = _DISALLOWED.search(text)
     if bad:
         ch, i = bad.group(), bad.start()
@@ -499,6 +524,25 @@ def _prepare(text, limits: Limits) -> str:
                              f"{limits.depth} levels are graded.")
     if not text.strip():
         raise AnswerSyntaxError("the answer is empty.")
+    return text
+
+
+def _commas_between_equations(text: str) -> str:
+    """``a = b, c = d`` (commas outside brackets, every part an equation) as ``a = b; c = d``."""
+    if "," not in text or text.count("=") < 2:
+        return text
+    parts, depth, start = [], 0, 0
+    for i, ch in enumerate(text):
+        if ch in "([{":
+            depth += 1
+        elif ch in ")]}":
+            depth -= 1
+        elif ch == "," and depth == 0:
+            parts.append(text[start:i])
+            start = i + 1
+    parts.append(text[start:])
+    if len(parts) > 1 and all("=" in part for part in parts):
+        return ";".join(parts)
     return text
 
 

@@ -218,7 +218,9 @@ class Vocabulary:
     def unknown_message(self, name: str) -> str:
         close = difflib.get_close_matches(name, list(self.table), n=3, cutoff=0.6)
         hint = f" Did you mean {', '.join(f'`{c}`' for c in close)}?" if close else ""
-        return f"unknown name `{name}`.{hint} {self.describe()}"
+        shown = f"`{name}`" if len(name) <= 40 else \
+            f"`{name[:20]}...{name[-8:]}` ({len(name)} characters)"
+        return f"unknown name {shown}.{hint} {self.describe()}"
 
     def describe(self) -> str:
         """The problem's names and aliases, in one paragraph."""
