@@ -356,13 +356,12 @@ class ProblemContext:
         for p in self.problem.parameters:
             floats[p.symbol] = tuple(float(v) for v in p.range)
         for x in getattr(self.problem, "input_symbols", ()):
-            floats[x] = (0.5, 2.0)   # a given input (F(t)): any value at a point, as the checker draws it
+            floats[x] = (0.5, 2.0)   # a given input F(t): any value at a point, as the verdict
+            # draws it (dualmech.verify.sampling.Context)
         for q, s in zip(self.coordinates, self.states):
             c = self.problem.coordinate_info(q)
             floats[s.q] = tuple(float(v) for v in c.range)
             floats[s.qd] = tuple(float(v) for v in c.rate_range)
-        for s in self.parameters:   # a given input F(t): a free value, drawn as the verdict
-            floats.setdefault(s, (0.5, 2.0))   # draws it (dualmech.verify.sampling.Context)
         return floats
 
     def false_right_bound(self, degree: int, method: str) -> float:
