@@ -76,15 +76,20 @@ def test_held_model_digest_follows_the_symbols_assumptions():
     assert digest(one.equations) != digest(other.equations)
 
 
-def test_steady_state_matrix_on_flint_equals_sympys_lu_route():
-    """The rolling disk's lean/heading matrix at rational speeds, both routes (the hand
-    value of the lean eigenvalues is checked by tests/test_stability.py)."""
+def _disk_linearisation():
+    """The rolling disk's linearisation about upright rolling, symbolic in its speed."""
     p = get("rolling_disk")
     values = {sym: stability.exact_number(val) for sym, val in p.defaults().items()}
     steady = p.steady_motion
     symbol = _symbol(p, steady)
-    lin = stability.linearize_about(p.model(p.reference), steady.about, values, symbol,
-                                    generic=sp.Rational(3, 5))
+    return stability.linearize_about(p.model(p.reference), steady.about, values, symbol,
+                                     generic=sp.Rational(3, 5)), symbol
+
+
+def test_steady_state_matrix_on_flint_equals_sympys_lu_route():
+    """The rolling disk's lean/heading matrix at rational speeds, both routes (the hand
+    value of the lean eigenvalues is checked by tests/test_stability.py)."""
+    lin, symbol = _disk_linearisation()
     for speed in (sp.Rational(1, 2), sp.Rational(7, 4), sp.Integer(3)):
         fast = stability._reduce_rational(lin._parts, {symbol: speed})
         assert fast is not None
@@ -93,12 +98,7 @@ def test_steady_state_matrix_on_flint_equals_sympys_lu_route():
 
 
 def test_flint_route_declines_an_irrational_value():
-    p = get("rolling_disk")
-    values = {sym: stability.exact_number(val) for sym, val in p.defaults().items()}
-    steady = p.steady_motion
-    symbol = _symbol(p, steady)
-    lin = stability.linearize_about(p.model(p.reference), steady.about, values, symbol,
-                                    generic=sp.Rational(3, 5))
+    lin, symbol = _disk_linearisation()
     assert stability._reduce_rational(lin._parts, {symbol: sp.sqrt(2)}) is None
 
 

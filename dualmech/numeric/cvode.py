@@ -121,11 +121,7 @@ def integrate(model: NumericModel, t_span: Sequence[float], y0, *, t_eval=None,
     """
     if method not in METHODS:
         raise ValueError(f"`method` must be one of {', '.join(METHODS)}, got {method!r}.")
-    t0, t1 = float(t_span[0]), float(t_span[1])
-    y0 = np.asarray(y0, dtype=float)
-    if y0.shape != (2 * model.n,) or not np.isfinite(y0).all():
-        raise ValueError(f"`y0` must hold {2 * model.n} finite numbers (q then q'), got "
-                         f"{y0.tolist()}.")
+    t0, t1, y0 = _start(model, t_span, y0)
     t_eval = _samples(t0, t1, t_eval)
     if model.shape[0] != model.shape[1]:
         raise ValueError(f"model `{model.eqs.name}` is not square ({model.shape}): integrate "
@@ -194,14 +190,19 @@ def integrate_until(model: NumericModel, t_span: Sequence[float], y0, stops: Sto
     """
     if method not in CVODE_METHODS:
         raise ValueError(f"`method` must be one of {', '.join(CVODE_METHODS)}, got {method!r}.")
-    t0, t1 = float(t_span[0]), float(t_span[1])
+    t0, t1, y0 = _start(model, t_span, y0)
+    if getattr(model, "inputs_in_python", None):
+        raise CvodeUnavailable(f"CVODE runs compiled code only: {model.inputs_in_python}.")
+    return _cvode(model, t0, t1, y0, _samples(t0, t1, t_eval), rtol, atol, method, stops)
+
+
+def _start(model, t_span, y0) -> tuple:
+    """``(t0, t1, y0)`` as floats, ``y0`` checked against the model's state size."""
     y0 = np.asarray(y0, dtype=float)
     if y0.shape != (2 * model.n,) or not np.isfinite(y0).all():
         raise ValueError(f"`y0` must hold {2 * model.n} finite numbers (q then q'), got "
                          f"{y0.tolist()}.")
-    if getattr(model, "inputs_in_python", None):
-        raise CvodeUnavailable(f"CVODE runs compiled code only: {model.inputs_in_python}.")
-    return _cvode(model, t0, t1, y0, _samples(t0, t1, t_eval), rtol, atol, method, stops)
+    return float(t_span[0]), float(t_span[1]), y0
 
 
 def _samples(t0: float, t1: float, t_eval) -> np.ndarray:
