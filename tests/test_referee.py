@@ -28,8 +28,7 @@ DIRECT = sorted(p.name for p in all_problems()
 
 #: direct models that get no referee, and why (asserted, so a change is noticed)
 NO_REFEREE = {"copying_machine": "moves no declared body",       # small-rotation bar in O
-              "mobile_robot_simplified": "lumps the arm",         # referee = False
-              "rolling_disk": "rows of the direct model"}         # referee = False
+              "mobile_robot_simplified": "lumps the arm"}         # referee = False
 #: reactions a referee leaves open: statically indeterminate without the closure equation
 OPEN = {("wheel_on_pivot", "referee"): {"F_x", "F_z", "R_x", "R_z"},
         ("wheel_on_pivot", "referee (angular_momentum)"): {"F_x", "F_z"}}
