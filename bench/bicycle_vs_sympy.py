@@ -8,7 +8,7 @@ Usage::
 
 Both routes get the same bicycle: the geometry of Meijaard et al. (2007), Table 1, as exact
 numbers (the steer-axis tilt through the rational half-angle tangent of
-``examples/whipple_bicycle.py``), masses and inertias symbolic until the numbers go in.
+``problems/whipple_bicycle.py``), masses and inertias symbolic until the numbers go in.
 sympy's route is Kane's method as its documentation's bicycle does it: yaw, roll, pitch and
 steer coordinates (the wheel angles and the rear contact's position are ignorable and left
 out), the front contact's height as the configuration constraint (with ``normalize``, a
@@ -103,7 +103,6 @@ def main(argv=None) -> int:
     import sympy as sp
 
     import inspect
-    from pathlib import Path
 
     from dualmech.problems import get
     from dualmech.verify.stability_claims import _Spectra
@@ -120,7 +119,7 @@ def main(argv=None) -> int:
         return np.sort_complex(np.array(out, dtype=complex))
 
     # -- ours ------------------------------------------------------------------------------
-    problem = get(str(Path(__file__).resolve().parents[1] / "examples" / "whipple_bicycle.py"))
+    problem = get("whipple_bicycle")
     W = inspect.getmodule(type(problem))     # the file's constants (Table 2, Table 1)
     _, t_derive = _cpu(lambda: (problem.model("lagrange"), problem.model("newton_euler")))
     t_verdict = 0.0
