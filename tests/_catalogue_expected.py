@@ -7,6 +7,22 @@ an entry says why where it is not obvious).  A new catalogue problem needs an en
 the catalogue checks fail, naming it, until it has them.
 """
 
+#: problems whose every catalogue-wide check costs far more than a few seconds: their
+#: parameter of each catalogue-wide parametrised test is marked slow (the quick run leaves it
+#: out, the full run and CI keep it), never skipped
+SLOW = {
+    # eight coordinates, 21 reactions, the front contact's square root: its two derivations
+    # take about 10 s each on one core, its exact verdict with the referee minutes
+    "whipple_bicycle",
+}
+
+
+def catalogue_params(names) -> list:
+    """``names`` as pytest parameters, those in :data:`SLOW` marked slow."""
+    import pytest
+    return [pytest.param(n, marks=pytest.mark.slow, id=n) if n in SLOW else n for n in names]
+
+
 MODELS = {
     "ball_in_sphere": ["newton_euler", "lagrange", "angular_momentum", "multiplier"],
     "bead_on_hoop": ["newton_euler", "lagrange", "multiplier"],

@@ -17,7 +17,7 @@ needs an entry there.
 """
 import pytest
 
-from _catalogue_expected import MODELS, VERDICTS
+from _catalogue_expected import MODELS, VERDICTS, catalogue_params
 from dualmech import t
 from dualmech.problems import declarations, get
 
@@ -36,14 +36,14 @@ def comparison(request, compared):
     return compared(request.node.callspec.params["name"])
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", catalogue_params(NAMES))
 def test_declaration_validates(name):
     problem = get(name)
     problem.validate()
     assert problem.model_names == MODELS.get(name)
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", catalogue_params(NAMES))
 def test_every_derivation_has_the_reference_motion_exactly(name, comparison):
     problem = comparison.problem
     assert comparison.equivalent, str(comparison)
@@ -63,7 +63,7 @@ def _carriers(problem) -> dict:
                      if r.name in {u.name for u in m.unknowns}] for r in problem.reactions}
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", catalogue_params(NAMES))
 def test_every_reaction_is_recovered_and_its_derivations_agree(name, comparison):
     problem = comparison.problem
     carriers = _carriers(problem)
@@ -92,7 +92,7 @@ def test_every_reaction_is_recovered_and_its_derivations_agree(name, comparison)
     assert compared == set(carriers)
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", catalogue_params(NAMES))
 def test_printed_answers_get_the_verdicts_derived_by_hand(name, comparison):
     published = comparison.published
     assert {v.label: v.verdict for v in published} == VERDICTS.get(name)
@@ -104,7 +104,7 @@ def test_printed_answers_get_the_verdicts_derived_by_hand(name, comparison):
                                              else "exact" for v in published]
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", catalogue_params(NAMES))
 def test_dimensions_of_every_equation_and_reaction_are_consistent(name, comparison):
     assert comparison.dimension_issues == []
 
