@@ -134,8 +134,9 @@ def constraints_of(eqs: EquationSet) -> Constraints:
     A row the model declares at velocity level (``EquationSet.constraints``, e.g.
     :meth:`Lagrangian.velocity_constraint
     <dualmech.model.lagrange.Lagrangian.velocity_constraint>`) is kept there: ``c(q, q') =
-    0`` is the invariant, no position level exists.  Any other row is integrated to its
-    position level ``g(q)``; :class:`ModelError` when it is not the second derivative of a
+    0`` is the invariant, no position level exists.  One declared at position level
+    (:meth:`Lagrangian.constraint <dualmech.model.lagrange.Lagrangian.constraint>`) keeps its
+    declared ``g(q)``.  Any other row is integrated to its position level ``g(q)``; :class:`ModelError` when it is not the second derivative of a
     function of the coordinates (velocity-level but not declared, rheonomic or not
     integrable): declare it then.
     """
@@ -145,6 +146,9 @@ def constraints_of(eqs: EquationSet) -> Constraints:
                          f"constraint rows for {len(eqs.unknowns)} multipliers.")
     A, b = eqs.plain_matrix()
     declared = {c.label: c for c in eqs.constraints if c.level == "velocity"}
+    # a constraint declared at position level is taken as written, not integrated back
+    # from its acceleration row (the bicycle's front contact: a square root of the angles)
+    positions = {c.label: c for c in eqs.constraints if c.level == "position"}
     by_name = {u.name: u for u in eqs.unknowns}
     found, levels, multipliers = [], [], []
     for k, r in enumerate(rows):
@@ -157,9 +161,12 @@ def constraints_of(eqs: EquationSet) -> Constraints:
             levels.append("velocity")
             multipliers.append(by_name.get(c.name, eqs.unknowns[k]))
         else:
-            found.append(_position_level(eqs, A, b, r, what))
+            held = positions.get(eqs.labels[r])
+            found.append(held.expression if held is not None else
+                         _position_level(eqs, A, b, r, what))
             levels.append("position")
-            multipliers.append(eqs.unknowns[k])
+            multipliers.append(by_name.get(held.name, eqs.unknowns[k]) if held is not None
+                               else eqs.unknowns[k])
     return Constraints(eqs.coordinates, tuple(multipliers), tuple(found), tuple(levels))
 
 
