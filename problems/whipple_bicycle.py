@@ -58,10 +58,15 @@ diagram per body, ``sum F = m a_G`` on ``O.x, O.y, O.z`` and ``sum tau_G = dH_G/
 body's axes; unknown: the contact forces ``F_R``, ``F_F`` (ground axes) at the contact points,
 the rear and front hubs' forces ``R_R``, ``R_F`` and couples about the two axes normal to each
 axle (``M_Rx, M_Rz``, ``M_Fx, M_Fz``), the steering joint's force ``R_S`` and couples normal
-to the steer axis (``M_Sx, M_Sy``): 21 reactions.  Closing rows, at acceleration level: the
-material contact points' velocities -- rear along ``O.x, O.y``, front along ``O.x, O.y`` and
-up (its vertical velocity is the front contact's velocity-level form; the rear's vanishes
-identically) -- differentiated once: 24 + 5 = 29 rows for 8 accelerations and 21 reactions.
+to the steer axis (``M_Sx, M_Sy``): 21 reactions.  The contacts are *declared*, not written
+as rows: rolling of each wheel's material point at its contact point along ``O.x, O.y``
+(``NewtonEuler.rolling``) and the height of the front contact point (``NewtonEuler.
+constraint``; the rear's is built into the coordinates).  The model holds them at their
+level and their acceleration-level rows: 24 + 5 = 29 rows for 8 accelerations and 21
+reactions.  Because they are declarations, the Kane referee reads them too: it derives the
+motion and all 21 reactions a second time from the bodies, loads, reactions and constraints
+declared (not from the balances), so every hub and steering-joint reaction and the rear
+normal force, which no other model carries, are cross-checked.
 
 Steady motion: upright straight running at speed ``v``: every angle zero, ``x' = v``,
 ``thetaR' = v / rR``, ``thetaF' = v / rF``.  Linearised, the state reduces to roll, steer and
