@@ -35,8 +35,17 @@ def test_catalogue_holds_the_four_named_problems():
     assert len(NAMES) == len(set(NAMES))
 
 
+#: the generic mutation report judges every mutant of every model with a full verdict: the
+#: bicycle's hundreds of mutants at minutes each do not fit a test run; the cross-check of its
+#: reactions is mutation-tested by tests/test_referee_rolling.py instead
+MUTATION = [pytest.param(n, marks=pytest.mark.skip(reason="hundreds of mutants, a verdict of "
+                                                        "minutes each: see "
+                                                        "tests/test_referee_rolling.py"))
+            if n == "whipple_bicycle" else n for n in NAMES]
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("name", catalogue_params(NAMES))
+@pytest.mark.parametrize("name", MUTATION)
 def test_mutants_are_all_caught_naming_an_equation(name):
     report = mutation_report(get(name))
     assert report.total >= 10
