@@ -68,7 +68,10 @@ def test_every_reaction_is_recovered_and_its_derivations_agree(name, comparison)
     problem = comparison.problem
     carriers = _carriers(problem)
     assert comparison.reaction_derivations == carriers
-    single = [r for r, held in carriers.items() if len(held) < 2]
+    # a second derivation: another model, or the referee Kane's method derives from the
+    # direct model's declarations (the bicycle's joint reactions: no multiplier model has them)
+    refereed = {r for r, held in comparison.referee_derivations.items() if held}
+    single = [r for r, held in carriers.items() if len(held) < 2 and r not in refereed]
     assert not single, f"{single}: derive each reaction a second time (e.g. as a multiplier)"
     assert comparison.not_cross_checked == []
     # recovered: a function of the state and the parameters, no acceleration, no unknown --
@@ -89,7 +92,7 @@ def test_every_reaction_is_recovered_and_its_derivations_agree(name, comparison)
         held = {p.reference, *p.candidate.split(", ")}
         assert all(set(carriers[r]) == held for r in p.reactions), (p.reactions, held)
         compared |= set(p.reactions)
-    assert compared == set(carriers)
+    assert compared | {r for r in refereed if len(carriers[r]) < 2} == set(carriers)
 
 
 @pytest.mark.parametrize("name", catalogue_params(NAMES))
