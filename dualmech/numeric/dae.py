@@ -29,10 +29,11 @@ no reaction -- are constraints held by no multiplier
 (:func:`~dualmech.numeric.formulations.with_static_rows`): their acceleration-level rows
 replace them, and the same forms keep the state on them.
 
-The position-level constraints ``g`` are not stored in the equations; :func:`constraints_of`
-recovers them from the acceleration rows (the coefficients of ``q''`` are ``G = dg/dq``; the
-rest must be ``q'^T (dG/dq) q'``, checked exactly) by integrating ``G`` coordinate by
-coordinate, and checks ``dg/dq = G`` exactly.  A direct model in the same maximal
+A position-level constraint the model declares (``EquationSet.constraints``, level
+``"position"``) is taken as declared.  Any other is not stored in the equations:
+:func:`constraints_of` recovers it from its acceleration row (the coefficients of ``q''``
+are ``G = dg/dq``; the rest must be ``q'^T (dG/dq) q'``, checked exactly) by integrating
+``G`` coordinate by coordinate, and checks ``dg/dq = G`` exactly.  A direct model in the same maximal
 coordinates that imposes the constraints only through its coordinate map (fewer equations
 than unknowns) is made square by the same rows, borrowed from the multiplier model
 (:func:`~dualmech.numeric.formulations.formulations`).
@@ -41,8 +42,8 @@ Example
 -------
 >>> from dualmech.problems import get
 >>> p = get("pendulum_particle"); eqs = p.model("cartesian")
->>> constraints_of(eqs).expressions
-(-x(t)**2/(2*l) - y(t)**2/(2*l),)
+>>> constraints_of(eqs).expressions      # as the model declares it
+((l**2 - x(t)**2 - y(t)**2)/(2*l),)
 """
 from __future__ import annotations
 
