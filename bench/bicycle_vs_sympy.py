@@ -5,10 +5,11 @@ Usage::
 
     python bench/bicycle_vs_sympy.py                # everything
     python bench/bicycle_vs_sympy.py --no-verdict   # skip the two-model verdict
+    python bench/bicycle_vs_sympy.py --referee      # also the Kane referee's own cost
 
 Both routes get the same bicycle: the geometry of Meijaard et al. (2007), Table 1, as exact
 numbers (the steer-axis tilt through the rational half-angle tangent of
-``examples/whipple_bicycle.py``), masses and inertias symbolic until the numbers go in.
+``problems/whipple_bicycle.py``), masses and inertias symbolic until the numbers go in.
 sympy's route is Kane's method as its documentation's bicycle does it: yaw, roll, pitch and
 steer coordinates (the wheel angles and the rear contact's position are ignorable and left
 out), the front contact's height as the configuration constraint (with ``normalize``, a
@@ -103,13 +104,16 @@ def main(argv=None) -> int:
     import sympy as sp
 
     import inspect
-    from pathlib import Path
 
     from dualmech.problems import get
     from dualmech.verify.stability_claims import _Spectra
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--no-verdict", action="store_true", help="skip the two-model verdict")
+    ap.add_argument("--referee", action="store_true",
+                    help="also time the Kane referee: its derivation from the direct model's "
+                         "declarations and its pair verdict against newton_euler (not in the "
+                         "ratio: sympy's route has no second derivation)")
     args = ap.parse_args(argv)
     speeds = list(range(11))
 
@@ -120,7 +124,7 @@ def main(argv=None) -> int:
         return np.sort_complex(np.array(out, dtype=complex))
 
     # -- ours ------------------------------------------------------------------------------
-    problem = get(str(Path(__file__).resolve().parents[1] / "examples" / "whipple_bicycle.py"))
+    problem = get("whipple_bicycle")
     W = inspect.getmodule(type(problem))     # the file's constants (Table 2, Table 1)
     _, t_derive = _cpu(lambda: (problem.model("lagrange"), problem.model("newton_euler")))
     t_verdict = 0.0
@@ -132,6 +136,16 @@ def main(argv=None) -> int:
         ctx = Context(ref.coordinates, problem.parameter_symbols, problem)
         result, t_verdict = _cpu(lambda: compare_models(ref, other, context=ctx))
         print(f"ours: verdict {str(result).splitlines()[0]}")
+    if args.referee:
+        from dualmech.model.direct import declarations_of
+        from dualmech.model.kane import kane_equations
+        from dualmech.verify.check import compare_models
+        direct = problem.model("newton_euler")
+        kane, t_kane = _cpu(lambda: kane_equations(declarations_of(direct)))
+        pair, t_pair = _cpu(lambda: compare_models(kane, direct, explain=False))
+        print(f"referee: derive {t_kane:7.2f} s ({len(kane.equations)} rows)  pair verdict "
+              f"against newton_euler {t_pair:7.2f} s: "
+              f"{'equivalent' if pair.equivalent else 'DIFFERENT'} ({pair.method})")
     spectra, t_lin = _cpu(lambda: _Spectra(problem))
     eig, t_eig = _cpu(lambda: {s: spectra.nontrivial(s) for s in speeds})
     ours_gap = max(float(np.max(np.abs(np.sort_complex(np.array([complex(z) for z in eig[s]]))

@@ -41,8 +41,11 @@ coefficient of ``phi'`` is not the derivative of anything.
 Direct form (model ``newton_euler``).  Free-body diagram of the disk: weight ``-m g Z`` at G,
 contact force ``F = F_x O.x + F_y O.y + F_z O.z`` at P (three unknowns).  Equations:
 ``sum F = m a_G`` on ``O.x, O.y, O.z``; ``sum tau_G = dH_G/dt`` on ``B.x, B.y, B.z``; and
-the two rolling rows differentiated once in time (the material point's acceleration-level
-condition): eight equations in five accelerations and three forces.
+the rolling condition *declared* (``NewtonEuler.rolling``: the disk's material point at P has
+no velocity along ``O.x``, ``O.y``), which the model holds as the two rolling rows above and
+their time derivatives: eight equations in five accelerations and three forces.  Because the
+rolling is a declaration, the Kane referee reads it too and derives the motion and all three
+contact forces a third time.
 
 Indirect form (model ``lagrange``), written independently::
 
@@ -145,13 +148,6 @@ class RollingDisk(Problem):
               "derived by hand in the module docstring")
     summary = ("A thin disk rolling on a plane, Newton-Euler with the contact force against "
                "Lagrange with rolling multipliers; upright rolling stable for v^2 > g r / 3.")
-    # the rolling constraint is written as rows of the direct model (a velocity-level
-    # constraint the direct form cannot declare yet), so Kane's method on the declared bodies
-    # alone would leave the contact point free: no referee is derived
-    referee = False
-    referee_note = ("the rolling constraint is rows of the direct model, not a declaration the "
-                    "referee can read; the contact forces are cross-checked by the two "
-                    "multiplier models instead")
     parameters = (
         Parameter(m, MASS, 1.0, (0.1, 10.0), "mass of the disk"),
         Parameter(r, LENGTH, 0.3, (0.05, 2.0), "radius of the disk"),
@@ -179,7 +175,8 @@ class RollingDisk(Problem):
                                  "upright rolling straight along O.x at speed v")
 
     def newton_euler(self) -> EquationSet:
-        """``sum F = m a_G``, ``sum tau_G = dH_G/dt``, the rolling rows; contact force unknown."""
+        """``sum F = m a_G``, ``sum tau_G = dH_G/dt``; rolling declared at the contact point
+        (the referee reads it); contact force unknown."""
         s = scene()
         ne = NewtonEuler("newton_euler", coordinates=COORDS, ground=s.O,
                          description="the disk's free-body diagram, contact force unknown")
@@ -189,9 +186,7 @@ class RollingDisk(Problem):
             ne.linear_momentum(s.disk, axis)
         for axis in (s.B.x, s.B.y, s.B.z):
             ne.angular_momentum(s.disk, axis)
-        for label, row in zip(("O.x", "O.y"), _rolling_rows(s)):
-            ne.equation(f"rolling: material contact point, {label} (acceleration level)",
-                        {"rolling": row.diff(t)})
+        ne.rolling("rolling", s.disk, s.P, [s.O.x, s.O.y])
         return ne.equations()
 
     def lagrange(self) -> EquationSet:

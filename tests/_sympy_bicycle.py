@@ -9,11 +9,11 @@ through the front contact's height (configuration constraint), the speeds ``u1, 
 dependent through the front contact's velocity (three velocity constraints).  Only the
 numerical values differ from that test: :func:`benchmark_values` gives the same Meijaard et
 al. (2007) Table 1 bicycle through the same formulas, with the steer-axis tilt and the lengths
-exact (the tilt through ``examples/whipple_bicycle.py``'s half-angle tangent), where the test
+exact (the tilt through ``problems/whipple_bicycle.py``'s half-angle tangent), where the test
 uses 15-digit floats; the test's own floats are :data:`SYMPY_TEST_VALUES`.
 
 Conventions (read off the code): ``N.z`` up, ``x`` forward, ``y`` left -- the axes of
-``examples/whipple_bicycle.py``; ``q1`` yaw about ``N.z``, ``q2`` roll about ``Y.x``, ``q4``
+``problems/whipple_bicycle.py``; ``q1`` yaw about ``N.z``, ``q2`` roll about ``Y.x``, ``q4``
 pitch about ``R.y`` (zero upright: the frame is turned by ``htangle`` more), ``q5`` steer
 about ``Frame.x``, the steer axis pointing *down* (ours, ``delta``, turns about it pointing
 up: ``q5 = -delta``); ``u1 = q1'``, ``u2 = q2'``, ``u4 = q4'``, ``u5 = q5'``, ``u3`` the rear
@@ -157,7 +157,7 @@ def SYMPY_TEST_A(v: float) -> list:
 
 def benchmark_values(W) -> dict:
     """``{sympy's parameter name: our parameter or exact number}``: the bicycle of
-    ``examples/whipple_bicycle.py`` (module ``W``) in sympy's parameters.
+    ``problems/whipple_bicycle.py`` (module ``W``) in sympy's parameters.
 
     The lengths are the test's formulas with ``sin(HTA) = cos(lam)``, ``cos(HTA) = sin(lam)``
     exact (``HTA = pi/2 - lam``) and its two ``acos`` terms expanded by the angle-sum

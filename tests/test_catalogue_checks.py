@@ -17,7 +17,7 @@ needs an entry there.
 """
 import pytest
 
-from _catalogue_expected import MODELS, VERDICTS
+from _catalogue_expected import BOUND, MODELS, VERDICTS, catalogue_params
 from dualmech import t
 from dualmech.problems import declarations, get
 
@@ -36,14 +36,14 @@ def comparison(request, compared):
     return compared(request.node.callspec.params["name"])
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", catalogue_params(NAMES))
 def test_declaration_validates(name):
     problem = get(name)
     problem.validate()
     assert problem.model_names == MODELS.get(name)
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", catalogue_params(NAMES))
 def test_every_derivation_has_the_reference_motion_exactly(name, comparison):
     problem = comparison.problem
     assert comparison.equivalent, str(comparison)
@@ -52,9 +52,10 @@ def test_every_derivation_has_the_reference_motion_exactly(name, comparison):
     assert [p.candidate for p in motion] == [n for n in problem.model_names
                                              if n != problem.reference]
     for p in comparison.pairs:
-        # exact: evaluation at random rational points, a false "equal" below 1e-60
+        # exact: evaluation at random rational points, a false "equal" below 1e-60 (or the
+        # problem's own bound, BOUND, where its degree leaves 8 points short of that)
         assert p.method == "exact", (p.kind, p.candidate, p.method)
-        assert p.equivalent and p.bound < 1e-60, str(p)
+        assert p.equivalent and p.bound < BOUND.get(problem.name, 1e-60), str(p)
 
 
 def _carriers(problem) -> dict:
@@ -63,12 +64,15 @@ def _carriers(problem) -> dict:
                      if r.name in {u.name for u in m.unknowns}] for r in problem.reactions}
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", catalogue_params(NAMES))
 def test_every_reaction_is_recovered_and_its_derivations_agree(name, comparison):
     problem = comparison.problem
     carriers = _carriers(problem)
     assert comparison.reaction_derivations == carriers
-    single = [r for r, held in carriers.items() if len(held) < 2]
+    # a second derivation: another model, or the referee Kane's method derives from the
+    # direct model's declarations (the bicycle's joint reactions: no multiplier model has them)
+    refereed = {r for r, held in comparison.referee_derivations.items() if held}
+    single = [r for r, held in carriers.items() if len(held) < 2 and r not in refereed]
     assert not single, f"{single}: derive each reaction a second time (e.g. as a multiplier)"
     assert comparison.not_cross_checked == []
     # recovered: a function of the state and the parameters, no acceleration, no unknown --
@@ -89,10 +93,10 @@ def test_every_reaction_is_recovered_and_its_derivations_agree(name, comparison)
         held = {p.reference, *p.candidate.split(", ")}
         assert all(set(carriers[r]) == held for r in p.reactions), (p.reactions, held)
         compared |= set(p.reactions)
-    assert compared == set(carriers)
+    assert compared | {r for r in refereed if len(carriers[r]) < 2} == set(carriers)
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", catalogue_params(NAMES))
 def test_printed_answers_get_the_verdicts_derived_by_hand(name, comparison):
     published = comparison.published
     assert {v.label: v.verdict for v in published} == VERDICTS.get(name)
@@ -104,7 +108,7 @@ def test_printed_answers_get_the_verdicts_derived_by_hand(name, comparison):
                                              else "exact" for v in published]
 
 
-@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("name", catalogue_params(NAMES))
 def test_dimensions_of_every_equation_and_reaction_are_consistent(name, comparison):
     assert comparison.dimension_issues == []
 

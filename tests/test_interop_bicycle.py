@@ -5,7 +5,7 @@ sympy 1.14.0, copied into ``tests/_sympy_bicycle.py``): Kane's method, four coor
 ``q1``, roll ``q2``, pitch ``q4``, steer ``q5``; the rear contact's position and the wheel
 angles left out), six speeds (``u3``, ``u6`` the wheels' spin rates), the pitch dependent through
 the front contact's height, three dependent speeds through the front contact's velocity.
-Ours is ``examples/whipple_bicycle.py`` (eight coordinates).  Same axes (x forward, y left, z
+Ours is ``problems/whipple_bicycle.py`` (eight coordinates).  Same axes (x forward, y left, z
 up); sympy's steer turns about the steer axis pointing down, ours about it pointing up, so
 ``q5 = -delta``; ``u3 = thetaR'``, ``u6 = thetaF'`` (see the helper's docstring).
 
@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import inspect
 import random
-from pathlib import Path
 
 import mpmath
 import pytest
@@ -29,12 +28,12 @@ from dualmech.verify.interop import from_mechanics
 
 from _sympy_bicycle import SYMPY_TEST_A, SYMPY_TEST_VALUES, benchmark_values, sympy_bicycle
 
-BICYCLE = Path(__file__).resolve().parents[1] / "examples" / "whipple_bicycle.py"
+BICYCLE = "whipple_bicycle"
 
 
 @pytest.fixture(scope="module")
 def ours():
-    problem = get(str(BICYCLE))
+    problem = get(BICYCLE)
     return problem, inspect.getmodule(type(problem))
 
 
@@ -59,7 +58,7 @@ def test_the_exact_geometry_is_the_tests_own_to_its_digits(ours):
     for name in lengths:
         assert abs(float(sp.N(exact[name] - SYMPY_TEST_VALUES[name], 30))) < 2e-15, name
     # the inertias and masses: our defaults are the test's numbers (products with sign flip)
-    defaults = get(str(BICYCLE)).defaults()
+    defaults = get(BICYCLE).defaults()
     for name, value in exact.items():
         if name not in lengths:
             assert float(value.xreplace(defaults)) == pytest.approx(

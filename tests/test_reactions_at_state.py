@@ -202,12 +202,31 @@ def test_report_json_holds_the_values_of_reactions_past_the_budget(capsys, tmp_p
         assert f"<td>T{i}</td><td>{v['direct']:.10g}</td><td>{v['referee']:.10g} (" in page
 
 
-def test_reactions_no_referee_derives_get_the_other_derivations_beside(capsys):
-    """The rolling disk has no referee (its rolling constraint is rows of the direct model);
-    its contact forces are derived again by its multiplier model(s): a different route."""
-    got = _show_at(capsys, "rolling_disk", "theta=0.3, phi_dot=2, psi_dot=0.5")
+def test_reactions_no_referee_derives_get_the_other_derivations_beside(capsys, tmp_path):
+    """The rolling disk with its referee declared away (``referee = False``): its contact
+    forces are derived again by its multiplier model(s), a different route, shown beside."""
+    path = tmp_path / "disk_no_referee.py"
+    path.write_text("from dualmech.problems.rolling_disk import RollingDisk\n\n\n"
+                    "class NoReferee(RollingDisk):\n"
+                    "    name = 'disk_no_referee'\n"
+                    "    referee = False\n"
+                    "    referee_note = 'declared away for this test'\n\n\n"
+                    "PROBLEMS = (NoReferee,)\n")
+    got = _show_at(capsys, str(path), "theta=0.3, phi_dot=2, psi_dot=0.5")
     for name in ("F_x", "F_y", "F_z"):
         value = got["values"][name]
         assert value["referee"] is None and "multiplier" in value["others"]
         assert value["others"]["multiplier"] == pytest.approx(value["direct"], rel=1e-9)
+    assert abs(got["values"]["F_z"]["direct"]) > 0.1
+
+
+def test_the_rolling_disks_referee_gives_its_contact_forces_at_a_state(capsys):
+    """The disk's referee reads its declared rolling: Kane's rows of all five speeds beside
+    the three auxiliary ones and the two rolling rows, 10 rows for 8 unknowns, consistent
+    (its exact verdict says so everywhere); solved by least squares, it gives the direct
+    form's contact forces to rounding."""
+    got = _show_at(capsys, "rolling_disk", "theta=0.3, phi_dot=2, psi_dot=0.5")
+    for name in ("F_x", "F_y", "F_z"):
+        value = got["values"][name]
+        assert value["referee"] == pytest.approx(value["direct"], rel=1e-9)
     assert abs(got["values"]["F_z"]["direct"]) > 0.1

@@ -1,4 +1,4 @@
-"""The benchmark bicycle (examples/whipple_bicycle.py, outside the catalogue) against independent references:
+"""The benchmark bicycle (problems/whipple_bicycle.py) against independent references:
 
 * Meijaard, Papadopoulos, Ruina & Schwab (2007), Table 2 and section 5 (the printed claims,
   judged by the toolkit like every printed answer);
@@ -10,13 +10,12 @@
 import numpy as np
 import pytest
 
-from pathlib import Path
 
 from dualmech.problems import get
 from dualmech.verify.stability_claims import _Spectra, judge_stability_claims
 
 
-BICYCLE = Path(__file__).resolve().parents[1] / "examples" / "whipple_bicycle.py"
+BICYCLE = "whipple_bicycle"
 
 
 def sympy_res(v: float) -> np.ndarray:
@@ -32,7 +31,7 @@ def sympy_res(v: float) -> np.ndarray:
 
 @pytest.fixture(scope="module")
 def problem():
-    return get(str(BICYCLE))
+    return get(BICYCLE)
 
 
 @pytest.fixture(scope="module")

@@ -28,6 +28,7 @@ from __future__ import annotations
 
 from typing import Sequence
 
+import symengine as se
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
@@ -35,10 +36,10 @@ from dualmech.model._algebra import names_of, time_se, to_se
 from dualmech.model._expr import as_expr, refuse_jumps
 from dualmech.model.bodies import RigidBody
 from dualmech.model.equations import Constraint, ModelError, state_symbols, to_plain, \
-    vanishes_identically
+    to_plain_se, from_plain, vanishes_identically
 from dualmech.model.kinematics import Frame, Point, Vector
 
-__all__ = ["declared", "material_velocity", "acceleration_row"]
+__all__ = ["declared", "material_velocity", "acceleration_row", "trig_reduced"]
 
 
 def declared(name: str, value, level: str, coordinates: Sequence, unknowns: Sequence = (),
@@ -88,13 +89,16 @@ def _scalar(what: str, value) -> sp.Expr:
 
 
 def _linear_in_rates(what: str, expr: sp.Expr, coordinates: tuple) -> None:
-    plain = to_plain(expr, coordinates)
-    rates = [state_symbols(q).qd for q in coordinates]
-    if not any(plain.has(r) for r in rates):
+    """Refuse ``expr`` unless it is ``a(q, t) . q' + a0(q, t)`` with some ``a`` nonzero
+    (decided in symengine: sympy's ``diff`` of a wheel's contact velocity takes minutes)."""
+    plain = to_plain_se(expr, coordinates)
+    rates = [se.Symbol(state_symbols(q).qd.name) for q in coordinates]
+    held = plain.free_symbols
+    if not any(r in held for r in rates):
         raise ModelError(f"{what} holds no rate: it is a position-level constraint; declare it "
                          "with `constraint` (its velocity level is derived).")
     for q, r in zip(coordinates, rates):
-        if sp.diff(plain, r).has(*rates):
+        if r in held and plain.diff(r).free_symbols & set(rates):
             raise ModelError(f"{what} is not linear in the rates (its coefficient of "
                              f"{q.func.__name__}' holds rates); a velocity constraint is "
                              "a(q, t) . q' + a0(q, t) = 0.")
@@ -126,3 +130,36 @@ def material_velocity(body: RigidBody, contact: Point, ground: Frame) -> Vector:
         raise ModelError(f"the contact must be a Point, got {type(contact).__name__}.")
     w = body.frame.ang_vel_in(ground)
     return body.masscenter.vel(ground) + w.cross(contact.pos_from(body.masscenter))
+
+
+def trig_reduced(expr, coordinates: Sequence) -> sp.Expr | None:
+    """``expr`` (in ``coordinates``, their rates and parameters) in the normal form of a
+    polynomial in sines and cosines modulo ``sin(a)^2 + cos(a)^2 = 1``, or ``None`` when it
+    is not such a polynomial (a square root, a sine in a denominator...).
+
+    The normal form (the remainder of the division by those relations, the sines first in a
+    lexical order) is unique: an expression that vanishes identically becomes 0, and a
+    rolling row built from rotation matrices becomes the hand one.
+
+    >>> from dualmech import coordinate
+    >>> a, b = coordinate("a"), coordinate("b")
+    >>> trig_reduced(sp.sin(a)**2 * sp.cos(b) + sp.cos(a)**2 * sp.cos(b) - sp.cos(b), [a, b])
+    0
+    >>> trig_reduced(sp.sqrt(1 + sp.sin(a)), [a]) is None
+    True
+    """
+    plain = to_plain(expr, coordinates)
+    args = sorted({f.args[0] for f in plain.atoms(sp.sin, sp.cos)}, key=sp.default_sort_key)
+    sines = [sp.Dummy(f"s{i}") for i in range(len(args))]
+    cosines = [sp.Dummy(f"c{i}") for i in range(len(args))]
+    poly = plain.xreplace({**{sp.sin(a): s for a, s in zip(args, sines)},
+                           **{sp.cos(a): c for a, c in zip(args, cosines)}})
+    if poly.has(sp.sin, sp.cos) or not poly.is_polynomial(*sines, *cosines):
+        return None
+    if not args:
+        return expr
+    relations = [s**2 + c**2 - 1 for s, c in zip(sines, cosines)]
+    _, rem = sp.reduced(poly, relations, *sines, *cosines, order="lex")
+    back = {**{s: sp.sin(a) for a, s in zip(args, sines)},
+            **{c: sp.cos(a) for a, c in zip(args, cosines)}}
+    return from_plain(rem.xreplace(back), coordinates)

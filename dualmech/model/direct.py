@@ -36,12 +36,13 @@ from typing import Sequence
 
 import sympy as sp
 
-from dualmech.model._algebra import merge_names, names_of, to_se
+from dualmech.model._algebra import merge_names, names_of, to_se, to_sp
 from dualmech.model._expr import as_expr, refuse_jumps, refuse_text_in
 
 from dualmech.model.bodies import Particle, RigidBody
 from dualmech.model.declared import builder_of, note
-from dualmech.model.constraints import acceleration_row, declared, material_velocity
+from dualmech.model.constraints import acceleration_row, declared, material_velocity, \
+    trig_reduced
 from dualmech.model.equations import Constraint, EquationSet, ModelError, Rows
 from dualmech.model.kinematics import Frame, Point, Vector
 
@@ -410,7 +411,7 @@ class NewtonEuler:
                 raise ModelError(f"rolling `{name}`: each direction must be a Vector, got "
                                  f"{type(d).__name__}.")
             label = name if len(directions) == 1 else f"{name} {_dir_name(d)}"
-            self.velocity_constraint(label, _readable(v.dot(d)))
+            self.velocity_constraint(label, _readable(*v.dot_se(d), self.coordinates))
             out.append(self._constraints[-1].expression)
         return tuple(out)
 
@@ -460,11 +461,19 @@ class NewtonEuler:
         parts[key] = parts.get(key, 0) + value
 
 
-def _readable(expr):
-    """``expr`` trig-simplified when small (identities only: ``sin^2 + cos^2`` folded), so a
-    declared constraint reads like a hand one; large ones are left expanded."""
-    expr = sp.expand(expr)
-    return sp.trigsimp(expr) if sp.count_ops(expr) < 300 else expr
+def _readable(value, names: dict, coordinates: tuple):
+    """The symengine ``value`` back in sympy with the caller's atoms, so a declared constraint
+    reads like a hand one: expanded (in symengine; sympy's ``expand`` of a wheel's contact
+    velocity on a steered frame takes minutes) and reduced by ``sin^2 + cos^2 = 1``
+    (:func:`~dualmech.model.constraints.trig_reduced`: a coefficient that vanishes
+    identically is then 0).  One of 300 terms or more, or not polynomial in the sines and
+    cosines, is left as built (expanded, the steered wheel's is a hundred times longer)."""
+    import symengine as se
+    expanded = se.expand(value)
+    if isinstance(expanded, se.Add) and len(expanded.args) >= 300:
+        return to_sp(value, names)
+    reduced = trig_reduced(to_sp(expanded, names), coordinates)
+    return reduced if reduced is not None else to_sp(value, names)
 
 
 def _held(v: Vector):

@@ -29,10 +29,11 @@ no reaction -- are constraints held by no multiplier
 (:func:`~dualmech.numeric.formulations.with_static_rows`): their acceleration-level rows
 replace them, and the same forms keep the state on them.
 
-The position-level constraints ``g`` are not stored in the equations; :func:`constraints_of`
-recovers them from the acceleration rows (the coefficients of ``q''`` are ``G = dg/dq``; the
-rest must be ``q'^T (dG/dq) q'``, checked exactly) by integrating ``G`` coordinate by
-coordinate, and checks ``dg/dq = G`` exactly.  A direct model in the same maximal
+A position-level constraint the model declares (``EquationSet.constraints``, level
+``"position"``) is taken as declared.  Any other is not stored in the equations:
+:func:`constraints_of` recovers it from its acceleration row (the coefficients of ``q''``
+are ``G = dg/dq``; the rest must be ``q'^T (dG/dq) q'``, checked exactly) by integrating
+``G`` coordinate by coordinate, and checks ``dg/dq = G`` exactly.  A direct model in the same maximal
 coordinates that imposes the constraints only through its coordinate map (fewer equations
 than unknowns) is made square by the same rows, borrowed from the multiplier model
 (:func:`~dualmech.numeric.formulations.formulations`).
@@ -41,8 +42,8 @@ Example
 -------
 >>> from dualmech.problems import get
 >>> p = get("pendulum_particle"); eqs = p.model("cartesian")
->>> constraints_of(eqs).expressions
-(-x(t)**2/(2*l) - y(t)**2/(2*l),)
+>>> constraints_of(eqs).expressions      # as the model declares it
+((l**2 - x(t)**2 - y(t)**2)/(2*l),)
 """
 from __future__ import annotations
 
@@ -134,8 +135,9 @@ def constraints_of(eqs: EquationSet) -> Constraints:
     A row the model declares at velocity level (``EquationSet.constraints``, e.g.
     :meth:`Lagrangian.velocity_constraint
     <dualmech.model.lagrange.Lagrangian.velocity_constraint>`) is kept there: ``c(q, q') =
-    0`` is the invariant, no position level exists.  Any other row is integrated to its
-    position level ``g(q)``; :class:`ModelError` when it is not the second derivative of a
+    0`` is the invariant, no position level exists.  One declared at position level
+    (:meth:`Lagrangian.constraint <dualmech.model.lagrange.Lagrangian.constraint>`) keeps its
+    declared ``g(q)``.  Any other row is integrated to its position level ``g(q)``; :class:`ModelError` when it is not the second derivative of a
     function of the coordinates (velocity-level but not declared, rheonomic or not
     integrable): declare it then.
     """
@@ -145,6 +147,9 @@ def constraints_of(eqs: EquationSet) -> Constraints:
                          f"constraint rows for {len(eqs.unknowns)} multipliers.")
     A, b = eqs.plain_matrix()
     declared = {c.label: c for c in eqs.constraints if c.level == "velocity"}
+    # a constraint declared at position level is taken as written, not integrated back
+    # from its acceleration row (the bicycle's front contact: a square root of the angles)
+    positions = {c.label: c for c in eqs.constraints if c.level == "position"}
     by_name = {u.name: u for u in eqs.unknowns}
     found, levels, multipliers = [], [], []
     for k, r in enumerate(rows):
@@ -157,9 +162,12 @@ def constraints_of(eqs: EquationSet) -> Constraints:
             levels.append("velocity")
             multipliers.append(by_name.get(c.name, eqs.unknowns[k]))
         else:
-            found.append(_position_level(eqs, A, b, r, what))
+            held = positions.get(eqs.labels[r])
+            found.append(held.expression if held is not None else
+                         _position_level(eqs, A, b, r, what))
             levels.append("position")
-            multipliers.append(eqs.unknowns[k])
+            multipliers.append(by_name.get(held.name, eqs.unknowns[k]) if held is not None
+                               else eqs.unknowns[k])
     return Constraints(eqs.coordinates, tuple(multipliers), tuple(found), tuple(levels))
 
 

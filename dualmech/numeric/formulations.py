@@ -294,7 +294,11 @@ def _forms(problem, ref, eqs, values, y0, n, stabilisations,
     energy, note, held = _energy(problem, eqs, values, y_own[: eqs.n])
     constraint_rows = len(eqs.equations) - len(dynamic_rows(eqs))
     square = len(eqs.equations) == eqs.n + len(eqs.unknowns)
-    if square and not constraint_rows and not static_coordinates(eqs):
+    # a direct form's declared rolling rows beside reactions that are not their multipliers
+    # (the disk's F_z keeps no constraint): its square system is solved as an ODE, as before
+    # the rolling was declared; a multiplier per constraint row makes it a DAE
+    unpaired = constraint_rows and constraint_rows != len(eqs.unknowns)
+    if square and (not constraint_rows or unpaired) and not static_coordinates(eqs):
         nm = NumericModel(eqs, values)
         own = bool(eqs.unknowns)
         in_ref = tuple(eqs.coordinates) == tuple(ref.coordinates)

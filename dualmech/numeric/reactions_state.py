@@ -213,12 +213,50 @@ def _referee_models(problem, comparison) -> dict:
 
 
 def _referee_values(model, values, q, qd, time, notes: list, inputs=None) -> dict:
-    """The referee's reactions from its own square system (its accelerations solved with
-    them); ``{}`` with a note when the system is not square or singular at the state."""
-    A, b = NumericModel(model, values, backend="python", inputs=inputs).system(time, q, qd)
-    if A.shape[0] != A.shape[1] or np.linalg.matrix_rank(A) < A.shape[1]:
+    """The referee's reactions from its own system (its accelerations solved with them);
+    ``{}`` with a note when the system is singular at the state.  A referee of a rolling
+    body has more rows than unknowns (Kane's rows of the constrained speeds beside the
+    auxiliary ones): solved by least squares when its rank is full and its rows consistent
+    (the residual at rounding level), as its exact verdict found them everywhere."""
+    held = None if inputs else _substituted(model, values, q, qd, time)
+    A, b = held if held is not None else \
+        NumericModel(model, values, backend="python", inputs=inputs).system(time, q, qd)
+    rank = np.linalg.matrix_rank(A)
+    if A.shape[0] < A.shape[1] or rank < A.shape[1]:
         notes.append(f"`{model.name}` does not fix every reaction at this state (its system is "
-                     f"{A.shape[0]} x {A.shape[1]}, rank {np.linalg.matrix_rank(A)})")
+                     f"{A.shape[0]} x {A.shape[1]}, rank {rank})")
         return {}
-    x = np.linalg.solve(A, b)
+    x = np.linalg.lstsq(A, b, rcond=None)[0] if A.shape[0] > A.shape[1] else \
+        np.linalg.solve(A, b)
+    scale = np.max(np.abs(A)) * np.max(np.abs(x)) + np.max(np.abs(b))
+    if np.max(np.abs(A @ x - b)) > 1e-8 * scale:
+        notes.append(f"`{model.name}`'s rows are not consistent at this state (its system is "
+                     f"{A.shape[0]} x {A.shape[1]}): no values from it")
+        return {}
     return {u.name: float(v) for u, v in zip(model.unknowns, x[model.n:])}
+
+
+def _substituted(model, values, q, qd, time) -> tuple | None:
+    """``(A, b)`` of ``model`` at one state by substituting numbers into the rows it holds in
+    symengine: for one state far cheaper than generating its code (a bicycle's referee: under
+    a second against minutes); ``None`` when it holds none or a value is not real."""
+    import symengine as se
+
+    from dualmech.model.equations import state_symbols
+    held = model.plain_matrix_se()
+    if held is None:
+        return None
+    A, b, _ = held
+    at = {se.Symbol("t"): float(time)}
+    for s_, v in values.items():
+        at[se.Symbol(str(s_))] = float(v)
+    for c, x, v in zip(model.coordinates, q, qd):
+        st = state_symbols(c)
+        at[se.Symbol(st.q.name)], at[se.Symbol(st.qd.name)] = float(x), float(v)
+    try:
+        An = np.array([[0.0 if A[i, j] == 0 else float(A[i, j].xreplace(at))
+                        for j in range(A.cols)] for i in range(A.rows)])
+        bn = np.array([0.0 if b[i] == 0 else float(b[i].xreplace(at)) for i in range(b.rows)])
+    except (TypeError, RuntimeError, ValueError):
+        return None
+    return An, bn

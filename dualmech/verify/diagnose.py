@@ -284,12 +284,16 @@ def _opposite_reactions(problem, judgement) -> list[Statement]:
 
 def _reactions_of(problem, name: str) -> dict:
     """``{reaction name: (plain value, value)}`` of model ``name`` solved for its reactions (in
-    the reference coordinates), ``{}`` when it does not solve or is large."""
+    the reference coordinates), ``{}`` when it does not solve or is large (past the display
+    budget, :func:`~dualmech.verify.display.solve_display`: a symbolic solve of coupled
+    unknowns takes minutes)."""
+    from dualmech.verify.display import solve_display
     try:
         m = problem.in_reference_coordinates(problem.model(name))
         if not m.unknowns or not m.is_square or len(m.equations) > 8:
             return {}
-        return {u.name: (m.to_plain(v), v) for u, v in m.reactions_solved().items()}
+        solved = solve_display(m)
+        return {u.name: (m.to_plain(solved[u]), solved[u]) for u in m.unknowns}
     except Exception:  # noqa: BLE001 - a hint, never a failure of the diagnosis
         return {}
 

@@ -58,10 +58,15 @@ diagram per body, ``sum F = m a_G`` on ``O.x, O.y, O.z`` and ``sum tau_G = dH_G/
 body's axes; unknown: the contact forces ``F_R``, ``F_F`` (ground axes) at the contact points,
 the rear and front hubs' forces ``R_R``, ``R_F`` and couples about the two axes normal to each
 axle (``M_Rx, M_Rz``, ``M_Fx, M_Fz``), the steering joint's force ``R_S`` and couples normal
-to the steer axis (``M_Sx, M_Sy``): 21 reactions.  Closing rows, at acceleration level: the
-material contact points' velocities -- rear along ``O.x, O.y``, front along ``O.x, O.y`` and
-up (its vertical velocity is the front contact's velocity-level form; the rear's vanishes
-identically) -- differentiated once: 24 + 5 = 29 rows for 8 accelerations and 21 reactions.
+to the steer axis (``M_Sx, M_Sy``): 21 reactions.  The contacts are *declared*, not written
+as rows: rolling of each wheel's material point at its contact point along ``O.x, O.y``
+(``NewtonEuler.rolling``) and the height of the front contact point (``NewtonEuler.
+constraint``; the rear's is built into the coordinates).  The model holds them at their
+level and their acceleration-level rows: 24 + 5 = 29 rows for 8 accelerations and 21
+reactions.  Because they are declarations, the Kane referee reads them too: it derives the
+motion and all 21 reactions a second time from the bodies, loads, reactions and constraints
+declared (not from the balances), so every hub and steering-joint reaction and the rear
+normal force, which no other model carries, are cross-checked.
 
 Steady motion: upright straight running at speed ``v``: every angle zero, ``x' = v``,
 ``thetaR' = v / rR``, ``thetaF' = v / rF``.  Linearised, the state reduces to roll, steer and
@@ -250,6 +255,7 @@ def scene() -> SimpleNamespace:
                     sp.Matrix([[IHxx, 0, -IHxz], [0, IHyy, 0], [-IHxz, 0, IHzz]])),
         F=RigidBody("front wheel", mF, CF, WF, sp.diag(IFxx, IFyy, IFxx)))
     return SimpleNamespace(O=O, L=L, B=B, H=H, WR=WR, WF=WF, A=A, CR=CR, CF=CF, PR=PR, PF=PF,
+                           origin=origin,
                            arm_R=arm_R, arm_F=arm_F, bodies=bodies)
 
 
@@ -262,9 +268,6 @@ class WhippleBicycle(Problem):
               "Table 1 (parameters), Table 2 (eigenvalues), section 5 (weave, capsize speeds)")
     summary = ("Four rigid bodies, two wheels rolling without slipping, the front contact's "
                "holonomic constraint; self-stable between the weave and capsize speeds.")
-    referee = False
-    referee_note = ("the rolling constraints are rows of the models, not declarations the "
-                    "referee can read")
     dimensions_unchecked = ("the geometry is fixed at Table 1's numbers in metres, so the "
                             "equations hold no dimension for lengths")
     # masses, inertias and gravity are parameters (the exact test samples them); the geometry
@@ -377,13 +380,12 @@ class WhippleBicycle(Problem):
                 ne.linear_momentum(body, axis)
             for axis in (frame.x, frame.y, frame.z):
                 ne.angular_momentum(body, axis)
-        vR = s.CR.vel(s.O) + s.WR.ang_vel_in(s.O).cross(s.arm_R)
-        vF = s.CF.vel(s.O) + s.WF.ang_vel_in(s.O).cross(s.arm_F)
-        for label, row in (("rear, O.x", vR.dot(s.O.x)), ("rear, O.y", vR.dot(s.O.y)),
-                           ("front, O.x", vF.dot(s.O.x)), ("front, O.y", vF.dot(s.O.y)),
-                           ("front, up", vF.dot(s.O.z))):
-            ne.equation(f"rolling: material contact point, {label} (acceleration level)",
-                        {"rolling": row.diff(t)})
+        # rolling and the front contact declared (the referee reads them): no slip of each
+        # wheel's material point at its contact, along the ground; the front contact point's
+        # height zero (the rear's is built into the coordinates)
+        ne.rolling("rear rolling", b.R, s.PR, [s.O.x, s.O.y])
+        ne.rolling("front rolling", b.F, s.PF, [s.O.x, s.O.y])
+        ne.constraint("front contact", s.PF.pos_from(s.origin).dot(s.O.z))
         return ne.equations()
 
     def published(self) -> list[Published]:
