@@ -19,7 +19,7 @@ from dualmech.grade.formula import Formula
 from dualmech.grade.generate import correct_answers, names_mistake, wrong_answers
 from dualmech.grade.parser import parse
 
-from _catalogue_expected import catalogue_params
+from _catalogue_expected import graded_params
 
 NAMES = [d.name for d in problems.declarations()]
 _GRADERS: dict = {}
@@ -44,7 +44,7 @@ def context_or_refusal(name):
         pytest.skip(f"{name}: refused with a clear reason: {r.summary}")
 
 
-@pytest.mark.parametrize("name", catalogue_params(NAMES))
+@pytest.mark.parametrize("name", graded_params(NAMES))
 def test_right_answers_are_accepted(name):
     g, ctx = context_or_refusal(name)
     samples = correct_answers(ctx)
@@ -59,7 +59,7 @@ def test_right_answers_are_accepted(name):
             assert r.matches == f"the equation of {labels[s.equation][10:]}"
 
 
-@pytest.mark.parametrize("name", catalogue_params(NAMES))
+@pytest.mark.parametrize("name", graded_params(NAMES))
 def test_wrong_answers_name_the_wrong_term(name):
     g, ctx = context_or_refusal(name)
     samples = wrong_answers(ctx)
@@ -100,7 +100,7 @@ def _printed_answers(g, ctx):
             continue
 
 
-@pytest.mark.parametrize("name", catalogue_params(NAMES))
+@pytest.mark.parametrize("name", graded_params(NAMES))
 def test_printed_answers_agree_with_the_library(name):
     """Each printed answer of the source, typed in, gets the verdict the library's own check
     of printed answers gives (an independent implementation, dualmech.verify.published); a wrong one

@@ -23,7 +23,7 @@ from dualmech.grade.batch import warm_targets
 from dualmech.grade.generate import correct_answers, wrong_answers
 from dualmech.problems import declarations, get
 
-from _catalogue_expected import catalogue_params
+from _catalogue_expected import graded_params
 
 
 @pytest.fixture
@@ -65,7 +65,7 @@ def _same(a: Grader, b: Grader, samples) -> None:
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", catalogue_params([d.name for d in declarations()]))
+@pytest.mark.parametrize("name", graded_params([d.name for d in declarations()]))
 def test_a_stored_context_grades_every_answer_as_the_one_it_was_written_from(name, cache):
     fresh = _fresh(name)
     _warm(fresh)
