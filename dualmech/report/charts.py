@@ -320,8 +320,10 @@ def _draw(ax, u: str, curves, t, chart: Chart, scene: str = "") -> list[str]:
         ax.plot(t, v, label=f"{label}: {scene}" if scene else label, linewidth=1.3)
         drawn += 1
     ax.grid(True, alpha=0.3)
-    if drawn:
-        ax.legend(loc="best", fontsize="small")
+    if drawn:   # many curves (a bicycle's 21 reactions): the legend in columns beside them
+        ax.legend(loc="best" if drawn <= 6 else "center left", fontsize="small",
+                  ncol=1 if drawn <= 6 else -(-drawn // 8),
+                  bbox_to_anchor=None if drawn <= 6 else (1.01, 0.5))
     else:
         ax.set_yticks([])
     return said
