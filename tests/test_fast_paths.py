@@ -155,3 +155,14 @@ def test_velocity_constraint_expression_must_be_linear_in_rates():
     with pytest.raises(ModelError, match="holds no rate"):
         lg.equations()
 
+
+
+def test_a_text_value_is_refused_never_parsed(tmp_path):
+    lin, symbol = _disk_linearisation()
+    marker = tmp_path / "ran"
+    hostile = f"__import__('pathlib').Path({str(marker)!r}).touch()"
+    with pytest.raises(TypeError):
+        stability._reduce_rational(lin._parts, {symbol: hostile})
+    with pytest.raises(TypeError):
+        lin.at(hostile)
+    assert not marker.exists()

@@ -47,6 +47,7 @@ import flint
 import symengine as se
 import sympy as sp
 
+from dualmech.model._algebra import to_se
 from dualmech.model._expr import as_expr
 from dualmech.model.equations import EquationSet, ModelError, is_zero_expression
 from dualmech.model.kinematics import t
@@ -363,7 +364,7 @@ def _held(parts) -> tuple:
     hit = _HELD.get(id(parts))
     if hit is None or hit[0] is not parts:
         A0, b0, R, w, phi = parts[:5]
-        conv = lambda m: se.DenseMatrix(m.rows, m.cols, [se.sympify(x) for x in m])  # noqa
+        conv = lambda m: se.DenseMatrix(m.rows, m.cols, [to_se(x) for x in m])  # noqa
         hit = (parts, (conv(A0), conv(b0), conv(R), conv(sp.Matrix(phi)) if phi else None,
                        [se.Symbol(x.name) for x in w]))
         if len(_HELD) > 64:
@@ -390,7 +391,11 @@ def _reduce_rational(parts, value: dict):
     ``None`` when an entry stays irrational (a square root): the sympy route decides."""
     _, _, _, _, phi, keep, dep, n, name, _ = parts
     A0, b0, R, P, w = _held(parts)
-    subs = {se.Symbol(k.name): se.sympify(v) for k, v in value.items()}
+    exact = {k: as_expr(v) for k, v in value.items()}
+    if not all(v.is_Rational for v in exact.values()):
+        return None
+    # built from their integers: nothing here is ever parsed
+    subs = {se.Symbol(k.name): se.Rational(int(v.p), int(v.q)) for k, v in exact.items()}
     A0v, b0v = _fmpq_mat(A0, subs), _fmpq_mat(b0, subs)
     if A0v is None or b0v is None:
         return None
@@ -456,7 +461,7 @@ def _accelerations(moving) -> str:
     for a, v in moving:
         value = text(v)
         try:
-            value += f" (= {float(v):.6g})" if not sp.sympify(v).is_Rational else ""
+            value += f" (= {float(v):.6g})" if not as_expr(v).is_Rational else ""
         except (TypeError, ValueError):
             pass
         out.append(f"{text(a)} = {value}")
