@@ -229,6 +229,20 @@ def _fix(out, names: dict):
     return out.xreplace(rules) if rules else out
 
 
+def _product_of_atoms(x) -> bool:
+    """Whether ``x`` is a product of powers of nonzero numbers, symbols, functions of ``t``
+    and their derivatives: a form that multiplying out leaves as it is, so it is not zero."""
+    if x.is_Number:
+        return x != 0
+    if x.is_Symbol or x.is_Derivative or isinstance(x, se.FunctionSymbol):
+        return True
+    if x.is_Mul:
+        return all(_product_of_atoms(f) for f in x.args)
+    if x.is_Pow:
+        return _product_of_atoms(x.args[0])
+    return False
+
+
 def is_zero_held(x, seed: str = "zero test") -> bool:
     """Whether the symengine expression ``x`` is zero once multiplied out (``se.expand(x) ==
     0``), without expanding one that is clearly nonzero at a random rational point in
@@ -241,6 +255,8 @@ def is_zero_held(x, seed: str = "zero test") -> bool:
     """
     if x == 0:
         return True
+    if _product_of_atoms(x):
+        return False
     free = sorted(x.free_symbols, key=str)
     rnd = random.Random(seed)
     values = [rnd.randint(1, 997) / 1009 for _ in free]

@@ -571,12 +571,17 @@ class EquationSet:
 
     def _constraints_in(self, mapping: Mapping, labels: Sequence, coordinates) -> tuple:
         """The declared constraints rewritten by ``mapping`` (old coordinate -> expression in
-        the new ones), without those the new coordinates satisfy by construction."""
+        the new ones), without those the new coordinates satisfy by construction.  Only the
+        rates the constraints hold are differentiated (a position-level constraint holds
+        none, and most models declare no constraint)."""
+        if not self.constraints:
+            return ()
         rules = {}
-        for q, expr in mapping.items():
-            expr = as_expr(expr)
-            rules[q.diff(t, 2)] = expr.diff(t, 2)
-            rules[q.diff(t)] = expr.diff(t)
+        for c in self.constraints:
+            for d in c.expression.atoms(sp.Derivative):
+                q = d.expr
+                if d not in rules and q in mapping and d.variables == (t,) * len(d.variables):
+                    rules[d] = as_expr(mapping[q]).diff(t, len(d.variables))
         out = []
         for c in self.constraints:
             e = c.expression.xreplace(rules).xreplace(dict(mapping))
