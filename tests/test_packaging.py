@@ -47,7 +47,8 @@ def _names(requirements) -> set:
 
 #: the test extra's distributions that no file imports, and what uses them
 INDIRECT = {"pytest-xdist": "pytest -n (.ci/run)", "ipykernel": "the notebooks' kernel (nbclient)",
-            "httpx": "starlette's TestClient (tests/test_web*.py)"}
+            "httpx": "starlette's TestClient before 1.10 (tests/test_web*.py)",
+            "httpx2": "starlette's TestClient from 1.10 on (tests/test_web*.py)"}
 #: import names that are not the distribution's name
 MODULES = {"dask": "distributed"}
 
