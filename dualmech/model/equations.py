@@ -233,22 +233,72 @@ def _expanded(x) -> bool:
     return True
 
 
-def _linear_parts(e, unknown: list, us: set) -> tuple[list, object, list]:
-    """``(coefficients, rhs, nonlinear unknowns)`` of a row linear in ``unknown``: the
-    coefficient of ``u`` is ``d(row)/du``, ``rhs`` is minus the row with every unknown set to
-    zero.  A coefficient that still holds an unknown is looked at again on the expanded row
-    (``(u + x) (u + y) s - u**2 s`` is linear only once multiplied out); expansion is not the
-    first step, because it multiplies out products of sums (a bicycle's direct rows grow
-    tenfold and take seconds)."""
-    present = e.free_symbols & us
-    if not present:
-        return [se.Integer(0)] * len(unknown), -e, []
-    row = [e.diff(u) if u in present else se.Integer(0) for u in unknown]
-    if not any(a.free_symbols & us for a in row):
+class _Nonlinear(Exception):
+    """A product of two factors holding unknowns, or an unknown inside a function or power."""
+
+
+def _linear_walk(x, us: set, memo: dict) -> dict:
+    """``{unknown: coefficient, None: the rest}`` of ``x``, read off its tree in one pass
+    (shared subtrees once, through ``memo``): a sum adds its terms' parts, a product with one
+    factor holding unknowns multiplies that factor's parts by the other factors.  Raises
+    :class:`_Nonlinear` where the tree is not visibly linear (``(u + x) (u + y) - u**2`` is
+    linear only once multiplied out)."""
+    hit = memo.get(x)
+    if hit is not None:
+        return hit
+    if x.is_Symbol:
+        out = {x: se.Integer(1)} if x in us else {None: x}
+    elif x.is_Number:
+        out = {None: x}
+    elif x.is_Add:
+        terms: dict = {}
+        for a in x.args:
+            for k, v in _linear_walk(a, us, memo).items():
+                terms.setdefault(k, []).append(v)
+        out = {k: (v[0] if len(v) == 1 else se.Add(*v)) for k, v in terms.items()}
+    elif x.is_Mul:
+        holding, others = None, []
+        for f in x.args:
+            part = _linear_walk(f, us, memo)
+            if len(part) > 1 or None not in part:
+                if holding is not None:
+                    raise _Nonlinear
+                holding = part
+            else:
+                others.append(f)
+        if holding is None:
+            out = {None: x}
+        else:
+            rest = se.Mul(*others)
+            out = {k: rest * v for k, v in holding.items()}
+    else:   # a power, a function, a derivative: linear only when free of the unknowns
+        for a in x.args:
+            part = _linear_walk(a, us, memo)
+            if len(part) > 1 or None not in part:
+                raise _Nonlinear
+        out = {None: x}
+    memo[x] = out
+    return out
+
+
+def _linear_parts(e, unknown: list, us: set, memo: dict | None = None
+                  ) -> tuple[list, object, list]:
+    """``(coefficients, rhs, nonlinear unknowns)`` of a row linear in ``unknown``, read off
+    the row's tree (:func:`_linear_walk`); ``rhs`` is minus the row with every unknown set to
+    zero.  A row that is not visibly linear is looked at again expanded (``(u + x) (u + y) s -
+    u**2 s`` is linear only once multiplied out); expansion is not the first step, because it
+    multiplies out products of sums (a bicycle's direct rows grow tenfold and take
+    seconds)."""
+    try:
+        parts = _linear_walk(e, us, {} if memo is None else memo)
+    except _Nonlinear:
+        parts = None
+    if parts is not None:
         # an entry that cancels once multiplied out is made 0, as expansion would leave it
         # (static rows, sparsity and coupling are read from the zeros)
-        rhs = -e.xreplace({u: se.Integer(0) for u in present})
-        return [_zero_or(a) for a in row], _zero_or(rhs), []
+        zero = se.Integer(0)
+        return ([_zero_or(parts.get(u, zero)) for u in unknown],
+                _zero_or(-parts.get(None, zero)), [])
     e = e.expand()
     buckets: dict = {}
     rest = []
@@ -420,8 +470,9 @@ class EquationSet:
             names[u.name] = u
         us = set(unknown)
         A, b, bad = [], [], []
+        memo: dict = {}     # shared subtrees of the rows walked once
         for e in exprs:
-            row, rhs, nonlinear = _linear_parts(e, unknown, us)
+            row, rhs, nonlinear = _linear_parts(e, unknown, us, memo)
             A += row
             b.append(rhs)
             bad += nonlinear
