@@ -65,6 +65,7 @@ class _Plain:
         self.names: dict = {}
         self._vel: dict = {}
         self._omega: dict = {}
+        self.together: dict = {}    # (id a, id b) -> whether the two bodies move as one
 
     def plain(self, expr):
         return to_plain_se(expr, self.coordinates)
@@ -116,6 +117,10 @@ def _is_zero(expr, draws: int = 3) -> bool:
     ``(1-u^2)/(1+u^2)``), then the rational function is evaluated exactly at random integers;
     a nonzero value is certain, zero at every draw leaves a chance below ``1e-50`` of a false
     "zero".  Whatever stays irrational counts as nonzero (the conservative answer)."""
+    if expr == 0:
+        return True
+    if _clearly_nonzero(expr):
+        return False
     expr = se.expand(expr)
     if expr == 0:
         return True
@@ -133,6 +138,25 @@ def _is_zero(expr, draws: int = 3) -> bool:
         except (ZeroDivisionError, RuntimeError):
             return False
         if value != 0 or not value.is_Number:
+            return False
+    return True
+
+
+def _clearly_nonzero(expr) -> bool:
+    """Whether ``expr`` is far from zero at a random point, in doubles and again in 100-bit
+    arithmetic (1e-15 there cannot come from rounding an expression that is zero everywhere):
+    the common answer of the structural questions, decided before anything is multiplied
+    out."""
+    rng = random.Random(1)
+    free = list(expr.free_symbols)
+    values = [rng.randint(300, 1700) / 1000 for _ in free]
+    for make, tiny in ((se.RealDouble, 1e-6), (lambda v: se.RealMPFR(str(v), 100), 1e-15)):
+        point = {x: make(v) for x, v in zip(free, values)}
+        try:
+            value = complex(expr.xreplace(point))
+        except (RuntimeError, TypeError, ValueError, ZeroDivisionError):
+            return False
+        if not (value == value and abs(value) != float("inf") and abs(value) > tiny):
             return False
     return True
 
@@ -248,7 +272,8 @@ def _generalised(p: _Plain, motion: _Motion) -> dict:
     return parts
 
 
-def moved_with(decl: Declarations, reaction: ReactionDeclaration) -> tuple[list, int]:
+def moved_with(decl: Declarations, reaction: ReactionDeclaration, p: "_Plain | None" = None
+               ) -> tuple[list, int]:
     """``(bodies, sign)``: the bodies an auxiliary speed of ``reaction`` moves (its *side*),
     and the sign of the reaction's force on them.
 
@@ -259,7 +284,7 @@ def moved_with(decl: Declarations, reaction: ReactionDeclaration) -> tuple[list,
     B are not released by the same motion).  Each side is its body and every body fixed to it
     (same rotation, constant relative position) that no declared reaction separates from it.
     """
-    p = _Plain(decl)
+    p = p or _Plain(decl)
     side_b = _fixed_set(p, decl, reaction.body, reaction.against)
     if reaction.against is None:
         return side_b, 1
@@ -284,7 +309,7 @@ def _auxiliary(p: _Plain, decl: Declarations) -> tuple[list, list]:
     G = decl.ground
     rows, labels, turned = [], [], []
     for r in decl.reactions:
-        side, sign = moved_with(decl, r)
+        side, sign = moved_with(decl, r, p)
         pin = _pin(p, decl, side)
         who = ", ".join(b.name for b in side)
         if r.kind == "force" and pin is None:
@@ -370,7 +395,16 @@ def _fixed_set(p: _Plain, decl: Declarations, body, other) -> list:
 
 
 def _fixed_together(p: _Plain, a, b) -> bool:
-    """Do bodies ``a`` and ``b`` move as one rigid body (decided on the expanded forms)?"""
+    """Do bodies ``a`` and ``b`` move as one rigid body (decided on the expanded forms)?
+    Kept in ``p`` for the pair: every reaction's side asks again."""
+    key = (id(a), id(b))
+    hit = p.together.get(key)
+    if hit is None:
+        hit = p.together[key] = p.together[(id(b), id(a))] = _moves_as_one(p, a, b)
+    return hit
+
+
+def _moves_as_one(p: _Plain, a, b) -> bool:
     G = p.decl.ground
     rigid = [x for x in (a, b) if isinstance(x, RigidBody)]
     if len(rigid) == 2:
