@@ -10,6 +10,12 @@ drawn independently of every other variable -- including ``a`` itself where it a
 outside a trigonometric function (a torsional spring's ``k_t theta``): by Ax's theorem the
 functions ``a`` and ``exp(i a)`` satisfy no algebraic relation, so the independent draw is sound.
 
+Square roots of rational constants (``sqrt(3)/2`` of a push at 30 degrees, in an answer or in
+a model) stay exact too: their values are elements of ``Q(sqrt p_1, ..., sqrt p_k)`` over prime
+radicands (:class:`~dualmech.exact.surds.Surd`, :func:`surd_constant`), where ``== 0`` is still
+an exact test; so are ``sin``/``cos`` of multiples of ``pi/12`` (``cos(pi/6) = sqrt(3)/2``).
+A root of a symbol, or of more than :data:`MAX_ROOTS` primes in one formula, is left to mpmath.
+
 Building a formula never evaluates text and never calls ``sympify``: each node is made from
 the parser's tree with the operations listed here, under the :class:`~.parser.Limits`
 (exponents, degree, size of constants).
@@ -31,14 +37,17 @@ Fraction(144, 25)
 """
 from __future__ import annotations
 
+import functools
 import random
 from fractions import Fraction
+from math import isqrt
 from typing import Callable
 
 import mpmath
 import sympy as sp
 
 from dualmech.exact.form import MP_DIGITS
+from dualmech.exact.surds import Surd
 from dualmech.grade.parser import LIMITS, AnswerError, AnswerTooLarge, Limits, Node, to_text
 from dualmech.grade.cost import check
 from dualmech.grade.resolve import resolve
@@ -80,12 +89,12 @@ class Env:
         """The same point with some values replaced (shares the angles)."""
         return Env({**self.values, **changes}, self.exact, self.atoms, self.draw, self._z)
 
-    def angle(self, parts: tuple, quarter: int) -> tuple:
-        """``(cos, sin)`` of ``sum(k * monomial) + quarter * pi/2``, exactly (cached)."""
-        key = (parts, quarter)
+    def angle(self, parts: tuple, turn: int) -> tuple:
+        """``(cos, sin)`` of ``sum(k * monomial) + turn * pi/12``, exactly (cached)."""
+        key = (parts, turn)
         z = self._z.get(key)
         if z is None:
-            z = _QUARTER[quarter]
+            z = _TURNS[turn]
             for mono, k in parts:
                 z = _cmul(z, _cpow(self.unit(mono), k))
             self._z[key] = z
@@ -209,29 +218,123 @@ def _pmul(a, b):
 
 
 def _angle(tree):
-    """``(((monomial, k), ...), quarter_turns)`` when ``tree`` is an integer combination of
-    monomials plus a multiple of pi/2; else ``None`` (then only mpmath evaluates it)."""
+    """``(((monomial, k), ...), twelfths)`` when ``tree`` is an integer combination of
+    monomials plus a multiple of pi/12 (``cos(pi/6)`` of a 30-degree push: exact, in
+    ``Q(sqrt 2, sqrt 3)``); else ``None`` (then only mpmath evaluates it)."""
     p = _poly(tree)
     if p is None:
         return None
-    quarter = 0
+    turn = 0
     parts = []
     for k, v in p.items():
         if k == _PI:
-            if (2 * v).denominator != 1:
+            if (12 * v).denominator != 1:
                 return None
-            quarter = int(2 * v) % 4
+            turn = int(12 * v) % 24
         elif k == ():
             return None  # sin(1): a transcendental constant
         else:
             if v.denominator != 1 or abs(v) > _MAX_MULTIPLE:
                 return None
             parts.append((k, int(v)))
-    return tuple(sorted(parts, key=str)), quarter
+    return tuple(sorted(parts, key=str)), turn
 
 
-_QUARTER = ((Fraction(1), Fraction(0)), (Fraction(0), Fraction(1)),
-            (Fraction(-1), Fraction(0)), (Fraction(0), Fraction(-1)))
+def _twelfths() -> tuple:
+    """``(cos, sin)`` of ``k pi/12``, ``k = 0..23``, exactly: ``cos(pi/12) = (sqrt 6 + sqrt 2)/4``
+    over the prime radicands 2 and 3 (as :func:`surd_constant` writes every root)."""
+    r2, r3 = Surd.root(2), Surd.root(3)
+    step = ((r2 * r3 + r2) / 4, (r2 * r3 - r2) / 4)
+    out = [(Fraction(1), Fraction(0))]
+    for _ in range(23):
+        out.append(_cmul(out[-1], step))
+    return tuple(out)
+
+
+_TURNS = _twelfths()
+_TURN_ROOTS = frozenset({Fraction(2), Fraction(3)})
+
+
+# -- square roots of constants ----------------------------------------------------------------
+_SMALL_PRIMES = tuple(p for p in range(2, 1000) if all(p % q for q in range(2, int(p ** 0.5) + 1)))
+_PRIME_BOUND = 1009 ** 2   # a cofactor below this with no prime factor under 1000 is prime
+
+
+def _constant(tree) -> Fraction | None:
+    """The value of a tree of numbers (``("c", ...)``, sums, products, integer powers), else
+    None: what a square root of a constant is taken of (``sqrt(3)``, ``sqrt(1 + 1/3)``)."""
+    op = tree[0]
+    if op == "c":
+        return tree[1]
+    if op in ("add", "mul"):
+        vals = [_constant(c) for c in tree[1]]
+        if any(v is None for v in vals):
+            return None
+        out = Fraction(0) if op == "add" else Fraction(1)
+        for v in vals:
+            out = out + v if op == "add" else out * v
+        return out
+    if op == "pow":
+        v = _constant(tree[1])
+        return None if v is None or (v == 0 and tree[2] < 0) else v ** tree[2]
+    return None
+
+
+@functools.lru_cache(maxsize=256)
+def _root(c: Fraction):
+    """``sqrt(c)`` for a rational ``c > 0`` as a :class:`~dualmech.exact.surds.Surd` over
+    prime radicands (``sqrt(12) = 2 sqrt(3)``, ``sqrt(6) = sqrt(2) sqrt(3)``), or a Fraction;
+    None when ``c`` has a factor too large to tell squarefree by trial division (then only
+    mpmath evaluates it).  Prime radicands are independent, so roots written differently by
+    a student and a model combine in one field and ``== 0`` stays an exact test."""
+    n = c.numerator * c.denominator          # sqrt(p/q) = sqrt(p q)/q
+    square, primes = 1, []
+    for p in _SMALL_PRIMES:
+        if p * p > n:
+            break
+        k = 0
+        while n % p == 0:
+            n //= p
+            k += 1
+        square *= p ** (k // 2)
+        if k % 2:
+            primes.append(p)
+    if n > 1:
+        r = isqrt(n)
+        if r * r == n:
+            square *= r
+        elif n < _PRIME_BOUND:
+            primes.append(n)
+        else:
+            return None
+    coeff = Fraction(square, c.denominator)
+    return Surd({frozenset(Fraction(p) for p in primes): coeff}) if primes else coeff
+
+
+def surd_constant(tree):
+    """The exact value of ``("rpow", constant, k/2)`` -- a square root of a positive rational
+    constant to an odd power, as ``sqrt(3)/2`` of a push at 30 degrees -- in the field
+    ``Q(sqrt p_1, ..., sqrt p_k)`` (:class:`~dualmech.exact.surds.Surd`); None for any other
+    fractional power (left to mpmath).
+
+    >>> surd_constant(("rpow", ("c", Fraction(3, 4)), Fraction(1, 2)))
+    Surd(1/2*sqrt(3))
+    >>> surd_constant(("rpow", ("c", Fraction(12)), Fraction(-1, 2))) * 6
+    Surd(1*sqrt(3))
+    >>> surd_constant(("rpow", ("s", "x"), Fraction(1, 2))) is None
+    True
+    """
+    if tree[0] != "rpow" or tree[2].denominator != 2:
+        return None
+    c = _constant(tree[1])
+    if c is None or c <= 0 or max(c.numerator, c.denominator).bit_length() > _ROOT_BITS:
+        return None
+    root = _root(c)
+    return None if root is None else root ** int(tree[2].numerator)
+
+
+_ROOT_BITS = 200   # larger constants under a root are left to mpmath (trial division is cheap)
+MAX_ROOTS = 4      # distinct primes under the roots of one formula evaluated exactly
 
 
 # -- formulas ---------------------------------------------------------------------------------
@@ -244,12 +347,13 @@ class Formula:
     """
 
     __slots__ = ("tree", "exact", "degree", "symbols", "_fn", "_sympy", "text", "_parts",
-                 "student")
+                 "student", "roots")
 
     def __init__(self, tree, text: str = ""):
         self.tree = tree
         self.text = text
         self.symbols: set = set()
+        self.roots: set = set()   # primes under the square roots of constants
         self.exact = True
         self._sympy = None
         self._parts = None
@@ -257,6 +361,7 @@ class Formula:
         #: rewritten from their own coordinates (:mod:`.maps`), else None
         self.student = None
         self.degree = sum(self._scan(tree))
+        self._few_roots()
         self._fn = self._compile(tree)
 
     def __getstate__(self):
@@ -267,7 +372,9 @@ class Formula:
     def __setstate__(self, state):
         self.tree, self.text, self._sympy = state["tree"], state["text"], state["sympy"]
         self.symbols, self.exact, self._parts, self.student = set(), True, None, None
+        self.roots = set()
         self.degree = sum(self._scan(self.tree))
+        self._few_roots()
         self._fn = None   # compiled when first evaluated
 
     # -- construction -----------------------------------------------------------------
@@ -314,25 +421,38 @@ class Formula:
             k = tree[2]
             return (n * k, d * k) if k >= 0 else (d * -k, n * -k)
         if op == "rpow":
-            self.exact = False
+            root = surd_constant(tree)
+            self.exact = self.exact and root is not None
+            if isinstance(root, Surd):
+                self.roots |= root.radicands
             self._scan(tree[1])
             return (0, 0)
         if op == "f":
             name, arg = tree[1], tree[2]
             inner = Formula.__new__(Formula)
-            inner.symbols, inner.exact = set(), True
+            inner.symbols, inner.exact, inner.roots = set(), True, set()
             inner._scan(arg)
             self.symbols |= inner.symbols
+            self.roots |= inner.roots
             ang = _angle(arg) if name in _TRIG else None
             if ang is None:
                 self.exact = False
                 return (0, 0)
+            if ang[1] % 6:      # cos(pi/6), sin(pi/4): in Q(sqrt 2, sqrt 3)
+                self.roots |= _TURN_ROOTS
             k = sum(abs(m) for _, m in ang[0])
             return (2 * k, 2 * k) if name in ("sin", "cos") else (4 * k, 4 * k)
         if op == "vec":
             parts = [self._scan(c) for c in tree[1]]
             return max(parts, key=sum, default=(0, 0))
         raise AssertionError(op)
+
+    def _few_roots(self) -> None:
+        """A formula with roots of more than :data:`MAX_ROOTS` primes is left to mpmath: the
+        field's degree doubles with each (``sqrt 2 + sqrt 3 + sqrt 5 + ...`` to a power would
+        have ``2**k`` coordinates), so a hostile answer cannot make exact arithmetic slow."""
+        if len(self.roots) > MAX_ROOTS:
+            self.exact = False
 
     def unknown_degree(self, unknowns: set) -> int | None:
         """Polynomial degree in ``unknowns`` (None if they appear non-polynomially)."""
@@ -385,6 +505,9 @@ class Formula:
             b, e = self._compile(tree[1]), tree[2]
             with mpmath.workdps(MP_DIGITS):
                 me = mpmath.mpf(e.numerator) / e.denominator
+            exact = surd_constant(tree)
+            if exact is not None:   # sqrt(3)/2 of a 30-degree push: exact in Q(sqrt 3)
+                return lambda env: exact if env.exact else b(env) ** me
             return lambda env: b(env) ** me if not env.exact else _not_exact()
         if op == "f":
             return self._compile_function(tree[1], tree[2])
@@ -399,11 +522,11 @@ class Formula:
         ang = _angle(arg) if name in _TRIG else None
         if ang is None:
             return lambda env: mpf(argf(env)) if not env.exact else _not_exact()
-        parts, quarter = ang
+        parts, turn = ang
         pick = {"sin": lambda z: z[1], "cos": lambda z: z[0], "tan": lambda z: z[1] / z[0],
                 "cot": lambda z: z[0] / z[1], "sec": lambda z: 1 / z[0],
                 "csc": lambda z: 1 / z[1]}[name]
-        return lambda env: pick(env.angle(parts, quarter)) if env.exact else mpf(argf(env))
+        return lambda env: pick(env.angle(parts, turn)) if env.exact else mpf(argf(env))
 
     def term_values(self, env: Env) -> list:
         """Values of the top-level terms (the scale of a high-precision zero test)."""

@@ -680,8 +680,9 @@ def factor_edit(expr, targets, ctx, equation=None, swaps: bool = True):
         for tab in targets:
             if set(mine.terms) != set(tab.terms):
                 continue
-            ratios = {mine.terms[k][1] / tab.terms[k][1] for k in mine.terms}
-            if len(ratios) != 1:
+            # a list, not a set: exact square-root values (Surd) are compared, not hashed
+            ratios = [mine.terms[k][1] / tab.terms[k][1] for k in mine.terms]
+            if any(r != ratios[0] for r in ratios[1:]):
                 continue
             k0 = next(iter(mine.terms))
             c = sp.cancel(mine.terms[k0][0] / tab.terms[k0][0])
