@@ -715,6 +715,8 @@ def expression_targets(ctx, quantity: Quantity, stage: int = 0) -> list:
             forms = [ref] if stage == 0 else []
             if ref.is_Symbol and ref in ctx.reactions:
                 forms = _solved_rows(ctx, ref) if stage == 0 else _recovered(ctx, ref)
+                if stage == 0:
+                    forms += _in_other_accelerations(ctx, forms)
             elif ref.is_Symbol and ref in ctx.qdd:
                 forms = _solved_rows(ctx, ref) if stage == 0 else _accelerations(ctx, ref)
             out.append(forms)
@@ -763,6 +765,33 @@ def _solved_rows(ctx, unknown) -> list:
                     break
                 break
     return out[:6]
+
+
+def _in_other_accelerations(ctx, forms: list, limit: int = 6) -> list:
+    """``forms`` (a reaction solved from single rows) rewritten in other accelerations by the
+    rows that hold no reaction (``s'' = -2 x''/3`` of a Lagrange row turns ``F = -m s''/2``
+    into ``F = m x''/3``): the forms a student writes in the one acceleration they solved
+    for.  Appended after the rows' own forms, so those win a tie.  Only for a few
+    coordinates (a display aid: larger problems keep the rows' own forms)."""
+    qdd = set(ctx.qdd)
+    if len(qdd) > 4:
+        return []
+    rows = [sp.expand(ctx.plain(e)) for m in ctx.models.values() if not m.unknowns
+            for e in m.equations]
+    rows = [e for e in rows if len(e.free_symbols & qdd) >= 2 and sp.count_ops(e) <= 200]
+    out: list = []
+    for form in forms:
+        for a in sorted(form.free_symbols & qdd, key=str):
+            for e in rows:
+                if a not in e.free_symbols:
+                    continue
+                for value in _solve_row(e, a, {a}):
+                    new = sp.expand(form.xreplace({a: value}))
+                    if new != 0 and all(sp.expand(new - f) != 0 for f in forms + out):
+                        out.append(new)
+                if len(out) >= limit:
+                    return out
+    return out
 
 
 def _solve_row(e, unknown, kind) -> list:
