@@ -75,6 +75,9 @@ ATTACKS = [
 @pytest.fixture(scope="module", autouse=True)
 def guards():
     """Record raw answer text reaching eval/exec/compile/sympify/parse_expr."""
+    # sympy imports its units lazily (sp.simplify, on first use) and that import sympifies the
+    # prefix names it defines ("yotta"): library text, not an answer's, so imported first
+    import sympy.physics.units  # noqa: F401
     seen: list = []
     texts: list = []
     originals = (builtins.eval, builtins.exec, builtins.compile, sympy.sympify,
