@@ -150,3 +150,15 @@ def test_hostile_roots_stay_bounded(wedge):
         r = wedge.grade(text, "KE")
         assert r.status in ("wrong", "invalid") and "internal error" not in r.summary, r
         assert time.perf_counter() - t0 < 5.0, text
+
+
+def test_a_stored_context_may_hold_exact_square_roots():
+    # a catalogue problem with a surd constant keeps Surd values at its points; the reader
+    # that refuses every class but plain data must read them back (and still refuse others)
+    import pickle
+
+    from dualmech.grade.stored_contexts import _Reader
+    value = {"x": Surd.root(3) / 2 + Fraction(1, 5)}
+    assert _Reader(pickle.dumps(value)).load()["x"] == value["x"]
+    with pytest.raises(pickle.UnpicklingError):
+        _Reader(pickle.dumps(Path("."))).load()
