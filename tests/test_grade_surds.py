@@ -22,7 +22,8 @@ import sympy as sp
 
 from dualmech.exact.surds import Surd
 from dualmech.grade import Grader
-from dualmech.grade.formula import MAX_ROOTS, Env, Formula, surd_constant
+from dualmech.grade.formula import Env, Formula
+from dualmech.grade.roots import MAX_ROOTS, surd_constant
 from dualmech.grade.parser import parse
 from dualmech.grade.vocabulary import Vocabulary
 

@@ -28,7 +28,8 @@ from dualmech.grade.feedback import best_edit, concrete_state
 from dualmech.grade.terms import term_table
 from dualmech.grade.audit import dimension_issues, reduced
 from dualmech.grade.notation import for_student, in_their_words
-from dualmech.grade.formula import MAX_ROOTS, Formula
+from dualmech.grade.formula import Formula
+from dualmech.grade.roots import MAX_ROOTS
 from dualmech.grade.judge import Deadline, Verdict, factor_edit, method_for
 from dualmech.grade.kinds import naming_energy
 from dualmech.grade.result import DIMENSIONS_ONLY
