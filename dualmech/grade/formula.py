@@ -239,8 +239,6 @@ def _angle(tree):
     return tuple(sorted(parts, key=str)), turn
 
 
-
-
 # -- formulas ---------------------------------------------------------------------------------
 class Formula:
     """A resolved answer expression (see the module docstring).
