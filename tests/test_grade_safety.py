@@ -10,6 +10,7 @@ the name resolution, and a few hundred through the whole grader.
 from __future__ import annotations
 
 import builtins
+import importlib
 import os
 import random
 import tempfile
@@ -75,6 +76,9 @@ ATTACKS = [
 @pytest.fixture(scope="module", autouse=True)
 def guards():
     """Record raw answer text reaching eval/exec/compile/sympify/parse_expr."""
+    # sympy imports its units lazily (sp.simplify, on first use) and that import sympifies the
+    # prefix names it defines ("yotta"): library text, not an answer's, so imported first
+    importlib.import_module("sympy.physics.units")
     seen: list = []
     texts: list = []
     originals = (builtins.eval, builtins.exec, builtins.compile, sympy.sympify,

@@ -212,3 +212,15 @@ def test_hostile_answers_are_refused_clearly_in_bounded_time_and_memory():
         if seconds > 2.0 or peak > 64e6:
             slow.append((text[:40], seconds, peak))
     assert not slow, slow
+
+
+def test_a_reaction_in_the_other_acceleration_gets_a_factor_on_its_one_term():
+    # disk_on_cart: F = -m s''/2 (the disk's rotation) and s'' = -2 x''/3 (the s equation),
+    # so F = m x''/3; `m x''/2` was explained as x and s swapped and the sign flipped
+    g = _grader("teacher_problems/disk_on_cart.py")
+    r = g.grade("m x''/2", "F")
+    assert [(e.kind, e.term, e.correct, e.category) for e in r.edits] == \
+        [("coefficient", "m*x''/2", "m*x''/3", "an inertia term")], r
+    # the forms of the rows themselves still win a tie: m x'' is F = m (x'' + s'') less a term
+    r = g.grade("m x''", "F")
+    assert [(e.kind, e.correct) for e in r.edits] == [("missing", "m*s''")], r

@@ -116,7 +116,7 @@ def warm(names: Iterable[str] | str, limits: Limits = LIMITS) -> None:
     quantities, points, feedback targets and the correct forms of its reactions and
     accelerations now (so forked workers share them)."""
     from dualmech.grade.answers import catalogue
-    from dualmech.grade.judge import expression_targets
+    from dualmech.grade.targets import expression_targets
     if isinstance(names, str):
         names = [names]
     for name in sorted(set(names)):

@@ -42,6 +42,7 @@ from dualmech.model.equations import state_symbols, to_plain
 from dualmech.exact.form import MP_DIGITS, SAMPLE_BITS
 from dualmech.model.kinematics import t
 from dualmech.exact import linalg as la
+from dualmech.exact.surds import Surd
 from dualmech.grade.audit import reduced
 from dualmech.grade.formula import Env, Formula, seeded_draw
 from dualmech.grade.vocabulary import Vocabulary
@@ -398,9 +399,10 @@ def _dsub(d, T, k):
 
 
 def zero(v, scale_values=()) -> bool:
-    """Exactly zero (Fractions), or zero to half the working precision relative to the
-    largest of ``scale_values`` (mpmath numbers)."""
-    if isinstance(v, (Fraction, int)):
+    """Exactly zero (Fractions, and exact square-root numbers -- a
+    :class:`~dualmech.exact.surds.Surd` is zero exactly when every coordinate is), or zero to
+    half the working precision relative to the largest of ``scale_values`` (mpmath numbers)."""
+    if isinstance(v, (Fraction, int, Surd)):
         return v == 0
     scale = max((abs(s) for s in scale_values), default=1)
     with mpmath.workdps(MP_DIGITS):

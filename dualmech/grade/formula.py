@@ -10,6 +10,12 @@ drawn independently of every other variable -- including ``a`` itself where it a
 outside a trigonometric function (a torsional spring's ``k_t theta``): by Ax's theorem the
 functions ``a`` and ``exp(i a)`` satisfy no algebraic relation, so the independent draw is sound.
 
+Square roots of rational constants (``sqrt(3)/2`` of a push at 30 degrees, in an answer or in
+a model) stay exact too: their values are elements of ``Q(sqrt p_1, ..., sqrt p_k)`` over prime
+radicands (:class:`~dualmech.exact.surds.Surd`, :mod:`.roots`), where ``== 0`` is still
+an exact test; so are ``sin``/``cos`` of multiples of ``pi/12`` (``cos(pi/6) = sqrt(3)/2``).
+A root of a symbol, or of more than :data:`MAX_ROOTS` primes in one formula, is left to mpmath.
+
 Building a formula never evaluates text and never calls ``sympify``: each node is made from
 the parser's tree with the operations listed here, under the :class:`~.parser.Limits`
 (exponents, degree, size of constants).
@@ -39,6 +45,8 @@ import mpmath
 import sympy as sp
 
 from dualmech.exact.form import MP_DIGITS
+from dualmech.exact.surds import Surd
+from dualmech.grade.roots import MAX_ROOTS, TURN_ROOTS, TURNS, surd_constant
 from dualmech.grade.parser import LIMITS, AnswerError, AnswerTooLarge, Limits, Node, to_text
 from dualmech.grade.cost import check
 from dualmech.grade.resolve import resolve
@@ -80,12 +88,12 @@ class Env:
         """The same point with some values replaced (shares the angles)."""
         return Env({**self.values, **changes}, self.exact, self.atoms, self.draw, self._z)
 
-    def angle(self, parts: tuple, quarter: int) -> tuple:
-        """``(cos, sin)`` of ``sum(k * monomial) + quarter * pi/2``, exactly (cached)."""
-        key = (parts, quarter)
+    def angle(self, parts: tuple, turn: int) -> tuple:
+        """``(cos, sin)`` of ``sum(k * monomial) + turn * pi/12``, exactly (cached)."""
+        key = (parts, turn)
         z = self._z.get(key)
         if z is None:
-            z = _QUARTER[quarter]
+            z = TURNS[turn]
             for mono, k in parts:
                 z = _cmul(z, _cpow(self.unit(mono), k))
             self._z[key] = z
@@ -209,29 +217,26 @@ def _pmul(a, b):
 
 
 def _angle(tree):
-    """``(((monomial, k), ...), quarter_turns)`` when ``tree`` is an integer combination of
-    monomials plus a multiple of pi/2; else ``None`` (then only mpmath evaluates it)."""
+    """``(((monomial, k), ...), twelfths)`` when ``tree`` is an integer combination of
+    monomials plus a multiple of pi/12 (``cos(pi/6)`` of a 30-degree push: exact, in
+    ``Q(sqrt 2, sqrt 3)``); else ``None`` (then only mpmath evaluates it)."""
     p = _poly(tree)
     if p is None:
         return None
-    quarter = 0
+    turn = 0
     parts = []
     for k, v in p.items():
         if k == _PI:
-            if (2 * v).denominator != 1:
+            if (12 * v).denominator != 1:
                 return None
-            quarter = int(2 * v) % 4
+            turn = int(12 * v) % 24
         elif k == ():
             return None  # sin(1): a transcendental constant
         else:
             if v.denominator != 1 or abs(v) > _MAX_MULTIPLE:
                 return None
             parts.append((k, int(v)))
-    return tuple(sorted(parts, key=str)), quarter
-
-
-_QUARTER = ((Fraction(1), Fraction(0)), (Fraction(0), Fraction(1)),
-            (Fraction(-1), Fraction(0)), (Fraction(0), Fraction(-1)))
+    return tuple(sorted(parts, key=str)), turn
 
 
 # -- formulas ---------------------------------------------------------------------------------
@@ -244,12 +249,13 @@ class Formula:
     """
 
     __slots__ = ("tree", "exact", "degree", "symbols", "_fn", "_sympy", "text", "_parts",
-                 "student")
+                 "student", "roots")
 
     def __init__(self, tree, text: str = ""):
         self.tree = tree
         self.text = text
         self.symbols: set = set()
+        self.roots: set = set()   # primes under the square roots of constants
         self.exact = True
         self._sympy = None
         self._parts = None
@@ -257,6 +263,7 @@ class Formula:
         #: rewritten from their own coordinates (:mod:`.maps`), else None
         self.student = None
         self.degree = sum(self._scan(tree))
+        self._few_roots()
         self._fn = self._compile(tree)
 
     def __getstate__(self):
@@ -267,7 +274,9 @@ class Formula:
     def __setstate__(self, state):
         self.tree, self.text, self._sympy = state["tree"], state["text"], state["sympy"]
         self.symbols, self.exact, self._parts, self.student = set(), True, None, None
+        self.roots = set()
         self.degree = sum(self._scan(self.tree))
+        self._few_roots()
         self._fn = None   # compiled when first evaluated
 
     # -- construction -----------------------------------------------------------------
@@ -314,25 +323,38 @@ class Formula:
             k = tree[2]
             return (n * k, d * k) if k >= 0 else (d * -k, n * -k)
         if op == "rpow":
-            self.exact = False
+            root = surd_constant(tree)
+            self.exact = self.exact and root is not None
+            if isinstance(root, Surd):
+                self.roots |= root.radicands
             self._scan(tree[1])
             return (0, 0)
         if op == "f":
             name, arg = tree[1], tree[2]
             inner = Formula.__new__(Formula)
-            inner.symbols, inner.exact = set(), True
+            inner.symbols, inner.exact, inner.roots = set(), True, set()
             inner._scan(arg)
             self.symbols |= inner.symbols
+            self.roots |= inner.roots
             ang = _angle(arg) if name in _TRIG else None
             if ang is None:
                 self.exact = False
                 return (0, 0)
+            if ang[1] % 6:      # cos(pi/6), sin(pi/4): in Q(sqrt 2, sqrt 3)
+                self.roots |= TURN_ROOTS
             k = sum(abs(m) for _, m in ang[0])
             return (2 * k, 2 * k) if name in ("sin", "cos") else (4 * k, 4 * k)
         if op == "vec":
             parts = [self._scan(c) for c in tree[1]]
             return max(parts, key=sum, default=(0, 0))
         raise AssertionError(op)
+
+    def _few_roots(self) -> None:
+        """A formula with roots of more than :data:`MAX_ROOTS` primes is left to mpmath: the
+        field's degree doubles with each (``sqrt 2 + sqrt 3 + sqrt 5 + ...`` to a power would
+        have ``2**k`` coordinates), so a hostile answer cannot make exact arithmetic slow."""
+        if len(self.roots) > MAX_ROOTS:
+            self.exact = False
 
     def unknown_degree(self, unknowns: set) -> int | None:
         """Polynomial degree in ``unknowns`` (None if they appear non-polynomially)."""
@@ -385,6 +407,9 @@ class Formula:
             b, e = self._compile(tree[1]), tree[2]
             with mpmath.workdps(MP_DIGITS):
                 me = mpmath.mpf(e.numerator) / e.denominator
+            exact = surd_constant(tree)
+            if exact is not None:   # sqrt(3)/2 of a 30-degree push: exact in Q(sqrt 3)
+                return lambda env: exact if env.exact else b(env) ** me
             return lambda env: b(env) ** me if not env.exact else _not_exact()
         if op == "f":
             return self._compile_function(tree[1], tree[2])
@@ -399,11 +424,11 @@ class Formula:
         ang = _angle(arg) if name in _TRIG else None
         if ang is None:
             return lambda env: mpf(argf(env)) if not env.exact else _not_exact()
-        parts, quarter = ang
+        parts, turn = ang
         pick = {"sin": lambda z: z[1], "cos": lambda z: z[0], "tan": lambda z: z[1] / z[0],
                 "cot": lambda z: z[0] / z[1], "sec": lambda z: 1 / z[0],
                 "csc": lambda z: 1 / z[1]}[name]
-        return lambda env: pick(env.angle(parts, quarter)) if env.exact else mpf(argf(env))
+        return lambda env: pick(env.angle(parts, turn)) if env.exact else mpf(argf(env))
 
     def term_values(self, env: Env) -> list:
         """Values of the top-level terms (the scale of a high-precision zero test)."""

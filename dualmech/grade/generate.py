@@ -28,7 +28,7 @@ from sympy.printing.str import StrPrinter
 from dualmech.model.dimensions import DAMPING, LENGTH, TORSIONAL_DAMPING
 from dualmech.grade.context import ProblemContext
 from dualmech.grade.audit import reduced
-from dualmech.grade.judge import unit_circle
+from dualmech.grade.targets import unit_circle
 
 __all__ = ["Sample", "write", "correct_answers", "wrong_answers", "names_mistake", "CannotWrite"]
 

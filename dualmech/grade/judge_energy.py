@@ -29,6 +29,7 @@ from dualmech.grade.terms import term_table
 from dualmech.grade.audit import dimension_issues, reduced
 from dualmech.grade.notation import for_student, in_their_words
 from dualmech.grade.formula import Formula
+from dualmech.grade.roots import MAX_ROOTS
 from dualmech.grade.judge import Deadline, Verdict, factor_edit, method_for
 from dualmech.grade.kinds import naming_energy
 from dualmech.grade.result import DIMENSIONS_ONLY
@@ -43,9 +44,11 @@ _MAX_SUBSETS = 512
 def _exact(ctx, formulas) -> str:
     method = method_for(ctx, formulas)
     if method != "exact":
-        raise GradingUnavailable("energies, Lagrangians and generalised forces with sqrt, exp, "
-                                 "log or fractional powers are not graded; write them with "
-                                 "powers, sines and cosines.")
+        raise GradingUnavailable("energies, Lagrangians and generalised forces with a root "
+                                 "of a symbol, exp, log, other fractional powers or roots of "
+                                 f"more than {MAX_ROOTS} different primes are not graded; "
+                                 "write them with powers, sines and cosines (square roots of "
+                                 "numbers, as sqrt(3)/2, are fine).")
     return method
 
 
@@ -355,7 +358,11 @@ def judge_force(ctx: ProblemContext, comps: list, quantity: Quantity,
                                credit=DIMENSIONS_ONLY)
             return Verdict("right", f"{quantity.description}{note}", method=method,
                            degree=max(c.degree for c in comps))
-    conventions = [drives, drives + parts.keys("velocity")]
+    # the declared loads (a push F(t), a steady weight) are counted in Q by the problem's own
+    # Lagrange model, so a wrong factor on one is named against them first
+    loads = parts.keys("load")
+    conventions = [drives + loads, drives + loads + parts.keys("velocity")] if loads else []
+    conventions += [drives, drives + parts.keys("velocity")]
     edits, details = [], []
     for a, (f, j) in enumerate(zip(comps, js)):
         forms = [-sp.Add(*[parts.pieces[k][j] for k in keys]) for keys in conventions]

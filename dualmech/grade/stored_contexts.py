@@ -68,7 +68,8 @@ _DATA_MODULES = frozenset({
 })
 _BUILTINS = frozenset({"tuple", "list", "dict", "set", "frozenset", "complex"})
 _OTHERS = {("fractions", "Fraction"), ("mpmath.ctx_mp_python", "mpf"),
-           ("mpmath.ctx_mp_python", "mpc")}
+           ("mpmath.ctx_mp_python", "mpc"),
+           ("dualmech.exact.surds", "Surd")}   # exact values at the points of a model with sqrt(3)
 #: sympy classes that take text that is never parsed: a symbol's name, a float's digits
 _TEXT_OK = (sp.Symbol, sp.Float)
 
