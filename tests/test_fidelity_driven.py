@@ -48,8 +48,8 @@ TEACHER_FILE = textwrap.dedent('''
     """A pendulum on a cart pushed by F(t), as in my notes."""
     import sympy as sp
     from dualmech import (Frame, Input, Lagrangian, NewtonEuler, Particle, Point, Problem,
-                          Parameter, Coordinate, Reaction, coordinate, rate, t, MASS, LENGTH,
-                          ACCELERATION, ANGLE, FORCE, FREQUENCY)
+                          Parameter, Coordinate, Reaction, FidelityRung, coordinate, rate, t,
+                          MASS, LENGTH, ACCELERATION, ANGLE, FORCE, FREQUENCY)
 
     M, m, l, g = sp.symbols("M m l g", positive=True)
     F0, w = sp.symbols("F0 w", positive=True)
@@ -96,6 +96,18 @@ TEACHER_FILE = textwrap.dedent('''
             lg.potential("V", -m * g * l * sp.cos(theta))
             lg.generalized_force("push", [F, 0])
             return lg.equations()
+
+
+    class LightBob(PushedCart):
+        name = "pushed_cart_light_bob"
+        parameters = tuple(Parameter(m, MASS, 1e-9, (1e-12, 5)) if p.symbol == m else p
+                           for p in PushedCart.parameters)
+
+
+    class PushedCartLadder(PushedCart):
+        name = "pushed_cart_ladder"
+        fidelity_ladder = (FidelityRung("light bob", LightBob, "the bob's pull on the cart"),
+                           FidelityRung("cart pendulum", lambda: PushedCartLadder()))
 ''')
 DRIVE = 'fidelity_inputs = {"F": F0 * sp.sin(w * t)}'
 
@@ -113,7 +125,7 @@ def teacher(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def lad(teacher):
-    return ladder(problems.load(str(teacher)))
+    return ladder(problems.load(f"{teacher}:PushedCart"))
 
 
 def linear_closed_form(t):
@@ -127,13 +139,14 @@ def linear_closed_form(t):
     return x, theta
 
 
-def hand_nonlinear(t):
-    """The hand nonlinear equations (module docstring), by scipy at rtol 1e-12."""
+def hand_nonlinear(t, bob=m):
+    """The hand nonlinear equations (module docstring) with a bob of mass ``bob``, by scipy
+    at rtol 1e-12."""
     def f(time, y):
         _, th, xd, thd = y
         c, s = np.cos(th), np.sin(th)
-        A = np.array([[M + m, m * l * c], [c, l]])
-        b = np.array([F0 * np.sin(w * time) + m * l * thd**2 * s, -g * s])
+        A = np.array([[M + bob, bob * l * c], [c, l]])
+        b = np.array([F0 * np.sin(w * time) + bob * l * thd**2 * s, -g * s])
         return [xd, thd, *np.linalg.solve(A, b)]
     return solve_ivp(f, (t[0], t[-1]), [0.0, THETA0, 0.0, 0.0], "DOP853", t_eval=t,
                      rtol=1e-12, atol=1e-14).y
@@ -171,7 +184,7 @@ def test_the_reaction_of_the_rail_is_taken_at_each_time(teacher):
     S = m (g cos(theta) + l theta'^2 - x'' sin(theta)) and the cart's vertical balance
     N = M g + S cos(theta), with x'' from the 2 x 2 system of the module docstring."""
     from dualmech.numeric.studies.fidelity import _driven, _drive, _reactions
-    p = problems.load(str(teacher))
+    p = problems.load(f"{teacher}:PushedCart")
     scene = _driven(p, _drive(p))
     t = np.linspace(0.0, 2.0, 41)
     x, th, xd, thd = hand_nonlinear(t)
@@ -186,13 +199,13 @@ def test_the_reaction_of_the_rail_is_taken_at_each_time(teacher):
 
 def test_without_the_declaration_it_says_which_one_to_make(tmp_path_factory, capsys):
     bare = _write(tmp_path_factory, "")
-    p = problems.load(str(bare))
+    p = problems.load(f"{bare}:PushedCart")
     why = not_applicable(p)
     assert not has_ladder(p)
     assert "it is driven by given inputs (F) and declares no history of them" in why
     assert '`fidelity_inputs = {"F": F0 * sp.sin(w * t)}`' in why
     from dualmech.cli.main import main
-    assert main(["fidelity", str(bare), "--out", str(tmp_path_factory.mktemp("o"))]) == 2
+    assert main(["fidelity", f"{bare}:PushedCart", "--out", str(tmp_path_factory.mktemp("o"))]) == 2
     err = " ".join(capsys.readouterr().err.split())
     assert "has no fidelity ladder (not applicable)" in err and "fidelity_inputs = {" in err
 
@@ -200,7 +213,7 @@ def test_without_the_declaration_it_says_which_one_to_make(tmp_path_factory, cap
 def test_fidelity_command_runs_the_driven_ladder(teacher, tmp_path, capsys):
     import json
     from dualmech.cli.main import main
-    assert main(["fidelity", str(teacher), "--out", str(tmp_path), "--json"]) == 0
+    assert main(["fidelity", f"{teacher}:PushedCart", "--out", str(tmp_path), "--json"]) == 0
     doc = json.loads(capsys.readouterr().out)
     assert doc["inputs"] == {"F": "F0*sin(t*w)"} and len(doc["rungs"]) == 2
     assert (tmp_path / "pushed_cart_fidelity.png").stat().st_size > 0
@@ -213,6 +226,23 @@ def test_fidelity_command_runs_the_driven_ladder(teacher, tmp_path, capsys):
 ], ids=["unknown-input", "stray-symbol", "text"])
 def test_declaration_mistakes_are_named(tmp_path_factory, drive, message):
     from dualmech.model.problem import ProblemError
-    p = problems.load(str(_write(tmp_path_factory, drive)))
+    p = problems.load(f"{_write(tmp_path_factory, drive)}:PushedCart")
     with pytest.raises(ProblemError, match=message.replace("(", r"\(").replace(")", r"\)")):
         p.validate()
+
+
+def test_a_declared_rung_takes_the_push_by_name(teacher):
+    """The teacher's own ladder: a bob of 1e-9 kg (its pull on the cart neglected: the cart
+    moves as M x'' = F) below the full model, both pushed by the declared F(t).  The rung's
+    error is what the hand equations give with m = 1e-9 against m = 0.5."""
+    lad = ladder(problems.load(f"{teacher}:PushedCartLadder"))
+    assert [r.label for r in lad.rungs][1:] == ["light bob", "cart pendulum"]
+    assert [r.problem for r in lad.rungs][1:] == ["pushed_cart_light_bob", "pushed_cart_ladder"]
+    light = lad.rungs[1]
+    t = np.linspace(*lad.span, 201)
+    rung, full = hand_nonlinear(t, bob=1e-9), hand_nonlinear(t)
+    hand_x = np.abs(rung[0] - full[0]).max() / X_RANGE
+    hand_theta = np.abs(rung[1] - full[1]).max() / THETA_RANGE
+    assert hand_x > 1e-3 and hand_theta > 1e-3          # the bob's pull matters
+    assert light.by_coordinate["x"] == pytest.approx(hand_x, abs=10 * RTOL)
+    assert light.by_coordinate["theta"] == pytest.approx(hand_theta, abs=10 * RTOL)
