@@ -115,3 +115,9 @@ def test_chart_draws_both_phases_beside_the_work_precision_diagrams(capsys, tmp_
     png = Path(doc["phases_chart"])
     assert png.name == "wall_ladder_phases.png" and str(png) in doc["files"]
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_an_input_the_phased_problem_does_not_declare_is_refused(capsys):
+    status, out, err = simulate(capsys, "--input", "F=1")
+    assert status == 2 and out == ""
+    assert "'F' is not a given input of problem `wall_ladder`" in " ".join(err.split())

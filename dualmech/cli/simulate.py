@@ -383,11 +383,13 @@ def _simulate(args) -> int:
         with about(problem):
             return _phases(problem, args)
     if getattr(problem, "phases", None) and not args.single_phase:
-        if not (getattr(problem, "inputs", None) or args.input):
+        if getattr(problem, "inputs", None):
+            print("dualmech simulate: the declared contact phases are not followed for a "
+                  "problem driven by given inputs; the first phase runs alone.",
+                  file=sys.stderr)
+        elif not args.input:        # an --input it does not declare: refused below
             with about(problem):
                 return _phased(problem, args)
-        print("dualmech simulate: the declared contact phases are not followed for a problem "
-              "driven by given inputs; the first phase runs alone.", file=sys.stderr)
     try:
         with about(problem):
             params = _params(args.param)

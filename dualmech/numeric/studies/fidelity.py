@@ -375,7 +375,11 @@ def _drive(problem) -> dict:
     values = {s.name: v for s, v in problem_parameters(problem).items()}
     out = {}
     for name, h in _declared_drive(problem).items():
-        h = sp.sympify(h) if not isinstance(h, sp.Basic) else h   # a number, not text
+        if isinstance(h, (int, float)):
+            h = sp.Float(h)
+        if not isinstance(h, sp.Expr):
+            raise TypeError(f"`fidelity_inputs`: `{name}` must be a sympy expression of t and "
+                            f"the parameters, got {h!r:.60}.")
         out[name] = h.xreplace({s: _t if s.name == "t" else sp.Float(values[s.name])
                                 for s in h.free_symbols})
     return out
