@@ -246,3 +246,18 @@ def test_a_declared_rung_takes_the_push_by_name(teacher):
     assert hand_x > 1e-3 and hand_theta > 1e-3          # the bob's pull matters
     assert light.by_coordinate["x"] == pytest.approx(hand_x, abs=10 * RTOL)
     assert light.by_coordinate["theta"] == pytest.approx(hand_theta, abs=10 * RTOL)
+
+
+def test_the_input_matrix_at_the_equilibrium_is_the_hand_one(teacher):
+    """At theta = 0, at rest, the linear equations give x'' = F / M and theta'' = -F / (M l):
+    the forced linear rung's B is [0, 0, 1/M, -1/(M l)] (module docstring)."""
+    from dualmech.numeric.formulations import formulations
+    from dualmech.numeric.studies.fidelity import _drive, _driven, _forcing, _free
+    p = problems.load(f"{teacher}:PushedCart")
+    drive = _drive(p)
+    ref, free = (formulations(q, models=["lagrange"], stabilisations=())[0][0]
+                 for q in (_driven(p, drive), _free(p)))
+    y_eq = np.zeros(4)
+    B, u = _forcing(ref, free.rhs(0.0, y_eq), y_eq, drive, (0.0, 5.0))
+    assert B[:, 0] == pytest.approx([0, 0, 1 / M, -1 / (M * l)], abs=1e-12)
+    assert u(0.3)[0] == pytest.approx(F0 * np.sin(w * 0.3), rel=1e-15)

@@ -300,7 +300,7 @@ def ladder(problem, duration: float = 5.0, rtol: float = 1e-10, samples: int = 2
     truth_reactions = _reactions(scene_problem, truth.y, truth.t)
     rungs = []
     entries = list(spec[:-1])
-    linear = _linear_entry(top, ref, y0, drive)
+    linear = _linear_entry(top, ref, y0, drive, (te[0], te[-1]))
     if linear is not None:
         entries.insert(0, linear)
     for label, factory, neglects, dropped in entries + [(richest_label, None, "", ())]:
@@ -333,11 +333,12 @@ def ladder(problem, duration: float = 5.0, rtol: float = 1e-10, samples: int = 2
                   {k: str(v) for k, v in _declared_drive(top).items()})
 
 
-def _linear_entry(top, ref, y0, drive: dict) -> tuple | None:
+def _linear_entry(top, ref, y0, drive: dict, span) -> tuple | None:
     """The linearised rung's ``(label, ("linear", rhs, seconds), neglects, ())``: the small
     motions about the stable equilibrium without inputs, forced by ``drive`` when the scene
     is driven -- ``J (y - y_eq) + B u(t)``, ``B u(t)`` being ``ref``'s response to the
-    input at the equilibrium (a load enters linearly) -- or None when there is none."""
+    input at the equilibrium (a load enters linearly; :func:`_forcing`) -- or None when
+    there is none."""
     free = ref
     if drive:
         zero = _free(top)
@@ -351,7 +352,12 @@ def _linear_entry(top, ref, y0, drive: dict) -> tuple | None:
     J = jacobian(free.rhs, 0.0, y_eq)       # what deriving the linear model costs here
     if drive:
         f_eq = free.rhs(0.0, y_eq)
-        rhs = (lambda t, y, J=J, y_eq=y_eq: J @ (y - y_eq) + (ref.rhs(t, y_eq) - f_eq))
+        fitted = _forcing(ref, f_eq, y_eq, drive, span)
+        if fitted is not None:
+            B, u = fitted
+            rhs = (lambda t, y, J=J, y_eq=y_eq: J @ (y - y_eq) + B @ u(t))
+        else:   # not affine in the inputs at the equilibrium: the response itself, per call
+            rhs = (lambda t, y, J=J, y_eq=y_eq: J @ (y - y_eq) + (ref.rhs(t, y_eq) - f_eq))
     else:
         rhs = (lambda t, y, J=J, y_eq=y_eq: J @ (y - y_eq))
     secs = time.process_time() - start
@@ -360,6 +366,23 @@ def _linear_entry(top, ref, y0, drive: dict) -> tuple | None:
              f"{', '.join(f'{k}(t)' for k in drive)})" if drive else
              f"linearised (small oscillations about {about})")
     return label, ("linear", rhs, secs), "every term of higher order in the motion", ()
+
+
+def _forcing(ref, f_eq, y_eq, drive: dict, span) -> tuple | None:
+    """``(B, u)``: the input matrix at the equilibrium and ``u(t)``, the inputs' values,
+    such that ``B @ u(t) = ref.rhs(t, y_eq) - f_eq`` -- fitted at random times of ``span``
+    and checked at as many others (exact where the loads enter linearly, as a load does);
+    None when the check fails."""
+    fns = [sp.lambdify(_t, drive[k], "math") for k in drive]
+
+    def u(time):
+        return np.array([float(f(time)) for f in fns])
+    times = np.random.default_rng(0).uniform(span[0], span[1], (2, 2 * len(fns) + 5))
+    U = [np.array([u(x) for x in row]) for row in times]
+    G = [np.array([ref.rhs(x, y_eq) - f_eq for x in row]) for row in times]
+    B = np.linalg.lstsq(U[0], G[0], rcond=None)[0].T
+    size = max(np.abs(G[0]).max(), np.abs(G[1]).max(), 1e-300)
+    return (B, u) if np.abs(U[1] @ B.T - G[1]).max() <= 1e-12 * size else None
 
 
 def _declared_drive(problem) -> dict:
