@@ -193,11 +193,13 @@ def test_cli_phases_reports_the_method_and_its_cpu_time(capsys, tmp_path, monkey
     assert doc["switches"][0]["time"] == pytest.approx(hand_switch_time(), rel=1e-8)
 
 
-def test_plain_simulate_warns_where_the_ladder_would_have_to_pull_the_wall(capsys):
-    """No phases asked for: the run goes on holding the ladder to the wall, and says where the
-    wall would have to pull (the hand quadrature's time), on the route that ran."""
+def test_single_phase_simulate_warns_where_the_ladder_would_have_to_pull_the_wall(capsys):
+    """Phases turned off (``--single-phase``; by default plain simulate follows the declared
+    phases, tests/test_simulate_phases.py): the run goes on holding the ladder to the wall,
+    and says where the wall would have to pull (the hand quadrature's time), on the route
+    that ran."""
     from dualmech.cli.main import main
-    base = ["simulate", f"{FILE}:WallLadder", "--duration", "1.5", "--json"]
+    base = ["simulate", f"{FILE}:WallLadder", "--duration", "1.5", "--json", "--single-phase"]
     times = {}
     for tol in (LOOSE, TIGHT):
         assert main(base + ["--rtol", str(tol[0]), "--atol", str(tol[1])]) == 0

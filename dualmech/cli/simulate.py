@@ -4,7 +4,7 @@
 
     dualmech simulate NAME [--duration T] [--rtol R] [--atol A] [--method M]
                            [--param NAME=VALUE ...] [--input NAME=HISTORY ...]
-                           [--samples K] [--n N] [--phases PNG] [--json]
+                           [--samples K] [--n N] [--phases PNG | --single-phase] [--json]
 
 NAME is anything :func:`dualmech.problems.load` takes: a catalogue name, ``path.py[:Class]``
 or ``module:Class``.  The reference model is integrated from the problem's initial state
@@ -28,11 +28,22 @@ problem declares changing sign on the way (:func:`~dualmech.numeric.contacts.wat
 same route: CVODE with the reactions as event functions in C by default): ``contact`` in the
 JSON gives the reaction, the time, the method that located it and its ``cpu_seconds``.
 
-``--phases PNG`` chains the contact phases the problem declares
-(:func:`~dualmech.numeric.phases.simulate_phases`): each phase on CVODE with its one-sided
-reactions and declared bounds as event functions compiled to C (scipy where that cannot run,
-said on stderr), at rtol 1e-10; it prints the switches, ``method`` (the integrator that ran)
-and ``cpu_seconds`` (its integrations alone).  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
+A problem that declares its contact phases (:attr:`Problem.phases
+<dualmech.model.problem.Problem>`: what follows when a one-sided reaction lets go) is
+simulated across them by default (:func:`phased_summary`,
+:func:`~dualmech.numeric.phases.simulate_phases`): where a one-sided reaction would change
+sign the run continues with the declared next phase, the state mapped across, each phase on
+CVODE with its one-sided reactions and declared bounds as event functions compiled to C
+(scipy where that cannot run, said on stderr).  It ends at ``--duration``, or earlier where a
+phase leaves its declared domain or a reaction with no next phase lets go (said on stderr,
+exit status 1).  The JSON says which phases ran (``phases``: each its problem, coordinates,
+start and end time, initial and final state) and when it switched (``switches``); with
+``--samples`` the samples cover every phase (``samples``: ``t``, ``phase`` -- the index of
+the phase whose coordinates a row is in -- and ``states``).  ``--single-phase`` runs the
+first phase alone, as for a problem without phases: a reaction changing sign is then only
+warned about (``contact``).  ``--phases PNG`` runs the phases too and draws them: it prints
+the switches, ``method`` (the integrator that ran) and ``cpu_seconds`` (its integrations
+alone), at rtol 1e-10.  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
 (a singular mass matrix, the declared singular set, too much work), 2 a usage error or a
 problem that cannot be built.
 
@@ -54,7 +65,7 @@ import sys
 from dualmech.cli.errors import DISAGREE, OK, UsageError, about, guarded
 from dualmech.cli.options import positive_number, whole_number
 
-__all__ = ["register", "summary"]
+__all__ = ["register", "summary", "phased_summary"]
 
 #: the integration stopped early (the same status as a disagreement: the job was not done)
 STOPPED = DISAGREE
@@ -92,15 +103,22 @@ def register(subparsers) -> None:
                         "print each switch, the method that ran and its CPU time, and write "
                         "a chart of every phase to PNG (JSON: phases, switches, ended, chart, "
                         "method, cpu_seconds, fallback)")
+    p.add_argument("--single-phase", action="store_true",
+                   help="do not follow the contact phases the problem declares: run its "
+                        "first model alone and only warn where a one-sided reaction changes "
+                        "sign (the default follows them: JSON phases, switches)")
     p.add_argument("--samples", metavar="K", type=whole_number(2, 100_000), default=None,
-                   help="also give the state at K evenly spaced times (2 to 100000)")
+                   help="also give the state at K evenly spaced times (2 to 100000; across "
+                        "contact phases, shared among them, each row in its phase's "
+                        "coordinates)")
     p.add_argument("--n", metavar="N", type=int, default=None,
                    help="size of a parametric problem (one that declares `parametric`), e.g. --n 3")
     p.add_argument("--json", action="store_true",
                    help="print JSON: name, parameters, coordinates, initial_state, "
                         "final_state, t_final, method, cpu_seconds, steps, rhs_evaluations, "
                         "rtol, atol, success, message, fallback, left_declared, contact "
-                        "(and samples)")
+                        "(and samples); across declared contact phases also phases, "
+                        "switches, ended, final_coordinates")
     p.set_defaults(func=guarded(_simulate))
 
 
@@ -166,6 +184,99 @@ def _phases(problem, args) -> int:
         print(run.ended or f"reached t = {args.duration:g} s")
         print(f"chart: {path}")
     return OK if not run.ended else STOPPED
+
+
+def phased_summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1e-10,
+                   method: str = "auto", params: dict | None = None,
+                   samples: int | None = None) -> dict:
+    """Integrate ``problem`` across the contact phases it declares over ``[0, duration]``
+    (:func:`~dualmech.numeric.phases.simulate_phases`): what plain ``dualmech simulate
+    --json`` prints for such a problem -- :func:`summary`'s keys (``coordinates`` and
+    ``initial_state`` of the first phase, ``final_state`` of the last, in its
+    ``final_coordinates``; ``None`` when the run ended early, ``message`` saying why) and
+    :meth:`PhasedRun.to_dict <dualmech.numeric.phases.PhasedRun.to_dict>`'s ``phases``,
+    ``switches``, ``ended`` (and ``samples``).
+
+    Example
+    -------
+    >>> from dualmech.problems import load
+    >>> s = phased_summary(load("simple_pendulum"), duration=1.0, method="DOP853")
+    >>> [ph["problem"] for ph in s["phases"]], s["switches"], s["t_final"]
+    (['simple_pendulum'], [], 1.0)
+    """
+    from dualmech.numeric import SingularityError
+    from dualmech.numeric.phases import simulate_phases
+    from dualmech.numeric.simulation import default_initial_state, problem_parameters
+    values = problem_parameters(problem, params)
+    q0, qd0 = default_initial_state(problem)
+    names = [q.func.__name__ for q in problem.model(problem.reference).coordinates]
+    out = {"name": problem.name,
+           "parameters": {s.name: float(v) for s, v in values.items()},
+           "coordinates": names + [f"{n}'" for n in names],
+           "initial_state": [float(v) for v in q0 + qd0], "final_state": None,
+           "final_coordinates": None, "t_final": None, "duration": duration,
+           "method": method, "cpu_seconds": None, "steps": None, "rhs_evaluations": None,
+           "rtol": rtol, "atol": atol, "success": False, "message": "", "fallback": None,
+           "inputs": {}, "inputs_in_python": None, "left_declared": [], "contact": None,
+           "phases": [], "switches": [], "ended": ""}
+    try:
+        run = simulate_phases(problem, (0.0, duration), params=params, samples=samples or 2,
+                              rtol=rtol, atol=atol, method=method)
+    except SingularityError as exc:
+        out["message"] = str(exc)
+        return out
+    out.update(run.to_dict(samples=bool(samples)))
+    last = out["phases"][-1] if out["phases"] else None
+    out.update({"final_state": last["final_state"] if last and not run.ended else None,
+                "final_coordinates": last["coordinates"] if last else None,
+                "t_final": last["t_end"] if last else 0.0, "method": run.method or method,
+                "cpu_seconds": run.cpu if run.method else None, "success": not run.ended,
+                "message": run.ended, "fallback": run.fallback or None})
+    brk = run.open_contact
+    if brk is not None:
+        out["contact"] = {"reaction": brk.reaction, "time": brk.time,
+                          "at_start": brk.at_start, "message": str(brk),
+                          "method": run.method or None, "cpu_seconds": None}
+    return out
+
+
+def _phased(problem, args) -> int:
+    """Plain ``simulate`` of a problem that declares contact phases: across them."""
+    try:
+        result = phased_summary(problem, args.duration, args.rtol, args.atol, args.method,
+                                _params(args.param), args.samples)
+    except ValueError as exc:  # a misspelt or out-of-range --param
+        raise UsageError(str(exc).replace("`params`", "`--param`")) from None
+    if result["fallback"]:
+        print(f"dualmech simulate: CVODE cannot run here ({result['fallback']}); fell back to "
+              "scipy on the generated right-hand side.", file=sys.stderr)
+    status = OK if result["success"] else STOPPED
+    if status != OK:
+        print(f"dualmech simulate: stopped early: {result['message']}", file=sys.stderr)
+    if args.json:
+        print(json.dumps(result, indent=1))
+        return status
+    if result["cpu_seconds"] is None:   # nothing integrated: the line above says why
+        return status
+    print(f"{' -> '.join(ph['problem'] for ph in result['phases'])}: {result['method']}, "
+          f"t = 0 .. {result['t_final']:.6g} s, rtol {args.rtol:g}, atol {args.atol:g}: "
+          f"{result['cpu_seconds']:.4g} s CPU")
+    print("parameters: " + ", ".join(f"{k} = {v:g}" for k, v in result["parameters"].items()))
+    for i, ph in enumerate(result["phases"]):
+        if i:
+            print("switch: " + str(_switch(result["switches"][i - 1])))
+        print(f"phase {i + 1}, {ph['problem']}, t = {ph['t_start']:.6g} .. "
+              f"{ph['t_end']:.6g} s")
+        width = max(len(c) for c in ph["coordinates"])
+        print(f"  {'state'.ljust(width)}  {'initial':>22}  {'final':>22}")
+        for c, a, b in zip(ph["coordinates"], ph["initial_state"], ph["final_state"]):
+            print(f"  {c.ljust(width)}  {a:22.15g}  {b:22.15g}")
+    return status
+
+
+def _switch(doc: dict):
+    from dualmech.numeric.phases import Switch
+    return Switch(**doc)
 
 
 def _inputs(problem, params: dict, texts) -> dict:
@@ -265,9 +376,20 @@ def _simulate(args) -> int:
     if args.method not in METHODS:
         raise UsageError(f"`--method` {args.method!r} is not one of {', '.join(METHODS)}.")
     problem = _load(args)
+    if args.phases is not None and args.single_phase:
+        raise UsageError("`--phases PNG` follows the declared contact phases and "
+                         "`--single-phase` does not: give one of them.")
     if args.phases is not None:
         with about(problem):
             return _phases(problem, args)
+    if getattr(problem, "phases", None) and not args.single_phase:
+        if getattr(problem, "inputs", None):
+            print("dualmech simulate: the declared contact phases are not followed for a "
+                  "problem driven by given inputs; the first phase runs alone.",
+                  file=sys.stderr)
+        elif not args.input:        # an --input it does not declare: refused below
+            with about(problem):
+                return _phased(problem, args)
     try:
         with about(problem):
             params = _params(args.param)

@@ -20,7 +20,9 @@ in a problem file (shown at its file and line), a model that cannot be built or 
 that could not be charted (the others are) -- and prints errors on stderr, never a
 traceback.  ``chart`` of several problems (``--all``) does not fail for a problem that is not
 applicable (said on stderr with the reason) as long as one problem was charted
-(:data:`CHART_EXIT_STATUS`).  Progress goes to stderr (a bar on a terminal, one line per problem otherwise).
+(:data:`CHART_EXIT_STATUS`).  A problem that declares contact phases (``Problem.phases``)
+also gets ``DIR/NAME_phases.png``: its motion across every phase, the switches marked (the
+work-precision diagrams compare integrators on its first model, up to the first switch).  Progress goes to stderr (a bar on a terminal, one line per problem otherwise).
 
 Example
 -------
@@ -204,6 +206,8 @@ def _chart_one(i: int) -> tuple:
                                 steps=steps, repeats=repeats, budget=budget,
                                 progress=_CHART_JOB["bars"])
         paths = wp.write(out)
+        with about(p):
+            phased = _phase_chart(p, args.duration, out)
     except OSError:
         raise
     except NotApplicable as exc:   # no chart to draw: said, not a failure of the run
@@ -217,7 +221,33 @@ def _chart_one(i: int) -> tuple:
             + (f"; {len(wp.skipped)} model(s) or form(s) not run, said why on the chart and "
                "in the JSON's `skipped`" if wp.skipped else "")
             + "; wrote " + ", ".join(str(x) for x in paths))
-    return p.name, None, {**wp.to_dict(), "files": [str(x) for x in paths]}, line, False
+    doc = {**wp.to_dict(), "files": [str(x) for x in paths]}
+    if phased is not None:
+        run, path = phased
+        line += (f"; the motion across its contact phases ({' -> '.join(_phase_names(run))}, "
+                 f"switching at t = {', '.join(f'{s.time:.3g}' for s in run.switches) or '-'}"
+                 f" s): {path}")
+        doc.update({"phases": _phase_names(run), "switches": [vars(s) for s in run.switches],
+                    "phases_chart": path})
+        doc["files"].append(path)
+    return p.name, None, doc, line, False
+
+
+def _phase_names(run) -> list:
+    """The names of the phases a :class:`~dualmech.numeric.phases.PhasedRun` ran."""
+    return [ph.problem for ph in run.phases]
+
+
+def _phase_chart(problem, duration: float, out: Path):
+    """For a problem that declares contact phases (``Problem.phases``) and no given inputs:
+    its motion across them over ``duration`` drawn to ``out/NAME_phases.png``, ``(run,
+    path)``; else None.  (The work-precision diagrams compare integrators on one model, so
+    their scene ends at the first switch.)"""
+    if not getattr(problem, "phases", None) or getattr(problem, "inputs", None):
+        return None
+    from dualmech.numeric.phases import phase_chart, simulate_phases
+    run = simulate_phases(problem, (0.0, duration), samples=400)
+    return run, phase_chart(run, out / f"{problem.name}_phases.png")
 
 
 def _atlas(args) -> int:

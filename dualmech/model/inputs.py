@@ -37,7 +37,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-__all__ = ["Input", "input_errors"]
+__all__ = ["Input", "input_errors", "fidelity_input_errors"]
 
 
 @dataclass(frozen=True)
@@ -111,6 +111,7 @@ def input_errors(problem) -> list[str]:
                           "parameter)")
         seen.add(x.name)
         errors += _history_errors(x, params)
+    errors += fidelity_input_errors(problem)
     if not seen:
         return errors
     models = problem.models()
@@ -128,6 +129,48 @@ def input_errors(problem) -> list[str]:
     for s in sorted(seen - used):
         errors.append(f"input `{s}` is declared but no model uses it")
     return errors
+
+
+def fidelity_input_errors(problem) -> list[str]:
+    """Every mistake in ``problem.fidelity_inputs`` (empty when none): not a mapping, a name
+    that is not a declared input, a declared input left out, a history that is not an
+    expression of ``t`` and the parameters.
+
+    Example
+    -------
+    >>> import sympy as sp
+    >>> from dualmech import FORCE, Problem, t
+    >>> class Pushed(Problem):
+    ...     name, inputs = "pushed", (Input(sp.Symbol("F"), FORCE, "push"),)
+    ...     fidelity_inputs = {"G": sp.sin(t)}
+    >>> fidelity_input_errors(Pushed())    # doctest: +NORMALIZE_WHITESPACE
+    ['`fidelity_inputs`: `G` is not a declared input (declared: F)',
+     '`fidelity_inputs` gives no history for input `F`']
+    """
+    drive = getattr(problem, "fidelity_inputs", None) or {}
+    if not drive:
+        return []
+    if not isinstance(drive, dict):
+        return [f"`fidelity_inputs` must be a dict {{input name: expression of t}}, got "
+                f"{drive!r:.60}"]
+    import sympy as sp
+    declared = [x.name for x in (getattr(problem, "inputs", ()) or ()) if isinstance(x, Input)]
+    params = {p.symbol.name for p in problem.parameters}
+    errors = []
+    for key, history in drive.items():
+        name = getattr(key, "name", key)
+        if name not in declared:
+            errors.append(f"`fidelity_inputs`: `{name}` is not a declared input (declared: "
+                          f"{', '.join(declared) or 'none'})")
+        elif not isinstance(history, sp.Expr):
+            errors.append(f"`fidelity_inputs`: `{name}` must be a sympy expression of t and "
+                          f"the parameters, e.g. F0 * sp.sin(w * t), got {history!r:.60}")
+        else:
+            errors += _history_errors(Input(sp.Symbol(name), None, "", history), params)
+    given = {getattr(k, "name", k) for k in drive}
+    errors += [f"`fidelity_inputs` gives no history for input `{name}`"
+               for name in declared if name not in given]
+    return [e.replace("its default history", "its `fidelity_inputs` history") for e in errors]
 
 
 def _history_errors(x: Input, params: set) -> list[str]:

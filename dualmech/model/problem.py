@@ -386,6 +386,14 @@ class Problem:
         used by a run given none and by charts, atlases and animations (their stated
         conditions say so); a simulation with neither is refused, naming the input
         (:mod:`dualmech.numeric.inputs`).
+    fidelity_inputs : dict
+        The scene's given inputs for ``dualmech fidelity`` (:mod:`~dualmech.numeric.studies.
+        fidelity`), ``{input name: expression of t and the parameters}``, one for every
+        declared input; with it the fidelity ladder of a driven problem runs every rung
+        driven by that history from the initial state (the linearised rung about the
+        equilibrium without inputs), e.g. ``fidelity_inputs = {"F": F0 * sp.sin(w * t)}``
+        with ``t`` from ``dualmech``; without it a driven problem has no ladder, and
+        ``dualmech fidelity`` says to declare it.
     phases : dict
         What follows when a one-sided reaction lets go: ``{reaction: Phase(next problem,
         {next coordinate: expression of these coordinates}, why)}``, the reaction declared in
@@ -461,6 +469,7 @@ class Problem:
     initial_state: tuple | dict = ()
     steady_motion: SteadyMotion | None = None
     inputs: tuple = ()
+    fidelity_inputs: dict = {}
     phases: dict = {}
     drawing: Drawing | None = None
     chart_scenes: tuple = ()

@@ -72,7 +72,9 @@ class PhasedRun:
     ran (``method``, e.g. ``"CVODE-Adams"``, or scipy's ``"DOP853"``; several joined by
     ``", "`` if the phases differ), why the compiled route could not run (``fallback``) and
     the CPU seconds of the integrations alone (``cpu``: each phase's watched run and its
-    sampled run; deriving and compiling come before the clocks start)."""
+    sampled run; deriving and compiling come before the clocks start); ``open_contact``:
+    the :class:`~dualmech.numeric.contacts.ContactBreak` that ended the run where no next
+    phase is declared (else ``None``)."""
 
     phases: list = field(default_factory=list)
     switches: list = field(default_factory=list)
@@ -80,6 +82,38 @@ class PhasedRun:
     method: str = ""
     fallback: str = ""
     cpu: float = 0.0
+    open_contact: object = None
+
+    def to_dict(self, samples: bool = False) -> dict:
+        """The run as plain data: ``phases`` (each its ``problem``, ``coordinates`` -- its
+        own, then their rates --, ``t_start``, ``t_end``, ``initial_state`` and
+        ``final_state``), ``switches``, ``ended``; with ``samples``, every sample of every
+        phase in time order, ``{"t", "phase", "states"}`` (``phase``: the index of the
+        phase whose coordinates the row is in; a switch time appears twice, once in each
+        phase's coordinates).
+
+        >>> from dualmech.problems import get
+        >>> d = simulate_phases(get("simple_pendulum"), (0, 1), samples=3).to_dict(True)
+        >>> d["phases"][0]["coordinates"], d["samples"]["t"], d["switches"]
+        (['theta', "theta'"], [0.0, 0.5, 1.0], [])
+        """
+        out = {"phases": [], "switches": [vars(s) for s in self.switches],
+               "ended": self.ended}
+        rows = {"t": [], "phase": [], "states": []}
+        for i, ph in enumerate(self.phases):
+            tr = ph.trajectory
+            y = np.vstack([tr.q, tr.qd])
+            out["phases"].append({
+                "problem": ph.problem,
+                "coordinates": tr.coordinate_names + [f"{c}'" for c in tr.coordinate_names],
+                "t_start": float(tr.t[0]), "t_end": float(tr.t[-1]),
+                "initial_state": y[:, 0].tolist(), "final_state": y[:, -1].tolist()})
+            rows["t"] += tr.t.tolist()
+            rows["phase"] += [i] * tr.t.size
+            rows["states"] += y.T.tolist()
+        if samples:
+            out["samples"] = rows
+        return out
 
     def _ran(self, method: str, fallback: str, cpu: float) -> None:
         if method and method not in self.method.split(", "):
@@ -144,7 +178,7 @@ def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None 
             return run
         phase = (getattr(problem, "phases", None) or {}).get(brk.reaction)
         if phase is None:
-            run.ended = str(brk)
+            run.ended, run.open_contact = str(brk), brk
             return run
         nxt = next_problem(phase)
         run.switches.append(Switch(brk.time, brk.reaction, problem.name, nxt.name,

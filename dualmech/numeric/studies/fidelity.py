@@ -10,6 +10,13 @@ A **ladder** is a list of models of one scene, from the simplest to the richest:
   uniform rods, a simplified model that neglects a reaction below the detailed one, a
   source's own model below the richer variant the catalogue adds to it.
 
+A scene **driven by given inputs** (``Problem.inputs``) has a ladder when it declares the
+inputs' history for the study, ``fidelity_inputs = {"F": F0 * sp.sin(w * t)}``: every rung
+then runs driven by that history from the same initial state, and the linearised rung is
+the small-motion model about the equilibrium without inputs, forced by the same history
+(``y' = J (y - y_eq) + B u(t)``, with ``B u(t)`` the richest model's response to the input
+at the equilibrium, exact since a load enters the equations linearly).
+
 For each rung, :func:`ladder` measures its **derivation time** (building its equations from a
 fresh problem instance), its **right-hand-side cost** (CPU per call of the generated code at
 states of the standard trajectory) and its **error against the richest model** along a
@@ -26,6 +33,7 @@ Example
 """
 from __future__ import annotations
 
+import copy
 import json
 import re
 import time
@@ -34,9 +42,11 @@ from pathlib import Path
 from typing import Callable
 
 import numpy as np
+import sympy as sp
 
 from dualmech.model._expr import dotted
 from dualmech.model.facts import not_declared
+from dualmech.model.kinematics import t as _t
 from dualmech.model.notation import mathtext
 from dualmech.numeric.charts import conditions
 from dualmech.numeric.contacts import scene_span
@@ -46,11 +56,19 @@ from dualmech.numeric.model import NumericModel, SingularityError
 from dualmech.numeric.studies.regimes import stable_equilibrium, jacobian
 from dualmech.numeric.simulation import default_initial_state, direct_models, problem_parameters
 
-__all__ = ["Rung", "Ladder", "ladder", "has_ladder", "not_applicable", "NO_LADDER"]
+__all__ = ["Rung", "Ladder", "ladder", "has_ladder", "not_applicable", "NO_LADDER",
+           "NO_DRIVE"]
 
 #: What ``dualmech fidelity`` says of a problem with no declared ladder and no equilibrium.
 NO_LADDER = not_declared("fidelity ladder", "fidelity_ladder = (FidelityRung(label, simpler "
                          "problem, what it neglects), FidelityRung(label, this problem))")
+
+
+#: What ``dualmech fidelity`` says of a driven problem with no history for the study.
+NO_DRIVE = ("declare the history the study drives the scene with, an expression of t "
+            "(from dualmech) and the parameters for each input, e.g. "
+            "`fidelity_inputs = {{{example}}}`: every rung then runs driven by it from the "
+            "initial state")
 
 
 @dataclass
@@ -81,10 +99,13 @@ class Ladder:
     span_note: str
     rungs: list
     conditions: str = ""     # the scene's parameters and start (the chart's caption)
+    inputs: dict = field(default_factory=dict)   # {input: its declared history}, if driven
 
     def __str__(self) -> str:
+        driven = ", ".join(f"{k}(t) = {v}" for k, v in self.inputs.items())
         head = (f"fidelity ladder of {self.scene}, t in [{self.span[0]:g}, {self.span[1]:.3g}] s"
-                + (f" ({self.span_note})" if self.span_note else "") + "; errors relative "
+                + (f" ({self.span_note})" if self.span_note else "")
+                + (f", driven by {driven}" if driven else "") + "; errors relative "
                 "to each coordinate's declared range, against the richest rung")
         rows = [("rung", "model", "derivation [s]", "RHS [us/call]", "error at end",
                  "max error", "neglects")]
@@ -103,7 +124,7 @@ class Ladder:
 
     def to_dict(self) -> dict:
         return {"scene": self.scene, "span": list(self.span), "span_note": self.span_note,
-                "rungs": [{k: v for k, v in asdict(r).items()
+                "inputs": dict(self.inputs), "rungs": [{k: v for k, v in asdict(r).items()
                            if k not in ("times", "error_curve")} for r in self.rungs]}
 
     def write(self, out_dir: Path) -> list[Path]:
@@ -135,11 +156,14 @@ def _legend(rung: Rung) -> str:
 
 def has_ladder(problem) -> bool:
     """Whether :func:`ladder` has something to compare for ``problem``."""
+    if problem.input_symbols and not problem.fidelity_inputs:
+        return False
     if problem.fidelity_ladder:
         return True
     try:
-        f = formulations(problem, models=[problem.reference], stabilisations=())[0][0]
-        stable_equilibrium(problem, f)
+        free = _free(problem)
+        f = formulations(free, models=[free.reference], stabilisations=())[0][0]
+        stable_equilibrium(free, f)
         return True
     except (ValueError, IndexError):
         return False
@@ -153,18 +177,21 @@ def not_applicable(problem) -> str | None:
     spherical pendulum hanging down, at ``sin(theta) = 0``) is named as such: it exists, but
     these coordinates cannot linearise the motion about it.
 
+    A problem driven by given inputs needs their history for the study
+    (``fidelity_inputs``); its equilibrium is sought without inputs.
+
     >>> from dualmech.problems import get
     >>> not_applicable(get("simple_pendulum")) is None
     True
     """
+    driven = [str(x) for x in problem.input_symbols]
+    if driven and not problem.fidelity_inputs:
+        example = ", ".join(f'"{x}": {x}0 * sp.sin(w * t)' for x in driven)
+        return (f"it is driven by given inputs ({', '.join(driven)}) and declares no history "
+                "of them for the study; " + NO_DRIVE.format(example=example) + ".")
     if problem.fidelity_ladder:
         return None
-    driven = [str(x) for x in problem.input_symbols]
-    if driven:
-        return (f"it is driven by given inputs ({', '.join(driven)}): a fidelity ladder "
-                "compares models of a free scene (its linearised rung is a small oscillation "
-                "about an equilibrium without inputs) and is not made for a driven one; "
-                "`dualmech simulate NAME --input ...` runs the driven scene.")
+    problem = _free(problem)
     made, skipped = formulations(problem, models=[problem.reference], stabilisations=())
     if not made:
         return (f"its reference model `{problem.reference}` cannot be integrated "
@@ -240,12 +267,15 @@ def _derive(factory: Callable, model: str | None):
     return p, eqs, time.process_time() - start
 
 
-def _rhs_cost(rhs: Callable, states: np.ndarray, calls: int = 2000) -> float:
-    """CPU microseconds per call of ``rhs`` on one state, cycling through ``states``."""
+def _rhs_cost(rhs: Callable, states: np.ndarray, times: np.ndarray,
+              calls: int = 2000) -> float:
+    """CPU microseconds per call of ``rhs`` on one state, cycling through ``states`` (at
+    their ``times``)."""
     cols = [states[:, j].copy() for j in range(states.shape[1])]
     start = time.process_time()
     for i in range(calls):
-        rhs(0.0, cols[i % len(cols)])
+        j = i % len(cols)
+        rhs(float(times[j]), cols[j])
     return 1e6 * (time.process_time() - start) / calls
 
 
@@ -258,44 +288,37 @@ def ladder(problem, duration: float = 5.0, rtol: float = 1e-10, samples: int = 2
     # the numbers use the given problem when it is the richest (its models may be built)
     top = problem if problem.name == fresh.name and \
         getattr(problem, "n", None) == getattr(fresh, "n", None) else fresh
+    drive = _drive(top)
+    scene_problem = _driven(top, drive)
     q0, qd0 = default_initial_state(top)
     y0 = np.array(q0 + qd0, dtype=float)
-    scene = scene_span(top, duration, y0)
+    scene = scene_span(scene_problem, duration, y0)
     te = np.linspace(scene.t0, scene.t_end, samples)
-    ref = formulations(top, y0=y0, models=[top.reference], stabilisations=())[0][0]
+    ref = formulations(scene_problem, y0=y0, models=[top.reference], stabilisations=())[0][0]
     truth = integrate(ref.rhs, (te[0], te[-1]), y0, "DOP853", t_eval=te, rtol=rtol,
                       atol=rtol * ref.scales)
-    truth_reactions = _reactions(top, truth.y)
+    truth_reactions = _reactions(scene_problem, truth.y, truth.t)
     rungs = []
     entries = list(spec[:-1])
-    try:
-        q_eq, J = stable_equilibrium(top, ref)
-        entries.insert(0, ("linearised (small oscillations about "
-                           f"{[round(float(x), 4) for x in q_eq]})", ("linear", q_eq, J),
-                           "every term of higher order in the motion", ()))
-    except ValueError:
-        pass
+    linear = _linear_entry(top, ref, y0, drive, (te[0], te[-1]))
+    if linear is not None:
+        entries.insert(0, linear)
     for label, factory, neglects, dropped in entries + [(richest_label, None, "", ())]:
         if factory is None:
             p, eqs, secs, rhs = top, top_eqs, top_time, ref.rhs
         elif isinstance(factory, tuple):
-            _, q_eq, J = factory
-            start = time.process_time()
-            y_eq = np.concatenate([q_eq, np.zeros(len(q_eq))])
-            J = jacobian(ref.rhs, 0.0, y_eq)   # what deriving the linear model costs here
-            secs = top_time + time.process_time() - start
-            p, eqs = top, top_eqs
-            rhs = (lambda t, y, J=J, y_eq=y_eq: J @ (y - y_eq))
+            p, eqs, rhs, extra = top, top_eqs, factory[1], factory[2]
+            secs = top_time + extra
         else:
             p, eqs, secs = _derive(factory, None)
-            rhs = NumericModel(eqs, problem_parameters(p)).rhs
+            rhs = NumericModel(_driven_equations(p, eqs, drive), problem_parameters(p)).rhs
         run = integrate(rhs, (te[0], te[-1]), y0, "DOP853", t_eval=te, rtol=rtol,
                         atol=rtol * ref.scales)
         k = run.y.shape[1]
         each = np.abs(run.y - truth.y[:, :k]) / ref.scales[:, None]
         err = each.max(axis=0)
         name = "linearised" if isinstance(factory, tuple) else eqs.name
-        rung = Rung(label, p.name, name, secs, _rhs_cost(rhs, truth.y[:, ::10]),
+        rung = Rung(label, p.name, name, secs, _rhs_cost(rhs, truth.y[:, ::10], truth.t[::10]),
                     float(err[-1]) if k == te.size else float("inf"),
                     float(err.max()) if k else float("inf"), neglects,
                     times=list(te[:k]), error_curve=list(err))
@@ -306,16 +329,122 @@ def ladder(problem, duration: float = 5.0, rtol: float = 1e-10, samples: int = 2
         rung.by_coordinate = {c: float(e.max()) for c, e in zip(names, each)} if k else {}
         rungs.append(rung)
     return Ladder(top.name, (float(te[0]), float(te[-1])), scene.reason, rungs,
-                  conditions(top, state=list(y0), tex=True))
+                  conditions(scene_problem, state=list(y0), tex=True),
+                  {k: str(v) for k, v in _declared_drive(top).items()})
 
 
-def _reactions(problem, Y: np.ndarray) -> dict:
-    """The problem's direct-model reactions along states ``Y`` (reference coordinates)."""
+def _linear_entry(top, ref, y0, drive: dict, span) -> tuple | None:
+    """The linearised rung's ``(label, ("linear", rhs, seconds), neglects, ())``: the small
+    motions about the stable equilibrium without inputs, forced by ``drive`` when the scene
+    is driven -- ``J (y - y_eq) + B u(t)``, ``B u(t)`` being ``ref``'s response to the
+    input at the equilibrium (a load enters linearly; :func:`_forcing`) -- or None when
+    there is none."""
+    free = ref
+    if drive:
+        zero = _free(top)
+        free = formulations(zero, y0=y0, models=[top.reference], stabilisations=())[0][0]
+    try:
+        q_eq, _ = stable_equilibrium(top, free)
+    except ValueError:
+        return None
+    start = time.process_time()
+    y_eq = np.concatenate([q_eq, np.zeros(len(q_eq))])
+    J = jacobian(free.rhs, 0.0, y_eq)       # what deriving the linear model costs here
+    if drive:
+        f_eq = free.rhs(0.0, y_eq)
+        fitted = _forcing(ref, f_eq, y_eq, drive, span)
+        if fitted is not None:
+            B, u = fitted
+            rhs = (lambda t, y, J=J, y_eq=y_eq: J @ (y - y_eq) + B @ u(t))
+        else:   # not affine in the inputs at the equilibrium: the response itself, per call
+            rhs = (lambda t, y, J=J, y_eq=y_eq: J @ (y - y_eq) + (ref.rhs(t, y_eq) - f_eq))
+    else:
+        rhs = (lambda t, y, J=J, y_eq=y_eq: J @ (y - y_eq))
+    secs = time.process_time() - start
+    about = [round(float(x), 4) for x in q_eq]
+    label = (f"linearised (small motions about {about}, forced by "
+             f"{', '.join(f'{k}(t)' for k in drive)})" if drive else
+             f"linearised (small oscillations about {about})")
+    return label, ("linear", rhs, secs), "every term of higher order in the motion", ()
+
+
+def _forcing(ref, f_eq, y_eq, drive: dict, span) -> tuple | None:
+    """``(B, u)``: the input matrix at the equilibrium and ``u(t)``, the inputs' values,
+    such that ``B @ u(t) = ref.rhs(t, y_eq) - f_eq`` -- fitted at random times of ``span``
+    and checked at as many others (exact where the loads enter linearly, as a load does);
+    None when the check fails."""
+    fns = [sp.lambdify(_t, drive[k], "math") for k in drive]
+
+    def u(time):
+        return np.array([float(f(time)) for f in fns])
+    times = np.random.default_rng(0).uniform(span[0], span[1], (2, 2 * len(fns) + 5))
+    U = [np.array([u(x) for x in row]) for row in times]
+    G = [np.array([ref.rhs(x, y_eq) - f_eq for x in row]) for row in times]
+    B = np.linalg.lstsq(U[0], G[0], rcond=None)[0].T
+    size = max(np.abs(G[0]).max(), np.abs(G[1]).max(), 1e-300)
+    return (B, u) if np.abs(U[1] @ B.T - G[1]).max() <= 1e-12 * size else None
+
+
+def _declared_drive(problem) -> dict:
+    """``{input name: history}`` as ``problem.fidelity_inputs`` declares them."""
+    return {getattr(k, "name", k): v for k, v in (problem.fidelity_inputs or {}).items()}
+
+
+def _drive(problem) -> dict:
+    """``{input name: closed form of t alone}``: the declared ``fidelity_inputs``, each
+    parameter at its default value (empty for a scene without inputs)."""
+    if not problem.input_symbols:
+        return {}
+    values = {s.name: v for s, v in problem_parameters(problem).items()}
+    out = {}
+    for name, h in _declared_drive(problem).items():
+        if isinstance(h, (int, float)):
+            h = sp.Float(h)
+        if not isinstance(h, sp.Expr):
+            raise TypeError(f"`fidelity_inputs`: `{name}` must be a sympy expression of t and "
+                            f"the parameters, got {h!r:.60}.")
+        out[name] = h.xreplace({s: _t if s.name == "t" else sp.Float(values[s.name])
+                                for s in h.free_symbols})
+    return out
+
+
+def _free(problem):
+    """``problem`` with every given input set to zero (itself when it has none)."""
+    return _driven(problem, {x.name: sp.Integer(0) for x in problem.inputs or ()})
+
+
+def _driven(problem, drive: dict):
+    """``problem`` with each given input replaced in its models by ``drive[name]`` (a closed
+    form of ``t``): an input-free problem whose stated conditions keep the inputs."""
+    if not problem.input_symbols:
+        return problem
+    models = {n: _driven_equations(problem, eqs, drive) for n, eqs in problem.models().items()}
+    out = copy.copy(problem)
+    stated = {k: str(v) for k, v in _declared_drive(problem).items()} if any(
+        v != 0 for v in drive.values()) else {k: "0" for k in drive}
+    out.__dict__.update({"_models": models, "inputs": (), "driven_by": stated})
+    return out
+
+
+def _driven_equations(problem, eqs, drive: dict):
+    """``eqs`` of ``problem`` with its given inputs replaced by ``drive`` (by name)."""
+    symbols = {x.name: x.symbol for x in problem.inputs or ()}
+    missing = sorted(set(symbols) - set(drive))
+    if missing:
+        raise ValueError(f"`{problem.name}` is driven by {', '.join(missing)}, which the "
+                         "scene's `fidelity_inputs` does not give (a rung's inputs take the "
+                         "richest problem's histories by name)")
+    return eqs.substitute({symbols[k]: drive[k] for k in symbols}) if symbols else eqs
+
+
+def _reactions(problem, Y: np.ndarray, times: np.ndarray) -> dict:
+    """The problem's direct-model reactions along states ``Y`` at ``times`` (reference
+    coordinates)."""
     values = problem_parameters(problem)
     out = {}
     for m in direct_models(problem, square=True):
         n = m.n
-        sol = NumericModel(m, values).solve(0.0, Y[:n], Y[n:])
+        sol = NumericModel(m, values).solve(times, Y[:n], Y[n:])
         for u, row in zip(m.unknowns, sol[n:]):
             out.setdefault(u.name, row)
     return out
