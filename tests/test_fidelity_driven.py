@@ -210,6 +210,22 @@ def test_without_the_declaration_it_says_which_one_to_make(tmp_path_factory, cap
     assert "has no fidelity ladder (not applicable)" in err and "fidelity_inputs = {" in err
 
 
+def test_an_inputs_default_history_drives_the_study_as_fidelity_inputs_does(
+        tmp_path_factory, lad):
+    """``Input(..., history=...)`` is what simulations and charts drive the scene with, and
+    the study takes it too when no ``fidelity_inputs`` is declared: the same ladder."""
+    text = TEACHER_FILE.replace("FIDELITY", "").replace(
+        'Input(F, FORCE, "push on the cart")',
+        'Input(F, FORCE, "push on the cart", history=F0 * sp.sin(w * t))')
+    path = tmp_path_factory.mktemp("teacher") / "pushed_cart_history.py"
+    path.write_text(text)
+    p = problems.load(f"{path}:PushedCart")
+    assert has_ladder(p) and not_applicable(p) is None
+    other = ladder(p)
+    assert other.inputs == lad.inputs == {"F": "F0*sin(t*w)"}
+    assert other.rungs[0].error_final == pytest.approx(lad.rungs[0].error_final, rel=1e-6)
+
+
 def test_fidelity_command_runs_the_driven_ladder(teacher, tmp_path, capsys):
     import json
     from dualmech.cli.main import main

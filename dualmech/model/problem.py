@@ -392,7 +392,8 @@ class Problem:
         declared input; with it the fidelity ladder of a driven problem runs every rung
         driven by that history from the initial state (the linearised rung about the
         equilibrium without inputs), e.g. ``fidelity_inputs = {"F": F0 * sp.sin(w * t)}``
-        with ``t`` from ``dualmech``; without it a driven problem has no ladder, and
+        with ``t`` from ``dualmech``; without it the inputs' default histories serve when
+        each input declares one as an expression, else a driven problem has no ladder and
         ``dualmech fidelity`` says to declare it.
     phases : dict
         What follows when a one-sided reaction lets go: ``{reaction: Phase(next problem,

@@ -156,7 +156,7 @@ def _legend(rung: Rung) -> str:
 
 def has_ladder(problem) -> bool:
     """Whether :func:`ladder` has something to compare for ``problem``."""
-    if problem.input_symbols and not problem.fidelity_inputs:
+    if problem.input_symbols and not _declared_drive(problem):
         return False
     if problem.fidelity_ladder:
         return True
@@ -178,14 +178,15 @@ def not_applicable(problem) -> str | None:
     these coordinates cannot linearise the motion about it.
 
     A problem driven by given inputs needs their history for the study
-    (``fidelity_inputs``); its equilibrium is sought without inputs.
+    (``fidelity_inputs``, else each input's default history); its equilibrium is sought
+    without inputs.
 
     >>> from dualmech.problems import get
     >>> not_applicable(get("simple_pendulum")) is None
     True
     """
     driven = [str(x) for x in problem.input_symbols]
-    if driven and not problem.fidelity_inputs:
+    if driven and not _declared_drive(problem):
         example = ", ".join(f'"{x}": {x}0 * sp.sin(w * t)' for x in driven)
         return (f"it is driven by given inputs ({', '.join(driven)}) and declares no history "
                 "of them for the study; " + NO_DRIVE.format(example=example) + ".")
@@ -386,8 +387,16 @@ def _forcing(ref, f_eq, y_eq, drive: dict, span) -> tuple | None:
 
 
 def _declared_drive(problem) -> dict:
-    """``{input name: history}`` as ``problem.fidelity_inputs`` declares them."""
-    return {getattr(k, "name", k): v for k, v in (problem.fidelity_inputs or {}).items()}
+    """``{input name: history}`` as ``problem.fidelity_inputs`` declares them, else every
+    input's declared default history (``Input(..., history=...)``, what simulations and
+    charts drive the scene with) when each input has one as a closed form; else empty."""
+    own = {getattr(k, "name", k): v for k, v in (problem.fidelity_inputs or {}).items()}
+    if own:
+        return own
+    inputs = getattr(problem, "inputs", ()) or ()
+    if inputs and all(isinstance(i.history, sp.Basic) for i in inputs):
+        return {i.symbol.name: i.history for i in inputs}
+    return {}
 
 
 def _drive(problem) -> dict:
