@@ -104,6 +104,31 @@ def group_curves(names, values, scale: float) -> list[list[str]]:
     return groups
 
 
+def split_scales(panels, ratio: float = 20.0) -> list:
+    """``[(unit, curves)]`` with a panel whose curves' excursions differ more than ``ratio``
+    times split in two, the small ones in a panel of their own (same unit), so that a
+    bicycle's lean and steer are not flattened under its wheels' spin angles.
+
+    >>> import numpy as np
+    >>> t = np.linspace(0, 1, 5)
+    >>> out = split_scales([("rad", [("spin", 80 * t), ("lean", 0.1 * np.sin(t)),
+    ...                              ("yaw", 0 * t)])])
+    >>> [(u, [n for n, _ in c]) for u, c in out]
+    [('rad', ['spin', 'yaw']), ('rad', ['lean'])]
+    """
+    out = []
+    for u, curves in panels:
+        values = [np.asarray(v, dtype=float) for _, v in curves]
+        spans = [float(np.ptp(v)) for v in values]
+        top = max(spans, default=0.0)
+        flat = SAME * max((float(np.abs(v).max()) for v in values), default=0.0)
+        # (a flat curve stays: the panel says it in words, a panel of its own would be empty)
+        small = [c for c, s in zip(curves, spans) if flat < s and s * ratio < top]
+        big = [c for c in curves if not any(c is x for x in small)]
+        out += [(u, big), (u, small)] if big and small else [(u, curves)]
+    return out
+
+
 def _panels(entries, kind_of):
     """``{unit: [(name, values)]}`` in first-seen order."""
     out: dict = {}
@@ -147,7 +172,7 @@ def trajectory_chart(problem, out_dir: Path, duration: float, samples: int = 400
     constants: list = []
     forces = {u: c for u, c in forces.items() if not _all_flat(u, c, chart, constants)}
     plt = pyplot()
-    panels = list(coords.items()) + list(forces.items())
+    panels = split_scales(list(coords.items())) + list(forces.items())
     chart.panels, chart.samples = [u for u, _ in panels], len(traj.t)
     count = len(panels)
     fig, axes = plt.subplots(count, 1, figsize=(8, 2.4 * count + 0.9), sharex=True,
