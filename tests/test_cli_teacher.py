@@ -361,12 +361,14 @@ WEDGE = CART.replace("driven_cart_pendulum", "wedge_block")
 
 
 def test_fidelity_and_atlas_say_why_not_and_what_to_declare(capsys, tmp_path):
-    # the wedge is driven by F(t): no ladder for a driven scene, said as such (it was "no
-    # stable equilibrium to linearise about (list index out of range)"); its atlas has no
-    # DAE formulation, with the declaration that would give one
+    # the wedge is driven by F(t) and declares its default history, which the study takes;
+    # a block sliding on a free wedge has no equilibrium to linearise about, said as such
+    # with the declaration that would give a ladder (it was "list index out of range"); its
+    # atlas has no DAE formulation, with the declaration that would give one
     status, _, err = run(capsys, "fidelity", WEDGE, "--out", tmp_path)
     flat = " ".join(err.split())
-    assert status == 2 and "it is driven by given inputs (F)" in flat
+    assert status == 2 and "no stable equilibrium to linearise about" in flat
+    assert "fidelity_ladder = (FidelityRung(" in flat
     assert "index out of range" not in flat
     status, out, _ = run(capsys, "atlas", WEDGE, "--section", "dae_drift", "--out", tmp_path)
     flat = " ".join(out.split())
