@@ -178,6 +178,11 @@ def _finding(f: Finding, judgement=None) -> Statement:
         parts.append(f"; with the declared value in {lg} the two models agree (checked)")
     elif f.reconciles is False:
         parts.append(f"; that alone does not reconcile {lg} with {ne}: more differs")
+    if f.along:
+        body = ", ".join(f.bodies)
+        parts.append(f": the virtual work of the loads on {body} ({', '.join(f.along)}) too, "
+                     f"so probably {body} is not where {ne} declares it (its position or "
+                     f"velocity), or its velocity in {lg}'s T is wrong")
     if odd == {f.direct}:
         parts.append(f" -- {ne} is outvoted: the slip is probably in its declaration")
         model = f.direct

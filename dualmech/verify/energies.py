@@ -70,6 +70,7 @@ class Finding:
     reconciles: bool | None = None
     probably: bool = False      # the body or load is attributed, not matched
     via: str = ""               # reactions whose values (from the direct balances) are in it
+    along: tuple = ()           # loads on the same body whose virtual work differs too
 
     @property
     def terms(self) -> list:
@@ -337,6 +338,7 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
                 f.via = ", ".join(sorted({via[ld] for ld in loads if ld in via}))
                 f.probably = f.probably or bool(f.via)
                 out.findings.append(f)
+    _one_body_behind(out.findings)
     for name, w in Rd.items():
         if not vanishes(w) and not _admissibly_zero(w, problem.model(direct), fd):
             edits = term_edits(sp.Integer(0), w, states) or []
@@ -344,6 +346,33 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
                 name, "does work", lagrange, direct, sp.Integer(0), _shown(w, fd),
                 _shown_edits(edits, fd), tuple(owners.get(name, ())), (name,), probably=True))
     return out
+
+
+def _one_body_behind(findings: list) -> None:
+    """When ``T`` of a body and the virtual work of loads acting on that body both differ, and
+    none of them alone reconciles the models, one slip in where the body is (its position or
+    velocity, declared once in the direct model) explains them all better than a slip in each:
+    the loads' findings become "probably" and the body's finding names them (``along``).
+
+    >>> T = Finding("T of block", "extra", "lagrange", "newton_euler", 0, 0,
+    ...             bodies=("block",), reconciles=False)
+    >>> W = Finding("δW of spring", "missing", "lagrange", "newton_euler", 0, 0,
+    ...             bodies=("block", "base"), loads=("spring",), reconciles=False)
+    >>> _one_body_behind([T, W]); T.along, W.probably
+    (('spring',), True)
+    """
+    moved = {}
+    for f in findings:
+        if f.quantity.startswith("T of") and f.reconciles is False and len(f.bodies) == 1:
+            moved[f.bodies[0]] = f
+    for f in findings:
+        if f.quantity.startswith("T of") or f.reconciles is not False or not f.loads:
+            continue
+        bodies = [b for b in f.bodies if b in moved]
+        if len(bodies) == 1:
+            f.probably = True
+            owner = moved[bodies[0]]
+            owner.along = owner.along + tuple(x for x in f.loads if x not in owner.along)
 
 
 def _through_values(problem, direct: str, fr: _Frame, Wd: dict, reactions: set):
