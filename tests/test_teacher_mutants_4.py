@@ -155,8 +155,22 @@ def test_nothing_is_named_wrongly_with_certainty_and_90_percent_are_named():
     assert len(motion) >= 30 and len(hits) / len(motion) >= 0.9
 
 
+#: reaction-only mistakes no derivation sees yet, with the reason
+UNSEEN = {
+    "base_normal_on_base_forgotten":
+        "the reaction is declared on the block only (no against=base), so the base's balance "
+        "lacks -N and Nf comes out M g instead of (M + m) g; the referee derives from that same "
+        "declaration and agrees, and N does no work either way: only the reaction's description "
+        "('base on block') says a second body is involved",
+}
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("ident", [m["id"] for m in MUTANTS if m.get("expect") == "reaction"])
+@pytest.mark.parametrize("ident", [
+    pytest.param(m["id"], id=m["id"],
+                 marks=[pytest.mark.xfail(strict=True, reason=UNSEEN[m["id"]])]
+                 if m["id"] in UNSEEN else [])
+    for m in MUTANTS if m.get("expect") == "reaction"])
 def test_a_reaction_only_mistake_is_caught_by_the_referee(ident):
     """Invisible to two models; the Kane referee derived from the direct model's declarations
     disagrees with the direct model's reactions and names it."""

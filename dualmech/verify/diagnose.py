@@ -16,6 +16,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import sympy as sp
+
 from dualmech.model.direct import NewtonEuler
 from dualmech.model.lagrange import Lagrangian
 from dualmech.verify.display import wrap
@@ -154,15 +156,24 @@ def _finding(f: Finding, judgement=None) -> Statement:
     if f.kind == "does work":
         parts = ("in ", ne, f" it does the virtual work δW = ", f.right,
                  "; the reaction of an ideal constraint does none: its direction or point "
-                 "is wrong (or the constraint is not ideal)")
+                 "is wrong, or the motion of the body's point where it acts (a rolling body "
+                 "turning the wrong way), or the constraint is not ideal")
         return Statement(f.quantity, f.direct, _flat(parts), False, f.kind, f.terms)
     source = _source(f)
     parts: list = []
-    for e in f.edits:
+    edits = f.edits
+    if len(edits) > 1 and all(e.kind == "sign" for e in edits):
+        have = _factored(sum((e.have for e in edits), sp.Integer(0)))
+        parts += ["sign: ", lg, " has ", have, f" where {source} gives ", -have]
+        edits = []
+    for e in edits:
         if parts:
             parts.append("; ")
         if e.kind == "missing":
             parts += [lg, " is missing the term ", e.right, f", which {source} gives"]
+        elif e.kind == "extra" and not f.loads and not f.quantity.startswith("T of"):
+            parts += [lg, " has the term ", e.have, f", which no load of {ne} gives (a load "
+                      f"left out of {ne}, or one too many in {lg})"]
         elif e.kind == "extra":
             parts += [lg, " has the term ", e.have, f", which {source} does not give"]
         elif e.kind == "sign":
@@ -306,7 +317,6 @@ def _reactions_of(problem, name: str) -> dict:
 def _difference(have, right):
     """``have - right`` factored, when that is shorter than either side (a coefficient of
     three terms against another of three: ``m r (2 R - r)/4 θ̇^2``); else ``None``."""
-    import sympy as sp
     try:
         gap = sp.factor(sp.expand(have - right))
     except Exception:  # noqa: BLE001 - display only
@@ -316,8 +326,17 @@ def _difference(have, right):
     return gap
 
 
+def _factored(expr):
+    """``expr`` factored when that is shorter (``L₀ k y - L₀ k x`` is ``L₀ k (y - x)``);
+    display only."""
+    try:
+        out = sp.factor(expr)
+    except Exception:  # noqa: BLE001 - display only
+        return expr
+    return out if sp.count_ops(out) < sp.count_ops(expr) else expr
+
+
 def _has_acc(expr) -> bool:
-    import sympy as sp
     return any(d.derivative_count == 2 for d in expr.atoms(sp.Derivative))
 
 

@@ -103,7 +103,24 @@ def row_edits(problem, model: str, against: str, seed: int = 0) -> list[RowEdit]
             found.append(RowEdit(model, m.labels[i], against, "terms", edits=edit))
     if not found:
         found = _inertia_edits(problem, model, m, other, agrees, against)
-    return found
+    return [e for e in found if all(written(x) for te in e.edits for x in (te.have, te.right))]
+
+
+def written(term) -> bool:
+    """Whether ``term`` is one a person writes in a balance: no denominator that is a sum
+    (``L M R m cos(θ) θ̈/(6 M + 4 m)`` is the motion solved into a row, an edit that
+    reconciles the models without being anyone's mistake); ``None`` (no term) is.
+
+    >>> M, m, R, a = sp.symbols("M m R a")
+    >>> written(M * R * a / (6 * M + 4 * m)), written(-R * m * a / 2), written(None)
+    (False, True, True)
+    """
+    if term is None:
+        return True
+    for part in sp.Add.make_args(sp.expand(as_expr(term))):
+        if sp.denom(sp.factor(part)).atoms(sp.Add) - {sp.Integer(0)}:
+            return False
+    return True
 
 
 def _inertia_edits(problem, model: str, m, other, agrees, against: str) -> list[RowEdit]:
