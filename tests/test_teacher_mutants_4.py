@@ -185,3 +185,42 @@ def test_every_edit_applies_once_and_the_originals_agree():
     for f in sorted({m["file"] for m in MUTANTS}):
         c = compare(load(str(PROBLEMS / f"{f}.py")))
         assert c.equivalent and c.diagnosis is None, c.text()
+
+
+@pytest.mark.slow
+def test_a_body_declared_in_the_wrong_place_is_named_not_its_loads():
+    """The block located from the ground instead of the base: T of the block and the virtual
+    work of the spring and the damper on it all differ (by hand: the Lagrangian's extra
+    ``m x'^2/2 + m x' u'``, and ``k u δx``, ``c u' δx`` the direct model's spring and damper do
+    on the base while the block no longer follows it).  The loads are right: only the block's
+    statement may be certain, and it names the loads as following from it."""
+    d = two_models("base_block_located_on_ground").diagnosis
+    certain = [s for s in d.statements if s.certain]
+    assert [s.subject for s in certain] == ["T of block"], d.text()
+    assert "(spring, damper)" in certain[0].text()
+    assert "block is not where `newton_euler` declares it" in " ".join(certain[0].text().split())
+    loads = {s.subject for s in d.statements if not s.certain}
+    assert loads == {"δW of spring", "δW of damper"}, d.text()
+
+
+@pytest.mark.slow
+def test_a_reaction_pair_drawn_by_hand_with_one_sign_is_named():
+    """``H = reaction_vector(..., rod, at=C)`` then ``force("pin on wheel", wheel, H, at=C)``:
+    the pair does the virtual work ``2 H_x δx`` (by hand: C moves by δx; the rod's H and the
+    wheel's H both act there), none when the wheel's is ``-H``."""
+    d = two_models("wheelrod_pin_on_wheel_drawn_by_hand").diagnosis
+    s = d.statements[0]
+    assert s.subject == "load pin on wheel" and s.kind == "pair" and s.certain, d.text()
+    H_x, dx = sp.Symbol("H_x", real=True), sp.Symbol("δx", real=True)
+    assert _same(s.terms[0][1], H_x * dx), s.terms
+    assert "against=wheel" in s.text()
+
+
+@pytest.mark.slow
+def test_a_balance_edit_is_shown_with_its_coefficient_factored():
+    """Moments of the disk about the contact P (moving with the ring) taken as if fixed: the
+    row has ``-3 m r R ψ''/2`` where ``-m r R ψ''/2`` belongs (by hand, about P:
+    ``sum tau_P = I_C phi'' + r_PC x m a_C``, the student's ``(3/2) m r^2 phi''``)."""
+    d = two_models("ring_moments_about_contact").diagnosis
+    text = " ".join(d.text().split())
+    assert "has -3 R m r ψ̈/2 where -R m r ψ̈/2 belongs" in text, text

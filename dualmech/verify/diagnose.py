@@ -159,6 +159,15 @@ def _finding(f: Finding, judgement=None) -> Statement:
                  "is wrong, or the motion of the body's point where it acts (a rolling body "
                  "turning the wrong way), or the constraint is not ideal")
         return Statement(f.quantity, f.direct, _flat(parts), False, f.kind, f.terms)
+    if f.kind == "pair":
+        names = ", ".join(x.removeprefix("reaction ") for x in f.keys)
+        on = ", ".join(f.bodies) or "its body"
+        parts = ("in ", ne, f" the load `{f.quantity}` on {on} repeats the reaction {names} "
+                 "with the sign it has on the other body: the pair does the virtual work ",
+                 2 * f.have, "; an action and its reaction are equal and opposite, "
+                 "and drawn opposite the pair does none (checked): reverse it (or declare the "
+                 f"reaction with against={on})")
+        return Statement(f"load {f.quantity}", f.direct, _flat(parts), True, f.kind, f.terms)
     source = _source(f)
     parts: list = []
     edits = f.edits

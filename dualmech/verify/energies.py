@@ -320,6 +320,11 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
             if f is not None:
                 out.findings.append(f)
     Wd = {k: w for k, w in Wd.items() if not vanishes(w)}   # a load that never works
+    for f in _hand_pairs(Wd, Rd, set(ne._unknowns), lagrange, direct, fd, owners):
+        out.findings.append(f)
+        Wd.pop(f.loads[0])
+        for name in f.keys:
+            Rd.pop(name, None)
     by_hand = _undeclared(problem.model(direct), Wd, Rd, Td)
     if by_hand:
         out.compared = ("T",)
@@ -345,6 +350,30 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
             out.working_reactions.append(Finding(
                 name, "does work", lagrange, direct, sp.Integer(0), _shown(w, fd),
                 _shown_edits(edits, fd), tuple(owners.get(name, ())), (name,), probably=True))
+    return out
+
+
+def _hand_pairs(Wd: dict, Rd: dict, reactions: set, lname: str, dname: str, fd, owners):
+    """Loads that repeat a declared reaction with its own sign: the other half of an action
+    and reaction drawn by hand (``H = reaction_vector(..., on=rod)`` then ``force(..., wheel,
+    H)``).  The pair then does the virtual work ``2 δW``; drawn opposite it does none -- each
+    decided exactly.  Findings of kind ``"pair"`` (``keys``: the reactions' own entries)."""
+    out = []
+    for k, w in Wd.items():
+        held = w.free_symbols & reactions
+        if not held:
+            continue
+        mine = [name for name, r in Rd.items() if r.free_symbols & held]
+        if not mine:
+            continue
+        R = _sum(Rd, mine)
+        if vanishes(R + w) or not vanishes(R - w):
+            continue
+        f = Finding(k, "pair", lname, dname, _shown(w, fd), _shown(-w, fd),
+                    [TermEdit("sign", _shown(w, fd), _shown(-w, fd))],
+                    tuple(owners.get(k, ())), (k,), tuple(mine))
+        f.reconciles = None
+        out.append(f)
     return out
 
 
