@@ -194,6 +194,11 @@ def _finding(f: Finding, judgement=None) -> Statement:
                 parts += [f" (`{f.lagrange}`'s minus the declared: ", gap, ")"]
     if not parts:
         parts = [lg, " has ", f.have, f" where {source} gives ", f.right]
+    if len(edits) > 1:
+        gap = _total_gap(f.have, f.right)
+        if gap is not None and sp.count_ops(gap) < sum(
+                sp.count_ops(x) for e in f.edits for x in (e.have, e.right) if x is not None):
+            parts += [f"; in all, {lg}'s minus the declared: ", gap]
     if f.reconciles:
         parts.append(f"; with the declared value in {lg} the two models agree (checked)")
     elif f.reconciles is False:
@@ -333,6 +338,27 @@ def _difference(have, right):
     if gap == 0 or sp.count_ops(gap) >= min(sp.count_ops(have), sp.count_ops(right)):
         return None
     return gap
+
+
+def _total_gap(have, right):
+    """``have - right`` in its shortest factored form, with ``sin^2`` written through ``cos``
+    or the other way (a teacher's ``-a^2 m cos(θ) φ̇ (cos(θ) φ̇ + 2 ψ̇)/4``, not the
+    canonical basis's four terms); ``None`` when it is zero or cannot be formed.  Display only.
+
+    >>> th, a, b = sp.symbols("theta a b")
+    >>> _total_gap(a * sp.sin(th)**2 + b, a + b)
+    -a*cos(theta)**2
+    """
+    w = sp.Wild("w")
+    try:
+        gap = sp.expand(have - right)
+        if gap == 0:
+            return None
+        forms = [gap, sp.expand(gap.replace(sp.sin(w)**2, 1 - sp.cos(w)**2)),
+                 sp.expand(gap.replace(sp.cos(w)**2, 1 - sp.sin(w)**2))]
+        return min((sp.factor(x) for x in forms), key=sp.count_ops)
+    except Exception:  # noqa: BLE001 - display only
+        return None
 
 
 def _factored(expr):

@@ -488,7 +488,28 @@ def _undeclared(model, Wd: dict, Rd: dict, Td: dict) -> list:
 def _shown(expr, fr: _Frame) -> sp.Expr:
     """A plain expression in the reference coordinates as functions of time (for notation),
     ``sin^2 + cos^2`` of one angle written as 1 (:func:`tidy`)."""
-    return tidy(from_plain(expr, fr.ref))
+    return _coefficient_factored(tidy(from_plain(expr, fr.ref)))
+
+
+def _coefficient_factored(expr) -> sp.Expr:
+    """A product with its sums factored (``(R^2 m - 2 R m r + m r^2) θ̇^2`` is
+    ``m (R - r)^2 θ̇^2``); display only.
+
+    >>> R, r, m, w = sp.symbols("R r m w")
+    >>> _coefficient_factored((R**2*m - 2*R*m*r + m*r**2) * w**2)
+    m*w**2*(R - r)**2
+    """
+    if not isinstance(expr, sp.Mul):
+        return expr
+    def shorter(a):
+        f = sp.factor(a)
+        f = f.replace(lambda e: e.is_Pow and e.exp.is_even and e.base.is_Add
+                      and e.base.could_extract_minus_sign(), lambda e: (-e.base)**e.exp)
+        return f if sp.count_ops(f) < sp.count_ops(a) else a
+    try:
+        return sp.Mul(*(shorter(a) if a.is_Add else a for a in expr.args))
+    except Exception:  # noqa: BLE001 - display only
+        return expr
 
 
 def tidy(expr) -> sp.Expr:
