@@ -540,15 +540,30 @@ def _shown_edits(edits, fr) -> list:
 
 
 def _owner_of(edits, bodies: dict) -> list:
-    """The bodies whose own terms include every edited term's state part and mass."""
+    """The bodies (or loads) whose own value includes every symbol of each edit's change
+    (``right - have``: in a lumped ``T`` written ``M x'^2/2`` where ``(M + m) x'^2/2``
+    belongs, the change ``m x'^2/2`` is the block's, not the base's).
+
+    >>> M, m, x, u = sp.symbols("M m x u")
+    >>> e = TermEdit("differs", M * x**2 / 2, (M + m) * x**2 / 2)
+    >>> _owner_of([e], {"base": M * x**2 / 2, "block": m * (x + u)**2 / 2})
+    ['block']
+    """
     out = []
     for name, T in bodies.items():
-        mass = getattr(T, "_mass", None)
         syms = T.free_symbols
-        if all((e.right if e.right is not None else e.have).free_symbols <= syms | {t}
-               for e in edits):
+        if all(_change(e).free_symbols <= syms | {t} for e in edits):
             out.append(name)
     return out
+
+
+def _change(e) -> sp.Expr:
+    if e.right is None:
+        return as_expr(e.have)
+    if e.have is None:
+        return as_expr(e.right)
+    gap = sp.expand(e.right - e.have)
+    return gap if gap != 0 else as_expr(e.right)
 
 
 def _kinetic(ctx, Tl, Td, keys, names) -> Finding | None:
@@ -557,15 +572,15 @@ def _kinetic(ctx, Tl, Td, keys, names) -> Finding | None:
     if vanishes(have - right):
         return None
     edits = term_edits(have, right, states)
-    body = names
+    quantity = ("T of " + ", ".join(names)) if names else "T of " + ", ".join(keys)
     probably = False
-    if len(names) != 1 and edits:
+    if len(names) != 1 and edits:       # a lumped T: the body the change is in
         owners = _owner_of(edits, {n: Td[n] for n in names})
         if len(owners) == 1:
-            body, probably = tuple(owners), True
-    quantity = ("T of " + ", ".join(body)) if body else "T of " + ", ".join(keys)
+            lump = f" (in `{lname}`'s " + ", ".join(keys) + ")" if keys else ""
+            quantity, probably = f"T of {owners[0]}{lump}", True
     f = Finding(quantity, _kind(edits), lname, dname, _shown(have, fd), _shown(right, fd),
-                _shown_edits(edits or [], fd), tuple(body), (), tuple(keys), probably=probably)
+                _shown_edits(edits or [], fd), tuple(names), (), tuple(keys), probably=probably)
     if reconcile and keys:
         f.reconciles = _reconciles(problem, dname, lg, fd, "T", keys, right)
     return f
@@ -591,7 +606,13 @@ def _work(ctx, Wl, Wd, Vl, keys, loads, owners) -> Finding | None:
         f = Finding("δW of " + what, _kind(edits), lname, dname, _shown(have, fd),
                     _shown(right, fd), _shown_edits(edits or [], fd), (), tuple(loads),
                     tuple(keys))
-    f.bodies = tuple(dict.fromkeys(b for ld in loads for b in owners.get(ld, ())))
+    if len(loads) > 1 and edits:                # a lumped V: the load the change is in
+        mine = _owner_of(edits, {ld: Wd[ld] for ld in loads})
+        if len(mine) == 1:
+            lump = f" (in `{lname}`'s " + ", ".join(keys) + ")" if keys else ""
+            f.quantity = f.quantity.split(" of ")[0] + " of " + mine[0] + lump
+            f.probably = True
+    f.bodies = tuple(dict.fromkeys(b for ld in f.loads for b in owners.get(ld, ())))
     if reconcile and keys:
         f.reconciles = _reconciles(problem, dname, lg, fd, "W", keys, right)
     return f
