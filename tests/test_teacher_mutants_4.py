@@ -4,11 +4,13 @@ Issue 25, point 2, measured on problems the diagnosis was not written against: t
 ``tests/corpus/teacher_problems/`` listed in ``tests/corpus/teacher_mutants_4.toml`` (a disk
 rolling inside a spinning ring, coupled rod pendulums, a rod in a motor-driven slot, a cart and
 a rolling wheel joined by a spring, a sprung and damped block on a pushed base, a rod hanging
-from a rolling wheel's axle).  Each mutant replaces one piece of the file's text, as a student
-would write it wrong (the sign of a load, a velocity without the frame's transport term, a wrong
-inertia, moments about a moving point taken as if it were fixed, a reaction on the wrong body or
-at the wrong point, a direction not of unit length); the data file records the quantity (and,
-where derived by hand, the term) a diagnosis must name.
+from a rolling wheel's axle, a gyroscope on a pivot in Euler angles).  Each mutant edits the
+file's text, as a student would write it wrong (the sign of a load, a velocity without the
+frame's transport term, a wrong inertia, moments about a moving point taken as if it were
+fixed, a reaction on the wrong body or at the wrong point, a direction not of unit length), also
+in the styles a new user writes (one lumped T or V, the Lagrangian in other coordinates with a
+coordinate map); the data file records the quantity (and, where derived by hand, the term) a
+diagnosis must name, and a few edits that are no mistake.
 
 Asserted for each, with the two teacher models alone (no referee: the vote names nobody):
 the outcome recorded (named, or open with its reason), and that no statement the diagnosis calls
@@ -42,8 +44,10 @@ OPEN: dict = {}
 
 def mutated_text(m: dict) -> str:
     text = (PROBLEMS / f"{m['file']}.py").read_text()
-    assert text.count(m["old"]) == 1, (m["id"], "the edit's old text must occur once")
-    return text.replace(m["old"], m["new"])
+    for edit in [m] + m.get("more", []):    # a mutant may need a second edit elsewhere
+        assert text.count(edit["old"]) == 1, (m["id"], "the edit's old text must occur once")
+        text = text.replace(edit["old"], edit["new"])
+    return text
 
 
 @functools.lru_cache(maxsize=None)
