@@ -482,19 +482,74 @@ def _held(v: Vector):
 
 
 def _check_unit(name: str, direction: Vector) -> None:
-    """Refuse a reaction direction whose squared length is a number other than 1 (the unknown
-    would be the force divided by that length, silently).  A direction that depends on the
-    state is checked by the comparator, which evaluates its length exactly."""
+    """Refuse a reaction direction whose squared length is not 1 (the unknown would be the
+    force divided by that length, silently): a number other than 1, or an expression that is
+    not 1 at a sample point and does not change with the coordinates (``o.pos_from(P)``, of
+    length ``R``; :func:`_not_one`).  A length that changes with the coordinates is not
+    refused here: it may be 1 only on the constraint the coordinates keep.
+
+    >>> import sympy as sp
+    >>> from dualmech import Frame
+    >>> R = sp.Symbol("R", positive=True)
+    >>> _check_unit("N", R * Frame.ground("O").y)  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    dualmech.model.equations.ModelError: the direction of reaction `N` is not a unit vector (its squared length is R**2, 25/4 at R = 5/2); ...
+    """
     if not isinstance(direction, Vector):
         raise ModelError(f"the direction of reaction `{name}` must be a Vector, got "
                          f"{type(direction).__name__}.")
-    length2, _ = direction.dot_se(direction)
+    length2, names = direction.dot_se(direction)
     length2 = length2.expand()
-    if length2.is_Number and length2 != 1:
+    if length2.is_Number:
+        shown = None if length2 == 1 else str(length2)
+    else:
+        shown = _not_one(to_sp(length2, names))
+    if shown is not None:
         raise ModelError(
             f"the direction of reaction `{name}` is not a unit vector (its squared length is "
-            f"{length2}); `{name}` would be the force divided by that length.  Divide the "
-            "direction by its length, e.g. (O.x + O.y)/sqrt(2).")
+            f"{shown}); `{name}` would be the force divided by that length.  Divide the "
+            "direction by its length, e.g. (O.x + O.y)/sqrt(2), or use a frame's unit vector.")
+
+
+def _not_one(length2, points: int = 3) -> str | None:
+    """``None`` when ``length2`` (sympy, in parameters, time and coordinates) is 1 at
+    ``points`` sample points (every atom a rational in (1, 3), to 40 digits: a unit vector of
+    a turning frame, ``sin^2 + cos^2``, passes), or when it changes with the coordinates at
+    fixed parameters (it may be 1 on the constraint they keep: ``(x O.x + y O.y)/l`` with
+    ``x^2 + y^2 = l^2``); else the text ``"<length2>, <value> at <point>"``."""
+    import random
+    from sympy.core.function import AppliedUndef
+    state = sorted(length2.atoms(sp.Derivative), key=str, reverse=True) \
+        + sorted(length2.atoms(AppliedUndef), key=str)
+    fixed = sorted(length2.free_symbols, key=str)
+    rng = random.Random(11)
+
+    def at(values):
+        out = length2
+        for a in state:                  # rates before the coordinates they differentiate
+            out = out.xreplace({a: values[a]})
+        return out.xreplace(values)
+
+    def near(a, b) -> bool:
+        return a == b if (a - b).is_Rational else abs(sp.N(a - b, 40)) < sp.Float("1e-30", 40)
+
+    for _ in range(points):
+        point = {a: sp.Rational(rng.randint(11, 29), 10) for a in fixed + state}
+        value = at(point)
+        if near(value, sp.Integer(1)):
+            continue
+        moved = {**point, **{a: sp.Rational(rng.randint(31, 49), 10) for a in state}}
+        if state and not near(at(moved), value):
+            return None                  # depends on the state: not decided here
+        short = sp.trigsimp(length2)    # the message only: sin^2 + cos^2 read as 1
+        short = short if sp.count_ops(short) < sp.count_ops(length2) else length2
+        if not (short.free_symbols - set(fixed)) and not short.atoms(AppliedUndef):
+            value = short.xreplace(point)
+        shown = value if value.is_Rational else sp.N(value, 6)
+        where = ", ".join(f"{a} = {point[a]}" for a in fixed if a in short.free_symbols)
+        return f"{short}, {shown} at {where}" if where else f"{short}"
+    return None
 
 
 def _as_list(body) -> list:

@@ -16,6 +16,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import sympy as sp
+
 from dualmech.model.direct import NewtonEuler
 from dualmech.model.lagrange import Lagrangian
 from dualmech.verify.display import wrap
@@ -154,15 +156,33 @@ def _finding(f: Finding, judgement=None) -> Statement:
     if f.kind == "does work":
         parts = ("in ", ne, f" it does the virtual work δW = ", f.right,
                  "; the reaction of an ideal constraint does none: its direction or point "
-                 "is wrong (or the constraint is not ideal)")
+                 "is wrong, or the motion of the body's point where it acts (a rolling body "
+                 "turning the wrong way), or the constraint is not ideal")
         return Statement(f.quantity, f.direct, _flat(parts), False, f.kind, f.terms)
+    if f.kind == "pair":
+        names = ", ".join(x.removeprefix("reaction ") for x in f.keys)
+        on = ", ".join(f.bodies) or "its body"
+        parts = ("in ", ne, f" the load `{f.quantity}` on {on} repeats the reaction {names} "
+                 "with the sign it has on the other body: the pair does the virtual work ",
+                 2 * f.have, "; an action and its reaction are equal and opposite, "
+                 "and drawn opposite the pair does none (checked): reverse it (or declare the "
+                 f"reaction with against={on})")
+        return Statement(f"load {f.quantity}", f.direct, _flat(parts), True, f.kind, f.terms)
     source = _source(f)
     parts: list = []
-    for e in f.edits:
+    edits = f.edits
+    if len(edits) > 1 and all(e.kind == "sign" for e in edits):
+        have = _factored(sum((e.have for e in edits), sp.Integer(0)))
+        parts += ["sign: ", lg, " has ", have, f" where {source} gives ", -have]
+        edits = []
+    for e in edits:
         if parts:
             parts.append("; ")
         if e.kind == "missing":
             parts += [lg, " is missing the term ", e.right, f", which {source} gives"]
+        elif e.kind == "extra" and not f.loads and not f.quantity.startswith("T of"):
+            parts += [lg, " has the term ", e.have, f", which no load of {ne} gives (a load "
+                      f"left out of {ne}, or one too many in {lg})"]
         elif e.kind == "extra":
             parts += [lg, " has the term ", e.have, f", which {source} does not give"]
         elif e.kind == "sign":
@@ -174,10 +194,20 @@ def _finding(f: Finding, judgement=None) -> Statement:
                 parts += [f" (`{f.lagrange}`'s minus the declared: ", gap, ")"]
     if not parts:
         parts = [lg, " has ", f.have, f" where {source} gives ", f.right]
+    if len(edits) > 1:
+        gap = _total_gap(f.have, f.right)
+        if gap is not None and sp.count_ops(gap) < sum(
+                sp.count_ops(x) for e in f.edits for x in (e.have, e.right) if x is not None):
+            parts += [f"; in all, {lg}'s minus the declared: ", gap]
     if f.reconciles:
         parts.append(f"; with the declared value in {lg} the two models agree (checked)")
     elif f.reconciles is False:
         parts.append(f"; that alone does not reconcile {lg} with {ne}: more differs")
+    if f.along:
+        body = ", ".join(f.bodies)
+        parts.append(f": the virtual work of the loads on {body} ({', '.join(f.along)}) too, "
+                     f"so probably {body} is not where {ne} declares it (its position or "
+                     f"velocity), or its velocity in {lg}'s T is wrong")
     if odd == {f.direct}:
         parts.append(f" -- {ne} is outvoted: the slip is probably in its declaration")
         model = f.direct
@@ -301,7 +331,6 @@ def _reactions_of(problem, name: str) -> dict:
 def _difference(have, right):
     """``have - right`` factored, when that is shorter than either side (a coefficient of
     three terms against another of three: ``m r (2 R - r)/4 θ̇^2``); else ``None``."""
-    import sympy as sp
     try:
         gap = sp.factor(sp.expand(have - right))
     except Exception:  # noqa: BLE001 - display only
@@ -311,8 +340,38 @@ def _difference(have, right):
     return gap
 
 
+def _total_gap(have, right):
+    """``have - right`` in its shortest factored form, with ``sin^2`` written through ``cos``
+    or the other way (a teacher's ``-a^2 m cos(θ) φ̇ (cos(θ) φ̇ + 2 ψ̇)/4``, not the
+    canonical basis's four terms); ``None`` when it is zero or cannot be formed.  Display only.
+
+    >>> th, a, b = sp.symbols("theta a b")
+    >>> _total_gap(a * sp.sin(th)**2 + b, a + b)
+    -a*cos(theta)**2
+    """
+    w = sp.Wild("w")
+    try:
+        gap = sp.expand(have - right)
+        if gap == 0:
+            return None
+        forms = [gap, sp.expand(gap.replace(sp.sin(w)**2, 1 - sp.cos(w)**2)),
+                 sp.expand(gap.replace(sp.cos(w)**2, 1 - sp.sin(w)**2))]
+        return min((sp.factor(x) for x in forms), key=sp.count_ops)
+    except Exception:  # noqa: BLE001 - display only
+        return None
+
+
+def _factored(expr):
+    """``expr`` factored when that is shorter (``L₀ k y - L₀ k x`` is ``L₀ k (y - x)``);
+    display only."""
+    try:
+        out = sp.factor(expr)
+    except Exception:  # noqa: BLE001 - display only
+        return expr
+    return out if sp.count_ops(out) < sp.count_ops(expr) else expr
+
+
 def _has_acc(expr) -> bool:
-    import sympy as sp
     return any(d.derivative_count == 2 for d in expr.atoms(sp.Derivative))
 
 

@@ -103,7 +103,24 @@ def row_edits(problem, model: str, against: str, seed: int = 0) -> list[RowEdit]
             found.append(RowEdit(model, m.labels[i], against, "terms", edits=edit))
     if not found:
         found = _inertia_edits(problem, model, m, other, agrees, against)
-    return found
+    return [e for e in found if all(written(x) for te in e.edits for x in (te.have, te.right))]
+
+
+def written(term) -> bool:
+    """Whether ``term`` is one a person writes in a balance: no denominator that is a sum
+    (``L M R m cos(θ) θ̈/(6 M + 4 m)`` is the motion solved into a row, an edit that
+    reconciles the models without being anyone's mistake); ``None`` (no term) is.
+
+    >>> M, m, R, a = sp.symbols("M m R a")
+    >>> written(M * R * a / (6 * M + 4 * m)), written(-R * m * a / 2), written(None)
+    (False, True, True)
+    """
+    if term is None:
+        return True
+    for part in sp.Add.make_args(sp.expand(as_expr(term))):
+        if sp.denom(sp.factor(part)).atoms(sp.Add) - {sp.Integer(0)}:
+            return False
+    return True
 
 
 def _inertia_edits(problem, model: str, m, other, agrees, against: str) -> list[RowEdit]:
@@ -167,6 +184,26 @@ def _term_edit(m, i, other, agrees) -> list | None:
             break
     if best is None or not agrees(i, from_plain(best[1], m.coordinates)):
         return None
-    return [TermEdit(e.kind, None if e.have is None else from_plain(e.have, m.coordinates),
-                     None if e.right is None else from_plain(e.right, m.coordinates))
-            for e in best[0]]
+    def shown(x):
+        return None if x is None else from_plain(neat(x, states), m.coordinates)
+    return [TermEdit(e.kind, shown(e.have), shown(e.right)) for e in best[0]]
+
+
+def neat(expr, states) -> sp.Expr:
+    """``expr`` (plain) with the coefficient of each product of the ``states`` factored, as
+    a teacher writes it: a row scaled by ``1/(2 r - 2 R)`` gives ``-R m r ψ̈/2``, not
+    ``(R^2 m r/(-2 R + 2 r) - R m r^2/(-2 R + 2 r)) ψ̈``.  Display only; the edit was checked
+    on the unfactored form, and the factored one is kept only when it is the same.
+
+    >>> R, r, m, a = sp.symbols("R r m a")
+    >>> neat(R**2*m*r*a/(2*r - 2*R) - R*m*r**2*a/(2*r - 2*R), {a})
+    -R*a*m*r/2
+    """
+    try:
+        parts = sp.collect(sp.expand(expr), sorted(states, key=str), evaluate=False)
+        out = sp.Add(*(sp.factor(c) * k for k, c in parts.items()))
+    except Exception:  # noqa: BLE001 - display only
+        return expr
+    if sp.count_ops(out) >= sp.count_ops(expr) or sp.cancel(out - expr) != 0:
+        return expr
+    return out

@@ -70,6 +70,7 @@ class Finding:
     reconciles: bool | None = None
     probably: bool = False      # the body or load is attributed, not matched
     via: str = ""               # reactions whose values (from the direct balances) are in it
+    along: tuple = ()           # loads on the same body whose virtual work differs too
 
     @property
     def terms(self) -> list:
@@ -319,6 +320,11 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
             if f is not None:
                 out.findings.append(f)
     Wd = {k: w for k, w in Wd.items() if not vanishes(w)}   # a load that never works
+    for f in _hand_pairs(Wd, Rd, set(ne._unknowns), lagrange, direct, fd, owners):
+        out.findings.append(f)
+        Wd.pop(f.loads[0])
+        for name in f.keys:
+            Rd.pop(name, None)
     by_hand = _undeclared(problem.model(direct), Wd, Rd, Td)
     if by_hand:
         out.compared = ("T",)
@@ -337,6 +343,7 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
                 f.via = ", ".join(sorted({via[ld] for ld in loads if ld in via}))
                 f.probably = f.probably or bool(f.via)
                 out.findings.append(f)
+    _one_body_behind(out.findings)
     for name, w in Rd.items():
         if not vanishes(w) and not _admissibly_zero(w, problem.model(direct), fd):
             edits = term_edits(sp.Integer(0), w, states) or []
@@ -344,6 +351,57 @@ def check_declarations(problem, direct: str, lagrange: str, builders: dict | Non
                 name, "does work", lagrange, direct, sp.Integer(0), _shown(w, fd),
                 _shown_edits(edits, fd), tuple(owners.get(name, ())), (name,), probably=True))
     return out
+
+
+def _hand_pairs(Wd: dict, Rd: dict, reactions: set, lname: str, dname: str, fd, owners):
+    """Loads that repeat a declared reaction with its own sign: the other half of an action
+    and reaction drawn by hand (``H = reaction_vector(..., on=rod)`` then ``force(..., wheel,
+    H)``).  The pair then does the virtual work ``2 δW``; drawn opposite it does none -- each
+    decided exactly.  Findings of kind ``"pair"`` (``keys``: the reactions' own entries)."""
+    out = []
+    for k, w in Wd.items():
+        held = w.free_symbols & reactions
+        if not held:
+            continue
+        mine = [name for name, r in Rd.items() if r.free_symbols & held]
+        if not mine:
+            continue
+        R = _sum(Rd, mine)
+        if vanishes(R + w) or not vanishes(R - w):
+            continue
+        f = Finding(k, "pair", lname, dname, _shown(w, fd), _shown(-w, fd),
+                    [TermEdit("sign", _shown(w, fd), _shown(-w, fd))],
+                    tuple(owners.get(k, ())), (k,), tuple(mine))
+        f.reconciles = None
+        out.append(f)
+    return out
+
+
+def _one_body_behind(findings: list) -> None:
+    """When ``T`` of a body and the virtual work of loads acting on that body both differ, and
+    none of them alone reconciles the models, one slip in where the body is (its position or
+    velocity, declared once in the direct model) explains them all better than a slip in each:
+    the loads' findings become "probably" and the body's finding names them (``along``).
+
+    >>> T = Finding("T of block", "extra", "lagrange", "newton_euler", 0, 0,
+    ...             bodies=("block",), reconciles=False)
+    >>> W = Finding("δW of spring", "missing", "lagrange", "newton_euler", 0, 0,
+    ...             bodies=("block", "base"), loads=("spring",), reconciles=False)
+    >>> _one_body_behind([T, W]); T.along, W.probably
+    (('spring',), True)
+    """
+    moved = {}
+    for f in findings:
+        if f.quantity.startswith("T of") and f.reconciles is False and len(f.bodies) == 1:
+            moved[f.bodies[0]] = f
+    for f in findings:
+        if f.quantity.startswith("T of") or f.reconciles is not False or not f.loads:
+            continue
+        bodies = [b for b in f.bodies if b in moved]
+        if len(bodies) == 1:
+            f.probably = True
+            owner = moved[bodies[0]]
+            owner.along = owner.along + tuple(x for x in f.loads if x not in owner.along)
 
 
 def _through_values(problem, direct: str, fr: _Frame, Wd: dict, reactions: set):
@@ -430,7 +488,28 @@ def _undeclared(model, Wd: dict, Rd: dict, Td: dict) -> list:
 def _shown(expr, fr: _Frame) -> sp.Expr:
     """A plain expression in the reference coordinates as functions of time (for notation),
     ``sin^2 + cos^2`` of one angle written as 1 (:func:`tidy`)."""
-    return tidy(from_plain(expr, fr.ref))
+    return _coefficient_factored(tidy(from_plain(expr, fr.ref)))
+
+
+def _coefficient_factored(expr) -> sp.Expr:
+    """A product with its sums factored (``(R^2 m - 2 R m r + m r^2) θ̇^2`` is
+    ``m (R - r)^2 θ̇^2``); display only.
+
+    >>> R, r, m, w = sp.symbols("R r m w")
+    >>> _coefficient_factored((R**2*m - 2*R*m*r + m*r**2) * w**2)
+    m*w**2*(R - r)**2
+    """
+    if not isinstance(expr, sp.Mul):
+        return expr
+    def shorter(a):
+        f = sp.factor(a)
+        f = f.replace(lambda e: e.is_Pow and e.exp.is_even and e.base.is_Add
+                      and e.base.could_extract_minus_sign(), lambda e: (-e.base)**e.exp)
+        return f if sp.count_ops(f) < sp.count_ops(a) else a
+    try:
+        return sp.Mul(*(shorter(a) if a.is_Add else a for a in expr.args))
+    except Exception:  # noqa: BLE001 - display only
+        return expr
 
 
 def tidy(expr) -> sp.Expr:
@@ -461,15 +540,30 @@ def _shown_edits(edits, fr) -> list:
 
 
 def _owner_of(edits, bodies: dict) -> list:
-    """The bodies whose own terms include every edited term's state part and mass."""
+    """The bodies (or loads) whose own value includes every symbol of each edit's change
+    (``right - have``: in a lumped ``T`` written ``M x'^2/2`` where ``(M + m) x'^2/2``
+    belongs, the change ``m x'^2/2`` is the block's, not the base's).
+
+    >>> M, m, x, u = sp.symbols("M m x u")
+    >>> e = TermEdit("differs", M * x**2 / 2, (M + m) * x**2 / 2)
+    >>> _owner_of([e], {"base": M * x**2 / 2, "block": m * (x + u)**2 / 2})
+    ['block']
+    """
     out = []
     for name, T in bodies.items():
-        mass = getattr(T, "_mass", None)
         syms = T.free_symbols
-        if all((e.right if e.right is not None else e.have).free_symbols <= syms | {t}
-               for e in edits):
+        if all(_change(e).free_symbols <= syms | {t} for e in edits):
             out.append(name)
     return out
+
+
+def _change(e) -> sp.Expr:
+    if e.right is None:
+        return as_expr(e.have)
+    if e.have is None:
+        return as_expr(e.right)
+    gap = sp.expand(e.right - e.have)
+    return gap if gap != 0 else as_expr(e.right)
 
 
 def _kinetic(ctx, Tl, Td, keys, names) -> Finding | None:
@@ -478,15 +572,15 @@ def _kinetic(ctx, Tl, Td, keys, names) -> Finding | None:
     if vanishes(have - right):
         return None
     edits = term_edits(have, right, states)
-    body = names
+    quantity = ("T of " + ", ".join(names)) if names else "T of " + ", ".join(keys)
     probably = False
-    if len(names) != 1 and edits:
+    if len(names) != 1 and edits:       # a lumped T: the body the change is in
         owners = _owner_of(edits, {n: Td[n] for n in names})
         if len(owners) == 1:
-            body, probably = tuple(owners), True
-    quantity = ("T of " + ", ".join(body)) if body else "T of " + ", ".join(keys)
+            lump = f" (in `{lname}`'s " + ", ".join(keys) + ")" if keys else ""
+            quantity, probably = f"T of {owners[0]}{lump}", True
     f = Finding(quantity, _kind(edits), lname, dname, _shown(have, fd), _shown(right, fd),
-                _shown_edits(edits or [], fd), tuple(body), (), tuple(keys), probably=probably)
+                _shown_edits(edits or [], fd), tuple(names), (), tuple(keys), probably=probably)
     if reconcile and keys:
         f.reconciles = _reconciles(problem, dname, lg, fd, "T", keys, right)
     return f
@@ -512,7 +606,13 @@ def _work(ctx, Wl, Wd, Vl, keys, loads, owners) -> Finding | None:
         f = Finding("δW of " + what, _kind(edits), lname, dname, _shown(have, fd),
                     _shown(right, fd), _shown_edits(edits or [], fd), (), tuple(loads),
                     tuple(keys))
-    f.bodies = tuple(dict.fromkeys(b for ld in loads for b in owners.get(ld, ())))
+    if len(loads) > 1 and edits:                # a lumped V: the load the change is in
+        mine = _owner_of(edits, {ld: Wd[ld] for ld in loads})
+        if len(mine) == 1:
+            lump = f" (in `{lname}`'s " + ", ".join(keys) + ")" if keys else ""
+            f.quantity = f.quantity.split(" of ")[0] + " of " + mine[0] + lump
+            f.probably = True
+    f.bodies = tuple(dict.fromkeys(b for ld in f.loads for b in owners.get(ld, ())))
     if reconcile and keys:
         f.reconciles = _reconciles(problem, dname, lg, fd, "W", keys, right)
     return f
