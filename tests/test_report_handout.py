@@ -103,7 +103,7 @@ def test_a_difference_of_different_dimensions_is_not_shown():
 def test_constant_curves_and_zero_reactions_are_said_not_drawn(tmp_path):
     chart = trajectory_chart(get("wheel_on_pivot"), tmp_path, 1.0)
     # the caption names them in the page's textbook text (subscripts where unicode has one)
-    assert "Fₓ, F_y, Rₓ, R_y, R_z = 0 along the whole motion (not drawn)" in chart.notes
+    assert "F_x, F_y, R_x, R_y, R_z = 0 along the whole motion (not drawn)" in chart.notes
     assert "F_z stays at 19.62 N (not drawn)" in chart.notes      # m g, see above
     # its steady tilt, phi: the one panel of the motion, drawn flat (never an empty box)
     assert "φ stays at 0.6 rad (drawn flat: nothing on its panel varies)" in chart.notes

@@ -90,13 +90,18 @@ def _split(name: str) -> tuple[str, str]:
     return (m.group(1), m.group(2)) if m else (name, "")
 
 
+_AXES = ("x", "y", "z")
+
+
 def _unicode(name: str, order: int, notation: str) -> str:
     stem, sub = _split(name)
     letter = greek_unicode.get(stem, stem)
     if order and notation == "dots" and order in _DOTS:
         letter += _DOTS[order]
     if sub:
-        sub = ("".join(_SUB[c] for c in sub) if all(_SUB.get(c) for c in sub)
+        # an axis (x, y, z) stays after "_" alike: Unicode has a subscript x but no y or z,
+        # and F_x beside F_y reads better than Fₓ beside F_y
+        sub = ("".join(_SUB[c] for c in sub) if sub not in _AXES and all(_SUB.get(c) for c in sub)
                else "_" + sub)
     primes = "\u2032" * order if order and (notation == "primes" or order not in _DOTS) else ""
     return letter + sub + primes
