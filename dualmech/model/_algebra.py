@@ -271,3 +271,63 @@ def is_zero_held(x, seed: str = "zero test") -> bool:
         if v == v and abs(v) != float("inf") and abs(v) > tiny:
             return False
     return se.expand(x) == 0
+
+
+def is_zero_trig(expr, draws: int = 3) -> bool:
+    """Is ``expr`` (symengine, plain symbols) identically zero?  A structural question (which
+    bodies move together, where a body is pinned), decided the way the comparator decides:
+    each ``sin(a)``, ``cos(a)`` becomes a rational point of the circle (``2u/(1+u^2)``,
+    ``(1-u^2)/(1+u^2)``), then the rational function is evaluated exactly at random integers;
+    a nonzero value is certain, zero at every draw leaves a chance below ``1e-50`` of a false
+    "zero".  Whatever stays irrational counts as nonzero (the conservative answer).
+
+    >>> a, b = se.symbols("a b")
+    >>> is_zero_trig(se.sin(a)**2 * b + se.cos(a)**2 * b - b), is_zero_trig(se.sin(a) - a)
+    (True, False)"""
+    if expr == 0:
+        return True
+    if clearly_nonzero(expr):
+        return False
+    expr = se.expand(expr)
+    if expr == 0:
+        return True
+    rules = {}
+    for f in expr.atoms(se.sin, se.cos):
+        u = se.Symbol("_u_" + str(f.args[0]))
+        c, s = (1 - u**2) / (1 + u**2), 2 * u / (1 + u**2)
+        rules[se.sin(f.args[0])], rules[se.cos(f.args[0])] = s, c
+    expr = expr.xreplace(rules) if rules else expr
+    rng = random.Random(0)
+    for _ in range(draws):
+        point = {x: se.Integer(rng.randrange(-2**60, 2**60)) for x in expr.free_symbols}
+        try:
+            value = se.expand(expr.xreplace(point))
+        except (ZeroDivisionError, RuntimeError):
+            return False
+        if value != 0 or not value.is_Number:
+            return False
+    return True
+
+
+def clearly_nonzero(expr) -> bool:
+    """Whether ``expr`` is far from zero at a random point, in doubles and again in 100-bit
+    arithmetic (1e-15 there cannot come from rounding an expression that is zero everywhere):
+    the common answer of the structural questions, decided before anything is multiplied
+    out.
+
+    >>> a = se.Symbol("a")
+    >>> clearly_nonzero(se.sin(a) + 2), clearly_nonzero(se.sin(a)**2 + se.cos(a)**2 - 1)
+    (True, False)
+    """
+    rng = random.Random(1)
+    free = list(expr.free_symbols)
+    values = [rng.randint(300, 1700) / 1000 for _ in free]
+    for make, tiny in ((se.RealDouble, 1e-6), (lambda v: se.RealMPFR(str(v), 100), 1e-15)):
+        point = {x: make(v) for x, v in zip(free, values)}
+        try:
+            value = complex(expr.xreplace(point))
+        except (RuntimeError, TypeError, ValueError, ZeroDivisionError):
+            return False
+        if not (value == value and abs(value) != float("inf") and abs(value) > tiny):
+            return False
+    return True

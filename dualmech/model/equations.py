@@ -30,8 +30,8 @@ import symengine as se
 import sympy as sp
 
 from dualmech.model._expr import as_expr, refuse_text_in
-from dualmech.model._algebra import (is_zero_held, linear_coefficients, names_of, time_se,
-                                     to_se, to_sp)
+from dualmech.model._algebra import (clearly_nonzero, is_zero_held, is_zero_trig,
+                                     linear_coefficients, names_of, time_se, to_se, to_sp)
 from dualmech.model.kinematics import t
 
 __all__ = ["Constraint", "EquationSet", "ModelError", "Rows", "StateSymbols",
@@ -890,6 +890,12 @@ def vanishes_identically(expr, coordinates=()) -> bool:
     (True, False)
     """
     expr = as_expr(expr)
+    held = to_plain_se(expr, coordinates)
+    if clearly_nonzero(held):
+        return False
+    if is_zero_trig(held):      # exact, at rational points of the circle (symengine)
+        return True
+    # near zero but not shown zero in the rational world (a root, an exponential): sympy
     plain = to_plain(expr, coordinates) if coordinates else expr
     import random
     rng = random.Random(20261127)
