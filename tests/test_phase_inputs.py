@@ -28,7 +28,7 @@ from scipy.integrate import solve_ivp
 
 from dualmech import problems
 from dualmech.cli.main import main
-from dualmech.numeric.phases import simulate_phases
+from dualmech.numeric.phases import phase_chart, phase_series, simulate_phases
 
 HERE = Path(__file__).resolve().parent / "corpus" / "teacher_problems"
 PULLED = f"{HERE / 'pushed_ladder.py'}:PulledWallLadder"
@@ -156,3 +156,26 @@ def test_cli_phases_default_tolerances_stay(capsys, tmp_path):
     assert status == 0 and (doc["rtol"], doc["atol"]) == (1e-10, 1e-12)
     status, out, _ = simulate(capsys, "--duration", "1.0", "--json")
     assert (json.loads(out)["rtol"], json.loads(out)["atol"]) == (1e-8, 1e-10)
+
+
+def test_the_chart_shows_the_input_the_units_and_why_the_run_ended(tmp_path):
+    run = simulate_phases(problems.load(PULLED), (0, 3.0), samples=301)
+    series = phase_series(run)
+    t, f = series["F"]
+    assert np.isnan(t).sum() == 1                            # in both phases, split at the switch
+    assert np.nanmax(np.abs(f - rope(t))) < 1e-12            # the absolute time's rope
+    wall, free = run.phases
+    assert wall.units == {"theta": "rad", "N_w": "N", "N_f": "N", "F": "N"}
+    assert free.units == {"x": "m", "theta": "rad", "N_f": "N", "F": "N"}
+    assert wall.title == "Ladder on a smooth wall, its foot pulled"
+    # the free ladder's top reaches the floor: the run ends at the angle's declared domain
+    assert run.end == "theta leaves its declared domain (0, 1.571) (ladder from the wall)"
+    assert free.trajectory.q[1, -1] == pytest.approx(np.pi / 2, abs=1e-9)
+    png = Path(phase_chart(run, tmp_path / "pulled.png"))
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_a_run_with_no_next_phase_says_so_in_few_words():
+    run = simulate_phases(problems.get("toy_car"), (0, 3), y0=[0.3, 2.4, 0.0, 0.0])
+    assert run.end.startswith("F_r is negative from the start (the car leaves the track")
+    assert run.end.endswith("`toy_car` declares no next phase for it")

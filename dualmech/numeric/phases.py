@@ -35,9 +35,11 @@ from dualmech.model.phases import next_problem
 from dualmech.numeric.contacts import _range_events, watch
 from dualmech.numeric.cvode import integrate
 from dualmech.numeric.inputs import declared_inputs, input_functions
+from dualmech.numeric.phase_chart import phase_chart, phase_series
 from dualmech.numeric.model import NumericModel, SingularityError
 from dualmech.numeric.simulation import (Trajectory, check_t_span, default_initial_state,
                                          problem_parameters, reactions_along, refuse_static)
+from dualmech.numeric.units import unit
 
 __all__ = ["PhaseRun", "PhasedRun", "Switch", "simulate_phases", "map_state", "phase_series",
            "phase_chart", "MAX_PHASES"]
@@ -63,10 +65,15 @@ class Switch:
 
 @dataclass
 class PhaseRun:
-    """One phase of a run: its problem's name, its trajectory (reactions included)."""
+    """One phase of a run: its problem's name, its trajectory (reactions included), its
+    problem's ``title``, ``units`` (``{coordinate, reaction or input: unit}``, e.g.
+    ``"rad"``) and the given ``inputs``' values at the trajectory's times."""
 
     problem: str
     trajectory: Trajectory
+    title: str = ""
+    units: dict = field(default_factory=dict)
+    inputs: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -78,7 +85,8 @@ class PhasedRun:
     the CPU seconds of the integrations alone (``cpu``: each phase's watched run, which also
     gives its samples; deriving and compiling come before the clocks start); ``open_contact``:
     the :class:`~dualmech.numeric.contacts.ContactBreak` that ended the run where no next
-    phase is declared (else ``None``)."""
+    phase is declared (else ``None``); ``end``: what ended the run early, in a few words
+    (``""``: it reached the end of the span)."""
 
     phases: list = field(default_factory=list)
     switches: list = field(default_factory=list)
@@ -87,6 +95,7 @@ class PhasedRun:
     fallback: str = ""
     cpu: float = 0.0
     open_contact: object = None
+    end: str = ""
 
     def to_dict(self, samples: bool = False) -> dict:
         """The run as plain data: ``phases`` (each its ``problem``, ``coordinates`` -- its
@@ -191,9 +200,10 @@ def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None 
         stop = report.stopped if brk is None else None
         end = brk.time if brk is not None else stop[1] if stop is not None else t1
         if end > t0:
-            run.phases.append(PhaseRun(problem.name, _trajectory(
-                problem, report, (t0, end), y0, values, here, how, run)))
+            run.phases.append(_phase_run(problem, _trajectory(
+                problem, report, (t0, end), y0, values, here, how, run), here))
         if stop is not None:
+            run.end = stop[0]
             run.ended = (f"t = {stop[1]:.6g} s: {stop[0]} in `{problem.name}`: the model "
                          "no longer describes the scene there (a phase follows only a "
                          "one-sided reaction reaching zero)")
@@ -202,8 +212,7 @@ def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None 
             return run
         phase = (getattr(problem, "phases", None) or {}).get(brk.reaction)
         if phase is None:
-            run.ended, run.open_contact = str(brk), brk
-            return run
+            return _open_end(run, problem, brk)
         nxt = nexts[id(phase)]
         run.switches.append(Switch(brk.time, brk.reaction, problem.name, nxt.name,
                                    phase.why or brk.meaning))
@@ -211,7 +220,16 @@ def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None 
         named.update({s.name: v for s, v in values.items()})
         drive.update({s.name: h for s, h in here.items()})
         problem, t0 = nxt, brk.time
-    run.ended = f"stopped after {MAX_PHASES} phases (does the declaration loop?)"
+    run.ended = run.end = f"stopped after {MAX_PHASES} phases (does the declaration loop?)"
+    return run
+
+
+def _open_end(run: PhasedRun, problem, brk) -> PhasedRun:
+    """``run`` ended by the one-sided reaction ``brk`` for which no next phase is declared."""
+    run.ended, run.open_contact = str(brk), brk
+    sign = "is negative from the start" if brk.at_start else "reaches zero"
+    run.end = (f"{brk.reaction} {sign} ({brk.meaning}) and `{problem.name}` declares no "
+               "next phase for it")
     return run
 
 
@@ -266,6 +284,15 @@ def _phase_grid(grid, t0: float, t1: float) -> np.ndarray:
     return np.concatenate([[t0], grid[(grid > t0) & (grid <= t1)]])
 
 
+def _phase_run(problem, traj: Trajectory, inputs: Mapping) -> PhaseRun:
+    """The phase's :class:`PhaseRun`: its trajectory, title, units and inputs' values."""
+    units = {c.name: unit(c.dimension) for c in problem.all_coordinates()}
+    units.update({r.name: unit(r.dimension) for r in problem.reactions})
+    units.update({x.name: unit(x.dimension) for x in declared_inputs(problem).values()})
+    driven = {s.name: np.array([h(float(t)) for t in traj.t]) for s, h in inputs.items()}
+    return PhaseRun(problem.name, traj, getattr(problem, "title", "") or "", units, driven)
+
+
 def _trajectory(problem, report, span, y0, values, inputs, how: _How,
                 run: PhasedRun) -> Trajectory:
     """The phase's samples with its reactions: the watched run's own (the last one the state
@@ -287,59 +314,3 @@ def _trajectory(problem, report, span, y0, values, inputs, how: _How,
                       [q.func.__name__ for q in ref.coordinates])
     traj.reactions = reactions_along(problem, traj, values, inputs)
     return traj
-
-
-def phase_series(run: PhasedRun) -> dict:
-    """``{name: (times, values)}`` of every coordinate, rate (``name'``) and reaction over the
-    phases that have it (NaN between them), with ``"switches"``: the switch times."""
-    out: dict = {}
-    for ph in run.phases:
-        tr = ph.trajectory
-        rows = {n: tr.q[i] for i, n in enumerate(tr.coordinate_names)}
-        rows.update({f"{n}'": tr.qd[i] for i, n in enumerate(tr.coordinate_names)})
-        rows.update(tr.reactions)
-        for name, values in rows.items():
-            ts, vs = out.setdefault(name, ([], []))
-            if ts:
-                ts.append(np.nan)
-                vs.append(np.nan)
-            ts.extend(tr.t.tolist())
-            vs.extend(np.asarray(values, dtype=float).tolist())
-    series = {k: (np.array(t), np.array(v)) for k, (t, v) in out.items()}
-    series["switches"] = [s.time for s in run.switches]
-    return series
-
-
-def phase_chart(run: PhasedRun, path, title: str = "") -> str:
-    """Draw the coordinates and the reactions of every phase, each switch marked by a dashed
-    line and what happened; write the PNG to ``path`` and return its path."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    series = phase_series(run)
-    reactions = {k for ph in run.phases for k in ph.trajectory.reactions}
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
-    for name, tv in series.items():
-        if name == "switches" or name.endswith("'"):
-            continue
-        (bottom if name in reactions else top).plot(*tv, label=name)
-    for s in run.switches:
-        for ax in (top, bottom):
-            ax.axvline(s.time, color="k", linestyle="--", linewidth=1)
-        top.annotate(f" {s.reaction} = 0", (s.time, 0.97), xycoords=("data", "axes fraction"),
-                     va="top", ha="left", fontsize=8)
-    top.set_ylabel("coordinates")
-    bottom.set_ylabel("reactions")
-    bottom.set_xlabel("t (s)")
-    top.legend(loc="best", fontsize=8)
-    bottom.legend(loc="best", fontsize=8)
-    whys = "; ".join([f"t = {s.time:.3g} s: {s.why}" for s in run.switches]
-                     + ([f"ends at t = {run.phases[-1].trajectory.t[-1]:.3g} s: the model "
-                         "leaves its domain"] if run.ended and "domain" in run.ended else []))
-    top.set_title(title or " -> ".join(ph.problem for ph in run.phases), fontsize=10)
-    if whys:
-        bottom.set_title(whys, fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return str(path)
