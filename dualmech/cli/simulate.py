@@ -41,9 +41,13 @@ start and end time, initial and final state) and when it switched (``switches``)
 ``--samples`` the samples cover every phase (``samples``: ``t``, ``phase`` -- the index of
 the phase whose coordinates a row is in -- and ``states``).  ``--single-phase`` runs the
 first phase alone, as for a problem without phases: a reaction changing sign is then only
-warned about (``contact``).  ``--phases PNG`` runs the phases too and draws them: it prints
+warned about (``contact``).  A problem driven by given inputs drives every phase with the
+same histories (``--input``, else the declared defaults), time running on across each switch;
+a next phase whose problem does not declare them is refused (exit 2).  ``--phases PNG`` runs
+the phases too and draws them (:func:`~dualmech.numeric.phase_chart.phase_chart`): it prints
 the switches, ``method`` (the integrator that ran) and ``cpu_seconds`` (its integrations
-alone), at rtol 1e-10.  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
+alone), by default at rtol 1e-10 and atol 1e-12 (``--rtol``/``--atol`` override them; the
+JSON's ``rtol`` and ``atol`` say which ran).  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
 (a singular mass matrix, the declared singular set, too much work), 2 a usage error or a
 problem that cannot be built.
 
