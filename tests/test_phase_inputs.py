@@ -179,3 +179,14 @@ def test_a_run_with_no_next_phase_says_so_in_few_words():
     run = simulate_phases(problems.get("toy_car"), (0, 3), y0=[0.3, 2.4, 0.0, 0.0])
     assert run.end.startswith("F_r is negative from the start (the car leaves the track")
     assert run.end.endswith("`toy_car` declares no next phase for it")
+
+
+def test_chart_draws_the_driven_phases_beside_the_work_precision_diagrams(capsys, tmp_path):
+    status = main(["chart", PULLED, "--out", str(tmp_path), "--quick", "--repeats", "1",
+                   "--duration", "1.0", "--json", "--jobs", "1"])
+    doc = json.loads(capsys.readouterr().out)
+    assert status == 0 and doc["phases"] == ["pulled_wall_ladder", "pulled_free_ladder"]
+    assert doc["switches"][0]["time"] == pytest.approx(hand_switch()[0], rel=1e-7)
+    png = Path(doc["phases_chart"])
+    assert png.name == "pulled_wall_ladder_phases.png" and str(png) in doc["files"]
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
