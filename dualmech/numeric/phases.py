@@ -28,7 +28,6 @@ from dataclasses import dataclass, field
 from typing import Mapping
 
 import numpy as np
-import sympy as sp
 
 from dualmech.model._expr import as_expr
 from dualmech.model.phases import next_problem
