@@ -41,9 +41,13 @@ start and end time, initial and final state) and when it switched (``switches``)
 ``--samples`` the samples cover every phase (``samples``: ``t``, ``phase`` -- the index of
 the phase whose coordinates a row is in -- and ``states``).  ``--single-phase`` runs the
 first phase alone, as for a problem without phases: a reaction changing sign is then only
-warned about (``contact``).  ``--phases PNG`` runs the phases too and draws them: it prints
+warned about (``contact``).  A problem driven by given inputs drives every phase with the
+same histories (``--input``, else the declared defaults), time running on across each switch;
+a next phase whose problem does not declare them is refused (exit 2).  ``--phases PNG`` runs
+the phases too and draws them (:func:`~dualmech.numeric.phase_chart.phase_chart`): it prints
 the switches, ``method`` (the integrator that ran) and ``cpu_seconds`` (its integrations
-alone), at rtol 1e-10.  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
+alone), by default at rtol 1e-10 and atol 1e-12 (``--rtol``/``--atol`` override them; the
+JSON's ``rtol`` and ``atol`` say which ran).  Exit status (:mod:`dualmech.cli.errors`): 0 done, 1 the integration stopped early
 (a singular mass matrix, the declared singular set, too much work), 2 a usage error or a
 problem that cannot be built.
 
@@ -70,6 +74,9 @@ __all__ = ["register", "summary", "phased_summary"]
 #: the integration stopped early (the same status as a disagreement: the job was not done)
 STOPPED = DISAGREE
 
+#: the default ``(rtol, atol)``: of a run, and of ``--phases PNG`` (a chart's switch times)
+TOLERANCES = ((1e-8, 1e-10), (1e-10, 1e-12))
+
 
 def register(subparsers) -> None:
     """Add ``simulate`` to ``subparsers`` (from ``add_subparsers``; nothing heavy is imported
@@ -84,10 +91,12 @@ def register(subparsers) -> None:
                    help="the problem: a catalogue name, path.py[:Class] or module:Class")
     p.add_argument("--duration", metavar="T", type=positive_number, default=10.0,
                    help="simulated seconds (default: %(default)s)")
-    p.add_argument("--rtol", metavar="R", type=_rtol, default=1e-8,
-                   help="relative tolerance (default: %(default)s)")
-    p.add_argument("--atol", metavar="A", type=positive_number, default=1e-10,
-                   help="absolute tolerance (default: %(default)s)")
+    p.add_argument("--rtol", metavar="R", type=_rtol, default=None,
+                   help=f"relative tolerance (default: {TOLERANCES[0][0]:g}; with --phases "
+                        f"{TOLERANCES[1][0]:g})")
+    p.add_argument("--atol", metavar="A", type=positive_number, default=None,
+                   help=f"absolute tolerance (default: {TOLERANCES[0][1]:g}; with --phases "
+                        f"{TOLERANCES[1][1]:g})")
     p.add_argument("--method", metavar="M", default="auto",
                    help="auto (default: CVODE-Adams, else DOP853), CVODE-Adams, CVODE-BDF, "
                         "or scipy's DOP853, RK45, Radau, BDF, LSODA on the generated "
@@ -156,12 +165,15 @@ def _params(pairs) -> dict:
 
 def _phases(problem, args) -> int:
     """``--phases PNG``: the run across the declared contact phases, its switches, a chart."""
+    from dualmech.numeric.inputs import describe
     from dualmech.numeric.phases import phase_chart, simulate_phases
-    try:
-        run = simulate_phases(problem, (0.0, args.duration), params=_params(args.param),
-                              samples=args.samples or 400, method=args.method)
-    except ValueError as exc:
-        raise UsageError(str(exc).replace("`params`", "`--param`")) from None
+    rtol, atol = _tolerances(args, TOLERANCES[1])
+    with _usage():
+        params = _params(args.param)
+        inputs = _inputs(problem, params, args.input)
+        run = simulate_phases(problem, (0.0, args.duration), params=params,
+                              samples=args.samples or 400, method=args.method, rtol=rtol,
+                              atol=atol, inputs=inputs)
     try:
         path = phase_chart(run, args.phases)
     except OSError as exc:
@@ -170,7 +182,8 @@ def _phases(problem, args) -> int:
     doc = {"name": problem.name, "phases": [ph.problem for ph in run.phases],
            "switches": [vars(s) for s in run.switches], "ended": run.ended, "chart": path,
            "method": run.method or None, "cpu_seconds": run.cpu if run.method else None,
-           "fallback": run.fallback or None}
+           "fallback": run.fallback or None, "rtol": rtol, "atol": atol,
+           "inputs": describe(problem, inputs)}
     if run.fallback:
         print(f"dualmech simulate: CVODE cannot run here ({run.fallback}); fell back to "
               "scipy on the generated right-hand side.", file=sys.stderr)
@@ -179,7 +192,7 @@ def _phases(problem, args) -> int:
     else:
         print(" -> ".join(doc["phases"]) or "no phase ran")
         if run.method:
-            print(f"{run.method}, {run.cpu:.4g} s CPU")
+            print(f"{run.method}, rtol {rtol:g}, atol {atol:g}, {run.cpu:.4g} s CPU")
         print("\n".join(str(s) for s in run.switches))
         print(run.ended or f"reached t = {args.duration:g} s")
         print(f"chart: {path}")
@@ -188,14 +201,16 @@ def _phases(problem, args) -> int:
 
 def phased_summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: float = 1e-10,
                    method: str = "auto", params: dict | None = None,
-                   samples: int | None = None) -> dict:
+                   samples: int | None = None, inputs: dict | None = None) -> dict:
     """Integrate ``problem`` across the contact phases it declares over ``[0, duration]``
     (:func:`~dualmech.numeric.phases.simulate_phases`): what plain ``dualmech simulate
     --json`` prints for such a problem -- :func:`summary`'s keys (``coordinates`` and
     ``initial_state`` of the first phase, ``final_state`` of the last, in its
     ``final_coordinates``; ``None`` when the run ended early, ``message`` saying why) and
     :meth:`PhasedRun.to_dict <dualmech.numeric.phases.PhasedRun.to_dict>`'s ``phases``,
-    ``switches``, ``ended`` (and ``samples``).
+    ``switches``, ``ended`` (and ``samples``).  ``inputs``: the given inputs' histories by
+    name (else their declared defaults), driving every phase (``inputs`` in the result says
+    which, in words).
 
     Example
     -------
@@ -205,6 +220,7 @@ def phased_summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: fl
     (['simple_pendulum'], [], 1.0)
     """
     from dualmech.numeric import SingularityError
+    from dualmech.numeric.inputs import describe
     from dualmech.numeric.phases import simulate_phases
     from dualmech.numeric.simulation import default_initial_state, problem_parameters
     values = problem_parameters(problem, params)
@@ -217,11 +233,11 @@ def phased_summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: fl
            "final_coordinates": None, "t_final": None, "duration": duration,
            "method": method, "cpu_seconds": None, "steps": None, "rhs_evaluations": None,
            "rtol": rtol, "atol": atol, "success": False, "message": "", "fallback": None,
-           "inputs": {}, "inputs_in_python": None, "left_declared": [], "contact": None,
-           "phases": [], "switches": [], "ended": ""}
+           "inputs": describe(problem, inputs), "inputs_in_python": None,
+           "left_declared": [], "contact": None, "phases": [], "switches": [], "ended": ""}
     try:
         run = simulate_phases(problem, (0.0, duration), params=params, samples=samples or 2,
-                              rtol=rtol, atol=atol, method=method)
+                              rtol=rtol, atol=atol, method=method, inputs=inputs)
     except SingularityError as exc:
         out["message"] = str(exc)
         return out
@@ -242,11 +258,11 @@ def phased_summary(problem, duration: float = 10.0, rtol: float = 1e-8, atol: fl
 
 def _phased(problem, args) -> int:
     """Plain ``simulate`` of a problem that declares contact phases: across them."""
-    try:
-        result = phased_summary(problem, args.duration, args.rtol, args.atol, args.method,
-                                _params(args.param), args.samples)
-    except ValueError as exc:  # a misspelt or out-of-range --param
-        raise UsageError(str(exc).replace("`params`", "`--param`")) from None
+    rtol, atol = _tolerances(args, TOLERANCES[0])
+    with _usage():
+        params = _params(args.param)
+        result = phased_summary(problem, args.duration, rtol, atol, args.method, params,
+                                args.samples, _inputs(problem, params, args.input))
     if result["fallback"]:
         print(f"dualmech simulate: CVODE cannot run here ({result['fallback']}); fell back to "
               "scipy on the generated right-hand side.", file=sys.stderr)
@@ -259,9 +275,11 @@ def _phased(problem, args) -> int:
     if result["cpu_seconds"] is None:   # nothing integrated: the line above says why
         return status
     print(f"{' -> '.join(ph['problem'] for ph in result['phases'])}: {result['method']}, "
-          f"t = 0 .. {result['t_final']:.6g} s, rtol {args.rtol:g}, atol {args.atol:g}: "
+          f"t = 0 .. {result['t_final']:.6g} s, rtol {rtol:g}, atol {atol:g}: "
           f"{result['cpu_seconds']:.4g} s CPU")
     print("parameters: " + ", ".join(f"{k} = {v:g}" for k, v in result["parameters"].items()))
+    if result["inputs"]:
+        print("inputs: " + ", ".join(f"{k} = {v}" for k, v in result["inputs"].items()))
     for i, ph in enumerate(result["phases"]):
         if i:
             print("switch: " + str(_switch(result["switches"][i - 1])))
@@ -272,6 +290,30 @@ def _phased(problem, args) -> int:
         for c, a, b in zip(ph["coordinates"], ph["initial_state"], ph["final_state"]):
             print(f"  {c.ljust(width)}  {a:22.15g}  {b:22.15g}")
     return status
+
+
+def _tolerances(args, default: tuple) -> tuple[float, float]:
+    """``(rtol, atol)`` of the run: those given, else ``default``."""
+    return (args.rtol if args.rtol is not None else default[0],
+            args.atol if args.atol is not None else default[1])
+
+
+class _usage:
+    """Turn a bad ``--param`` or ``--input`` (a ``ValueError`` naming ``params`` or
+    ``inputs``, or an input) into a :class:`UsageError` naming the option."""
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, exc, tb):
+        if kind is None or not issubclass(kind, ValueError) or isinstance(exc, UsageError):
+            return False
+        text = str(exc)
+        if "`params`" in text:
+            raise UsageError(text.replace("`params`", "`--param`")) from None
+        if "`inputs`" in text or "input" in text.split(":")[0]:
+            raise UsageError(text.replace("`inputs`", "`--input`")) from None
+        return False
 
 
 def _switch(doc: dict):
@@ -383,25 +425,14 @@ def _simulate(args) -> int:
         with about(problem):
             return _phases(problem, args)
     if getattr(problem, "phases", None) and not args.single_phase:
-        if getattr(problem, "inputs", None):
-            print("dualmech simulate: the declared contact phases are not followed for a "
-                  "problem driven by given inputs; the first phase runs alone.",
-                  file=sys.stderr)
-        elif not args.input:        # an --input it does not declare: refused below
-            with about(problem):
-                return _phased(problem, args)
-    try:
         with about(problem):
-            params = _params(args.param)
-            inputs = _inputs(problem, params, args.input)
-            result = summary(problem, args.duration, args.rtol, args.atol, args.method,
-                             params, args.samples, inputs)
-    except ValueError as exc:  # a misspelt or out-of-range --param, a missing --input
-        if "`params`" in str(exc):
-            raise UsageError(str(exc).replace("`params`", "`--param`")) from None
-        if "`inputs`" in str(exc) or "input" in str(exc).split(":")[0]:
-            raise UsageError(str(exc).replace("`inputs`", "`--input`")) from None
-        raise
+            return _phased(problem, args)
+    rtol, atol = _tolerances(args, TOLERANCES[0])
+    with _usage(), about(problem):     # a misspelt or out-of-range --param, a missing --input
+        params = _params(args.param)
+        inputs = _inputs(problem, params, args.input)
+        result = summary(problem, args.duration, rtol, atol, args.method, params,
+                         args.samples, inputs)
     if result["fallback"]:
         print(f"dualmech simulate: CVODE cannot run here ({result['fallback']}); fell back to "
               "scipy DOP853 on the generated right-hand side.", file=sys.stderr)
@@ -419,7 +450,7 @@ def _simulate(args) -> int:
     if result["cpu_seconds"] is None:  # stopped before any sample: the line above says why
         return status
     print(f"{result['name']}: {result['method']}, t = 0 .. {result['t_final'] or 0:.6g} s, "
-          f"rtol {args.rtol:g}, atol {args.atol:g}: "
+          f"rtol {rtol:g}, atol {atol:g}: "
           + (f"{result['steps']} steps, " if result["steps"] is not None else "")
           + f"{result['rhs_evaluations']} right-hand sides, {result['cpu_seconds'] or 0:.4g} s "
           "CPU")

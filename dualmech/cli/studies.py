@@ -239,11 +239,14 @@ def _phase_names(run) -> list:
 
 
 def _phase_chart(problem, duration: float, out: Path):
-    """For a problem that declares contact phases (``Problem.phases``) and no given inputs:
-    its motion across them over ``duration`` drawn to ``out/NAME_phases.png``, ``(run,
-    path)``; else None.  (The work-precision diagrams compare integrators on one model, so
-    their scene ends at the first switch.)"""
-    if not getattr(problem, "phases", None) or getattr(problem, "inputs", None):
+    """For a problem that declares contact phases (``Problem.phases``) and a default history
+    for each given input it has (every phase driven by them): its motion across them over
+    ``duration`` drawn to ``out/NAME_phases.png``, ``(run, path)``; else None.  (The
+    work-precision diagrams compare integrators on one model, so their scene ends at the
+    first switch.)"""
+    from dualmech.numeric.inputs import declared_inputs
+    if not getattr(problem, "phases", None) or any(
+            getattr(x, "history", None) is None for x in declared_inputs(problem).values()):
         return None
     from dualmech.numeric.phases import phase_chart, simulate_phases
     run = simulate_phases(problem, (0.0, duration), samples=400)

@@ -76,7 +76,10 @@ class ContactReport:
     before it (``minimum = {name: (value, time)}``); the integrator that ran (``method``:
     ``"CVODE-Adams"``, ``"CVODE-BDF"`` or a scipy method; ``""`` when nothing was integrated),
     its CPU seconds alone (``cpu``) and why the compiled route could not run
-    (``fallback``, ``""`` when it did or was not asked for)."""
+    (``fallback``, ``""`` when it did or was not asked for); with ``t_eval``, the run's own
+    samples: ``t`` and ``y`` (states in the columns), the asked times before the stop, then
+    the state where it stopped -- the very numbers of :attr:`ContactBreak.y` (``None``
+    without ``t_eval``, or when nothing was integrated)."""
 
     watched: dict
     t_end: float
@@ -86,6 +89,8 @@ class ContactReport:
     method: str = ""
     cpu: float = 0.0
     fallback: str = ""
+    t: np.ndarray | None = None
+    y: np.ndarray | None = None
 
     def __str__(self) -> str:
         if not self.watched:
@@ -98,11 +103,12 @@ class ContactReport:
         return f"every one-sided contact holds up to t = {self.t_end:.6g} s: {mins}"
 
 
-def _reaction_functions(problem, values, names) -> dict:
-    """``{name: (numeric model, row)}`` from the direct models in the reference coordinates."""
+def _reaction_functions(problem, values, names, inputs=None) -> dict:
+    """``{name: (numeric model, row)}`` from the direct models in the reference coordinates
+    (``inputs``: the given inputs' histories, as :class:`NumericModel` binds them)."""
     out = {}
     for m in direct_models(problem, square=True):
-        nm = NumericModel(m, values)
+        nm = NumericModel(m, values, inputs=inputs)
         for i, u in enumerate(m.unknowns):
             if u.name in names and u.name not in out:
                 out[u.name] = (nm, m.n + i)
@@ -118,7 +124,8 @@ def _value(force, t, y) -> np.ndarray:
 
 def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = None,
           rtol: float = 1e-9, atol: float = 1e-11, method: str = "auto",
-          extra_events: Sequence = (), rhs=None) -> ContactReport:
+          extra_events: Sequence = (), rhs=None, inputs: Mapping | None = None,
+          t_eval=None) -> ContactReport:
     """Integrate the reference model until a one-sided reaction changes sign (or the end).
 
     ``method="auto"`` runs CVODE on the generated C (:func:`~dualmech.numeric.cvode.
@@ -133,6 +140,10 @@ def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = No
     model's own system (a reference model that is a DAE: its index-1 form; scipy's route).
     ``ContactReport.minimum`` is each force's smallest value at 400 times evenly spread over
     the run (the compiled route: over ``t_span``, up to the break, and at the break).
+    ``inputs``: ``{symbol: history}`` of the problem's given inputs
+    (:func:`~dualmech.numeric.inputs.input_functions`), bound in the run and in the reactions
+    alike; ``t_eval``: increasing times in ``t_span`` at which the run itself is sampled
+    (``ContactReport.t`` and ``y``).
     """
     if method not in METHODS:
         raise ValueError(f"`method` must be one of {', '.join(METHODS)}, got {method!r}.")
@@ -144,7 +155,7 @@ def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = No
         q0, qd0 = default_initial_state(problem)
         y0 = q0 + qd0
     y0 = np.asarray(y0, dtype=float)
-    forces = _reaction_functions(problem, values, set(watched))
+    forces = _reaction_functions(problem, values, set(watched), inputs)
     names = [k for k in watched if k in forces]
     report = ContactReport({k: watched[k] for k in names}, float(t_span[1]))
     coords = [q.func.__name__ for q in ref.coordinates]
@@ -158,16 +169,18 @@ def watch(problem, t_span: Sequence[float], y0=None, params: Mapping | None = No
             return report
     if not names and not extra_events:
         return report
+    model = None if rhs is not None else NumericModel(ref, values, inputs=inputs)
+    run = (model, None if t_eval is None else np.asarray(t_eval, dtype=float))
     compiled, report.fallback = _route(method, rhs, extra_events)
     if compiled:
         try:
-            return _watch_cvode(problem, report, forces, coords, t_span, y0, values,
+            return _watch_cvode(problem, report, forces, coords, t_span, y0, run,
                                 extra_events, rtol, atol, compiled)
         except CvodeUnavailable as exc:
             if method != "auto":
                 raise
             report.fallback = str(exc)
-    return _watch_scipy(problem, report, forces, coords, t_span, y0, values, extra_events,
+    return _watch_scipy(problem, report, forces, coords, t_span, y0, run, extra_events,
                         rtol, atol, FALLBACK if method == "auto" else method, rhs)
 
 
@@ -187,16 +200,18 @@ def _route(method: str, rhs, extra_events) -> tuple[str | None, str]:
     return (None, reason) if reason else (CVODE_METHODS[0], "")
 
 
-def _watch_scipy(problem, report, forces, coords, t_span, y0, values, extra_events, rtol,
+def _watch_scipy(problem, report, forces, coords, t_span, y0, run, extra_events, rtol,
                  atol, method, rhs) -> ContactReport:
-    """:func:`watch` on :func:`scipy.integrate.solve_ivp`, the events in Python."""
+    """:func:`watch` on :func:`scipy.integrate.solve_ivp`, the events in Python (``run``:
+    the reference model and the sample times, or ``None``)."""
+    model, t_eval = run
     names, n = list(report.watched), len(coords)
     events = []
     for k in names:
         ev = (lambda t, y, f=forces[k]: float(_value(f, t, y)))
         ev.terminal, ev.direction = True, -1
         events.append(ev)
-    rhs = rhs or NumericModel(problem.model(problem.reference), values).rhs
+    rhs = rhs or model.rhs
     start = time.process_time()
     sol = solve_ivp(rhs, tuple(t_span), y0, method=method, rtol=rtol, atol=atol,
                     events=events + list(extra_events), dense_output=True)
@@ -213,17 +228,25 @@ def _watch_scipy(problem, report, forces, coords, t_span, y0, values, extra_even
     for ev, times in zip(extra_events, sol.t_events[len(names):]):
         if len(times) and (report.stopped is None or times[0] < report.stopped[1]):
             report.stopped = (ev.what, float(times[0]))
+    if t_eval is not None:
+        before = t_eval[t_eval < report.t_end]
+        end = np.asarray(report.first.y if report.first is not None else sol.y[:, -1])
+        report.t = np.append(before, report.t_end)
+        report.y = np.column_stack([sol.sol(before).reshape(len(y0), before.size), end])
     return report
 
 
-def _watch_cvode(problem, report, forces, coords, t_span, y0, values, bounds, rtol, atol,
+def _watch_cvode(problem, report, forces, coords, t_span, y0, run, bounds, rtol, atol,
                  method) -> ContactReport:
-    """:func:`watch` on CVODE: the reactions and bounds as event functions in C."""
+    """:func:`watch` on CVODE: the reactions and bounds as event functions in C (``run``:
+    the reference model and the sample times, or ``None``)."""
     names, n = list(report.watched), len(coords)
-    model = NumericModel(problem.model(problem.reference), values)
+    model, t_eval = run
     stops = Stops(model, reactions=[ReactionEvent(k, *forces[k]) for k in names],
                   bounds=bounds)
     grid = np.linspace(float(t_span[0]), float(t_span[1]), 400)
+    if t_eval is not None:
+        grid = np.union1d(grid, t_eval)
     run, hit = integrate_until(model, t_span, y0, stops, t_eval=grid, rtol=rtol, atol=atol,
                                method=method)
     report.cpu, report.method = run.cpu, method
@@ -241,6 +264,10 @@ def _watch_cvode(problem, report, forces, coords, t_span, y0, values, bounds, rt
         else:
             report.stopped = (bounds[hit.index - len(names)].what, hit.time)
     _minima(report, forces, times, states)
+    if t_eval is not None:
+        mine = np.isin(times, t_eval)
+        mine[-1] = True                     # where the run stopped (or the end of the span)
+        report.t, report.y = times[mine], states[:, mine]
     return report
 
 

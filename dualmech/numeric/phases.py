@@ -8,8 +8,11 @@ mapped across -- each next coordinate from its declared expression, each rate by
 declared the run ends there and says why.  Each phase runs on CVODE with the reactions and
 the declared bounds as event functions in C where it can (:func:`~dualmech.numeric.contacts.
 watch`'s ``method="auto"``), else on scipy; :attr:`PhasedRun.method` says which ran and
-:attr:`PhasedRun.cpu` how long the integrations took.  :func:`phase_series` gives what a chart of the run
-shows (each coordinate and reaction over every phase that has it, and the switches);
+:attr:`PhasedRun.cpu` how long the integrations took; the samples of a phase come from
+the run that watched it, so its last one is the state carried across.  A problem driven by
+given inputs (``Problem.inputs``) drives every phase with the same histories, time running on
+across the switches; each next problem must declare those inputs.  :func:`phase_series` gives
+what a chart of the run shows (each coordinate and reaction over every phase that has it, and the switches);
 :func:`phase_chart` draws it, the switches marked.
 
 Example
@@ -25,15 +28,17 @@ from dataclasses import dataclass, field
 from typing import Mapping
 
 import numpy as np
-import sympy as sp
 
 from dualmech.model._expr import as_expr
 from dualmech.model.phases import next_problem
 from dualmech.numeric.contacts import _range_events, watch
 from dualmech.numeric.cvode import integrate
+from dualmech.numeric.inputs import declared_inputs, input_functions
+from dualmech.numeric.phase_chart import phase_chart, phase_series
 from dualmech.numeric.model import NumericModel, SingularityError
 from dualmech.numeric.simulation import (Trajectory, check_t_span, default_initial_state,
                                          problem_parameters, reactions_along, refuse_static)
+from dualmech.numeric.units import unit
 
 __all__ = ["PhaseRun", "PhasedRun", "Switch", "simulate_phases", "map_state", "phase_series",
            "phase_chart", "MAX_PHASES"]
@@ -59,10 +64,15 @@ class Switch:
 
 @dataclass
 class PhaseRun:
-    """One phase of a run: its problem's name, its trajectory (reactions included)."""
+    """One phase of a run: its problem's name, its trajectory (reactions included), its
+    problem's ``title``, ``units`` (``{coordinate, reaction or input: unit}``, e.g.
+    ``"rad"``) and the given ``inputs``' values at the trajectory's times."""
 
     problem: str
     trajectory: Trajectory
+    title: str = ""
+    units: dict = field(default_factory=dict)
+    inputs: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -71,10 +81,11 @@ class PhasedRun:
     and why the last one ends (``""``: it reached the end of the span); the integrator that
     ran (``method``, e.g. ``"CVODE-Adams"``, or scipy's ``"DOP853"``; several joined by
     ``", "`` if the phases differ), why the compiled route could not run (``fallback``) and
-    the CPU seconds of the integrations alone (``cpu``: each phase's watched run and its
-    sampled run; deriving and compiling come before the clocks start); ``open_contact``:
+    the CPU seconds of the integrations alone (``cpu``: each phase's watched run, which also
+    gives its samples; deriving and compiling come before the clocks start); ``open_contact``:
     the :class:`~dualmech.numeric.contacts.ContactBreak` that ended the run where no next
-    phase is declared (else ``None``)."""
+    phase is declared (else ``None``); ``end``: what ended the run early, in a few words
+    (``""``: it reached the end of the span)."""
 
     phases: list = field(default_factory=list)
     switches: list = field(default_factory=list)
@@ -83,6 +94,7 @@ class PhasedRun:
     fallback: str = ""
     cpu: float = 0.0
     open_contact: object = None
+    end: str = ""
 
     def to_dict(self, samples: bool = False) -> dict:
         """The run as plain data: ``phases`` (each its ``problem``, ``coordinates`` -- its
@@ -141,35 +153,56 @@ def map_state(problem, phase, y, values: Mapping, target=None) -> list:
 
 def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None = None,
                     samples: int = 200, rtol: float = 1e-10,
-                    atol: float = 1e-12, method: str = "auto") -> PhasedRun:
+                    atol: float = 1e-12, method: str = "auto",
+                    inputs: Mapping | None = None) -> PhasedRun:
     """Integrate ``problem`` and the phases it declares after it (see the module docstring).
 
-    ``samples`` output times are shared among the phases in proportion to their spans (at
-    least two each); ``params`` are this problem's and pass to the next ones by name;
-    ``method``: as :func:`~dualmech.numeric.contacts.watch` takes it.
+    ``samples`` output times are spread evenly over ``t_span``, each phase taking those in
+    its span, with its start and its end (so at least two each; a switch time appears in both
+    phases); every sample of a phase comes from the one integration that watched it, so a
+    phase's last sample is the very state carried across the switch.  ``params`` are this
+    problem's and pass to the next ones by name; ``method``: as
+    :func:`~dualmech.numeric.contacts.watch` takes it.  ``inputs``: the histories of the
+    problem's given inputs by name (:func:`~dualmech.numeric.inputs.input_functions`; an
+    input given none takes its declared default): every phase is driven by the same
+    histories, time running on across each switch.
+
+    Raises
+    ------
+    ValueError
+        A phase the problem can reach does not declare an input the run is driven by (or an
+        input has no history).
+
+    Example
+    -------
+    >>> from dualmech.problems import get
+    >>> run = simulate_phases(get("simple_pendulum"), (0, 1), samples=5)
+    >>> run.phases[0].trajectory.t.tolist()
+    [0.0, 0.25, 0.5, 0.75, 1.0]
     """
     t0, t1 = check_t_span(t_span)
     if y0 is None:
         q0, qd0 = default_initial_state(problem)
         y0 = list(q0) + list(qd0)
     named = {s.name: v for s, v in problem_parameters(problem, params).items()}
+    how = _How(np.linspace(t0, t1, max(int(samples), 2)), rtol, atol, method)
+    drive = {s.name: h for s, h in input_functions(problem, inputs, (t0, t1),
+                                                   problem_parameters(problem, params)).items()}
+    nexts = _reachable(problem, drive)
     run = PhasedRun()
     for _ in range(MAX_PHASES):
         mine = {p.symbol.name for p in problem.parameters}
         values = problem_parameters(problem, {k: v for k, v in named.items() if k in mine})
-        ref = problem.model(problem.reference)
-        report = watch(problem, (t0, t1), y0, values, rtol=rtol, atol=atol, method=method,
-                       extra_events=_range_events(problem, ref, values))
-        run._ran(report.method, report.fallback, report.cpu)
+        here = input_functions(problem, drive, (t0, t1), values)
+        report = _watched(problem, (t0, t1), y0, values, here, how, run)
         brk = report.first
         stop = report.stopped if brk is None else None
         end = brk.time if brk is not None else stop[1] if stop is not None else t1
         if end > t0:
-            k = max(2, int(round(samples * (end - t0) / (t_span[1] - t_span[0]))))
-            traj = _sampled(problem, (t0, end), y0, values, k, rtol, atol,
-                            report.method or "auto", run)
-            run.phases.append(PhaseRun(problem.name, traj))
+            run.phases.append(_phase_run(problem, _trajectory(
+                problem, report, (t0, end), y0, values, here, how, run), here))
         if stop is not None:
+            run.end = stop[0]
             run.ended = (f"t = {stop[1]:.6g} s: {stop[0]} in `{problem.name}`: the model "
                          "no longer describes the scene there (a phase follows only a "
                          "one-sided reaction reaching zero)")
@@ -178,87 +211,105 @@ def simulate_phases(problem, t_span=(0.0, 5.0), y0=None, params: Mapping | None 
             return run
         phase = (getattr(problem, "phases", None) or {}).get(brk.reaction)
         if phase is None:
-            run.ended, run.open_contact = str(brk), brk
-            return run
-        nxt = next_problem(phase)
+            return _open_end(run, problem, brk)
+        nxt = nexts[id(phase)]
         run.switches.append(Switch(brk.time, brk.reaction, problem.name, nxt.name,
                                    phase.why or brk.meaning))
         y0 = map_state(problem, phase, brk.y, values, nxt)
         named.update({s.name: v for s, v in values.items()})
+        drive.update({s.name: h for s, h in here.items()})
         problem, t0 = nxt, brk.time
-    run.ended = f"stopped after {MAX_PHASES} phases (does the declaration loop?)"
+    run.ended = run.end = f"stopped after {MAX_PHASES} phases (does the declaration loop?)"
     return run
 
 
-def _sampled(problem, span, y0, values, samples: int, rtol: float, atol: float,
-             method: str, run: PhasedRun) -> Trajectory:
-    """The phase's motion at ``samples`` times over ``span``, with its reactions, by the
-    method that watched it (:func:`~dualmech.numeric.cvode.integrate`)."""
+def _open_end(run: PhasedRun, problem, brk) -> PhasedRun:
+    """``run`` ended by the one-sided reaction ``brk`` for which no next phase is declared."""
+    run.ended, run.open_contact = str(brk), brk
+    sign = "is negative from the start" if brk.at_start else "reaches zero"
+    run.end = (f"{brk.reaction} {sign} ({brk.meaning}) and `{problem.name}` declares no "
+               "next phase for it")
+    return run
+
+
+def _reachable(problem, drive: Mapping) -> dict:
+    """``{id(phase): next problem}`` for every phase declared from ``problem`` on (each
+    built once), each checked to declare every input of ``drive`` (else refused)."""
+    out, todo, seen = {}, [problem], {problem.name}
+    while todo and len(out) < 4 * MAX_PHASES:
+        here = todo.pop()
+        for reaction, phase in (getattr(here, "phases", None) or {}).items():
+            if id(phase) in out:
+                continue
+            nxt = out[id(phase)] = next_problem(phase)
+            missing = [k for k in drive if k not in declared_inputs(nxt)]
+            if missing:
+                raise ValueError(
+                    f"`inputs`: the run is driven by {', '.join(missing)}, but the phase "
+                    f"after `{here.name}` ({reaction} reaching zero), problem `{nxt.name}`, "
+                    f"does not declare {'it' if len(missing) == 1 else 'them'}: declare the "
+                    "same Input(...) on it (every phase is driven by the same histories).")
+            if nxt.name not in seen:
+                seen.add(nxt.name)
+                todo.append(nxt)
+    return out
+
+
+@dataclass(frozen=True)
+class _How:
+    """How a run integrates each phase: the sample times over the whole run, the
+    tolerances, the method."""
+
+    grid: np.ndarray
+    rtol: float
+    atol: float
+    method: str
+
+
+def _watched(problem, span, y0, values, inputs, how: _How, run: PhasedRun):
+    """:func:`~dualmech.numeric.contacts.watch` of one phase from ``span[0]``, sampled at the
+    run's grid times in its span."""
     ref = problem.model(problem.reference)
     refuse_static(problem, ref)
-    done = integrate(NumericModel(ref, values), span, y0, t_eval=np.linspace(*span, samples),
-                     rtol=rtol, atol=atol, method=method)
-    run._ran(done.method, "", done.cpu)
-    if not done.success:
-        raise SingularityError(f"integration of `{problem.name}` failed: {done.message}")
+    report = watch(problem, span, y0, values, rtol=how.rtol, atol=how.atol,
+                   method=how.method, extra_events=_range_events(problem, ref, values),
+                   inputs=inputs, t_eval=_phase_grid(how.grid, *span))
+    run._ran(report.method, report.fallback, report.cpu)
+    return report
+
+
+def _phase_grid(grid, t0: float, t1: float) -> np.ndarray:
+    """The phase's sample times: its start, then the run's ``grid`` times after it."""
+    return np.concatenate([[t0], grid[(grid > t0) & (grid <= t1)]])
+
+
+def _phase_run(problem, traj: Trajectory, inputs: Mapping) -> PhaseRun:
+    """The phase's :class:`PhaseRun`: its trajectory, title, units and inputs' values."""
+    units = {c.name: unit(c.dimension) for c in problem.all_coordinates()}
+    units.update({r.name: unit(r.dimension) for r in problem.reactions})
+    units.update({x.name: unit(x.dimension) for x in declared_inputs(problem).values()})
+    driven = {s.name: np.array([h(float(t)) for t in traj.t]) for s, h in inputs.items()}
+    return PhaseRun(problem.name, traj, getattr(problem, "title", "") or "", units, driven)
+
+
+def _trajectory(problem, report, span, y0, values, inputs, how: _How,
+                run: PhasedRun) -> Trajectory:
+    """The phase's samples with its reactions: the watched run's own (the last one the state
+    where it stopped), or -- where nothing was watched, so nothing stops it -- one run at
+    the grid times."""
+    ref = problem.model(problem.reference)
+    if report.t is not None:
+        t, y = report.t, report.y
+    else:
+        done = integrate(NumericModel(ref, values, inputs=inputs), span, y0,
+                         t_eval=_phase_grid(how.grid, *span), rtol=how.rtol, atol=how.atol,
+                         method=how.method)
+        run._ran(done.method, "", done.cpu)
+        if not done.success:
+            raise SingularityError(f"integration of `{problem.name}` failed: {done.message}")
+        t, y = done.t, done.y
     n = ref.n
-    traj = Trajectory(done.t, done.y[:n], done.y[n:], [q.func.__name__ for q in
-                                                        ref.coordinates], message=done.message)
-    traj.reactions = reactions_along(problem, traj, values)
+    traj = Trajectory(np.asarray(t, dtype=float), y[:n], y[n:],
+                      [q.func.__name__ for q in ref.coordinates])
+    traj.reactions = reactions_along(problem, traj, values, inputs)
     return traj
-
-
-def phase_series(run: PhasedRun) -> dict:
-    """``{name: (times, values)}`` of every coordinate, rate (``name'``) and reaction over the
-    phases that have it (NaN between them), with ``"switches"``: the switch times."""
-    out: dict = {}
-    for ph in run.phases:
-        tr = ph.trajectory
-        rows = {n: tr.q[i] for i, n in enumerate(tr.coordinate_names)}
-        rows.update({f"{n}'": tr.qd[i] for i, n in enumerate(tr.coordinate_names)})
-        rows.update(tr.reactions)
-        for name, values in rows.items():
-            ts, vs = out.setdefault(name, ([], []))
-            if ts:
-                ts.append(np.nan)
-                vs.append(np.nan)
-            ts.extend(tr.t.tolist())
-            vs.extend(np.asarray(values, dtype=float).tolist())
-    series = {k: (np.array(t), np.array(v)) for k, (t, v) in out.items()}
-    series["switches"] = [s.time for s in run.switches]
-    return series
-
-
-def phase_chart(run: PhasedRun, path, title: str = "") -> str:
-    """Draw the coordinates and the reactions of every phase, each switch marked by a dashed
-    line and what happened; write the PNG to ``path`` and return its path."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    series = phase_series(run)
-    reactions = {k for ph in run.phases for k in ph.trajectory.reactions}
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
-    for name, tv in series.items():
-        if name == "switches" or name.endswith("'"):
-            continue
-        (bottom if name in reactions else top).plot(*tv, label=name)
-    for s in run.switches:
-        for ax in (top, bottom):
-            ax.axvline(s.time, color="k", linestyle="--", linewidth=1)
-        top.annotate(f" {s.reaction} = 0", (s.time, 0.97), xycoords=("data", "axes fraction"),
-                     va="top", ha="left", fontsize=8)
-    top.set_ylabel("coordinates")
-    bottom.set_ylabel("reactions")
-    bottom.set_xlabel("t (s)")
-    top.legend(loc="best", fontsize=8)
-    bottom.legend(loc="best", fontsize=8)
-    whys = "; ".join([f"t = {s.time:.3g} s: {s.why}" for s in run.switches]
-                     + ([f"ends at t = {run.phases[-1].trajectory.t[-1]:.3g} s: the model "
-                         "leaves its domain"] if run.ended and "domain" in run.ended else []))
-    top.set_title(title or " -> ".join(ph.problem for ph in run.phases), fontsize=10)
-    if whys:
-        bottom.set_title(whys, fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
-    return str(path)
