@@ -122,7 +122,7 @@ def test_the_chart_shows_both_phases_and_the_switch(run, tmp_path):
 
 def test_a_break_with_no_next_phase_ends_the_run_and_says_why():
     run = simulate_phases(problems.get("toy_car"), (0, 3), y0=[0.3, 2.4, 0.0, 0.0])
-    assert run.phases == [] and "F_r changes sign" in run.ended
+    assert run.phases == [] and "F_r is negative from the start" in run.ended
 
 
 def test_phase_declaration_mistakes_are_refused():

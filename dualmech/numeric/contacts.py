@@ -20,7 +20,7 @@ Example
 -------
 >>> from dualmech.problems import get
 >>> print(watch(get("toy_car"), (0, 3), y0=[0.3, 2.4, 0.0, 0.0]))     # doctest: +ELLIPSIS
-F_r changes sign (+ to -) from the start (theta = 0.3, phi = 2.4): the car leaves the track ...
+F_r is negative from the start (theta = 0.3, phi = 2.4): the car leaves the track ...
 """
 from __future__ import annotations
 
@@ -64,8 +64,9 @@ class ContactBreak:
 
     def __str__(self) -> str:
         where = ", ".join(f"{k} = {v:.4g}" for k, v in self.state.items())
-        when = "from the start" if self.at_start else f"at t = {self.time:.6g} s"
-        return (f"{self.reaction} changes sign (+ to -) {when} ({where}): {self.meaning}; "
+        change = ("is negative from the start" if self.at_start else
+                  f"changes sign (+ to -) at t = {self.time:.6g} s")
+        return (f"{self.reaction} {change} ({where}): {self.meaning}; "
                 "the model holds the contact closed, so its motion after this instant is "
                 "not the real one")
 
