@@ -22,6 +22,7 @@ import pytest
 import sympy as sp
 
 from dualmech.verify.check import compare
+from _diagnosis_match import names as _names, same as _same
 
 CORPUS = Path(__file__).parent / "corpus" / "teacher_mistakes"
 LAGRANGE_PARTS = {"kinetic", "potential", "lagrange"}
@@ -53,21 +54,6 @@ def diagnosed(cls):
 @functools.lru_cache(maxsize=None)
 def refereed(cls):
     return compare(cls())
-
-
-def _same(a, b) -> bool:
-    return a is not None and b is not None and sp.simplify(sp.expand(a - b)) == 0
-
-
-def _names(statement, subject: str, term) -> bool:
-    if subject not in statement.subject and subject not in statement.text():
-        return False
-    if term is None:
-        return True
-    sides = [x for _, have, right in statement.terms for x in (have, right) if x is not None]
-    change = sum(((right or 0) - (have or 0) for _, have, right in statement.terms),
-                 sp.Integer(0))
-    return any(_same(x, term) or _same(x, -term) for x in sides + [change])
 
 
 def named(cls, subject, term) -> bool:

@@ -31,6 +31,7 @@ import sympy as sp
 from dualmech import load, rate
 from dualmech.model.equations import ModelError
 from dualmech.verify.check import compare
+from _diagnosis_match import names as _names, same as _same
 
 HERE = Path(__file__).parent / "corpus"
 PROBLEMS = HERE / "teacher_problems"
@@ -82,21 +83,6 @@ def hand_term(m: dict):
     names.update(vars(mod(cls.__module__)))
     names["rate"] = lambda q, n=1: rate(q, int(n))
     return sp.sympify(m["term"], locals=names)
-
-
-def _same(a, b) -> bool:
-    return a is not None and b is not None and sp.simplify(sp.expand(a - b)) == 0
-
-
-def _names(statement, subject: str, term) -> bool:
-    if subject not in statement.subject and subject not in statement.text():
-        return False
-    if term is None:
-        return True
-    sides = [x for _, have, right in statement.terms for x in (have, right) if x is not None]
-    change = sum(((right or 0) - (have or 0) for _, have, right in statement.terms),
-                 sp.Integer(0))
-    return any(_same(x, term) or _same(x, -term) for x in sides + [change])
 
 
 def outcome(ident: str) -> str:
