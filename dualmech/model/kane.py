@@ -41,8 +41,6 @@ T - g*m*cos(theta(t)) - l*m*Derivative(theta(t), t)**2
 """
 from __future__ import annotations
 
-import random
-
 import symengine as se
 
 from dualmech.model._algebra import is_zero_trig as _is_zero, merge_names, names_of, to_se
