@@ -22,7 +22,7 @@ import sympy as sp
 
 from dualmech.exact.surds import Surd
 from dualmech.grade import Grader
-from dualmech.grade.formula import Env, Formula
+from dualmech.grade.formula import Env, Formula, NotExactHere
 from dualmech.grade.roots import MAX_ROOTS, surd_constant
 from dualmech.grade.parser import parse
 from dualmech.grade.vocabulary import Vocabulary
@@ -77,7 +77,13 @@ def test_what_stays_inexact():
     assert surd_constant(("rpow", ("c", Fraction(-3)), Fraction(1, 2))) is None  # imaginary
     many = " + ".join(f"sqrt({p})" for p in (2, 3, 5, 7, 11)[:MAX_ROOTS + 1])
     assert not _value(many)[0].exact       # 2**5 coordinates: left to mpmath, never slow
-    assert not Formula.from_sympy(sp.sqrt(x)).exact
+    # a root of a symbol is kept exact where its radicand is no rational square there, and
+    # leaves the exact method where it is (sqrt(x^2) = |x|: tests/test_grade_state_roots.py)
+    root = Formula.from_sympy(sp.sqrt(x))
+    assert root.exact and root.state_roots
+    assert root.evaluate(Env({x: Fraction(2)})) == Surd.root(2)
+    with pytest.raises(NotExactHere):
+        root.evaluate(Env({x: Fraction(4)}))
 
 
 # -- T, V, L and Q on the 30-degree wedge -------------------------------------------------------

@@ -14,9 +14,13 @@ verdict).
 The points come in pairs that share the parameters, so "a constant factor" (free of the
 state, possibly depending on the parameters) can be told apart from a state-dependent one.
 
-A problem whose models leave that world (``sqrt``, ``Abs``, ...) has no exact points
-(:attr:`ProblemContext.method` is ``"slow"``): its answers are decided by
-:func:`dualmech.verify.check.compare_models` (:mod:`.slow`).  Real points in the declared ranges
+Square roots of state expressions in the models (a rolling wheel's contact, ``sqrt(1 -
+a_z^2)``) stay in that world: the true accelerations and reactions are then exact numbers of
+``Q(sqrt d)`` at each point (:mod:`.formula`, :func:`~.formula.state_root`), solved by the
+same Gauss--Jordan, and an answer is decided there as any other.  A problem whose models leave
+that world (``Abs``, ``Piecewise``, roots whose radicands are squares or dependent) has no
+exact points (:attr:`ProblemContext.method` is ``"slow"``): its answers are decided by
+:func:`dualmech.verify.check.compare_models` (:mod:`.comparator_fallback`).  Real points in the declared ranges
 (``points("mpmath")``) only show values to a student, never decide.
 
 Example
@@ -44,7 +48,7 @@ from dualmech.model.kinematics import t
 from dualmech.exact import linalg as la
 from dualmech.exact.surds import Surd
 from dualmech.grade.audit import reduced
-from dualmech.grade.formula import Env, Formula, seeded_draw
+from dualmech.grade.formula import Env, Formula, NotExactHere, seeded_draw
 from dualmech.grade.vocabulary import Vocabulary
 
 __all__ = ["ProblemContext", "Point", "GradingUnavailable", "zero", "off_motion",
@@ -227,9 +231,24 @@ class ProblemContext:
     @property
     def method(self) -> str:
         """``exact`` when every model of the problem evaluates exactly (rational functions of
-        the symbols and of sines and cosines of angles), else ``slow`` (answers are then
-        decided by :func:`dualmech.verify.check.compare_models`)."""
-        return "exact" if self._formulas()[1] and not self.static_rows() else "slow"
+        the symbols and of sines and cosines of angles, and independent square roots of
+        expressions in them), else ``slow`` (answers are then decided by
+        :func:`dualmech.verify.check.compare_models`)."""
+        if not self._formulas()[1] or self.static_rows():
+            return "slow"
+        return "exact" if self.memo("roots exact", self._roots_exact) else "slow"
+
+    def _roots_exact(self) -> bool:
+        """Whether the models' square roots of expressions (if any) stay exact at the
+        points: their radicands independent there (:class:`~.formula.NotExactHere`)."""
+        systems, _ = self._formulas()
+        if not any(f.state_roots for _, fa, fb in systems for row in fa + [fb] for f in row):
+            return True
+        try:
+            self.points("exact")
+        except NotExactHere:
+            return False
+        return True
 
     def points(self, method: str) -> list[Point]:
         """The sampled points: ``exact`` (for verdicts) or ``mpmath`` (real states in the
@@ -314,6 +333,8 @@ class ProblemContext:
             with mpmath.workdps(MP_DIGITS):
                 parts = [([[f.evaluate(env) for f in row] for row in fa],
                           [f.evaluate(env) for f in fb]) for _, fa, fb in systems]
+        except NotExactHere:
+            raise
         except (ZeroDivisionError, ValueError):
             return False
         with mpmath.workdps(MP_DIGITS):

@@ -14,7 +14,19 @@ Square roots of rational constants (``sqrt(3)/2`` of a push at 30 degrees, in an
 a model) stay exact too: their values are elements of ``Q(sqrt p_1, ..., sqrt p_k)`` over prime
 radicands (:class:`~dualmech.exact.surds.Surd`, :mod:`.roots`), where ``== 0`` is still
 an exact test; so are ``sin``/``cos`` of multiples of ``pi/12`` (``cos(pi/6) = sqrt(3)/2``).
-A root of a symbol, or of more than :data:`MAX_ROOTS` primes in one formula, is left to mpmath.
+A root of more than :data:`MAX_ROOTS` primes in one formula is left to mpmath.
+
+Square roots of expressions in the symbols (a rolling wheel's ``sqrt(1 - a_z^2)``) stay exact
+the same way: at a rational point the radicand has a rational value ``d``, and ``sqrt(X)`` is
+taken as the formal root of ``d`` (a :class:`~dualmech.exact.surds.Surd`, read as the positive
+root).  This is sound only when the radicands are independent as functions (no radicand, nor
+any product of them, a square: ``sqrt(theta^2) = |theta|`` has branches), so at a point where
+a radicand's value is a rational square or the radicands' values are dependent -- which they
+then are at every rational point -- or a radicand is negative, the evaluation raises
+:class:`NotExactHere` and the caller leaves the formula to the comparator.  Where the values
+are independent the functions are too, the field of the roots has degree ``2**k`` over the
+rational functions, and a nonzero answer vanishes at a random point only where its norm (a
+rational function of ``2**k`` times the degree, :attr:`Formula.degree`) does.
 
 Building a formula never evaluates text and never calls ``sympify``: each node is made from
 the parser's tree with the operations listed here, under the :class:`~.parser.Limits`
@@ -45,14 +57,15 @@ import mpmath
 import sympy as sp
 
 from dualmech.exact.form import MP_DIGITS
-from dualmech.exact.surds import Surd
+from dualmech.exact.surds import Surd, is_square
 from dualmech.grade.roots import MAX_ROOTS, TURN_ROOTS, TURNS, surd_constant
 from dualmech.grade.parser import LIMITS, AnswerError, AnswerTooLarge, Limits, Node, to_text
 from dualmech.grade.cost import check
 from dualmech.grade.resolve import resolve
 from dualmech.grade.vocabulary import Vocabulary
 
-__all__ = ["Formula", "Env", "difference", "seeded_draw", "tree_to_sympy", "sympy_to_tree"]
+__all__ = ["Formula", "Env", "NotExactHere", "difference", "seeded_draw", "tree_to_sympy",
+           "sympy_to_tree"]
 
 _PI = "pi"
 _MAX_MULTIPLE = 10 ** 4  # largest multiple of an angle evaluated exactly; answers are bounded
@@ -63,6 +76,40 @@ _MP_FUNCS = {"sin": mpmath.sin, "cos": mpmath.cos, "tan": mpmath.tan, "cot": mpm
 _SP_FUNCS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec,
              "csc": sp.csc, "sqrt": sp.sqrt, "exp": sp.exp, "log": sp.log}
 _TRIG = ("sin", "cos", "tan", "cot", "sec", "csc")
+
+
+class NotExactHere(ValueError):
+    """A square root of an expression cannot be kept exact at this point: its radicand is
+    negative, a rational square, or dependent on another root's (see the module docstring);
+    the formula is then decided by the comparator."""
+
+
+def state_root(d, k: int):
+    """``sqrt(d)**k`` for the rational value ``d`` of a radicand that depends on the state,
+    exactly (a :class:`~dualmech.exact.surds.Surd`), else :class:`NotExactHere`.
+
+    >>> state_root(Fraction(5), -1)
+    Surd(1/5*sqrt(5))
+    >>> state_root(Fraction(4), 1)
+    Traceback (most recent call last):
+    ...
+    dualmech.grade.formula.NotExactHere: a square root's radicand is a rational square at this point (a branch, as sqrt(x^2) = |x|)
+    """
+    if isinstance(d, Surd) or not isinstance(d, (Fraction, int)):
+        raise NotExactHere("a square root of an expression with square roots")
+    if d < 0:
+        raise NotExactHere("a square root of a negative number at this point")
+    if d == 0:
+        if k < 0:
+            raise ZeroDivisionError("a negative power of a square root of zero")
+        return Fraction(0)
+    if is_square(d):
+        raise NotExactHere("a square root's radicand is a rational square at this point (a "
+                           "branch, as sqrt(x^2) = |x|)")
+    try:
+        return Surd.root(d) ** k
+    except ValueError as exc:   # dependent on the other roots met (Surd's own check)
+        raise NotExactHere(str(exc)) from None
 
 
 # -- evaluation environments ----------------------------------------------------------------
@@ -249,20 +296,22 @@ class Formula:
     """
 
     __slots__ = ("tree", "exact", "degree", "symbols", "_fn", "_sympy", "text", "_parts",
-                 "student", "roots")
+                 "student", "roots", "state_roots")
 
     def __init__(self, tree, text: str = ""):
         self.tree = tree
         self.text = text
         self.symbols: set = set()
         self.roots: set = set()   # primes under the square roots of constants
+        #: radicands (trees) of the square roots of expressions in the symbols
+        self.state_roots: set = set()
         self.exact = True
         self._sympy = None
         self._parts = None
         #: ``(formula as written, StudentMap)`` when this formula is the student's answer
         #: rewritten from their own coordinates (:mod:`.maps`), else None
         self.student = None
-        self.degree = sum(self._scan(tree))
+        self.degree = sum(self._scan(tree)) << len(self.state_roots)   # the norm's degree
         self._few_roots()
         self._fn = self._compile(tree)
 
@@ -274,8 +323,8 @@ class Formula:
     def __setstate__(self, state):
         self.tree, self.text, self._sympy = state["tree"], state["text"], state["sympy"]
         self.symbols, self.exact, self._parts, self.student = set(), True, None, None
-        self.roots = set()
-        self.degree = sum(self._scan(self.tree))
+        self.roots, self.state_roots = set(), set()
+        self.degree = sum(self._scan(self.tree)) << len(self.state_roots)
         self._few_roots()
         self._fn = None   # compiled when first evaluated
 
@@ -324,6 +373,13 @@ class Formula:
             return (n * k, d * k) if k >= 0 else (d * -k, n * -k)
         if op == "rpow":
             root = surd_constant(tree)
+            if root is None and tree[2].denominator == 2 and _has_symbol(tree[1]):
+                # sqrt(X)**k of an expression: exact where the radicands are independent;
+                # bounded as X**|k| (the norm's doubling is in the degree, see __init__)
+                self.state_roots.add(tree[1])
+                n, d = self._scan(tree[1])
+                k = tree[2].numerator
+                return (n * k, d * k) if k > 0 else (d * -k, n * -k)
             self.exact = self.exact and root is not None
             if isinstance(root, Surd):
                 self.roots |= root.radicands
@@ -333,7 +389,10 @@ class Formula:
             name, arg = tree[1], tree[2]
             inner = Formula.__new__(Formula)
             inner.symbols, inner.exact, inner.roots = set(), True, set()
+            inner.state_roots = set()
             inner._scan(arg)
+            if inner.state_roots:   # sin(sqrt(x)): not an angle evaluated exactly
+                self.exact = False
             self.symbols |= inner.symbols
             self.roots |= inner.roots
             ang = _angle(arg) if name in _TRIG else None
@@ -366,7 +425,14 @@ class Formula:
         fn = self._fn
         if fn is None:
             fn = self._fn = self._compile(self.tree)
-        return fn(env)
+        if not self.state_roots or not env.exact:
+            return fn(env)
+        try:
+            return fn(env)
+        except NotExactHere:
+            raise
+        except ValueError as exc:   # roots of dependent radicands met (Surd's own check)
+            raise NotExactHere(str(exc)) from None
 
     def _compile(self, tree):
         op = tree[0]
@@ -410,6 +476,9 @@ class Formula:
             exact = surd_constant(tree)
             if exact is not None:   # sqrt(3)/2 of a 30-degree push: exact in Q(sqrt 3)
                 return lambda env: exact if env.exact else b(env) ** me
+            if e.denominator == 2 and _has_symbol(tree[1]):   # sqrt(1 - a_z^2): see Env
+                k = e.numerator
+                return lambda env: state_root(b(env), k) if env.exact else b(env) ** me
             return lambda env: b(env) ** me if not env.exact else _not_exact()
         if op == "f":
             return self._compile_function(tree[1], tree[2])
@@ -518,6 +587,17 @@ def difference(lhs: Formula, rhs: Formula | None) -> Formula:
     right = rhs.tree[1] if rhs.tree[0] == "add" else (rhs.tree,)
     neg = tuple(("mul", (("c", Fraction(-1)), r)) for r in right)
     return Formula(("add", left + neg), f"{lhs.text} = {rhs.text}")
+
+
+def _has_symbol(tree) -> bool:
+    op = tree[0]
+    if op == "s":
+        return True
+    if op in ("c", "pi"):
+        return False
+    if op in ("add", "mul", "vec"):
+        return any(_has_symbol(c) for c in tree[1])
+    return _has_symbol(tree[2] if op == "f" else tree[1])
 
 
 def _not_exact():

@@ -36,14 +36,15 @@ from dualmech.grade.feedback import Diagnosis, best_edit, concrete_state, differ
 from dualmech.grade.notation import for_student, in_their_words
 from dualmech.grade.terms import answer_coordinates, equation_targets, expression_tables, term_table
 from dualmech.grade.audit import dimension_issues, display, expected_dimension, label_words
-from dualmech.grade.formula import Formula
+from dualmech.exact.surds import Surd
+from dualmech.grade.formula import Formula, NotExactHere
 from dualmech.grade.parser import AnswerError
 from dualmech.grade.result import DIMENSIONS_ONLY, Edit
 from dualmech.grade.systems import constrained_group, constraint_rows, determines_system
 from dualmech.grade.targets import expression_targets
 
 __all__ = ["Verdict", "Deadline", "AnswerTimeout", "judge_equations", "judge_expression",
-           "says_nothing", "check_real",
+           "says_nothing", "check_real", "audited", "roots_stay_exact",
            "method_for", "values_at"]
 
 _MAX_FEEDBACK_TERMS = 400
@@ -94,10 +95,46 @@ class Verdict:
     credit: float | None = None       # a score set by the judge itself (see result.score_of)
 
 
+def audited(ctx: ProblemContext, tree, dims: dict, names: dict, expected=None) -> list[str]:
+    """:func:`~.audit.dimension_issues` of an answer, or none when the problem declares that
+    its equations hold no dimensions to audit (``dimensions_unchecked``: a geometry fixed at
+    numbers, whose lengths are then plain numbers in a right answer too)."""
+    if getattr(ctx.problem, "dimensions_unchecked", ""):
+        return []
+    return dimension_issues(tree, dims, names, expected)
+
+
 def method_for(ctx: ProblemContext, formulas) -> str:
     """``exact`` when the problem and every formula evaluate exactly (the fast evaluator),
-    else ``slow`` (the library's comparator decides, :mod:`.slow`)."""
-    return "exact" if ctx.method == "exact" and all(f.exact for f in formulas) else "slow"
+    else ``slow`` (the library's comparator decides, :mod:`.comparator_fallback`).  Formulas
+    with square roots of expressions are exact where their radicands and the models' are
+    independent at the points (:func:`roots_stay_exact`)."""
+    if ctx.method != "exact" or not all(f.exact for f in formulas):
+        return "slow"
+    return "exact" if roots_stay_exact(ctx, formulas) else "slow"
+
+
+def roots_stay_exact(ctx: ProblemContext, formulas) -> bool:
+    """False when a square root of an expression in ``formulas`` cannot be kept exact at
+    the context's points (a radicand negative, a rational square, or dependent on another
+    root met there, the models' included: :class:`~.formula.NotExactHere`); the values and
+    their sum are computed once here, so the judges meet no such root later."""
+    if not any(f.state_roots for f in formulas):
+        return True
+    need = need_for(ctx, formulas)
+    try:
+        for p in ctx.points("exact"):
+            env = p.env(need=need)
+            total = sum((v for v in env.values.values() if isinstance(v, Surd)), Fraction(0))
+            for f in formulas:
+                v = f.evaluate(env)
+                for x in (v if isinstance(v, list) else [v]):
+                    total = total + x
+    except (NotExactHere, ValueError):
+        return False
+    except (ZeroDivisionError, KeyError, TypeError):
+        return True     # the judge says what is wrong with the answer
+    return True
 
 
 def need_for(ctx: ProblemContext, formulas) -> tuple:
@@ -219,7 +256,7 @@ def judge_equations(ctx: ProblemContext, formulas: list, quantity: Quantity,
         written, smap = f.student or (f, None)
         seen = smap.view(ctx) if smap is not None else ctx
         mine = in_their_words(seen, f.text)
-        for issue in dimension_issues(written.tree, seen.dims, seen.names):
+        for issue in audited(ctx, written.tree, seen.dims, seen.names):
             dims.append(mine(f"{name(i)}: {issue}" if k > 1 else issue))
     unknowns = set(ctx.qdd) | set(ctx.reactions) | {
         s for s in ctx.derived_formulas() if s.name.endswith("_ddot")}
@@ -535,7 +572,7 @@ def judge_expression(ctx: ProblemContext, answer: Formula, quantity: Quantity,
     for j, (c, r) in enumerate(zip(comps, refs)):
         expected = expected_dimension(r, ctx.dims)
         mine = in_their_words(ctx, c.text)
-        for issue in map(mine, dimension_issues(c.tree, ctx.dims, ctx.names, expected)):
+        for issue in map(mine, audited(ctx, c.tree, ctx.dims, ctx.names, expected)):
             dims.append(f"component {j + 1}: {issue}" if len(refs) > 1 else issue)
     method = method_for(ctx, comps + refs)
     if method == "slow":

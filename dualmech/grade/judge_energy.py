@@ -30,7 +30,7 @@ from dualmech.grade.audit import dimension_issues, reduced
 from dualmech.grade.notation import for_student, in_their_words
 from dualmech.grade.formula import Formula
 from dualmech.grade.roots import MAX_ROOTS
-from dualmech.grade.judge import Deadline, Verdict, factor_edit, method_for
+from dualmech.grade.judge import Deadline, Verdict, audited, factor_edit, method_for
 from dualmech.grade.kinds import naming_energy
 from dualmech.grade.result import DIMENSIONS_ONLY
 from dualmech.grade.parser import AnswerError
@@ -66,7 +66,7 @@ def _check_symbols(ctx, f: Formula, quantity: Quantity, velocities: bool = True)
 
 def _energy_dims(ctx, f: Formula) -> list:
     mine = in_their_words(ctx, f.text)
-    return [mine(s) for s in dimension_issues(f.tree, ctx.dims, ctx.names, reduced(ENERGY))]
+    return [mine(s) for s in audited(ctx, f.tree, ctx.dims, ctx.names, reduced(ENERGY))]
 
 
 def _edits(ctx, f: Formula, target, deadline):
@@ -337,7 +337,7 @@ def judge_force(ctx: ProblemContext, comps: list, quantity: Quantity,
         expected = reduced(ENERGY)
         expected = tuple(sorted(_sub(expected, ctx.dims[ctx.states[j].q]).items()))
         dims += map(in_their_words(ctx, f.text),
-                    dimension_issues(f.tree, ctx.dims, ctx.names, expected))
+                    audited(ctx, f.tree, ctx.dims, ctx.names, expected))
     drives, optional = parts.keys("drive"), parts.keys("velocity", "potential", "load")
     method = _exact(ctx, comps + [x for k in drives + optional for x in parts.formulas[k]])
     envs = [p.env() for p in ctx.points(method)]
