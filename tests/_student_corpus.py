@@ -12,13 +12,14 @@ from __future__ import annotations
 
 import random
 import tomllib
+from dataclasses import replace
 from pathlib import Path
 
 import sympy as sp
 
 from dualmech.grade import Grader
 from dualmech.grade.formula import Formula
-from dualmech.grade.parser import parse
+from dualmech.grade.parser import LIMITS, parse
 
 CORPUS_DIR = Path(__file__).resolve().parent / "corpus"
 
@@ -35,7 +36,10 @@ def grader(problem: str) -> Grader:
     under ``tests/corpus/`` (graded as the ``dualmech grade path/to/file.py`` command does)."""
     if problem not in _graders:
         spec = str(CORPUS_DIR / problem) if problem.endswith(".py") else problem
-        _graders[problem] = Grader(spec)
+        # the corpus asks for verdicts, not speed: a generous wall-clock ceiling, so that a
+        # stall of a loaded machine is not read as "too costly" (the ceiling's own behaviour
+        # is tested with hostile answers, tests/test_grade_safety.py and the fuzz tests)
+        _graders[problem] = Grader(spec, limits=replace(LIMITS, seconds=60.0))
     return _graders[problem]
 
 
