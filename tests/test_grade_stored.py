@@ -13,6 +13,7 @@ import os
 import pickle
 import subprocess
 import sys
+from dataclasses import replace
 
 import pytest
 import sympy as sp
@@ -21,9 +22,15 @@ from dualmech.grade import stored_contexts as stored
 from dualmech.grade.api import Grader
 from dualmech.grade.batch import warm_targets
 from dualmech.grade.generate import correct_answers, wrong_answers
+from dualmech.grade.parser import LIMITS
 from dualmech.problems import declarations, get
 
 from _catalogue_expected import graded_params
+
+#: the two graders are compared answer by answer, not timed: a roomy ceiling, so a stall of a
+#: loaded machine (a first wrong answer takes ~1 s of the 2 s default) is not read as "too
+#: costly" by one of them
+ROOMY = replace(LIMITS, seconds=60.0)
 
 
 @pytest.fixture
@@ -36,7 +43,7 @@ def cache(tmp_path, monkeypatch):
 def _fresh(name: str) -> Grader:
     """A grader built from the models, as a first run builds it (no stored context)."""
     g = Grader.__new__(Grader)
-    Grader.__init__(g, get(name))
+    Grader.__init__(g, get(name), limits=ROOMY)
     g._named = name
     return g
 
@@ -71,7 +78,7 @@ def test_a_stored_context_grades_every_answer_as_the_one_it_was_written_from(nam
     _warm(fresh)
     assert stored.save(fresh.context), "a catalogue problem's warmed context is kept"
     assert not stored.save(fresh.context), "nothing new was built: not written again"
-    loaded = Grader(name)
+    loaded = Grader(name, limits=ROOMY)
     assert loaded._ctx is not None and loaded.context is not fresh.context
     assert loaded.problem is loaded.context.problem
     # every object read back is the real class's (a stand-in of the reader, left behind in
