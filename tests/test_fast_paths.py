@@ -166,3 +166,17 @@ def test_a_text_value_is_refused_never_parsed(tmp_path):
     with pytest.raises(TypeError):
         lin.at(hostile)
     assert not marker.exists()
+
+
+def test_the_algebra_bridge_refuses_text_before_any_parser_sees_it(tmp_path):
+    """Bridge(), Bridge.se, Bridge.sp and names_of take library expressions only: a string is
+    refused by sympify(strict=True) before symengine's parser (Bridge.se) could read it."""
+    import sympy as sp
+    from dualmech.model._algebra import Bridge, names_of
+    marker = tmp_path / "touched"
+    hostile = f"__import__('pathlib').Path({str(marker)!r}).touch()"
+    for call in (lambda: Bridge([hostile]), lambda: Bridge().se(hostile),
+                 lambda: Bridge().sp(hostile), lambda: names_of(hostile)):
+        with pytest.raises(sp.SympifyError):
+            call()
+    assert not marker.exists()
